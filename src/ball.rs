@@ -1,0 +1,710 @@
+//! Ball arithmetic: a `rug::Float` midpoint and a radius rounded upward.
+//!
+//! # Method
+//!
+//! A [`Ball`] `[m ± r]` stands for every real `x` with `|x - m| <= r`. Every
+//! operation returns a ball that contains the exact result of the operation
+//! applied to *every* pair of points of its operands (the inclusion property).
+//! The midpoint is rounded to nearest at the ball's precision; the radius is a
+//! [`MAG_PREC`]-bit `Float` to which every bound is added with rounding toward
+//! `+inf`:
+//!
+//! * `+`, `-`:   `r = ra + rb + err(m)`
+//! * `*`:        `r = |ma| rb + |mb| ra + ra rb + err(m)`
+//! * `/`:        `r = (|ma| rb + |mb| ra) / (|mb| (|mb| - rb)) + err(m)` (requires `|mb| > rb`)
+//! * monotone functions (`exp`, `ln`, `sqrt`, `acosh`): evaluate at both endpoints with
+//!   directed rounding (MPFR rounds correctly in every direction) and take the hull.
+//! * `gamma`, `digamma`, `ln_gamma` on an *exact* point: MPFR is correctly rounded, so
+//!   the error is at most one ulp.
+//!
+//! `err(m)` is the rounding error of the midpoint: zero when MPFR reports the
+//! operation exact (ternary value `Equal`), otherwise one ulp of the rounded
+//! midpoint, `2^(e - p)` for `|m| in [2^(e-1), 2^e)` (round-to-nearest errs by at
+//! most half of that).
+//!
+//! This is the same discipline as Arb's `arb_t` (midpoint `arf_t`, radius `mag_t`),
+//! reduced to what the special functions of this crate need.
+
+use std::cmp::Ordering;
+use std::fmt;
+
+use rug::float::{Constant, Round};
+use rug::ops::AssignRound;
+use rug::Float;
+
+use crate::error::{Error, Result};
+
+/// Precision (bits) of the radius. Radii are upper bounds, so a short mantissa
+/// only makes them slightly larger, never wrong.
+pub const MAG_PREC: u32 = 32;
+
+/// A real interval `[mid - rad, mid + rad]` with an arbitrary-precision midpoint.
+#[derive(Clone, PartialEq)]
+pub struct Ball {
+    mid: Float,
+    rad: Float,
+}
+
+impl fmt::Debug for Ball {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "[{} +/- {}]", self.mid.to_string_radix(10, Some(20)), self.rad.to_string_radix(10, Some(4)))
+    }
+}
+
+impl fmt::Display for Ball {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Debug::fmt(self, f)
+    }
+}
+
+/// A zero radius.
+fn mag_zero() -> Float {
+    Float::new(MAG_PREC)
+}
+
+/// Upper bound for `|x|` as a radius-precision float.
+fn mag_abs_up(x: &Float) -> Float {
+    let mut r = Float::new(MAG_PREC);
+    r.assign_round(x.abs_ref(), Round::Up);
+    r
+}
+
+/// Lower bound for `|x|` as a radius-precision float.
+fn mag_abs_down(x: &Float) -> Float {
+    let mut r = Float::new(MAG_PREC);
+    r.assign_round(x.abs_ref(), Round::Down);
+    r
+}
+
+/// `2^e` as a radius.
+fn mag_pow2(e: i32) -> Float {
+    let mut r = Float::with_val(MAG_PREC, 1);
+    r <<= e;
+    r
+}
+
+/// One ulp of `m` at its precision (an upper bound for the round-to-nearest error
+/// that produced it), or zero when the operation was exact.
+fn rounding_error(m: &Float, ord: Ordering) -> Float {
+    if ord == Ordering::Equal {
+        return mag_zero();
+    }
+    match m.get_exp() {
+        Some(e) => mag_pow2(e - m.prec() as i32),
+        // A zero or non-finite midpoint after an inexact operation: MPFR only
+        // produces this on underflow/overflow, which the callers reject.
+        None => Float::with_val(MAG_PREC, rug::float::Special::Infinity),
+    }
+}
+
+fn add_up(a: &Float, b: &Float) -> Float {
+    let mut r = Float::new(MAG_PREC);
+    r.assign_round(a + b, Round::Up);
+    r
+}
+
+fn mul_up(a: &Float, b: &Float) -> Float {
+    let mut r = Float::new(MAG_PREC);
+    r.assign_round(a * b, Round::Up);
+    r
+}
+
+impl Ball {
+    // ----- construction -------------------------------------------------
+
+    /// The exact ball `[x ± 0]`, `x` rounded to `prec` bits (exact when `prec >= 53`);
+    /// if rounding happened the radius covers it.
+    pub fn from_f64(x: f64, prec: u32) -> Result<Ball> {
+        if !x.is_finite() {
+            return Err(Error::NonFinite { what: "ball midpoint" });
+        }
+        let (mid, ord) = Float::with_val_round(prec, x, Round::Nearest);
+        let rad = rounding_error(&mid, ord);
+        Ok(Ball { mid, rad })
+    }
+
+    /// The ball `[x ± 0]` for an integer.
+    pub fn from_i64(x: i64, prec: u32) -> Ball {
+        let (mid, ord) = Float::with_val_round(prec, x, Round::Nearest);
+        let rad = rounding_error(&mid, ord);
+        Ball { mid, rad }
+    }
+
+    /// The ball containing the rational `num/den` (`den != 0`).
+    pub fn from_ratio(num: i64, den: i64, prec: u32) -> Ball {
+        let q = rug::Rational::from((num, den));
+        let (mid, ord) = Float::with_val_round(prec, &q, Round::Nearest);
+        let rad = rounding_error(&mid, ord);
+        Ball { mid, rad }
+    }
+
+    /// The ball containing the exact value of `x`, rounded to `prec` bits.
+    pub fn from_float(x: &Float, prec: u32) -> Ball {
+        let (mid, ord) = Float::with_val_round(prec, x, Round::Nearest);
+        let rad = rounding_error(&mid, ord);
+        Ball { mid, rad }
+    }
+
+    /// A ball from a midpoint and a radius (the radius is rounded upward).
+    pub fn with_radius(mid: Float, rad: &Float) -> Ball {
+        let mut r = Float::new(MAG_PREC);
+        r.assign_round(rad.abs_ref(), Round::Up);
+        Ball { mid, rad: r }
+    }
+
+    /// Exact zero.
+    pub fn zero(prec: u32) -> Ball {
+        Ball { mid: Float::new(prec), rad: mag_zero() }
+    }
+
+    /// Exact one.
+    pub fn one(prec: u32) -> Ball {
+        Ball::from_i64(1, prec)
+    }
+
+    /// A ball containing pi.
+    pub fn pi(prec: u32) -> Ball {
+        let (mid, ord) = Float::with_val_round(prec, Constant::Pi, Round::Nearest);
+        let rad = rounding_error(&mid, ord);
+        Ball { mid, rad }
+    }
+
+    /// A ball containing `n!` (MPFR's correctly rounded factorial).
+    pub fn factorial(n: u32, prec: u32) -> Ball {
+        let (mid, ord) = Float::with_val_round(prec, Float::factorial(n), Round::Nearest);
+        let rad = rounding_error(&mid, ord);
+        Ball { mid, rad }
+    }
+
+    /// A ball containing ln 2.
+    pub fn ln2(prec: u32) -> Ball {
+        let (mid, ord) = Float::with_val_round(prec, Constant::Log2, Round::Nearest);
+        let rad = rounding_error(&mid, ord);
+        Ball { mid, rad }
+    }
+
+    // ----- inspection ---------------------------------------------------
+
+    /// The midpoint.
+    pub fn mid(&self) -> &Float {
+        &self.mid
+    }
+
+    /// The radius (an upper bound on the distance from the midpoint to any enclosed value).
+    pub fn rad(&self) -> &Float {
+        &self.rad
+    }
+
+    /// Precision of the midpoint in bits.
+    pub fn prec(&self) -> u32 {
+        self.mid.prec()
+    }
+
+    /// True when the radius is zero (the ball is one exactly known number).
+    pub fn is_exact(&self) -> bool {
+        self.rad.is_zero()
+    }
+
+    /// True when midpoint and radius are finite.
+    pub fn is_finite(&self) -> bool {
+        self.mid.is_finite() && self.rad.is_finite()
+    }
+
+    /// Whether the ball contains the number `x`.
+    pub fn contains(&self, x: &Float) -> bool {
+        let mut d = Float::new(self.prec().max(x.prec()) + 8);
+        d.assign_round(&self.mid - x, Round::Up);
+        let d_abs_up = {
+            let mut lo = Float::new(d.prec());
+            lo.assign_round(&self.mid - x, Round::Down);
+            if lo.is_sign_negative() {
+                // |mid - x| <= max(|lo|, |hi|)
+                let a = lo.abs();
+                if a > d.clone().abs() { a } else { d.abs() }
+            } else {
+                d.abs()
+            }
+        };
+        d_abs_up <= self.rad
+    }
+
+    /// Whether the two balls share a point.
+    pub fn overlaps(&self, other: &Ball) -> bool {
+        let mut d = Float::new(self.prec().max(other.prec()) + 8);
+        d.assign_round(&self.mid - &other.mid, Round::Nearest);
+        // |d_exact| <= |d| + ulp(d); compare against ra + rb.
+        let slack = rounding_error(&d, Ordering::Less);
+        let lhs = mag_abs_down(&d);
+        let rhs = add_up(&add_up(&self.rad, &other.rad), &slack);
+        lhs <= rhs
+    }
+
+    /// Upper bound of `|x|` over the ball.
+    pub fn abs_upper(&self) -> Float {
+        add_up(&mag_abs_up(&self.mid), &self.rad)
+    }
+
+    /// Lower bound of `|x|` over the ball (zero when the ball contains zero).
+    pub fn abs_lower(&self) -> Float {
+        let m = mag_abs_down(&self.mid);
+        let mut r = Float::new(MAG_PREC);
+        r.assign_round(&m - &self.rad, Round::Down);
+        if r.is_sign_negative() {
+            mag_zero()
+        } else {
+            r
+        }
+    }
+
+    /// Lower end of the ball, rounded down, at the midpoint's precision.
+    pub fn lower(&self) -> Float {
+        let mut r = Float::new(self.prec());
+        r.assign_round(&self.mid - &self.rad, Round::Down);
+        r
+    }
+
+    /// Upper end of the ball, rounded up, at the midpoint's precision.
+    pub fn upper(&self) -> Float {
+        let mut r = Float::new(self.prec());
+        r.assign_round(&self.mid + &self.rad, Round::Up);
+        r
+    }
+
+    /// True when every point of the ball is `> 0`.
+    pub fn is_positive(&self) -> bool {
+        self.lower() > 0
+    }
+
+    /// True when every point of the ball is `< 0`.
+    pub fn is_negative(&self) -> bool {
+        self.upper() < 0
+    }
+
+    /// True when the ball contains zero.
+    pub fn contains_zero(&self) -> bool {
+        !self.is_positive() && !self.is_negative()
+    }
+
+    /// `rad / |mid|` as an f64 (infinite when the midpoint is zero and the radius is not).
+    pub fn rel_accuracy_bits(&self) -> f64 {
+        if self.rad.is_zero() {
+            return f64::INFINITY;
+        }
+        if self.mid.is_zero() {
+            return f64::NEG_INFINITY;
+        }
+        let (m, me) = self.mid.to_f64_exp();
+        let (r, re) = self.rad.to_f64_exp();
+        (m.abs().log2() + me as f64) - (r.log2() + re as f64)
+    }
+
+    /// Whether `rad <= 2^-prec |mid|`: the ball pins the value to `prec` bits
+    /// relative (exact zero included).
+    pub fn meets_rel(&self, prec: u32) -> bool {
+        if self.rad.is_zero() {
+            return true;
+        }
+        let mut bound = mag_abs_down(&self.mid);
+        bound >>= prec as i32;
+        self.rad <= bound
+    }
+
+    /// Whether `rad <= 2^-prec * scale`.
+    pub fn meets_abs(&self, prec: u32, scale: &Float) -> bool {
+        let mut bound = mag_abs_down(scale);
+        bound >>= prec as i32;
+        self.rad <= bound
+    }
+
+    /// The midpoint as an f64 (round to nearest).
+    pub fn to_f64(&self) -> f64 {
+        self.mid.to_f64()
+    }
+
+    /// The same ball with its midpoint rounded to `prec` bits.
+    pub fn set_prec(&self, prec: u32) -> Ball {
+        let mut mid = self.mid.clone();
+        let ord = mid.set_prec_round(prec, Round::Nearest);
+        let rad = add_up(&self.rad, &rounding_error(&mid, ord));
+        Ball { mid, rad }
+    }
+
+    /// Widen the radius by `extra` (rounded up).
+    pub fn add_error(&mut self, extra: &Float) {
+        self.rad = add_up(&self.rad, &mag_abs_up(extra));
+    }
+
+    // ----- arithmetic ---------------------------------------------------
+
+    fn out_prec(&self, other: &Ball) -> u32 {
+        self.prec().max(other.prec())
+    }
+
+    /// `self + other`.
+    pub fn add(&self, other: &Ball) -> Ball {
+        let (mid, ord) = Float::with_val_round(self.out_prec(other), &self.mid + &other.mid, Round::Nearest);
+        let rad = add_up(&add_up(&self.rad, &other.rad), &rounding_error(&mid, ord));
+        Ball { mid, rad }
+    }
+
+    /// `self - other`.
+    pub fn sub(&self, other: &Ball) -> Ball {
+        let (mid, ord) = Float::with_val_round(self.out_prec(other), &self.mid - &other.mid, Round::Nearest);
+        let rad = add_up(&add_up(&self.rad, &other.rad), &rounding_error(&mid, ord));
+        Ball { mid, rad }
+    }
+
+    /// `-self` (exact).
+    pub fn neg(&self) -> Ball {
+        Ball { mid: Float::with_val(self.prec(), -&self.mid), rad: self.rad.clone() }
+    }
+
+    /// `self * other`.
+    pub fn mul(&self, other: &Ball) -> Ball {
+        let (mid, ord) = Float::with_val_round(self.out_prec(other), &self.mid * &other.mid, Round::Nearest);
+        let mut rad = rounding_error(&mid, ord);
+        if !other.rad.is_zero() {
+            rad = add_up(&rad, &mul_up(&mag_abs_up(&self.mid), &other.rad));
+        }
+        if !self.rad.is_zero() {
+            rad = add_up(&rad, &mul_up(&mag_abs_up(&other.mid), &self.rad));
+            if !other.rad.is_zero() {
+                rad = add_up(&rad, &mul_up(&self.rad, &other.rad));
+            }
+        }
+        Ball { mid, rad }
+    }
+
+    /// `self * self`.
+    pub fn sqr(&self) -> Ball {
+        self.mul(self)
+    }
+
+    /// `self * n` for an integer `n`.
+    pub fn mul_i64(&self, n: i64) -> Ball {
+        let (mid, ord) = Float::with_val_round(self.prec(), &self.mid * n, Round::Nearest);
+        let rad = add_up(&mul_up(&self.rad, &mag_abs_up(&Float::with_val(64, n))), &rounding_error(&mid, ord));
+        Ball { mid, rad }
+    }
+
+    /// `self / n` for a nonzero integer `n`.
+    pub fn div_i64(&self, n: i64) -> Result<Ball> {
+        if n == 0 {
+            return Err(Error::DivisionByZero);
+        }
+        let (mid, ord) = Float::with_val_round(self.prec(), &self.mid / n, Round::Nearest);
+        let mut nd = Float::with_val(64, n);
+        nd.abs_mut();
+        let mut r = Float::new(MAG_PREC);
+        r.assign_round(&self.rad / &nd, Round::Up);
+        let rad = add_up(&r, &rounding_error(&mid, ord));
+        Ok(Ball { mid, rad })
+    }
+
+    /// `self + n` for an integer `n`.
+    pub fn add_i64(&self, n: i64) -> Ball {
+        let (mid, ord) = Float::with_val_round(self.prec(), &self.mid + n, Round::Nearest);
+        let rad = add_up(&self.rad, &rounding_error(&mid, ord));
+        Ball { mid, rad }
+    }
+
+    /// `self * 2^e` (exact).
+    pub fn mul_pow2(&self, e: i32) -> Ball {
+        let mut mid = self.mid.clone();
+        mid <<= e;
+        let mut rad = self.rad.clone();
+        rad <<= e;
+        Ball { mid, rad }
+    }
+
+    /// `self / other`; an error if `other` contains zero.
+    pub fn div(&self, other: &Ball) -> Result<Ball> {
+        let den_lo = other.abs_lower();
+        if den_lo.is_zero() {
+            return Err(Error::DivisionByZero);
+        }
+        let (mid, ord) = Float::with_val_round(self.out_prec(other), &self.mid / &other.mid, Round::Nearest);
+        let mut rad = rounding_error(&mid, ord);
+        if !self.rad.is_zero() || !other.rad.is_zero() {
+            // |a/b - ma/mb| <= (|ma| rb + |mb| ra) / (|mb| (|mb| - rb))
+            let num = add_up(&mul_up(&mag_abs_up(&self.mid), &other.rad), &mul_up(&mag_abs_up(&other.mid), &self.rad));
+            let mut den = Float::new(MAG_PREC);
+            den.assign_round(&mag_abs_down(&other.mid) * &den_lo, Round::Down);
+            if den.is_zero() {
+                return Err(Error::DivisionByZero);
+            }
+            let mut q = Float::new(MAG_PREC);
+            q.assign_round(&num / &den, Round::Up);
+            rad = add_up(&rad, &q);
+        }
+        Ok(Ball { mid, rad })
+    }
+
+    /// `1 / self`.
+    pub fn recip(&self) -> Result<Ball> {
+        Ball::one(self.prec()).div(self)
+    }
+
+    /// Applies a monotone function through its endpoints. `f` must round in the
+    /// given direction; `increasing` says which endpoint maps to which.
+    fn monotone<F>(&self, increasing: bool, f: F) -> Ball
+    where
+        F: Fn(&Float, Round) -> Float,
+    {
+        let p = self.prec();
+        if self.rad.is_zero() {
+            let lo = f(&self.mid, Round::Down);
+            let hi = f(&self.mid, Round::Up);
+            return Ball::hull(&lo, &hi, p);
+        }
+        let (a, b) = (self.lower(), self.upper());
+        let (lo, hi) = if increasing {
+            (f(&a, Round::Down), f(&b, Round::Up))
+        } else {
+            (f(&b, Round::Down), f(&a, Round::Up))
+        };
+        Ball::hull(&lo, &hi, p)
+    }
+
+    /// The smallest ball (at `prec` bits) containing `[lo, hi]`.
+    pub fn hull(lo: &Float, hi: &Float, prec: u32) -> Ball {
+        let (mid, _) = Float::with_val_round(prec, lo + hi, Round::Nearest);
+        let mid = mid / 2u32;
+        let mut r1 = Float::new(MAG_PREC);
+        r1.assign_round(hi - &mid, Round::Up);
+        let mut r2 = Float::new(MAG_PREC);
+        r2.assign_round(&mid - lo, Round::Up);
+        let rad = if r1 > r2 { r1 } else { r2 };
+        let rad = if rad.is_sign_negative() { mag_zero() } else { rad };
+        Ball { mid, rad }
+    }
+
+    /// `sqrt(self)`; an error if the ball reaches below zero.
+    pub fn sqrt(&self) -> Result<Ball> {
+        if self.lower() < 0 {
+            return Err(Error::Domain { what: "sqrt of a negative number".into() });
+        }
+        Ok(self.monotone(true, |x, r| {
+            let mut y = Float::new(x.prec());
+            y.assign_round(x.sqrt_ref(), r);
+            y
+        }))
+    }
+
+    /// `exp(self)`.
+    pub fn exp(&self) -> Result<Ball> {
+        let b = self.monotone(true, |x, r| {
+            let mut y = Float::new(x.prec());
+            y.assign_round(x.exp_ref(), r);
+            y
+        });
+        if !b.is_finite() {
+            return Err(Error::Overflow { what: "exp".into() });
+        }
+        Ok(b)
+    }
+
+    /// `ln(self)`; an error unless the ball is positive.
+    pub fn ln(&self) -> Result<Ball> {
+        if !self.is_positive() {
+            return Err(Error::Domain { what: "logarithm of a non-positive number".into() });
+        }
+        Ok(self.monotone(true, |x, r| {
+            let mut y = Float::new(x.prec());
+            y.assign_round(x.ln_ref(), r);
+            y
+        }))
+    }
+
+    /// `acosh(self)` for `self >= 1`.
+    pub fn acosh(&self) -> Result<Ball> {
+        if self.lower() < 1 {
+            return Err(Error::Domain { what: "acosh of a number below 1".into() });
+        }
+        Ok(self.monotone(true, |x, r| {
+            let mut y = Float::new(x.prec());
+            y.assign_round(x.acosh_ref(), r);
+            y
+        }))
+    }
+
+    /// `(sin(self), cos(self))`. Both are 1-Lipschitz, so the input radius
+    /// carries over unchanged; MPFR's correctly rounded values add one ulp each.
+    pub fn sin_cos(&self) -> (Ball, Ball) {
+        let mut s = self.mid.clone();
+        let mut c = Float::new(self.prec());
+        let (os, oc) = s.sin_cos_round(&mut c, Round::Nearest);
+        let rs = add_up(&self.rad, &rounding_error(&s, os));
+        let rc = add_up(&self.rad, &rounding_error(&c, oc));
+        (Ball { mid: s, rad: rs }, Ball { mid: c, rad: rc })
+    }
+
+    /// `self^e` for a real exponent, `self > 0`: `exp(e ln self)`.
+    pub fn pow(&self, e: &Ball) -> Result<Ball> {
+        if self.is_exact() && self.mid == 1 {
+            return Ok(Ball::one(self.prec()));
+        }
+        self.ln()?.mul(e).exp()
+    }
+
+    /// `self^n` for an integer `n >= 0` (binary powering).
+    pub fn pow_u64(&self, mut n: u64) -> Ball {
+        let mut result = Ball::one(self.prec());
+        let mut base = self.clone();
+        while n > 0 {
+            if n & 1 == 1 {
+                result = result.mul(&base);
+            }
+            n >>= 1;
+            if n > 0 {
+                base = base.sqr();
+            }
+        }
+        result
+    }
+
+    /// Requires an exact point, or returns an error naming the function.
+    fn exact_point(&self, what: &'static str) -> Result<()> {
+        if !self.is_exact() {
+            return Err(Error::Internal { what: format!("{what} needs an exact argument") });
+        }
+        Ok(())
+    }
+
+    /// Applies a correctly rounded MPFR function at an exact point: the result is
+    /// off by at most one ulp.
+    fn correctly_rounded<F>(&self, f: F) -> Ball
+    where
+        F: Fn(&Float, &mut Float) -> Ordering,
+    {
+        let mut y = Float::new(self.prec());
+        let ord = f(&self.mid, &mut y);
+        let rad = rounding_error(&y, ord);
+        Ball { mid: y, rad }
+    }
+
+    /// `Gamma(x)` at an exact point that is not a pole.
+    pub fn gamma(&self) -> Result<Ball> {
+        self.exact_point("gamma")?;
+        if is_nonpositive_integer(&self.mid) {
+            return Err(Error::Domain { what: "gamma at a pole (non-positive integer)".into() });
+        }
+        let b = self.correctly_rounded(|x, y| y.assign_round(x.gamma_ref(), Round::Nearest));
+        if !b.is_finite() {
+            return Err(Error::Overflow { what: "gamma".into() });
+        }
+        Ok(b)
+    }
+
+    /// `1/Gamma(x)` at an exact point (zero at the poles).
+    pub fn rgamma(&self) -> Result<Ball> {
+        self.exact_point("rgamma")?;
+        if is_nonpositive_integer(&self.mid) {
+            return Ok(Ball::zero(self.prec()));
+        }
+        self.gamma()?.recip()
+    }
+
+    /// `psi(x)` (digamma) at an exact point that is not a pole.
+    pub fn digamma(&self) -> Result<Ball> {
+        self.exact_point("digamma")?;
+        if is_nonpositive_integer(&self.mid) {
+            return Err(Error::Domain { what: "digamma at a pole (non-positive integer)".into() });
+        }
+        Ok(self.correctly_rounded(|x, y| y.assign_round(x.digamma_ref(), Round::Nearest)))
+    }
+
+    /// Whether the ball is exactly a non-positive integer.
+    pub fn is_exact_nonpositive_integer(&self) -> bool {
+        self.is_exact() && is_nonpositive_integer(&self.mid)
+    }
+
+    /// Decimal midpoint with `digits` significant digits and a decimal radius that
+    /// is an upper bound of the true radius plus the decimal conversion error of
+    /// the midpoint.
+    pub fn to_decimal(&self, digits: usize) -> (String, String) {
+        let mid_s = self.mid.to_string_radix(10, Some(digits.max(1)));
+        // The printed midpoint differs from `mid` by the decimal rounding; account
+        // for it so that the printed ball still encloses.
+        let printed = Float::with_val(self.prec() + 64, Float::parse(&mid_s).map(|p| Float::with_val(self.prec() + 64, p)).unwrap_or_else(|_| self.mid.clone()));
+        let mut diff = Float::new(MAG_PREC);
+        diff.assign_round(&printed - &self.mid, Round::Up);
+        let mut diff2 = Float::new(MAG_PREC);
+        diff2.assign_round(&printed - &self.mid, Round::Down);
+        let d = {
+            let a = diff.abs();
+            let b = diff2.abs();
+            if a > b { a } else { b }
+        };
+        let rad = add_up(&self.rad, &d);
+        let rad_s = decimal_upper(&rad);
+        (mid_s, rad_s)
+    }
+}
+
+/// A short decimal string that is `>= x` (x >= 0).
+pub fn decimal_upper(x: &Float) -> String {
+    if x.is_zero() {
+        return "0".to_string();
+    }
+    let s = x.to_string_radix_round(10, Some(6), Round::Up);
+    s
+}
+
+/// Whether an exact float is an integer `<= 0`.
+pub fn is_nonpositive_integer(x: &Float) -> bool {
+    x.is_integer() && *x <= 0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn add_mul_enclose() {
+        let p = 64;
+        let a = Ball::from_ratio(1, 3, p);
+        let b = Ball::from_ratio(2, 7, p);
+        let s = a.add(&b).mul(&a).sub(&b);
+        // (1/3 + 2/7) * 1/3 - 2/7 = 13/63 - 18/63 = -5/63
+        let exact = Float::with_val(256, rug::Rational::from((-5, 63)));
+        assert!(s.contains(&exact), "{s:?}");
+        assert!(s.meets_rel(p - 8));
+    }
+
+    #[test]
+    fn div_and_functions_enclose() {
+        let p = 80;
+        let x = Ball::from_ratio(5, 4, p);
+        let y = x.ln().unwrap().exp().unwrap();
+        assert!(y.contains(&Float::with_val(200, 1.25)));
+        let z = x.sqrt().unwrap().sqr();
+        assert!(z.contains(&Float::with_val(200, 1.25)));
+        let q = Ball::one(p).div(&Ball::from_i64(3, p)).unwrap().mul_i64(3);
+        assert!(q.contains(&Float::with_val(200, 1)));
+        assert!(Ball::zero(p).recip().is_err());
+    }
+
+    #[test]
+    fn gamma_digamma_enclose() {
+        let p = 100;
+        let g = Ball::from_ratio(1, 2, p).gamma().unwrap();
+        let sqrt_pi = Float::with_val(300, Constant::Pi).sqrt();
+        assert!(g.contains(&sqrt_pi));
+        let d = Ball::from_i64(1, p).digamma().unwrap();
+        let euler = -Float::with_val(300, Constant::Euler);
+        assert!(d.contains(&euler));
+        assert!(Ball::from_i64(-2, p).gamma().is_err());
+        assert!(Ball::from_i64(-2, p).rgamma().unwrap().mid().is_zero());
+    }
+
+    #[test]
+    fn decimal_output_encloses() {
+        let b = Ball::pi(200);
+        let (m, r) = b.to_decimal(20);
+        let mid = Float::with_val(300, Float::parse(&m).unwrap());
+        let rad = Float::with_val(300, Float::parse(&r).unwrap());
+        let pi = Float::with_val(300, Constant::Pi);
+        assert!(Float::with_val(300, &pi - &mid).abs() <= rad);
+    }
+}

@@ -1,0 +1,104 @@
+//! The crate's error type.
+//!
+//! Every public function that can fail on user input returns [`Result`]. No
+//! public function panics on any input: out-of-domain arguments, non-finite
+//! numbers and precision requests past the cap all come back as an [`Error`]
+//! whose message says what to change.
+
+use std::fmt;
+
+/// Everything that can go wrong in `maugis`.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum Error {
+    /// An argument is NaN or infinite.
+    NonFinite {
+        /// Which argument.
+        what: &'static str,
+    },
+    /// An argument lies outside the function's documented domain.
+    Domain {
+        /// What is wrong and what is allowed.
+        what: String,
+    },
+    /// The requested precision is below 2 bits or above [`crate::MAX_PREC`].
+    Precision {
+        /// The precision that was asked for.
+        requested: u64,
+    },
+    /// The Ziv loop reached [`crate::MAX_WORKING_PREC`] without certifying the
+    /// requested accuracy (extreme cancellation or a value too close to zero).
+    PrecisionExhausted {
+        /// The function.
+        function: &'static str,
+        /// The working precision reached.
+        working_prec: u32,
+    },
+    /// A series needed more terms than its cap.
+    NoConvergence {
+        /// The function.
+        function: &'static str,
+        /// Terms summed.
+        terms: u64,
+    },
+    /// A divisor ball contained zero.
+    DivisionByZero,
+    /// A value overflowed the exponent range.
+    Overflow {
+        /// Where.
+        what: String,
+    },
+    /// An internal invariant failed. This is a bug; please report it.
+    Internal {
+        /// What failed.
+        what: String,
+    },
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Error::NonFinite { what } => write!(f, "{what} must be a finite number (got NaN or infinity)"),
+            Error::Domain { what } => write!(f, "argument out of domain: {what}"),
+            Error::Precision { requested } => write!(
+                f,
+                "precision {requested} bits is out of range: use 2 ..= {} bits",
+                crate::MAX_PREC
+            ),
+            Error::PrecisionExhausted { function, working_prec } => write!(
+                f,
+                "{function}: could not certify the requested accuracy below the working-precision cap \
+                 ({working_prec} bits); ask for fewer bits or move the argument away from the zero/singularity"
+            ),
+            Error::NoConvergence { function, terms } => {
+                write!(f, "{function}: series did not converge within {terms} terms")
+            }
+            Error::DivisionByZero => write!(f, "division by a ball containing zero"),
+            Error::Overflow { what } => write!(f, "overflow in {what}: the result exceeds the exponent range"),
+            Error::Internal { what } => write!(f, "internal error (please report): {what}"),
+        }
+    }
+}
+
+impl std::error::Error for Error {}
+
+/// `Result` with [`Error`].
+pub type Result<T> = std::result::Result<T, Error>;
+
+/// Checks that an f64 argument is finite.
+pub fn finite(x: f64, what: &'static str) -> Result<f64> {
+    if x.is_finite() {
+        Ok(x)
+    } else {
+        Err(Error::NonFinite { what })
+    }
+}
+
+/// Checks a requested output precision.
+pub fn check_prec(prec: u32) -> Result<()> {
+    if prec < 2 || prec > crate::MAX_PREC {
+        Err(Error::Precision { requested: prec as u64 })
+    } else {
+        Ok(())
+    }
+}

@@ -1,0 +1,57 @@
+//! # maugis
+//!
+//! Certified high-precision special functions and quadrature for the wavy
+//! Maugis line-contact model ("Instabilities and cavitation in cylindrical
+//! wavy line contact: A Maugis analysis").
+//!
+//! The crate has three layers:
+//!
+//! * [`ball`]: ball arithmetic over MPFR (`rug::Float` midpoint, radius rounded
+//!   upward). Everything certified is built from it.
+//! * [`special`]: one module per function, arbitrary precision and f64 side by
+//!   side: [`bessel_j`](special::bessel_j), [`hyp1f2`](special::hyp1f2),
+//!   [`hyp2f1`](special::hyp2f1), the [`pFq` core](special::pfq) and the Eq. 12
+//!   Meijer-G family [`meijer_g_k`](special::meijer_g).
+//! * the `maugis` command line (`src/main.rs`), whose `eval` subcommand is a
+//!   JSON Lines calculator over these functions.
+//!
+//! ## Two kinds of answers
+//!
+//! * `*_mp(.., prec)` returns a [`Ball`]: a midpoint and a radius such that the
+//!   exact value of the function at the given binary inputs is provably inside,
+//!   and `rad <= 2^-prec |mid|`. Working precision rises automatically (Ziv)
+//!   until that holds, up to [`MAX_WORKING_PREC`] bits.
+//! * the plain functions return an `f64` within a documented tolerance (see
+//!   `docs/special-functions.md`), falling back to the MP path where the fast f64
+//!   algorithm cannot promise it.
+//!
+//! ## Example
+//!
+//! ```
+//! use maugis::special::bessel_j::{bessel_j, bessel_j_mp};
+//! use rug::Float;
+//!
+//! // f64
+//! let j = bessel_j(5, 2.5).unwrap();
+//! assert!((j - 0.0195016251188).abs() < 1e-12);
+//!
+//! // certified, 200 bits
+//! let ball = bessel_j_mp(5, &Float::with_val(53, 2.5), 200).unwrap();
+//! assert!(ball.meets_rel(200));
+//! ```
+//!
+//! No public function panics: bad input returns an [`Error`].
+
+pub mod ball;
+pub mod error;
+pub mod special;
+
+pub use ball::Ball;
+pub use error::{Error, Result};
+
+/// Largest output precision (bits) a caller may request.
+pub const MAX_PREC: u32 = 1 << 16;
+
+/// Largest working precision (bits) the Ziv loops may reach before giving up
+/// with [`Error::PrecisionExhausted`].
+pub const MAX_WORKING_PREC: u32 = 1 << 20;

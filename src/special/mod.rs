@@ -1,0 +1,141 @@
+//! Special functions, one file per function, arbitrary precision and f64 side by side.
+//!
+//! | function | MP (certified ball) | f64 |
+//! |---|---|---|
+//! | [`bessel_j`](bessel_j::bessel_j) | [`bessel_j_mp`](bessel_j::bessel_j_mp) | power series / MP fallback |
+//! | [`hyp_pfq`](pfq::hyp_pfq) | [`hyp_pfq_mp`](pfq::hyp_pfq_mp) | series with a-priori error estimate / MP fallback |
+//! | [`hyp1f2`](hyp1f2::hyp1f2) | [`hyp1f2_mp`](hyp1f2::hyp1f2_mp) | pFq core |
+//! | [`hyp2f1`](hyp2f1::hyp2f1) | [`hyp2f1_mp`](hyp2f1::hyp2f1_mp) | transformations + pFq core |
+//! | [`meijer_g_k`](meijer_g::meijer_g_k) | [`meijer_g_k_mp`](meijer_g::meijer_g_k_mp) | closed form / MP fallback |
+//!
+//! # Precision policy (Ziv)
+//!
+//! Every `*_mp` function takes an output precision `prec` (bits) and returns a
+//! [`Ball`] that contains the exact value of the function at the given binary
+//! inputs, with `rad <= 2^-prec |mid|` (an exact zero is returned as `[0 ± 0]`).
+//! It evaluates at a working precision `prec + guard`, checks the achieved
+//! relative accuracy, and when it falls short raises the guard by the number of
+//! bits the evaluation lost (plus margin), at least doubling it, until
+//! [`MAX_WORKING_PREC`] is reached; then it returns
+//! [`Error::PrecisionExhausted`]. It never returns a wide ball silently.
+//!
+//! # f64 policy
+//!
+//! Every f64 function first runs a fast f64 algorithm that also produces a
+//! running error estimate (a-priori rounding analysis plus a tail bound). If
+//! the estimate does not meet the function's documented tolerance (for
+//! example because a sum of |terms| reveals cancellation), it falls back to the
+//! MP path at [`F64_FALLBACK_PREC`] bits and rounds the certified midpoint,
+//! which is then within one ulp.
+
+pub mod bessel_j;
+pub mod hyp1f2;
+pub mod hyp2f1;
+pub mod meijer_g;
+pub mod pfq;
+
+use rug::Float;
+
+use crate::ball::Ball;
+use crate::error::{check_prec, Error, Result};
+use crate::{MAX_PREC, MAX_WORKING_PREC};
+
+/// Output precision of the MP fallback used by the f64 functions: 11 bits more
+/// than a double, so the rounded midpoint is within `0.5 + 2^-11` ulp.
+pub const F64_FALLBACK_PREC: u32 = 64;
+
+/// Initial guard bits of the Ziv loop when a function gives no better estimate.
+pub const DEFAULT_GUARD_BITS: u32 = 24;
+
+/// Runs `eval(working_prec)` with rising working precision until the ball meets
+/// `rad <= 2^-prec |mid|`.
+///
+/// `guard` is the first guess of the extra bits needed (for example the
+/// cancellation estimate of a series). The loop adds at least the bits the
+/// previous attempt lost and at least doubles the guard each round.
+pub fn ziv<F>(function: &'static str, prec: u32, guard: u32, mut eval: F) -> Result<Ball>
+where
+    F: FnMut(u32) -> Result<Ball>,
+{
+    check_prec(prec)?;
+    debug_assert!(prec <= MAX_PREC);
+    let mut guard = guard.max(8);
+    loop {
+        let wp = prec.saturating_add(guard);
+        if wp > MAX_WORKING_PREC {
+            return Err(Error::PrecisionExhausted { function, working_prec: MAX_WORKING_PREC });
+        }
+        let b = eval(wp)?;
+        if b.meets_rel(prec) {
+            return Ok(b);
+        }
+        // Bits achieved vs. bits wanted: raise by the shortfall plus margin.
+        let achieved = b.rel_accuracy_bits();
+        let shortfall = if achieved.is_finite() { (prec as f64 - achieved).max(0.0) } else { wp as f64 };
+        let next = (guard as f64 + shortfall + 16.0).max(2.0 * guard as f64);
+        guard = if next >= (MAX_WORKING_PREC - prec) as f64 {
+            // One last try at the cap.
+            if wp == MAX_WORKING_PREC {
+                return Err(Error::PrecisionExhausted { function, working_prec: wp });
+            }
+            MAX_WORKING_PREC - prec
+        } else {
+            next as u32
+        };
+    }
+}
+
+/// Runs the MP path for an f64 function and rounds the certified midpoint.
+pub fn f64_from_mp<F>(function: &'static str, guard: u32, eval: F) -> Result<f64>
+where
+    F: FnMut(u32) -> Result<Ball>,
+{
+    let b = ziv(function, F64_FALLBACK_PREC, guard, eval)?;
+    let v = b.to_f64();
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(Error::Overflow { what: format!("{function} (result exceeds the f64 range)") })
+    }
+}
+
+/// An exact binary float from an f64 (53 bits hold every double exactly).
+pub fn exact(x: f64) -> Float {
+    Float::with_val(53, x)
+}
+
+/// Checks a Float argument for finiteness.
+pub fn check_finite(x: &Float, what: &'static str) -> Result<()> {
+    if x.is_finite() {
+        Ok(())
+    } else {
+        Err(Error::NonFinite { what })
+    }
+}
+
+/// The exact sum `a + b` of two binary floats (enough bits that nothing rounds).
+pub fn exact_add(a: &Float, b: &Float) -> Float {
+    Float::with_val(exact_sum_prec(a, b), a + b)
+}
+
+/// The exact difference `a - b` of two binary floats.
+pub fn exact_sub(a: &Float, b: &Float) -> Float {
+    Float::with_val(exact_sum_prec(a, b), a - b)
+}
+
+/// Bits that hold `a ± b` exactly: the span from the lowest set bit to the highest.
+fn exact_sum_prec(a: &Float, b: &Float) -> u32 {
+    match (a.get_exp(), b.get_exp()) {
+        (Some(ea), Some(eb)) => {
+            let lo = (ea - a.prec() as i32).min(eb - b.prec() as i32);
+            let hi = ea.max(eb) + 1;
+            ((hi - lo).max(2) as u32).min(rug::float::prec_max())
+        }
+        _ => a.prec().max(b.prec()).max(2),
+    }
+}
+
+/// Whether an exact float is an integer `<= 0`.
+pub fn is_nonpositive_integer(x: &Float) -> bool {
+    crate::ball::is_nonpositive_integer(x)
+}
