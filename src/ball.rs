@@ -539,6 +539,32 @@ impl Ball {
         (Ball { mid: s, rad: rs }, Ball { mid: c, rad: rc })
     }
 
+    /// `ln(1 + self)` for `self > -1` (accurate for small arguments).
+    pub fn ln_1p(&self) -> Result<Ball> {
+        if self.lower() <= -1 {
+            return Err(Error::Domain { what: "ln(1+x) needs x > -1".into() });
+        }
+        Ok(self.monotone(true, |x, r| {
+            let mut y = Float::new(x.prec());
+            y.assign_round(x.ln_1p_ref(), r);
+            y
+        }))
+    }
+
+    /// `asinh(self)` (monotone, any real argument).
+    pub fn asinh(&self) -> Ball {
+        self.monotone(true, |x, r| {
+            let mut y = Float::new(x.prec());
+            y.assign_round(x.asinh_ref(), r);
+            y
+        })
+    }
+
+    /// `cos(self)`.
+    pub fn cos(&self) -> Ball {
+        self.sin_cos().1
+    }
+
     /// `self^e` for a real exponent, `self > 0`: `exp(e ln self)`.
     pub fn pow(&self, e: &Ball) -> Result<Ball> {
         if self.is_exact() && self.mid == 1 {

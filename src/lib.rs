@@ -43,7 +43,9 @@
 //! No public function panics: bad input returns an [`Error`].
 
 pub mod ball;
+pub mod contact;
 pub mod error;
+pub mod quad;
 pub mod special;
 
 pub use ball::Ball;

@@ -185,6 +185,12 @@ fn bessel_j_positive(n: u64, x: &Float, wp: u32) -> Result<Ball> {
 /// Certified `J_n(x)` with `rad <= 2^-prec |mid|`.
 pub fn bessel_j_mp(n: i64, x: &Float, prec: u32) -> Result<Ball> {
     crate::error::check_prec(prec)?;
+    bessel_j_ball(n, x, prec)
+}
+
+/// [`bessel_j_mp`] without the user-precision cap (internal callers run at
+/// working precisions up to [`crate::MAX_WORKING_PREC`]).
+pub(crate) fn bessel_j_ball(n: i64, x: &Float, prec: u32) -> Result<Ball> {
     validate(n, x)?;
     if x.is_zero() {
         return Ok(if n == 0 { Ball::one(prec) } else { Ball::zero(prec) });
@@ -207,6 +213,98 @@ pub fn bessel_j(n: i64, x: f64) -> Result<f64> {
     let guard = initial_guard(m, ax.to_f64(), crate::special::F64_FALLBACK_PREC);
     let v = f64_from_mp("bessel_j", guard, |wp| bessel_j_positive(m, &ax, wp))?;
     Ok(if negate { -v } else { v })
+}
+
+/// Certified `J_0(x), ..., J_nmax(x)` at working precision `wp` (`x > 0`).
+///
+/// `J_nmax` and `J_{nmax+1}` are certified by [`bessel_j_mp`]; the rest follows
+/// from the three-term recurrence run downward, `J_{n-1} = (2n/x) J_n - J_{n+1}`
+/// [DLMF 10.6.1], in ball arithmetic, so every entry is certified. Downward is the
+/// stable direction for `n > x` (J_n is the minimal solution there); below `x`
+/// the recurrence is neutral and the radii grow only mildly.
+pub fn bessel_j_sequence_mp(nmax: u64, x: &Float, wp: u32) -> Result<Vec<Ball>> {
+    check_finite(x, "x")?;
+    if *x <= 0 {
+        return Err(Error::Domain { what: "bessel_j_sequence_mp needs x > 0".into() });
+    }
+    let top = i64::try_from(nmax).map_err(|_| Error::Domain { what: "order too large".into() })?;
+    let upper = bessel_j_ball(top + 1, x, wp)?;
+    let lower = bessel_j_ball(top, x, wp)?;
+    let xb = Ball::from_float(x, wp);
+    let mut seq = vec![Ball::zero(wp); nmax as usize + 1];
+    seq[nmax as usize] = lower.clone();
+    let mut next = upper;
+    let mut cur = lower;
+    for n in (1..=nmax).rev() {
+        let prev = cur.mul_i64(2 * n as i64).div(&xb)?.sub(&next);
+        seq[n as usize - 1] = prev.clone();
+        next = cur;
+        cur = prev;
+    }
+    Ok(seq)
+}
+
+/// `J_0(x), ..., J_nmax(x)` in f64 by Miller's backward recurrence, normalised
+/// with `J_0 + 2 sum_k J_{2k} = 1` [DLMF 10.12.4 at theta = 0].
+///
+/// The recurrence starts at an even order `M > max(nmax, |x|)` far enough above
+/// `|x|` that the neglected dominant solution is below `2^-60` relative
+/// ([`miller_start`]). Absolute error is a few `eps` times `max_n |J_n(x)| <= 1`;
+/// an estimate, not a bound. Returns an empty vector for non-finite `x`.
+pub fn bessel_j_sequence(nmax: usize, x: f64) -> Vec<f64> {
+    if !x.is_finite() {
+        return Vec::new();
+    }
+    let mut out = vec![0.0; nmax + 1];
+    if x == 0.0 {
+        out[0] = 1.0;
+        return out;
+    }
+    let ax = x.abs();
+    let m = miller_start(nmax, ax);
+    let mut j_next = 0.0f64; // J_{m+1}
+    let mut j_cur = 1e-280f64; // J_m (arbitrary scale)
+    let mut norm = if m % 2 == 0 { 2.0 * j_cur } else { 0.0 };
+    let mut scale_track = vec![0.0; nmax + 1];
+    if m <= nmax {
+        scale_track[m] = j_cur;
+    }
+    for n in (1..=m).rev() {
+        let j_prev = (2.0 * n as f64 / ax) * j_cur - j_next;
+        j_next = j_cur;
+        j_cur = j_prev;
+        let k = n - 1;
+        if k <= nmax {
+            scale_track[k] = j_cur;
+        }
+        if k % 2 == 0 {
+            norm += if k == 0 { j_cur } else { 2.0 * j_cur };
+        }
+        // Rescale to avoid overflow.
+        if j_cur.abs() > 1e250 {
+            j_cur *= 1e-250;
+            j_next *= 1e-250;
+            norm *= 1e-250;
+            for v in scale_track.iter_mut().skip(k) {
+                *v *= 1e-250;
+            }
+        }
+    }
+    for n in 0..=nmax {
+        let v = scale_track[n] / norm;
+        out[n] = if x < 0.0 && n % 2 == 1 { -v } else { v };
+    }
+    out
+}
+
+/// Starting order of Miller's recurrence: even, above `nmax` and `x` by a margin
+/// that grows like `sqrt(x)` (the transition-region width) plus a constant for
+/// 60 bits of decay [Numerical Recipes 6.5, "IACC" rule, with a wider margin].
+fn miller_start(nmax: usize, x: f64) -> usize {
+    let base = (nmax as f64).max(x);
+    let m = base + 40.0 + 8.0 * base.sqrt();
+    let m = m as usize + 2;
+    m + (m % 2)
 }
 
 #[cfg(test)]
@@ -238,6 +336,21 @@ mod tests {
             let h = bessel_j_hankel(n, &xf, wp).unwrap().expect("hankel applies");
             let s = bessel_j_series(n, &xf, wp + 200).unwrap();
             assert!(h.overlaps(&s), "n={n} x={x}: {h:?} vs {s:?}");
+        }
+    }
+
+    #[test]
+    fn sequences_agree_with_single_values() {
+        for &x in &[0.5, 9.75, 42.0, 75.25] {
+            let nmax = 60;
+            let seq = bessel_j_sequence_mp(nmax, &exact(x), 128).unwrap();
+            let f = bessel_j_sequence(nmax as usize, x);
+            for n in [0u64, 1, 2, 17, 40, 60] {
+                let single = bessel_j_mp(n as i64, &exact(x), 128).unwrap();
+                assert!(seq[n as usize].overlaps(&single), "x={x} n={n}");
+                let v = single.to_f64();
+                assert!((f[n as usize] - v).abs() <= 8.0 * f64::EPSILON, "x={x} n={n}: {} vs {v}", f[n as usize]);
+            }
         }
     }
 

@@ -142,7 +142,13 @@ fn bracket_at_one(k: u32, wp: u32) -> Result<Ball> {
 
 /// `G(k, y)` by the direct series at working precision `wp`.
 pub fn meijer_g_k_direct(k: u32, y: &Float, wp: u32) -> Result<Ball> {
-    let yb = Ball::from_float(y, wp);
+    meijer_g_k_direct_ball(k, &Ball::from_float(y, wp), wp)
+}
+
+/// [`meijer_g_k_direct`] for an argument known only as a ball (`0 < y < 1`
+/// over the whole ball): every operation is a ball operation, so the result
+/// encloses `G(k, y)` for every `y` in the ball.
+pub fn meijer_g_k_direct_ball(k: u32, yb: &Ball, wp: u32) -> Result<Ball> {
     let kb = Ball::from_i64(k as i64, wp);
     let b = kb.add(&Ball::from_ratio(1, 2, wp)); // k + 1/2
     let c = kb.add_i64(2); // k + 2
@@ -150,16 +156,22 @@ pub fn meijer_g_k_direct(k: u32, y: &Float, wp: u32) -> Result<Ball> {
     let f = pfq_series(
         &[Ball::one(wp), Ball::one(wp), b.add_i64(1)],
         &[Ball::from_i64(2, wp), c.add_i64(1)],
-        &yb,
+        yb,
         wp,
     )?
     .sum;
-    let s = b.mul(&yb).div(&c)?.mul(&f);
+    let s = b.mul(yb).div(&c)?.mul(&f);
+    let psi_diff = psi_difference(k, wp)?;
+    let bracket = yb.ln()?.neg().sub(&s).add(&psi_diff).mul_pow2(-1);
+    Ok(c_k(k, wp)?.mul(&bracket))
+}
+
+/// `psi(k+2) - psi(k+1/2)` (MPFR digamma, correctly rounded, at exact points).
+fn psi_difference(k: u32, wp: u32) -> Result<Ball> {
     let kf = Float::with_val(64, k);
     let psi_c = Ball::from_float(&Float::with_val(64, &kf + 2u32), wp).digamma()?;
     let psi_b = Ball::from_float(&Float::with_val(64, &kf + 0.5), wp).digamma()?;
-    let bracket = yb.ln()?.neg().sub(&s).add(&psi_c.sub(&psi_b)).mul_pow2(-1);
-    Ok(c_k(k, wp)?.mul(&bracket))
+    Ok(psi_c.sub(&psi_b))
 }
 
 /// Tail of the `I1`/`I2` sums is below this fraction of the accumulated scale.
@@ -174,9 +186,19 @@ pub fn meijer_g_k_near_one(k: u32, y: &Float, wp: u32) -> Result<Ball> {
     if *y < 0.5 {
         return Err(Error::Domain { what: "the near-one expansion needs y >= 1/2".into() });
     }
-    // w = 1 - y exactly (y has at most 53.. bits and is in [1/2, 1]).
+    // w = 1 - y exactly.
     let w_exact = exact_sub(&Float::with_val(2, 1), y);
-    let w = Ball::from_float(&w_exact, wp);
+    meijer_g_k_near_one_ball(k, &Ball::from_float(&w_exact, wp), wp)
+}
+
+/// [`meijer_g_k_near_one`] for `w = 1 - y` known only as a ball with
+/// `0 <= w <= 1/2` (a lower end below zero is clipped: the true `w` is `>= 0`).
+pub fn meijer_g_k_near_one_ball(k: u32, w: &Ball, wp: u32) -> Result<Ball> {
+    let w = if w.lower() < 0 { Ball::hull(&Float::new(wp), &w.upper(), wp) } else { w.clone() };
+    if w.upper() > 0.5 {
+        return Err(Error::Domain { what: "the near-one expansion needs 1 - y <= 1/2".into() });
+    }
+    let kw = (k as f64) * w.upper().to_f64();
     let kk = k as i64;
     let half = Ball::from_ratio(1, 2, wp);
     let kb = Ball::from_i64(kk, wp);
@@ -198,7 +220,7 @@ pub fn meijer_g_k_near_one(k: u32, y: &Float, wp: u32) -> Result<Ball> {
         wpow = wpow.mul(&w);
         j += 1;
         // bound: tail from index j <= r_j w^{j+1} / (1 - rho), rho = w (k+1/2+j)/(1/2+j)
-        if (j as f64) > (kk as f64) * w_exact.to_f64() {
+        if (j as f64) > kw {
             let rho = w.mul(&k_half.add_i64(j as i64)).div(&half.add_i64(j as i64))?;
             let rho_up = rho.upper();
             if rho_up < 1 {
@@ -228,7 +250,7 @@ pub fn meijer_g_k_near_one(k: u32, y: &Float, wp: u32) -> Result<Ball> {
         cj = cj.mul(&kb.add_i64(2 + j as i64)).div_i64(j as i64 + 1)?;
         wj = wj.mul(&w);
         j += 1;
-        if (j as f64) > (kk as f64) * w_exact.to_f64() {
+        if (j as f64) > kw {
             let rho = w.mul(&kb.add_i64(2 + j as i64)).div_i64(j as i64 + 1)?;
             let rho_up = rho.upper();
             if rho_up < 1 {

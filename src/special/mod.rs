@@ -37,8 +37,8 @@ pub mod pfq;
 use rug::Float;
 
 use crate::ball::Ball;
-use crate::error::{check_prec, Error, Result};
-use crate::{MAX_PREC, MAX_WORKING_PREC};
+use crate::error::{Error, Result};
+use crate::MAX_WORKING_PREC;
 
 /// Output precision of the MP fallback used by the f64 functions: 11 bits more
 /// than a double, so the rounded midpoint is within `0.5 + 2^-11` ulp.
@@ -53,35 +53,44 @@ pub const DEFAULT_GUARD_BITS: u32 = 24;
 /// `guard` is the first guess of the extra bits needed (for example the
 /// cancellation estimate of a series). The loop adds at least the bits the
 /// previous attempt lost and at least doubles the guard each round.
-pub fn ziv<F>(function: &'static str, prec: u32, guard: u32, mut eval: F) -> Result<Ball>
+///
+/// This is the internal driver: it accepts any `prec` up to
+/// [`MAX_WORKING_PREC`]; public functions check the user's precision with
+/// [`check_prec`] first.
+pub fn ziv<F>(function: &'static str, prec: u32, guard: u32, eval: F) -> Result<Ball>
 where
     F: FnMut(u32) -> Result<Ball>,
 {
-    check_prec(prec)?;
-    debug_assert!(prec <= MAX_PREC);
+    ziv_with_floor(function, prec, guard, None, eval)
+}
+
+/// [`ziv`] with an absolute floor: also accepts `rad <= 2^-prec * floor`.
+///
+/// Used where the function has a natural scale and may vanish at exact inputs
+/// (for example `u_w(a) = A (1 - cos(2 pi a/zeta))` is exactly zero when `a/zeta`
+/// is an integer): the accuracy promise there is relative to `max(|value|, floor)`.
+pub fn ziv_with_floor<F>(function: &'static str, prec: u32, guard: u32, floor: Option<&Float>, mut eval: F) -> Result<Ball>
+where
+    F: FnMut(u32) -> Result<Ball>,
+{
+    if !(2..=MAX_WORKING_PREC).contains(&prec) {
+        return Err(Error::Precision { requested: prec as u64 });
+    }
     let mut guard = guard.max(8);
     loop {
-        let wp = prec.saturating_add(guard);
-        if wp > MAX_WORKING_PREC {
-            return Err(Error::PrecisionExhausted { function, working_prec: MAX_WORKING_PREC });
-        }
+        let wp = prec.saturating_add(guard).min(MAX_WORKING_PREC);
         let b = eval(wp)?;
-        if b.meets_rel(prec) {
+        if b.meets_rel(prec) || floor.is_some_and(|f| !f.is_zero() && b.meets_abs(prec, f)) {
             return Ok(b);
+        }
+        if wp >= MAX_WORKING_PREC {
+            return Err(Error::PrecisionExhausted { function, working_prec: wp });
         }
         // Bits achieved vs. bits wanted: raise by the shortfall plus margin.
         let achieved = b.rel_accuracy_bits();
         let shortfall = if achieved.is_finite() { (prec as f64 - achieved).max(0.0) } else { wp as f64 };
         let next = (guard as f64 + shortfall + 16.0).max(2.0 * guard as f64);
-        guard = if next >= (MAX_WORKING_PREC - prec) as f64 {
-            // One last try at the cap.
-            if wp == MAX_WORKING_PREC {
-                return Err(Error::PrecisionExhausted { function, working_prec: wp });
-            }
-            MAX_WORKING_PREC - prec
-        } else {
-            next as u32
-        };
+        guard = next.min((MAX_WORKING_PREC - prec) as f64) as u32;
     }
 }
 

@@ -315,6 +315,7 @@ fn to_balls(xs: &[Float], wp: u32) -> Vec<Ball> {
 
 /// Certified `pFq(a; b; z)` where its series converges (see the module docs).
 pub fn hyp_pfq_mp(a: &[Float], b: &[Float], z: &Float, prec: u32) -> Result<Ball> {
+    crate::error::check_prec(prec)?;
     for x in a.iter().chain(b.iter()).chain(std::iter::once(z)) {
         check_finite(x, "hypergeometric argument")?;
     }

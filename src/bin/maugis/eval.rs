@@ -1,0 +1,233 @@
+//! `maugis eval`: a JSON Lines calculator.
+//!
+//! One request per input line, one response per output line, in order:
+//!
+//! ```text
+//! {"id": 1, "fn": "bessel_j", "n": 5, "x": "2.5", "prec": 200}
+//! {"id": 1, "mid": "1.95016...e-2", "rad": "3.1e-62", "prec": 200}
+//! {"id": 2, "fn": "hyp2f1", "a": 1, "b": 0.5, "c": 2, "z": 0.25}
+//! {"id": 2, "f64": 1.0718...}
+//! ```
+//!
+//! Arguments are JSON numbers or decimal strings. With `"prec"` the certified
+//! MP path runs; decimal inputs that are not binary fractions are rounded to
+//! nearest at `max(prec, 53) + 64` bits and the ball encloses the function at
+//! that binary number. Without `"prec"` the f64 path runs (inputs rounded to the
+//! nearest double). A bad line gets `{"id": ..., "error": "..."}` and the stream
+//! goes on.
+
+use std::io::{BufRead, Write};
+
+use maugis::special::{bessel_j, hyp1f2, hyp2f1, meijer_g};
+use maugis::{Ball, Error, MAX_PREC};
+use rug::Float;
+use serde_json::{json, Map, Value};
+
+/// A request-level failure, turned into an error line.
+struct BadRequest(String);
+
+impl From<Error> for BadRequest {
+    fn from(e: Error) -> Self {
+        BadRequest(e.to_string())
+    }
+}
+
+type Req<T> = std::result::Result<T, BadRequest>;
+
+/// The functions `eval` knows, with their argument names.
+const FUNCTIONS: &[(&str, &[&str])] = &[
+    ("bessel_j", &["n", "x"]),
+    ("hyp1f2", &["a", "b1", "b2", "z"]),
+    ("hyp2f1", &["a", "b", "c", "z"]),
+    ("meijer_g_k", &["k", "y"]),
+];
+
+/// The argument as decimal text (JSON number text or string).
+fn arg_text<'a>(obj: &'a Map<String, Value>, name: &str) -> Req<String> {
+    match obj.get(name) {
+        None => Err(BadRequest(format!("missing argument \"{name}\""))),
+        Some(Value::Number(n)) => Ok(n.to_string()),
+        Some(Value::String(s)) => Ok(s.trim().to_string()),
+        Some(other) => Err(BadRequest(format!("argument \"{name}\" must be a number or a decimal string, got {other}"))),
+    }
+}
+
+fn arg_f64(obj: &Map<String, Value>, name: &str) -> Req<f64> {
+    let t = arg_text(obj, name)?;
+    let v: f64 = t.parse().map_err(|_| BadRequest(format!("argument \"{name}\" = {t:?} is not a decimal number")))?;
+    if !v.is_finite() {
+        return Err(BadRequest(format!("argument \"{name}\" must be finite (got {t})")));
+    }
+    Ok(v)
+}
+
+fn arg_float(obj: &Map<String, Value>, name: &str, prec: u32) -> Req<Float> {
+    let t = arg_text(obj, name)?;
+    let parsed = Float::parse(&t).map_err(|_| BadRequest(format!("argument \"{name}\" = {t:?} is not a decimal number")))?;
+    let v = Float::with_val(prec.max(53) + 64, parsed);
+    if !v.is_finite() {
+        return Err(BadRequest(format!("argument \"{name}\" must be finite (got {t})")));
+    }
+    Ok(v)
+}
+
+fn arg_int(obj: &Map<String, Value>, name: &str) -> Req<i64> {
+    let t = arg_text(obj, name)?;
+    if let Ok(v) = t.parse::<i64>() {
+        return Ok(v);
+    }
+    let v: f64 = t.parse().map_err(|_| BadRequest(format!("argument \"{name}\" = {t:?} is not an integer")))?;
+    if v.is_finite() && v == v.trunc() && v.abs() < 9.0e15 {
+        Ok(v as i64)
+    } else {
+        Err(BadRequest(format!("argument \"{name}\" must be an integer (got {t})")))
+    }
+}
+
+fn arg_u32(obj: &Map<String, Value>, name: &str) -> Req<u32> {
+    let v = arg_int(obj, name)?;
+    u32::try_from(v).map_err(|_| BadRequest(format!("argument \"{name}\" must be a non-negative integer (got {v})")))
+}
+
+/// Reads `"prec"` if present.
+fn read_prec(obj: &Map<String, Value>) -> Req<Option<u32>> {
+    match obj.get("prec") {
+        None | Some(Value::Null) => Ok(None),
+        Some(_) => {
+            let p = arg_int(obj, "prec")?;
+            if p < 2 || p > MAX_PREC as i64 {
+                Err(BadRequest(format!("\"prec\" = {p} is out of range: use 2 ..= {MAX_PREC} bits")))
+            } else {
+                Ok(Some(p as u32))
+            }
+        }
+    }
+}
+
+/// Rejects argument names the function does not take (typos would otherwise be silent).
+fn check_names(obj: &Map<String, Value>, fname: &str, args: &[&str]) -> Req<()> {
+    for key in obj.keys() {
+        if key == "id" || key == "fn" || key == "prec" || args.contains(&key.as_str()) {
+            continue;
+        }
+        return Err(BadRequest(format!(
+            "unknown argument \"{key}\" for {fname} (it takes {})",
+            args.join(", ")
+        )));
+    }
+    Ok(())
+}
+
+/// Decimal digits printed for a ball at `prec` bits: `ceil(prec log10 2) + 3`.
+fn digits_for(prec: u32) -> usize {
+    (prec as f64 * std::f64::consts::LOG10_2).ceil() as usize + 3
+}
+
+fn mp_response(id: &Value, ball: &Ball, prec: u32) -> Value {
+    let (mid, rad) = ball.to_decimal(digits_for(prec));
+    json!({"id": id, "mid": mid, "rad": rad, "prec": prec})
+}
+
+fn f64_response(id: &Value, v: f64) -> Value {
+    json!({"id": id, "f64": v})
+}
+
+/// Evaluates one parsed request object.
+fn evaluate(obj: &Map<String, Value>) -> Req<Value> {
+    let id = obj.get("id").cloned().unwrap_or(Value::Null);
+    let fname = match obj.get("fn") {
+        Some(Value::String(s)) => s.as_str(),
+        Some(_) => return Err(BadRequest("\"fn\" must be a string".into())),
+        None => return Err(BadRequest("missing \"fn\" (the function name)".into())),
+    };
+    let Some((_, args)) = FUNCTIONS.iter().find(|(n, _)| *n == fname) else {
+        let names: Vec<&str> = FUNCTIONS.iter().map(|(n, _)| *n).collect();
+        return Err(BadRequest(format!("unknown fn \"{fname}\"; known: {}", names.join(", "))));
+    };
+    check_names(obj, fname, args)?;
+    let prec = read_prec(obj)?;
+    let out = match (fname, prec) {
+        ("bessel_j", None) => f64_response(&id, bessel_j::bessel_j(arg_int(obj, "n")?, arg_f64(obj, "x")?)?),
+        ("bessel_j", Some(p)) => {
+            mp_response(&id, &bessel_j::bessel_j_mp(arg_int(obj, "n")?, &arg_float(obj, "x", p)?, p)?, p)
+        }
+        ("hyp1f2", None) => f64_response(
+            &id,
+            hyp1f2::hyp1f2(arg_f64(obj, "a")?, arg_f64(obj, "b1")?, arg_f64(obj, "b2")?, arg_f64(obj, "z")?)?,
+        ),
+        ("hyp1f2", Some(p)) => {
+            let b = hyp1f2::hyp1f2_mp(
+                &arg_float(obj, "a", p)?,
+                &arg_float(obj, "b1", p)?,
+                &arg_float(obj, "b2", p)?,
+                &arg_float(obj, "z", p)?,
+                p,
+            )?;
+            mp_response(&id, &b, p)
+        }
+        ("hyp2f1", None) => f64_response(
+            &id,
+            hyp2f1::hyp2f1(arg_f64(obj, "a")?, arg_f64(obj, "b")?, arg_f64(obj, "c")?, arg_f64(obj, "z")?)?,
+        ),
+        ("hyp2f1", Some(p)) => {
+            let b = hyp2f1::hyp2f1_mp(
+                &arg_float(obj, "a", p)?,
+                &arg_float(obj, "b", p)?,
+                &arg_float(obj, "c", p)?,
+                &arg_float(obj, "z", p)?,
+                p,
+            )?;
+            mp_response(&id, &b, p)
+        }
+        ("meijer_g_k", None) => f64_response(&id, meijer_g::meijer_g_k(arg_u32(obj, "k")?, arg_f64(obj, "y")?)?),
+        ("meijer_g_k", Some(p)) => {
+            mp_response(&id, &meijer_g::meijer_g_k_mp(arg_u32(obj, "k")?, &arg_float(obj, "y", p)?, p)?, p)
+        }
+        _ => return Err(BadRequest(format!("internal: no dispatch for {fname}"))),
+    };
+    Ok(out)
+}
+
+/// Handles one input line; always returns exactly one response.
+pub fn handle_line(line: &str) -> Value {
+    let parsed: Value = match serde_json::from_str(line) {
+        Ok(v) => v,
+        Err(e) => return json!({"id": Value::Null, "error": format!("invalid JSON: {e}")}),
+    };
+    let Value::Object(obj) = parsed else {
+        return json!({"id": Value::Null, "error": "each line must be a JSON object"});
+    };
+    let id = obj.get("id").cloned().unwrap_or(Value::Null);
+    // A panic in a numerical routine would be a bug; catch it so the stream goes on.
+    let result = std::panic::catch_unwind(|| evaluate(&obj));
+    match result {
+        Ok(Ok(v)) => v,
+        Ok(Err(BadRequest(msg))) => json!({"id": id, "error": msg}),
+        Err(_) => json!({"id": id, "error": "internal error while evaluating (please report this input)"}),
+    }
+}
+
+/// Runs the calculator over stdin/stdout. Returns the process exit code.
+pub fn run() -> i32 {
+    let stdin = std::io::stdin();
+    let stdout = std::io::stdout();
+    let mut out = std::io::BufWriter::new(stdout.lock());
+    for line in stdin.lock().lines() {
+        let line = match line {
+            Ok(l) => l,
+            Err(e) => {
+                eprintln!("maugis eval: cannot read stdin: {e}");
+                return 2;
+            }
+        };
+        if line.trim().is_empty() {
+            continue;
+        }
+        let resp = handle_line(&line);
+        if writeln!(out, "{resp}").and_then(|_| out.flush()).is_err() {
+            // Broken pipe: the reader went away.
+            return 0;
+        }
+    }
+    0
+}

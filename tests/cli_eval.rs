@@ -1,0 +1,102 @@
+//! `maugis eval` end to end: the protocol, certified output, and bad lines.
+
+use std::io::Write;
+use std::process::{Command, Stdio};
+
+use rug::Float;
+use serde_json::Value;
+
+fn eval_lines(input: &str) -> (Vec<Value>, i32) {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_maugis"))
+        .arg("eval")
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("spawn maugis");
+    child.stdin.take().unwrap().write_all(input.as_bytes()).unwrap();
+    let out = child.wait_with_output().unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    let values = text.lines().map(|l| serde_json::from_str(l).expect("each output line is JSON")).collect();
+    (values, out.status.code().unwrap_or(-1))
+}
+
+#[test]
+fn issue_example_prints_a_certified_ball() {
+    let (out, code) = eval_lines("{\"id\":1,\"fn\":\"bessel_j\",\"n\":5,\"x\":\"2.5\",\"prec\":200}\n");
+    assert_eq!(code, 0);
+    assert_eq!(out.len(), 1);
+    let r = &out[0];
+    assert_eq!(r["id"], 1);
+    assert_eq!(r["prec"], 200);
+    let mid = r["mid"].as_str().unwrap();
+    let rad = Float::with_val(64, Float::parse(r["rad"].as_str().unwrap()).unwrap());
+    // at least prec*log10(2)+3 = 64 significant digits
+    let digits = mid.split('e').next().unwrap().chars().filter(|c| c.is_ascii_digit()).count();
+    assert!(digits >= 64, "{mid}");
+    // The printed ball is certified: it agrees with the library's ball.
+    let lib = maugis::special::bessel_j::bessel_j_mp(5, &Float::with_val(53, 2.5), 200).unwrap();
+    let m = Float::with_val(300, Float::parse(mid).unwrap());
+    assert!(Float::with_val(300, &m - lib.mid()).abs() <= Float::with_val(300, &rad + lib.rad()));
+    assert!(rad <= Float::with_val(64, 1e-59));
+}
+
+#[test]
+fn f64_path_and_order() {
+    let input = concat!(
+        "{\"id\":\"a\",\"fn\":\"bessel_j\",\"n\":0,\"x\":1}\n",
+        "{\"id\":\"b\",\"fn\":\"meijer_g_k\",\"k\":1,\"y\":1}\n",
+        "{\"id\":\"c\",\"fn\":\"hyp1f2\",\"a\":0.5,\"b1\":1,\"b2\":1.5,\"z\":-300}\n",
+        "{\"id\":\"d\",\"fn\":\"hyp2f1\",\"a\":1,\"b\":1,\"c\":2,\"z\":0.5}\n",
+    );
+    let (out, code) = eval_lines(input);
+    assert_eq!(code, 0);
+    let ids: Vec<&str> = out.iter().map(|v| v["id"].as_str().unwrap()).collect();
+    assert_eq!(ids, ["a", "b", "c", "d"]);
+    let j0 = out[0]["f64"].as_f64().unwrap();
+    assert_eq!(j0, maugis::special::bessel_j::bessel_j(0, 1.0).unwrap());
+    assert_eq!(out[1]["f64"].as_f64().unwrap(), 0.0);
+    // 2F1(1,1;2;1/2) = 2 ln 2
+    let v = out[3]["f64"].as_f64().unwrap();
+    assert!(approx::relative_eq!(v, 2.0 * std::f64::consts::LN_2, max_relative = 1e-15));
+}
+
+#[test]
+fn bad_lines_get_errors_and_the_stream_goes_on() {
+    let bad = [
+        "not json",
+        "[1,2]",
+        "{\"id\":2}",
+        "{\"id\":3,\"fn\":\"nope\"}",
+        "{\"id\":4,\"fn\":\"bessel_j\",\"n\":1}",
+        "{\"id\":5,\"fn\":\"bessel_j\",\"n\":1,\"x\":\"NaN\"}",
+        "{\"id\":6,\"fn\":\"bessel_j\",\"n\":1,\"x\":1,\"prec\":1}",
+        "{\"id\":7,\"fn\":\"bessel_j\",\"n\":1,\"x\":1,\"prec\":100000000}",
+        "{\"id\":8,\"fn\":\"bessel_j\",\"n\":1.5,\"x\":1}",
+        "{\"id\":9,\"fn\":\"meijer_g_k\",\"k\":-1,\"y\":0.5}",
+        "{\"id\":10,\"fn\":\"meijer_g_k\",\"k\":1,\"y\":2}",
+        "{\"id\":11,\"fn\":\"hyp2f1\",\"a\":1,\"b\":1,\"c\":2,\"z\":1.5}",
+        "{\"id\":12,\"fn\":\"hyp1f2\",\"a\":1,\"b1\":-2,\"b2\":1,\"z\":1}",
+        "{\"id\":13,\"fn\":\"bessel_j\",\"n\":1,\"x\":1,\"typo\":3}",
+        "{\"id\":14,\"fn\":\"bessel_j\",\"n\":1,\"x\":\"1e999999\"}",
+        "{\"id\":15,\"fn\":\"hyp2f1\",\"a\":1,\"b\":1,\"c\":-3,\"z\":0.5}",
+    ];
+    let mut input = bad.join("\n");
+    input.push_str("\n{\"id\":99,\"fn\":\"bessel_j\",\"n\":1,\"x\":1}\n");
+    let (out, code) = eval_lines(&input);
+    assert_eq!(code, 0);
+    assert_eq!(out.len(), bad.len() + 1);
+    for (line, resp) in bad.iter().zip(&out) {
+        let msg = resp["error"].as_str().unwrap_or_else(|| panic!("no error for {line}: {resp}"));
+        assert!(msg.len() > 10, "unhelpful message for {line}: {msg}");
+    }
+    assert_eq!(out[2]["id"], 2);
+    assert_eq!(out.last().unwrap()["id"], 99);
+    assert!(out.last().unwrap()["f64"].is_number());
+}
+
+#[test]
+fn unknown_subcommand_exits_2() {
+    let out = Command::new(env!("CARGO_BIN_EXE_maugis")).arg("frobnicate").output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+}
