@@ -6,8 +6,8 @@
 //! operation returns a ball that contains the exact result of the operation
 //! applied to *every* pair of points of its operands (the inclusion property).
 //! The midpoint is rounded to nearest at the ball's precision; the radius is a
-//! [`MAG_PREC`]-bit `Float` to which every bound is added with rounding toward
-//! `+inf`:
+//! [`Mag`] (f64 mantissa, 64-bit exponent) to which every bound is added with
+//! rounding toward `+inf`:
 //!
 //! * `+`, `-`:   `r = ra + rb + err(m)`
 //! * `*`:        `r = |ma| rb + |mb| ra + ra rb + err(m)`
@@ -34,20 +34,25 @@ use rug::Float;
 
 use crate::error::{Error, Result};
 
-/// Precision (bits) of the radius. Radii are upper bounds, so a short mantissa
-/// only makes them slightly larger, never wrong.
-pub const MAG_PREC: u32 = 32;
+mod mag;
+pub use mag::Mag;
+
+/// Precision (bits) of the radius-sized `Float` values handed out by
+/// [`Ball::rad`], [`Ball::abs_upper`] and friends (the radius itself is a [`Mag`]
+/// with a 53-bit mantissa). Radii are upper bounds, so a short mantissa only
+/// makes them slightly larger, never wrong.
+pub const MAG_PREC: u32 = 53;
 
 /// A real interval `[mid - rad, mid + rad]` with an arbitrary-precision midpoint.
 #[derive(Clone, PartialEq)]
 pub struct Ball {
     mid: Float,
-    rad: Float,
+    rad: Mag,
 }
 
 impl fmt::Debug for Ball {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "[{} +/- {}]", self.mid.to_string_radix(10, Some(20)), self.rad.to_string_radix(10, Some(4)))
+        write!(f, "[{} +/- {}]", self.mid.to_string_radix(10, Some(20)), self.rad.to_float().to_string_radix(10, Some(4)))
     }
 }
 
@@ -57,56 +62,24 @@ impl fmt::Display for Ball {
     }
 }
 
-/// A zero radius.
-fn mag_zero() -> Float {
-    Float::new(MAG_PREC)
-}
-
-/// Upper bound for `|x|` as a radius-precision float.
-fn mag_abs_up(x: &Float) -> Float {
-    let mut r = Float::new(MAG_PREC);
-    r.assign_round(x.abs_ref(), Round::Up);
-    r
-}
-
-/// Lower bound for `|x|` as a radius-precision float.
-fn mag_abs_down(x: &Float) -> Float {
-    let mut r = Float::new(MAG_PREC);
-    r.assign_round(x.abs_ref(), Round::Down);
-    r
-}
-
-/// `2^e` as a radius.
-fn mag_pow2(e: i32) -> Float {
-    let mut r = Float::with_val(MAG_PREC, 1);
-    r <<= e;
-    r
-}
-
 /// One ulp of `m` at its precision (an upper bound for the round-to-nearest error
 /// that produced it), or zero when the operation was exact.
-fn rounding_error(m: &Float, ord: Ordering) -> Float {
+fn rounding_error(m: &Float, ord: Ordering) -> Mag {
     if ord == Ordering::Equal {
-        return mag_zero();
+        return Mag::ZERO;
     }
     match m.get_exp() {
-        Some(e) => mag_pow2(e - m.prec() as i32),
+        Some(e) => Mag::pow2(e as i64 - m.prec() as i64),
         // A zero or non-finite midpoint after an inexact operation: MPFR only
-        // produces this on underflow/overflow, which the callers reject.
-        None => Float::with_val(MAG_PREC, rug::float::Special::Infinity),
+        // produces this on underflow/overflow; the radius becomes unbounded.
+        None => Mag::inf(),
     }
 }
 
-fn add_up(a: &Float, b: &Float) -> Float {
-    let mut r = Float::new(MAG_PREC);
-    r.assign_round(a + b, Round::Up);
-    r
-}
-
-fn mul_up(a: &Float, b: &Float) -> Float {
-    let mut r = Float::new(MAG_PREC);
-    r.assign_round(a * b, Round::Up);
-    r
+/// A ball from a rounded midpoint and its ternary value.
+fn rounded(mid: Float, ord: Ordering) -> Ball {
+    let rad = rounding_error(&mid, ord);
+    Ball { mid, rad }
 }
 
 impl Ball {
@@ -119,42 +92,41 @@ impl Ball {
             return Err(Error::NonFinite { what: "ball midpoint" });
         }
         let (mid, ord) = Float::with_val_round(prec, x, Round::Nearest);
-        let rad = rounding_error(&mid, ord);
-        Ok(Ball { mid, rad })
+        Ok(rounded(mid, ord))
     }
 
     /// The ball `[x ± 0]` for an integer.
     pub fn from_i64(x: i64, prec: u32) -> Ball {
         let (mid, ord) = Float::with_val_round(prec, x, Round::Nearest);
-        let rad = rounding_error(&mid, ord);
-        Ball { mid, rad }
+        rounded(mid, ord)
     }
 
     /// The ball containing the rational `num/den` (`den != 0`).
     pub fn from_ratio(num: i64, den: i64, prec: u32) -> Ball {
         let q = rug::Rational::from((num, den));
         let (mid, ord) = Float::with_val_round(prec, &q, Round::Nearest);
-        let rad = rounding_error(&mid, ord);
-        Ball { mid, rad }
+        rounded(mid, ord)
     }
 
     /// The ball containing the exact value of `x`, rounded to `prec` bits.
     pub fn from_float(x: &Float, prec: u32) -> Ball {
         let (mid, ord) = Float::with_val_round(prec, x, Round::Nearest);
-        let rad = rounding_error(&mid, ord);
-        Ball { mid, rad }
+        rounded(mid, ord)
     }
 
     /// A ball from a midpoint and a radius (the radius is rounded upward).
     pub fn with_radius(mid: Float, rad: &Float) -> Ball {
-        let mut r = Float::new(MAG_PREC);
-        r.assign_round(rad.abs_ref(), Round::Up);
-        Ball { mid, rad: r }
+        Ball { mid, rad: Mag::from_float_up(rad) }
+    }
+
+    /// A ball from a midpoint and a [`Mag`] radius.
+    pub fn with_mag(mid: Float, rad: Mag) -> Ball {
+        Ball { mid, rad }
     }
 
     /// Exact zero.
     pub fn zero(prec: u32) -> Ball {
-        Ball { mid: Float::new(prec), rad: mag_zero() }
+        Ball { mid: Float::new(prec), rad: Mag::ZERO }
     }
 
     /// Exact one.
@@ -165,22 +137,19 @@ impl Ball {
     /// A ball containing pi.
     pub fn pi(prec: u32) -> Ball {
         let (mid, ord) = Float::with_val_round(prec, Constant::Pi, Round::Nearest);
-        let rad = rounding_error(&mid, ord);
-        Ball { mid, rad }
+        rounded(mid, ord)
     }
 
     /// A ball containing `n!` (MPFR's correctly rounded factorial).
     pub fn factorial(n: u32, prec: u32) -> Ball {
         let (mid, ord) = Float::with_val_round(prec, Float::factorial(n), Round::Nearest);
-        let rad = rounding_error(&mid, ord);
-        Ball { mid, rad }
+        rounded(mid, ord)
     }
 
     /// A ball containing ln 2.
     pub fn ln2(prec: u32) -> Ball {
         let (mid, ord) = Float::with_val_round(prec, Constant::Log2, Round::Nearest);
-        let rad = rounding_error(&mid, ord);
-        Ball { mid, rad }
+        rounded(mid, ord)
     }
 
     // ----- inspection ---------------------------------------------------
@@ -190,9 +159,15 @@ impl Ball {
         &self.mid
     }
 
-    /// The radius (an upper bound on the distance from the midpoint to any enclosed value).
-    pub fn rad(&self) -> &Float {
-        &self.rad
+    /// The radius (an upper bound on the distance from the midpoint to any
+    /// enclosed value), as a float.
+    pub fn rad(&self) -> Float {
+        self.rad.to_float()
+    }
+
+    /// The radius as a [`Mag`].
+    pub fn rad_mag(&self) -> Mag {
+        self.rad
     }
 
     /// Precision of the midpoint in bits.
@@ -212,61 +187,71 @@ impl Ball {
 
     /// Whether the ball contains the number `x`.
     pub fn contains(&self, x: &Float) -> bool {
-        let mut d = Float::new(self.prec().max(x.prec()) + 8);
-        d.assign_round(&self.mid - x, Round::Up);
-        let d_abs_up = {
-            let mut lo = Float::new(d.prec());
-            lo.assign_round(&self.mid - x, Round::Down);
-            if lo.is_sign_negative() {
-                // |mid - x| <= max(|lo|, |hi|)
-                let a = lo.abs();
-                if a > d.clone().abs() { a } else { d.abs() }
-            } else {
-                d.abs()
-            }
-        };
-        d_abs_up <= self.rad
+        if !self.rad.is_finite() {
+            return true;
+        }
+        // |mid - x| bounded above through both directed roundings.
+        let p = self.prec().max(x.prec()) + 8;
+        let mut hi = Float::new(p);
+        hi.assign_round(&self.mid - x, Round::Up);
+        let mut lo = Float::new(p);
+        lo.assign_round(&self.mid - x, Round::Down);
+        let d = Mag::from_float_up(&hi).max(Mag::from_float_up(&lo));
+        d.le(&self.rad)
     }
 
     /// Whether the two balls share a point.
     pub fn overlaps(&self, other: &Ball) -> bool {
-        let mut d = Float::new(self.prec().max(other.prec()) + 8);
-        d.assign_round(&self.mid - &other.mid, Round::Nearest);
-        // |d_exact| <= |d| + ulp(d); compare against ra + rb.
-        let slack = rounding_error(&d, Ordering::Less);
-        let lhs = mag_abs_down(&d);
-        let rhs = add_up(&add_up(&self.rad, &other.rad), &slack);
-        lhs <= rhs
+        if !self.rad.is_finite() || !other.rad.is_finite() {
+            return true;
+        }
+        let p = self.prec().max(other.prec()) + 8;
+        let mut lo = Float::new(p);
+        lo.assign_round(&self.mid - &other.mid, Round::Down);
+        let mut hi = Float::new(p);
+        hi.assign_round(&self.mid - &other.mid, Round::Up);
+        // The exact difference lies in [lo, hi]; a lower bound of its magnitude:
+        let lhs = if lo.is_sign_negative() != hi.is_sign_negative() || lo.is_zero() || hi.is_zero() {
+            Mag::ZERO
+        } else {
+            let a = Mag::from_float_down(&lo);
+            let b = Mag::from_float_down(&hi);
+            if a.le(&b) { a } else { b }
+        };
+        lhs.le(&self.rad.add(other.rad))
+    }
+
+    /// Upper bound of `|x|` over the ball, as a [`Mag`].
+    pub fn abs_upper_mag(&self) -> Mag {
+        Mag::from_float_up(&self.mid).add(self.rad)
+    }
+
+    /// Lower bound of `|x|` over the ball, as a [`Mag`] (zero when the ball contains zero).
+    pub fn abs_lower_mag(&self) -> Mag {
+        Mag::from_float_down(&self.mid).sub_lower(self.rad)
     }
 
     /// Upper bound of `|x|` over the ball.
     pub fn abs_upper(&self) -> Float {
-        add_up(&mag_abs_up(&self.mid), &self.rad)
+        self.abs_upper_mag().to_float()
     }
 
     /// Lower bound of `|x|` over the ball (zero when the ball contains zero).
     pub fn abs_lower(&self) -> Float {
-        let m = mag_abs_down(&self.mid);
-        let mut r = Float::new(MAG_PREC);
-        r.assign_round(&m - &self.rad, Round::Down);
-        if r.is_sign_negative() {
-            mag_zero()
-        } else {
-            r
-        }
+        self.abs_lower_mag().to_float()
     }
 
     /// Lower end of the ball, rounded down, at the midpoint's precision.
     pub fn lower(&self) -> Float {
         let mut r = Float::new(self.prec());
-        r.assign_round(&self.mid - &self.rad, Round::Down);
+        r.assign_round(&self.mid - &self.rad.to_float(), Round::Down);
         r
     }
 
     /// Upper end of the ball, rounded up, at the midpoint's precision.
     pub fn upper(&self) -> Float {
         let mut r = Float::new(self.prec());
-        r.assign_round(&self.mid + &self.rad, Round::Up);
+        r.assign_round(&self.mid + &self.rad.to_float(), Round::Up);
         r
     }
 
@@ -285,7 +270,8 @@ impl Ball {
         !self.is_positive() && !self.is_negative()
     }
 
-    /// `rad / |mid|` as an f64 (infinite when the midpoint is zero and the radius is not).
+    /// `log2(|mid| / rad)`: the number of bits the ball certifies
+    /// (`+inf` for an exact ball, `-inf` for a zero midpoint with a nonzero radius).
     pub fn rel_accuracy_bits(&self) -> f64 {
         if self.rad.is_zero() {
             return f64::INFINITY;
@@ -293,9 +279,7 @@ impl Ball {
         if self.mid.is_zero() {
             return f64::NEG_INFINITY;
         }
-        let (m, me) = self.mid.to_f64_exp();
-        let (r, re) = self.rad.to_f64_exp();
-        (m.abs().log2() + me as f64) - (r.log2() + re as f64)
+        Mag::from_float_down(&self.mid).log2() - self.rad.log2()
     }
 
     /// Whether `rad <= 2^-prec |mid|`: the ball pins the value to `prec` bits
@@ -304,16 +288,12 @@ impl Ball {
         if self.rad.is_zero() {
             return true;
         }
-        let mut bound = mag_abs_down(&self.mid);
-        bound >>= prec as i32;
-        self.rad <= bound
+        self.rad.le(&Mag::from_float_down(&self.mid).mul_2exp(-(prec as i64)))
     }
 
     /// Whether `rad <= 2^-prec * scale`.
     pub fn meets_abs(&self, prec: u32, scale: &Float) -> bool {
-        let mut bound = mag_abs_down(scale);
-        bound >>= prec as i32;
-        self.rad <= bound
+        self.rad.le(&Mag::from_float_down(scale).mul_2exp(-(prec as i64)))
     }
 
     /// The midpoint as an f64 (round to nearest).
@@ -325,13 +305,18 @@ impl Ball {
     pub fn set_prec(&self, prec: u32) -> Ball {
         let mut mid = self.mid.clone();
         let ord = mid.set_prec_round(prec, Round::Nearest);
-        let rad = add_up(&self.rad, &rounding_error(&mid, ord));
+        let rad = self.rad.add(rounding_error(&mid, ord));
         Ball { mid, rad }
     }
 
-    /// Widen the radius by `extra` (rounded up).
+    /// Widen the radius by `|extra|` (rounded up).
     pub fn add_error(&mut self, extra: &Float) {
-        self.rad = add_up(&self.rad, &mag_abs_up(extra));
+        self.rad = self.rad.add(Mag::from_float_up(extra));
+    }
+
+    /// Widen the radius by a [`Mag`].
+    pub fn add_error_mag(&mut self, extra: Mag) {
+        self.rad = self.rad.add(extra);
     }
 
     // ----- arithmetic ---------------------------------------------------
@@ -343,20 +328,20 @@ impl Ball {
     /// `self + other`.
     pub fn add(&self, other: &Ball) -> Ball {
         let (mid, ord) = Float::with_val_round(self.out_prec(other), &self.mid + &other.mid, Round::Nearest);
-        let rad = add_up(&add_up(&self.rad, &other.rad), &rounding_error(&mid, ord));
+        let rad = self.rad.add(other.rad).add(rounding_error(&mid, ord));
         Ball { mid, rad }
     }
 
     /// `self - other`.
     pub fn sub(&self, other: &Ball) -> Ball {
         let (mid, ord) = Float::with_val_round(self.out_prec(other), &self.mid - &other.mid, Round::Nearest);
-        let rad = add_up(&add_up(&self.rad, &other.rad), &rounding_error(&mid, ord));
+        let rad = self.rad.add(other.rad).add(rounding_error(&mid, ord));
         Ball { mid, rad }
     }
 
     /// `-self` (exact).
     pub fn neg(&self) -> Ball {
-        Ball { mid: Float::with_val(self.prec(), -&self.mid), rad: self.rad.clone() }
+        Ball { mid: Float::with_val(self.prec(), -&self.mid), rad: self.rad }
     }
 
     /// `self * other`.
@@ -364,12 +349,12 @@ impl Ball {
         let (mid, ord) = Float::with_val_round(self.out_prec(other), &self.mid * &other.mid, Round::Nearest);
         let mut rad = rounding_error(&mid, ord);
         if !other.rad.is_zero() {
-            rad = add_up(&rad, &mul_up(&mag_abs_up(&self.mid), &other.rad));
+            rad = rad.add(Mag::from_float_up(&self.mid).mul(other.rad));
         }
         if !self.rad.is_zero() {
-            rad = add_up(&rad, &mul_up(&mag_abs_up(&other.mid), &self.rad));
+            rad = rad.add(Mag::from_float_up(&other.mid).mul(self.rad));
             if !other.rad.is_zero() {
-                rad = add_up(&rad, &mul_up(&self.rad, &other.rad));
+                rad = rad.add(self.rad.mul(other.rad));
             }
         }
         Ball { mid, rad }
@@ -383,7 +368,9 @@ impl Ball {
     /// `self * n` for an integer `n`.
     pub fn mul_i64(&self, n: i64) -> Ball {
         let (mid, ord) = Float::with_val_round(self.prec(), &self.mid * n, Round::Nearest);
-        let rad = add_up(&mul_up(&self.rad, &mag_abs_up(&Float::with_val(64, n))), &rounding_error(&mid, ord));
+        // |n| as an upper bound: the f64 conversion rounds to nearest, step up once.
+        let n_up = Mag::from_f64((n.unsigned_abs() as f64).next_up());
+        let rad = self.rad.mul(n_up).add(rounding_error(&mid, ord));
         Ball { mid, rad }
     }
 
@@ -393,18 +380,16 @@ impl Ball {
             return Err(Error::DivisionByZero);
         }
         let (mid, ord) = Float::with_val_round(self.prec(), &self.mid / n, Round::Nearest);
-        let mut nd = Float::with_val(64, n);
-        nd.abs_mut();
-        let mut r = Float::new(MAG_PREC);
-        r.assign_round(&self.rad / &nd, Round::Up);
-        let rad = add_up(&r, &rounding_error(&mid, ord));
+        // |n| as a lower bound: the f64 conversion rounds to nearest, step down once.
+        let n_lo = Mag::from_f64((n.unsigned_abs() as f64).next_down());
+        let rad = self.rad.div(n_lo).add(rounding_error(&mid, ord));
         Ok(Ball { mid, rad })
     }
 
     /// `self + n` for an integer `n`.
     pub fn add_i64(&self, n: i64) -> Ball {
         let (mid, ord) = Float::with_val_round(self.prec(), &self.mid + n, Round::Nearest);
-        let rad = add_up(&self.rad, &rounding_error(&mid, ord));
+        let rad = self.rad.add(rounding_error(&mid, ord));
         Ball { mid, rad }
     }
 
@@ -412,14 +397,12 @@ impl Ball {
     pub fn mul_pow2(&self, e: i32) -> Ball {
         let mut mid = self.mid.clone();
         mid <<= e;
-        let mut rad = self.rad.clone();
-        rad <<= e;
-        Ball { mid, rad }
+        Ball { mid, rad: self.rad.mul_2exp(e as i64) }
     }
 
     /// `self / other`; an error if `other` contains zero.
     pub fn div(&self, other: &Ball) -> Result<Ball> {
-        let den_lo = other.abs_lower();
+        let den_lo = other.abs_lower_mag();
         if den_lo.is_zero() {
             return Err(Error::DivisionByZero);
         }
@@ -427,15 +410,14 @@ impl Ball {
         let mut rad = rounding_error(&mid, ord);
         if !self.rad.is_zero() || !other.rad.is_zero() {
             // |a/b - ma/mb| <= (|ma| rb + |mb| ra) / (|mb| (|mb| - rb))
-            let num = add_up(&mul_up(&mag_abs_up(&self.mid), &other.rad), &mul_up(&mag_abs_up(&other.mid), &self.rad));
-            let mut den = Float::new(MAG_PREC);
-            den.assign_round(&mag_abs_down(&other.mid) * &den_lo, Round::Down);
+            let num = Mag::from_float_up(&self.mid)
+                .mul(other.rad)
+                .add(Mag::from_float_up(&other.mid).mul(self.rad));
+            let den = Mag::from_float_down(&other.mid).mul_lower(den_lo);
             if den.is_zero() {
                 return Err(Error::DivisionByZero);
             }
-            let mut q = Float::new(MAG_PREC);
-            q.assign_round(&num / &den, Round::Up);
-            rad = add_up(&rad, &q);
+            rad = rad.add(num.div(den));
         }
         Ok(Ball { mid, rad })
     }
@@ -470,13 +452,14 @@ impl Ball {
     pub fn hull(lo: &Float, hi: &Float, prec: u32) -> Ball {
         let (mid, _) = Float::with_val_round(prec, lo + hi, Round::Nearest);
         let mid = mid / 2u32;
-        let mut r1 = Float::new(MAG_PREC);
+        let p = prec.max(lo.prec()).max(hi.prec()) + 8;
+        let mut r1 = Float::new(p);
         r1.assign_round(hi - &mid, Round::Up);
-        let mut r2 = Float::new(MAG_PREC);
+        let mut r2 = Float::new(p);
         r2.assign_round(&mid - lo, Round::Up);
-        let rad = if r1 > r2 { r1 } else { r2 };
-        let rad = if rad.is_sign_negative() { mag_zero() } else { rad };
-        Ball { mid, rad }
+        let m1 = if r1.is_sign_negative() { Mag::ZERO } else { Mag::from_float_up(&r1) };
+        let m2 = if r2.is_sign_negative() { Mag::ZERO } else { Mag::from_float_up(&r2) };
+        Ball { mid, rad: m1.max(m2) }
     }
 
     /// `sqrt(self)`; an error if the ball reaches below zero.
@@ -534,8 +517,8 @@ impl Ball {
         let mut s = self.mid.clone();
         let mut c = Float::new(self.prec());
         let (os, oc) = s.sin_cos_round(&mut c, Round::Nearest);
-        let rs = add_up(&self.rad, &rounding_error(&s, os));
-        let rc = add_up(&self.rad, &rounding_error(&c, oc));
+        let rs = self.rad.add(rounding_error(&s, os));
+        let rc = self.rad.add(rounding_error(&c, oc));
         (Ball { mid: s, rad: rs }, Ball { mid: c, rad: rc })
     }
 
@@ -605,8 +588,7 @@ impl Ball {
     {
         let mut y = Float::new(self.prec());
         let ord = f(&self.mid, &mut y);
-        let rad = rounding_error(&y, ord);
-        Ball { mid: y, rad }
+        rounded(y, ord)
     }
 
     /// `Gamma(x)` at an exact point that is not a pole.
@@ -645,26 +627,30 @@ impl Ball {
         self.is_exact() && is_nonpositive_integer(&self.mid)
     }
 
-    /// Decimal midpoint with `digits` significant digits and a decimal radius that
-    /// is an upper bound of the true radius plus the decimal conversion error of
-    /// the midpoint.
+    /// Decimal midpoint with `digits` significant digits and a decimal radius
+    /// that bounds the true radius plus the decimal conversion error of the
+    /// midpoint, so the printed ball still encloses.
     pub fn to_decimal(&self, digits: usize) -> (String, String) {
         let mid_s = self.mid.to_string_radix(10, Some(digits.max(1)));
-        // The printed midpoint differs from `mid` by the decimal rounding; account
-        // for it so that the printed ball still encloses.
-        let printed = Float::with_val(self.prec() + 64, Float::parse(&mid_s).map(|p| Float::with_val(self.prec() + 64, p)).unwrap_or_else(|_| self.mid.clone()));
-        let mut diff = Float::new(MAG_PREC);
-        diff.assign_round(&printed - &self.mid, Round::Up);
-        let mut diff2 = Float::new(MAG_PREC);
-        diff2.assign_round(&printed - &self.mid, Round::Down);
-        let d = {
-            let a = diff.abs();
-            let b = diff2.abs();
-            if a > b { a } else { b }
+        let p = self.prec() + 64;
+        let conv = match Float::parse(&mid_s) {
+            Ok(parsed) => {
+                let printed = Float::with_val(p, parsed);
+                let mut hi = Float::new(p);
+                hi.assign_round(&printed - &self.mid, Round::Up);
+                let mut lo = Float::new(p);
+                lo.assign_round(&printed - &self.mid, Round::Down);
+                // `printed` is the decimal rounded to p bits: add one ulp of it.
+                let ulp = match printed.get_exp() {
+                    Some(e) => Mag::pow2(e as i64 - p as i64),
+                    None => Mag::ZERO,
+                };
+                Mag::from_float_up(&hi).max(Mag::from_float_up(&lo)).add(ulp)
+            }
+            Err(_) => Mag::inf(),
         };
-        let rad = add_up(&self.rad, &d);
-        let rad_s = decimal_upper(&rad);
-        (mid_s, rad_s)
+        let rad = self.rad.add(conv);
+        (mid_s, decimal_upper(&rad.to_float()))
     }
 }
 

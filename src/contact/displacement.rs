@@ -66,7 +66,7 @@ use rug::Float;
 use crate::ball::{Ball, MAG_PREC};
 use crate::error::{finite, Error, Result};
 use crate::special::bessel_j::{bessel_j_sequence, bessel_j_sequence_mp};
-use crate::special::meijer_g::{self, meijer_g_k_at_one, meijer_g_k_direct_ball, meijer_g_k_near_one_ball};
+use crate::special::meijer_g::{self, meijer_g_k_at_one_with, meijer_g_k_direct_ball, meijer_g_k_near_one_ball, MeijerConstants};
 use crate::special::pfq::pfq_series;
 use crate::special::{check_finite, exact, exact_add, exact_sub, f64_from_mp, ziv, ziv_with_floor, DEFAULT_GUARD_BITS};
 
@@ -239,7 +239,7 @@ fn wave_bessel_wp(a: &Float, zeta: &Float, amp: &Float, x: &Float, wp: u32) -> R
     };
     // J_n(D) for D in the ball: |J_n'| <= 1.
     for v in j.iter_mut() {
-        v.add_error(g.d.rad());
+        v.add_error_mag(g.d.rad_mag());
     }
     let q2 = g.q.sqr();
     let mut q_pow = Ball::one(wp); // q^{2n}
@@ -495,13 +495,13 @@ fn single_term_bound(kind: SeriesKind, g: &WaveGeometry, k: u64) -> Result<Float
 }
 
 /// `G(k, y)` at the geometry's `y` (ball), by the meijer module's algorithms.
-fn meijer_at(k: u32, g: &WaveGeometry, wp: u32) -> Result<Ball> {
+fn meijer_at(consts: &MeijerConstants, g: &WaveGeometry, wp: u32) -> Result<Ball> {
     if g.at_edge {
-        return meijer_g_k_at_one(k, wp);
+        return Ok(meijer_g_k_at_one_with(consts));
     }
-    match meijer_g::choose_algorithm(k, g.y.to_f64().min(1.0)) {
-        meijer_g::Algorithm::Direct => meijer_g_k_direct_ball(k, &g.y, wp),
-        _ => meijer_g_k_near_one_ball(k, &g.w, wp),
+    match meijer_g::choose_algorithm(consts.k(), g.y.to_f64().min(1.0)) {
+        meijer_g::Algorithm::Direct => meijer_g_k_direct_ball(consts, &g.y, wp),
+        _ => meijer_g_k_near_one_ball(consts, &g.w, wp),
     }
 }
 
@@ -534,13 +534,22 @@ fn wave_series_wp(kind: SeriesKind, g: &WaveGeometry, kmax: u64, wp: u32) -> Res
     let neg_s = g.s.neg();
     let mut coeff = Ball::one(wp); // D^{2k}/(2k+1)!  or  s^k/(k!(k+1)!(2k+1))
     let mut sum = Ball::zero(wp);
+    let pre = prefactor(kind, g, wp)?;
+    let pre_lower = pre.abs_lower();
+    let mut consts = match kind {
+        SeriesKind::Displacement => Some(MeijerConstants::new(0, wp)?),
+        SeriesKind::Gradient => None,
+    };
     let mut k: u64 = 0;
     loop {
         let kk = u32::try_from(k).map_err(|_| Error::Domain { what: "kmax too large".into() })?;
         let kb = Ball::from_i64(k as i64, wp);
         let f12 = pfq_series(std::slice::from_ref(&half), &[kb.add_i64(1), kb.add(&half).add_i64(1)], &neg_s, wp)?.sum;
         let other = match kind {
-            SeriesKind::Displacement => meijer_at(kk, g, wp)?,
+            SeriesKind::Displacement => match &consts {
+                Some(c) => meijer_at(c, g, wp)?,
+                None => return Err(Error::Internal { what: "missing Meijer constants".into() }),
+            },
             SeriesKind::Gradient => model_hyp2f1(kk, g, wp)?,
         };
         let term = coeff.mul(&f12).mul(&other);
@@ -553,10 +562,9 @@ fn wave_series_wp(kind: SeriesKind, g: &WaveGeometry, kmax: u64, wp: u32) -> Res
             let mut target = sum.abs_lower();
             target >>= wp as i32 + 8;
             // The tail is in units of the final value (prefactors included).
-            let scale = prefactor(kind, g, wp)?.abs_lower();
-            let mut rest_scaled = Float::with_val(MAG_PREC, &rest / &scale);
+            let mut rest_scaled = Float::with_val(MAG_PREC, &rest / &pre_lower);
             rest_scaled.next_up();
-            if scale > 0 && rest_scaled <= target {
+            if pre_lower > 0 && rest_scaled <= target {
                 sum.add_error(&rest_scaled);
                 break;
             }
@@ -569,9 +577,12 @@ fn wave_series_wp(kind: SeriesKind, g: &WaveGeometry, kmax: u64, wp: u32) -> Res
                 coeff.mul(&g.s).mul_i64(2 * kf + 1).div_i64((kf + 1) * (kf + 2) * (2 * kf + 3))?
             }
         };
+        if let Some(c) = consts.as_mut() {
+            *c = c.next()?;
+        }
         k += 1;
     }
-    Ok(prefactor(kind, g, wp)?.mul(&sum))
+    Ok(pre.mul(&sum))
 }
 
 /// `(A/sqrt(pi)) s` for Eq. 12, `2 A s/x` for Eq. 11b.

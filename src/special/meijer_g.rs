@@ -74,7 +74,7 @@
 
 use rug::Float;
 
-use crate::ball::Ball;
+use crate::ball::{Ball, Mag, MAG_PREC};
 use crate::error::{Error, Result};
 use crate::special::pfq::pfq_series;
 use crate::special::{check_finite, exact, exact_add, exact_sub, f64_from_mp, ziv, DEFAULT_GUARD_BITS};
@@ -119,59 +119,103 @@ fn validate(k: u32, y: &Float) -> Result<()> {
     Ok(())
 }
 
-/// `C_k = 2 Gamma(k+1/2) / Gamma(k+2)`.
-fn c_k(k: u32, wp: u32) -> Result<Ball> {
-    let kf = Float::with_val(64, k);
-    let g1 = Ball::from_float(&Float::with_val(64, &kf + 0.5), wp).gamma()?;
-    let g2 = Ball::from_float(&Float::with_val(64, &kf + 2u32), wp).gamma()?;
-    Ok(g1.div(&g2)?.mul_pow2(1))
+/// The `k`-dependent constants of `G(k, .)`: `C_k = 2 Gamma(k+1/2)/Gamma(k+2)`,
+/// `psi(k+2) - psi(k+1/2)` and `B_k(1) = (psi(3/2) - psi(k+1/2))/2`.
+///
+/// [`MeijerConstants::new`] evaluates them with MPFR's correctly rounded gamma
+/// and digamma; [`MeijerConstants::next`] steps `k -> k+1` with the exact
+/// recurrences `C_{k+1} = C_k (k+1/2)/(k+2)` [DLMF 5.5.1],
+/// `psi(x+1) = psi(x) + 1/x` [DLMF 5.5.2], so
+/// `psi-diff_{k+1} = psi-diff_k + 1/(k+2) - 1/(k+1/2)` and
+/// `B_{k+1}(1) = B_k(1) - 1/(2k+1)`: a sum over `k` pays for gamma/digamma once.
+#[derive(Debug, Clone)]
+pub struct MeijerConstants {
+    k: u32,
+    c_k: Ball,
+    psi_diff: Ball,
+    bracket_at_one: Ball,
 }
 
-/// `B(1) = (psi(3/2) - psi(k+1/2))/2`.
-fn bracket_at_one(k: u32, wp: u32) -> Result<Ball> {
-    match k {
-        0 => Ok(Ball::one(wp)),
-        1 => Ok(Ball::zero(wp)),
-        _ => {
-            let p1 = Ball::from_ratio(3, 2, wp).digamma()?;
-            let p2 = Ball::from_float(&Float::with_val(64, Float::with_val(64, k) + 0.5), wp).digamma()?;
-            Ok(p1.sub(&p2).mul_pow2(-1))
-        }
+impl MeijerConstants {
+    /// The constants for `k` at working precision `wp`.
+    pub fn new(k: u32, wp: u32) -> Result<Self> {
+        let kf = Float::with_val(64, k);
+        let half = Ball::from_float(&Float::with_val(64, &kf + 0.5), wp);
+        let two = Ball::from_float(&Float::with_val(64, &kf + 2u32), wp);
+        let c_k = half.gamma()?.div(&two.gamma()?)?.mul_pow2(1);
+        let psi_half = half.digamma()?;
+        let psi_diff = two.digamma()?.sub(&psi_half);
+        let bracket_at_one = match k {
+            0 => Ball::one(wp),
+            1 => Ball::zero(wp),
+            _ => Ball::from_ratio(3, 2, wp).digamma()?.sub(&psi_half).mul_pow2(-1),
+        };
+        Ok(MeijerConstants { k, c_k, psi_diff, bracket_at_one })
+    }
+
+    /// The constants for `k + 1`, by recurrence.
+    pub fn next(&self) -> Result<Self> {
+        let k = self.k as i64;
+        let wp = self.c_k.prec();
+        // (k + 1/2)/(k + 2) = (2k + 1)/(2k + 4)
+        let c_k = self.c_k.mul_i64(2 * k + 1).div_i64(2 * k + 4)?;
+        // 1/(k+2) - 1/(k+1/2) = 1/(k+2) - 2/(2k+1)
+        let step = Ball::one(wp).div_i64(k + 2)?.sub(&Ball::from_i64(2, wp).div_i64(2 * k + 1)?);
+        let psi_diff = self.psi_diff.add(&step);
+        let bracket_at_one = self.bracket_at_one.sub(&Ball::one(wp).div_i64(2 * k + 1)?);
+        Ok(MeijerConstants { k: self.k + 1, c_k, psi_diff, bracket_at_one })
+    }
+
+    /// `k`.
+    pub fn k(&self) -> u32 {
+        self.k
     }
 }
 
 /// `G(k, y)` by the direct series at working precision `wp`.
 pub fn meijer_g_k_direct(k: u32, y: &Float, wp: u32) -> Result<Ball> {
-    meijer_g_k_direct_ball(k, &Ball::from_float(y, wp), wp)
+    meijer_g_k_direct_ball(&MeijerConstants::new(k, wp)?, &Ball::from_float(y, wp), wp)
+}
+
+/// `S(y) = sum_{n>=1} (b)_n y^n / ((c)_n n)`, `b = k+1/2`, `c = k+2`, with the tail
+/// bound `sum_{n>=N} v_n <= (r_N/N) / (1 - y)`: `r_n = (b)_n y^n/(c)_n` has ratio
+/// `y (b+n)/(c+n) <= y`.
+fn direct_sum(k: u32, yb: &Ball, wp: u32) -> Result<Ball> {
+    let y_up = yb.upper();
+    if y_up >= 1 {
+        return Err(Error::Domain { what: "the direct series needs y < 1".into() });
+    }
+    let b2 = 2 * k as i64 + 1; // 2b
+    let c2 = 2 * k as i64 + 4; // 2c
+    let mut r = Ball::one(wp);
+    let mut sum = Ball::zero(wp);
+    let one_minus_y = Mag::from_float_down(&Float::with_val(MAG_PREC, 1 - &y_up));
+    let mut n: i64 = 0;
+    loop {
+        // r_{n+1} = r_n y (2b + 2n)/(2c + 2n)
+        r = r.mul(yb).mul_i64(b2 + 2 * n).div_i64(c2 + 2 * n)?;
+        n += 1;
+        let v = r.div_i64(n)?;
+        // tail from n on: (r_n/n)/(1-y)
+        let tail = v.abs_upper_mag().div(one_minus_y);
+        if tail.le(&sum.abs_lower_mag().mul_2exp(-(wp as i64) - 4)) {
+            sum.add_error_mag(tail);
+            return Ok(sum);
+        }
+        sum = sum.add(&v);
+        if n > 100_000_000 {
+            return Err(Error::NoConvergence { function: "meijer_g_k (direct)", terms: n as u64 });
+        }
+    }
 }
 
 /// [`meijer_g_k_direct`] for an argument known only as a ball (`0 < y < 1`
 /// over the whole ball): every operation is a ball operation, so the result
 /// encloses `G(k, y)` for every `y` in the ball.
-pub fn meijer_g_k_direct_ball(k: u32, yb: &Ball, wp: u32) -> Result<Ball> {
-    let kb = Ball::from_i64(k as i64, wp);
-    let b = kb.add(&Ball::from_ratio(1, 2, wp)); // k + 1/2
-    let c = kb.add_i64(2); // k + 2
-    // S(y) = (b y / c) 3F2(1, 1, b+1; 2, c+1; y)
-    let f = pfq_series(
-        &[Ball::one(wp), Ball::one(wp), b.add_i64(1)],
-        &[Ball::from_i64(2, wp), c.add_i64(1)],
-        yb,
-        wp,
-    )?
-    .sum;
-    let s = b.mul(yb).div(&c)?.mul(&f);
-    let psi_diff = psi_difference(k, wp)?;
-    let bracket = yb.ln()?.neg().sub(&s).add(&psi_diff).mul_pow2(-1);
-    Ok(c_k(k, wp)?.mul(&bracket))
-}
-
-/// `psi(k+2) - psi(k+1/2)` (MPFR digamma, correctly rounded, at exact points).
-fn psi_difference(k: u32, wp: u32) -> Result<Ball> {
-    let kf = Float::with_val(64, k);
-    let psi_c = Ball::from_float(&Float::with_val(64, &kf + 2u32), wp).digamma()?;
-    let psi_b = Ball::from_float(&Float::with_val(64, &kf + 0.5), wp).digamma()?;
-    Ok(psi_c.sub(&psi_b))
+pub fn meijer_g_k_direct_ball(consts: &MeijerConstants, yb: &Ball, wp: u32) -> Result<Ball> {
+    let s = direct_sum(consts.k, yb, wp)?;
+    let bracket = yb.ln()?.neg().sub(&s).add(&consts.psi_diff).mul_pow2(-1);
+    Ok(consts.c_k.mul(&bracket))
 }
 
 /// Tail of the `I1`/`I2` sums is below this fraction of the accumulated scale.
@@ -188,12 +232,13 @@ pub fn meijer_g_k_near_one(k: u32, y: &Float, wp: u32) -> Result<Ball> {
     }
     // w = 1 - y exactly.
     let w_exact = exact_sub(&Float::with_val(2, 1), y);
-    meijer_g_k_near_one_ball(k, &Ball::from_float(&w_exact, wp), wp)
+    meijer_g_k_near_one_ball(&MeijerConstants::new(k, wp)?, &Ball::from_float(&w_exact, wp), wp)
 }
 
 /// [`meijer_g_k_near_one`] for `w = 1 - y` known only as a ball with
 /// `0 <= w <= 1/2` (a lower end below zero is clipped: the true `w` is `>= 0`).
-pub fn meijer_g_k_near_one_ball(k: u32, w: &Ball, wp: u32) -> Result<Ball> {
+pub fn meijer_g_k_near_one_ball(consts: &MeijerConstants, w: &Ball, wp: u32) -> Result<Ball> {
+    let k = consts.k;
     let w = if w.lower() < 0 { Ball::hull(&Float::new(wp), &w.upper(), wp) } else { w.clone() };
     if w.upper() > 0.5 {
         return Err(Error::Domain { what: "the near-one expansion needs 1 - y <= 1/2".into() });
@@ -269,15 +314,20 @@ pub fn meijer_g_k_near_one_ball(k: u32, w: &Ball, wp: u32) -> Result<Ball> {
         }
     }
     let i2 = w.sqrt()?.mul(&w).mul(&sum2);
-    let ck = c_k(k, wp)?;
+    let ck = &consts.c_k;
     let two_sqrt_pi = Ball::pi(wp).sqrt()?.mul_pow2(1);
-    let at_one = ck.mul(&bracket_at_one(k, wp)?);
+    let at_one = ck.mul(&consts.bracket_at_one);
     Ok(at_one.add(&ck.mul_i64(kk + 1).mul(&i1)).sub(&two_sqrt_pi.mul(&i2)))
 }
 
 /// `G(k, 1) = C_k B(1)`.
 pub fn meijer_g_k_at_one(k: u32, wp: u32) -> Result<Ball> {
-    Ok(c_k(k, wp)?.mul(&bracket_at_one(k, wp)?))
+    Ok(meijer_g_k_at_one_with(&MeijerConstants::new(k, wp)?))
+}
+
+/// `G(k, 1) = C_k B(1)` from precomputed constants.
+pub fn meijer_g_k_at_one_with(consts: &MeijerConstants) -> Ball {
+    consts.c_k.mul(&consts.bracket_at_one)
 }
 
 fn meijer_g_k_wp(k: u32, y: &Float, wp: u32) -> Result<Ball> {
