@@ -34,7 +34,9 @@ use rug::Float;
 
 use crate::error::{Error, Result};
 
+mod double_double;
 mod mag;
+pub use double_double::Dd;
 pub use mag::Mag;
 
 /// Precision (bits) of the radius-sized `Float` values handed out by

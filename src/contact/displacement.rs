@@ -65,7 +65,8 @@ use rug::Float;
 
 use crate::ball::{Ball, MAG_PREC};
 use crate::error::{finite, Error, Result};
-use crate::special::bessel_j::{bessel_j_sequence, bessel_j_sequence_mp};
+use crate::ball::Dd;
+use crate::special::bessel_j::{bessel_j_sequence_dd, bessel_j_sequence_mp};
 use crate::special::meijer_g::{self, meijer_g_k_at_one_with, meijer_g_k_direct_ball, meijer_g_k_near_one_ball, MeijerConstants};
 use crate::special::pfq::pfq_series;
 use crate::special::{check_finite, exact, exact_add, exact_sub, f64_from_mp, ziv, ziv_with_floor, DEFAULT_GUARD_BITS};
@@ -326,32 +327,43 @@ fn ln_factorial(n: f64) -> f64 {
     n * n.ln() - n + 0.5 * (2.0 * std::f64::consts::PI * n).ln() + 1.0 / (12.0 * n)
 }
 
-/// f64 Bessel-form `(u_w, du_w/dx)`; error estimate ~1e-15 relative to `max(|u_w|, A)`.
+/// f64 Bessel-form `(u_w, du_w/dx)`, evaluated in double-double (the Bessel
+/// values by Miller's recurrence, the geometry `q`, `g_n` and the sums) and
+/// rounded once at the end; `acosh(x/a)` is the f64 library value, whose
+/// half-ulp error enters only through the `D J1(D) acosh(x/a)` term.
 fn wave_bessel_f64(a: f64, zeta: f64, amp: f64, x: f64) -> (f64, f64) {
-    let d = 2.0 * std::f64::consts::PI * a / zeta;
-    let n_terms = bessel_terms_f64(d);
-    let j = bessel_j_sequence(2 * n_terms + 1, d);
-    let rm1 = (x - a) / a;
-    let rp1 = (x + a) / a;
-    let r = x / a;
-    let sq = (rm1 * rp1).sqrt();
-    let q = 1.0 / (r + sq);
-    let acosh_r = (rm1 + sq).ln_1p();
-    let one_minus_q_over_s = 1.0 - (rm1 / rp1).sqrt();
+    let d = Dd::TWO_PI.mul_f64(a) / Dd::from_f64(zeta);
+    let n_terms = bessel_terms_f64(d.hi);
+    let j = bessel_j_sequence_dd(2 * n_terms + 1, d);
+    let ad = Dd::from_f64(a);
+    let rm1 = Dd::diff(x, a) / ad; // x/a - 1
+    let rp1 = (Dd::from_f64(x) + ad) / ad; // x/a + 1
+    let r = Dd::from_f64(x) / ad;
+    let sq = (rm1 * rp1).sqrt(); // sqrt((x/a)^2 - 1)
+    let q = (r + sq).recip();
+    let acosh_r = (rm1 + sq).to_f64().ln_1p();
+    let one_minus_q_over_s = Dd::ONE - (rm1 / rp1).sqrt();
     let q2 = q * q;
-    let (mut q_pow, mut q_odd, mut geo) = (1.0f64, q, 0.0f64);
-    let (mut su, mut sdu) = (0.0f64, 0.0f64);
+    let (mut q_pow, mut q_odd, mut geo) = (Dd::ONE, q, Dd::ZERO);
+    let (mut su, mut sdu) = (Dd::ZERO, Dd::ZERO);
     for n in 1..=n_terms {
-        geo += q_pow + q_odd;
-        q_pow *= q2;
-        q_odd *= q2;
+        geo = geo + q_pow + q_odd;
+        q_pow = q_pow * q2;
+        q_odd = q_odd * q2;
         let jn = j[2 * n];
-        let sign = if n % 2 == 1 { 1.0 } else { -1.0 };
-        su += sign * jn * q_pow;
-        sdu += sign * jn * n as f64 * geo;
+        let tu = jn * q_pow;
+        let tdu = (jn * geo).mul_f64(n as f64);
+        if n % 2 == 1 {
+            su = su + tu;
+            sdu = sdu + tdu;
+        } else {
+            su = su - tu;
+            sdu = sdu - tdu;
+        }
     }
-    let u = amp * ((1.0 - j[0]) + d * j[1] * acosh_r + 2.0 * su);
-    let du = 4.0 * amp / a * one_minus_q_over_s * sdu;
+    let inner = (Dd::ONE - j[0]) + (d * j[1]).mul_f64(acosh_r) + su.mul_f64(2.0);
+    let u = inner.mul_f64(amp).to_f64();
+    let du = (one_minus_q_over_s * sdu).mul_f64(4.0 * amp / a).to_f64();
     (u, du)
 }
 

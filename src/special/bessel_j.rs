@@ -38,7 +38,7 @@
 
 use rug::Float;
 
-use crate::ball::Ball;
+use crate::ball::{Ball, Dd};
 use crate::error::{Error, Result};
 use crate::special::pfq::pfq_series;
 use crate::special::{check_finite, exact, f64_from_mp, ziv};
@@ -244,57 +244,65 @@ pub fn bessel_j_sequence_mp(nmax: u64, x: &Float, wp: u32) -> Result<Vec<Ball>> 
     Ok(seq)
 }
 
-/// `J_0(x), ..., J_nmax(x)` in f64 by Miller's backward recurrence, normalised
-/// with `J_0 + 2 sum_k J_{2k} = 1` [DLMF 10.12.4 at theta = 0].
+/// `J_0(x), ..., J_nmax(x)` by Miller's backward recurrence in double-double,
+/// normalised with `J_0 + 2 sum_k J_{2k} = 1` [DLMF 10.12.4 at theta = 0].
 ///
 /// The recurrence starts at an even order `M > max(nmax, |x|)` far enough above
-/// `|x|` that the neglected dominant solution is below `2^-60` relative
-/// ([`miller_start`]). Absolute error is a few `eps` times `max_n |J_n(x)| <= 1`;
-/// an estimate, not a bound. Returns an empty vector for non-finite `x`.
-pub fn bessel_j_sequence(nmax: usize, x: f64) -> Vec<f64> {
-    if !x.is_finite() {
+/// `|x|` that the neglected dominant solution is negligible at double-double
+/// accuracy ([`miller_start`]). Absolute error about `1e-30` times
+/// `max_n |J_n(x)| <= 1` (an estimate, not a bound; the golden and cross-check
+/// tests measure it). Returns an empty vector for non-finite `x`.
+pub fn bessel_j_sequence_dd(nmax: usize, x: Dd) -> Vec<Dd> {
+    if !x.hi.is_finite() {
         return Vec::new();
     }
-    let mut out = vec![0.0; nmax + 1];
-    if x == 0.0 {
-        out[0] = 1.0;
+    let mut out = vec![Dd::ZERO; nmax + 1];
+    if x.hi == 0.0 {
+        out[0] = Dd::ONE;
         return out;
     }
     let ax = x.abs();
-    let m = miller_start(nmax, ax);
-    let mut j_next = 0.0f64; // J_{m+1}
-    let mut j_cur = 1e-280f64; // J_m (arbitrary scale)
-    let mut norm = if m % 2 == 0 { 2.0 * j_cur } else { 0.0 };
-    let mut scale_track = vec![0.0; nmax + 1];
+    let inv_x = ax.recip();
+    let m = miller_start(nmax, ax.hi);
+    let tiny = 2f64.powi(-900);
+    let rescale = 2f64.powi(-800);
+    let mut j_next = Dd::ZERO; // J_{m+1}
+    let mut j_cur = Dd::from_f64(tiny); // J_m (arbitrary scale)
+    let mut norm = j_cur.mul_f64(2.0); // m is even
     if m <= nmax {
-        scale_track[m] = j_cur;
+        out[m] = j_cur;
     }
     for n in (1..=m).rev() {
-        let j_prev = (2.0 * n as f64 / ax) * j_cur - j_next;
+        let j_prev = (j_cur * inv_x).mul_f64(2.0 * n as f64) - j_next;
         j_next = j_cur;
         j_cur = j_prev;
         let k = n - 1;
         if k <= nmax {
-            scale_track[k] = j_cur;
+            out[k] = j_cur;
         }
         if k % 2 == 0 {
-            norm += if k == 0 { j_cur } else { 2.0 * j_cur };
+            norm = norm + if k == 0 { j_cur } else { j_cur.mul_f64(2.0) };
         }
-        // Rescale to avoid overflow.
-        if j_cur.abs() > 1e250 {
-            j_cur *= 1e-250;
-            j_next *= 1e-250;
-            norm *= 1e-250;
-            for v in scale_track.iter_mut().skip(k) {
-                *v *= 1e-250;
+        if j_cur.hi.abs() > 1e200 {
+            j_cur = j_cur.mul_f64(rescale);
+            j_next = j_next.mul_f64(rescale);
+            norm = norm.mul_f64(rescale);
+            for v in out.iter_mut().skip(k) {
+                *v = v.mul_f64(rescale);
             }
         }
     }
-    for n in 0..=nmax {
-        let v = scale_track[n] / norm;
-        out[n] = if x < 0.0 && n % 2 == 1 { -v } else { v };
+    let inv_norm = norm.recip();
+    for (n, v) in out.iter_mut().enumerate() {
+        let scaled = *v * inv_norm;
+        *v = if x.hi < 0.0 && n % 2 == 1 { -scaled } else { scaled };
     }
     out
+}
+
+/// `J_0(x), ..., J_nmax(x)` in f64 (the double-double sequence, rounded).
+pub fn bessel_j_sequence(nmax: usize, x: f64) -> Vec<f64> {
+    bessel_j_sequence_dd(nmax, Dd::from_f64(x)).into_iter().map(Dd::to_f64).collect()
 }
 
 /// Starting order of Miller's recurrence: even, above `nmax` and `x` by a margin

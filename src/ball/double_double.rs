@@ -1,0 +1,189 @@
+//! Double-double arithmetic: an unevaluated sum `hi + lo` of two f64 with
+//! `|lo| <= ulp(hi)/2`, about 106 bits, for the f64 paths that must round a
+//! cancelling sum correctly (the Bessel form of `u_w`, Miller's recurrence).
+//!
+//! Error-free transformations: `two_sum` (Knuth), `two_prod` through a fused
+//! multiply-add [Dekker 1971; Hida, Li, Bailey, "Library for double-double and
+//! quad-double arithmetic", 2007]. Addition and multiplication are the
+//! "sloppy" variants with relative error about `2^-104` (a few units of `u^2`);
+//! division uses one Newton correction. These are estimates for fast f64 paths,
+//! not certified bounds (those live in [`Ball`](super::Ball)).
+
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+/// `hi + lo`, non-overlapping.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Dd {
+    /// Leading part (the f64 nearest to the value).
+    pub hi: f64,
+    /// Trailing part.
+    pub lo: f64,
+}
+
+#[inline]
+fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let bb = s - a;
+    let e = (a - (s - bb)) + (b - bb);
+    (s, e)
+}
+
+#[inline]
+fn quick_two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    (s, b - (s - a))
+}
+
+#[inline]
+fn two_prod(a: f64, b: f64) -> (f64, f64) {
+    let p = a * b;
+    (p, a.mul_add(b, -p))
+}
+
+impl Dd {
+    /// Zero.
+    pub const ZERO: Dd = Dd { hi: 0.0, lo: 0.0 };
+    /// One.
+    pub const ONE: Dd = Dd { hi: 1.0, lo: 0.0 };
+    /// `2 pi` to ~106 bits.
+    pub const TWO_PI: Dd = Dd { hi: 6.283185307179586, lo: 2.4492935982947064e-16 };
+
+    /// An exact f64.
+    #[inline]
+    pub const fn from_f64(x: f64) -> Dd {
+        Dd { hi: x, lo: 0.0 }
+    }
+
+    /// Nearest f64.
+    #[inline]
+    pub fn to_f64(self) -> f64 {
+        self.hi + self.lo
+    }
+
+    /// The exact difference `a - b` of two doubles.
+    #[inline]
+    pub fn diff(a: f64, b: f64) -> Dd {
+        let (s, e) = two_sum(a, -b);
+        Dd { hi: s, lo: e }
+    }
+
+    /// The exact product `a * b` of two doubles.
+    #[inline]
+    pub fn prod(a: f64, b: f64) -> Dd {
+        let (p, e) = two_prod(a, b);
+        Dd { hi: p, lo: e }
+    }
+
+    /// `self * b` for an f64 `b`.
+    #[inline]
+    pub fn mul_f64(self, b: f64) -> Dd {
+        let (p, e) = two_prod(self.hi, b);
+        let e = e + self.lo * b;
+        let (hi, lo) = quick_two_sum(p, e);
+        Dd { hi, lo }
+    }
+
+    /// `|self|`.
+    #[inline]
+    pub fn abs(self) -> Dd {
+        if self.hi < 0.0 {
+            -self
+        } else {
+            self
+        }
+    }
+
+    /// Square root (one Newton step from the f64 root).
+    pub fn sqrt(self) -> Dd {
+        if self.hi <= 0.0 {
+            return Dd::ZERO;
+        }
+        let r = self.hi.sqrt();
+        // r + (self - r^2)/(2r)
+        let corr = (self - Dd::prod(r, r)).hi / (2.0 * r);
+        let (hi, lo) = quick_two_sum(r, corr);
+        Dd { hi, lo }
+    }
+
+    /// Reciprocal.
+    pub fn recip(self) -> Dd {
+        Dd::ONE / self
+    }
+}
+
+impl Add for Dd {
+    type Output = Dd;
+    #[inline]
+    fn add(self, b: Dd) -> Dd {
+        let (s, e) = two_sum(self.hi, b.hi);
+        let e = e + self.lo + b.lo;
+        let (hi, lo) = quick_two_sum(s, e);
+        Dd { hi, lo }
+    }
+}
+
+impl Neg for Dd {
+    type Output = Dd;
+    #[inline]
+    fn neg(self) -> Dd {
+        Dd { hi: -self.hi, lo: -self.lo }
+    }
+}
+
+impl Sub for Dd {
+    type Output = Dd;
+    #[inline]
+    fn sub(self, b: Dd) -> Dd {
+        self + (-b)
+    }
+}
+
+impl Mul for Dd {
+    type Output = Dd;
+    #[inline]
+    fn mul(self, b: Dd) -> Dd {
+        let (p, e) = two_prod(self.hi, b.hi);
+        let e = e + (self.hi * b.lo + self.lo * b.hi);
+        let (hi, lo) = quick_two_sum(p, e);
+        Dd { hi, lo }
+    }
+}
+
+impl Div for Dd {
+    type Output = Dd;
+    fn div(self, b: Dd) -> Dd {
+        let q1 = self.hi / b.hi;
+        let r = self - b.mul_f64(q1);
+        let q2 = r.hi / b.hi;
+        let r = r - b.mul_f64(q2);
+        let q3 = r.hi / b.hi;
+        let (hi, lo) = quick_two_sum(q1, q2);
+        Dd { hi, lo } + Dd::from_f64(q3)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rug::Float;
+
+    fn to_float(d: Dd) -> Float {
+        Float::with_val(200, d.hi) + Float::with_val(200, d.lo)
+    }
+
+    #[test]
+    fn about_106_bits() {
+        let third = Dd::ONE / Dd::from_f64(3.0);
+        let exact = Float::with_val(200, 1) / 3u32;
+        let err = Float::with_val(200, to_float(third) - &exact).abs();
+        assert!(err < Float::with_val(53, 1e-31));
+        let s = Dd::from_f64(2.0).sqrt();
+        let exact = Float::with_val(200, 2).sqrt();
+        assert!(Float::with_val(200, to_float(s) - &exact).abs() < Float::with_val(53, 1e-31));
+        let tp = to_float(Dd::TWO_PI);
+        let exact = Float::with_val(200, rug::float::Constant::Pi) * 2u32;
+        assert!(Float::with_val(200, tp - &exact).abs() < Float::with_val(53, 1e-31));
+        let p = Dd::from_f64(0.1) * Dd::from_f64(0.3) - Dd::prod(0.1, 0.3);
+        assert!(p.to_f64().abs() < 1e-32);
+    }
+}
