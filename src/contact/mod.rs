@@ -12,3 +12,4 @@
 //! The gap is `g(x) = h(x) - u_H(x) - u_w(x) - u_a(x)` for `|x| >= a`.
 
 pub mod displacement;
+pub mod wave_quadrature;

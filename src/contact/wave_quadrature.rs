@@ -1,0 +1,341 @@
+//! The wave displacement by direct quadrature of Eq. 11a: an independent route
+//! that uses neither Eq. 12 nor the Bessel form.
+//!
+//! # The integrals
+//!
+//! Eq. 11a, as corrected in notes/model.md sec. 1 (outer integral over
+//! `t in [0, D]`, `D = 2 pi a/zeta`, prefactor `A/zeta`, `x = a/cos(phi)`):
+//!
+//! ```text
+//! du_w/dx = (A/zeta) int_0^D J0(t) int_0^{2pi} cos(phi) sin^2(th) / (1 - cos(th) cos(phi))
+//!                                               cos((t - D) cos(th)) dth dt.
+//! ```
+//!
+//! Integrating in `x` from `a` to `x` under the integral signs (Fubini; the
+//! kernel is bounded) and using the elementary antiderivative
+//! `int a/(x' - a cos th) dx' = a ln(x' - a cos th)` gives
+//!
+//! ```text
+//! u_w(x) - u_w(a) = (A a/zeta) int_0^D J0(t) int_0^{2pi} sin^2(th) cos((t - D) cos(th))
+//!                                     ln((x/a - cos th)/(1 - cos th)) dth dt,
+//! ```
+//!
+//! and `u_w(a) = A (1 - cos D)` (the substrate meets the profile at the edge).
+//! Both inner integrands are even about `th = pi`, so `int_0^{2pi} = 2 int_0^pi`.
+//!
+//! # Numerics
+//!
+//! * Cancellation-free kernels: `1 - cos th cos phi = 2 sin^2(th/2) + cos th * (x-a)/x`
+//!   and `ln((r - cos th)/(1 - cos th)) = ln1p((r-1)/(2 sin^2(th/2)))`, `r = x/a`.
+//! * As `x -> a+` the kernels peak at `th = 0` with width `phi ~ sqrt(2(x/a-1))`:
+//!   the inner interval is split at `th_s = min(phi, pi/2)` (gradient) or
+//!   `min(2 sqrt(r-1), pi/2)` (displacement), and each piece is integrated by
+//!   tanh-sinh (MP), which clusters nodes at the piece ends, or (f64) composite
+//!   Gauss–Legendre on panels graded geometrically away from `th = 0`.
+//! * The outer integrand `J0(t) * inner(t)` is smooth on `[0, D]`.
+//!
+//! The results are quadrature *estimates* (see [`crate::quad`]), not certified
+//! balls; they serve as the independent cross-check of the series routes.
+
+use rug::float::Constant;
+use rug::Float;
+
+use crate::error::{finite, Error, Result};
+use crate::quad::{gauss_legendre, tanh_sinh, QuadEstimate, QuadEstimateMp, TanhSinhOptions};
+use crate::special::bessel_j::{bessel_j_mp, bessel_j_sequence};
+use crate::special::{check_finite, exact, exact_sub};
+
+/// Which quantity.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Quantity {
+    /// `du_w/dx`
+    Gradient,
+    /// `u_w(x) - u_w(a)`
+    Increment,
+}
+
+fn check(a: f64, zeta: f64, amp: f64, x: f64) -> Result<()> {
+    finite(a, "a")?;
+    finite(zeta, "zeta")?;
+    finite(amp, "amp")?;
+    finite(x, "x")?;
+    if a <= 0.0 || zeta <= 0.0 {
+        return Err(Error::Domain { what: "a and zeta must be > 0".into() });
+    }
+    if x < a {
+        return Err(Error::Domain { what: format!("the wave displacement is for x >= a (got x = {x} < a = {a})") });
+    }
+    Ok(())
+}
+
+/// Inner-interval split point (f64 is enough: it only places nodes).
+fn split_point(kind: Quantity, a: f64, x: f64) -> f64 {
+    let rm1 = (x - a) / a;
+    let s = match kind {
+        Quantity::Gradient => (a / x).acos(),
+        Quantity::Increment => 2.0 * rm1.sqrt(),
+    };
+    s.min(std::f64::consts::FRAC_PI_2)
+}
+
+// ---------------------------------------------------------------- MP
+
+/// Geometry shared by all inner integrals at working precision.
+struct MpGeometry {
+    d: Float,
+    cos_phi: Float,
+    /// `(x-a)/x = 1 - cos(phi)`
+    one_minus_cos_phi: Float,
+    /// `r - 1 = (x-a)/a`
+    rm1: Float,
+}
+
+fn mp_kernel(kind: Quantity, g: &MpGeometry, t: &Float, th: &Float) -> Float {
+    let p = t.prec().max(th.prec());
+    // One sin_cos of th/2 gives everything: 1 - cos th = 2 s^2, cos th = 1 - 2 s^2,
+    // sin th = 2 s c.
+    let mut s_half = Float::with_val(p, th / 2u32);
+    let mut c_half = Float::new(p);
+    s_half.sin_cos_mut(&mut c_half);
+    let two_s2 = Float::with_val(p, s_half.square_ref()) * 2u32; // 1 - cos th
+    let c = Float::with_val(p, 1 - &two_s2);
+    let sin_th = Float::with_val(p, &s_half * &c_half) * 2u32;
+    let sin2 = Float::with_val(p, sin_th.square_ref());
+    let arg = Float::with_val(p, t - &g.d) * &c;
+    let osc = Float::with_val(p, arg.cos_ref());
+    match kind {
+        Quantity::Gradient => {
+            // cos(phi) sin^2 / (2 sin^2(th/2) + cos th (1 - cos phi))
+            let den = Float::with_val(p, &two_s2 + Float::with_val(p, &c * &g.one_minus_cos_phi));
+            Float::with_val(p, &g.cos_phi * &sin2) * &osc / den
+        }
+        Quantity::Increment => {
+            if two_s2.is_zero() {
+                return Float::new(p);
+            }
+            let ratio = Float::with_val(p, &g.rm1 / &two_s2);
+            let lg = Float::with_val(p, ratio.ln_1p_ref());
+            sin2 * osc * lg
+        }
+    }
+}
+
+/// `2 int_0^pi kernel(t, th) dth` by tanh-sinh on the two pieces.
+fn mp_inner(kind: Quantity, g: &MpGeometry, t: &Float, split: f64, opts: &TanhSinhOptions) -> Result<Float> {
+    let p = t.prec();
+    let zero = Float::new(p);
+    let pi = Float::with_val(p, Constant::Pi);
+    let mut total = Float::new(p);
+    let pieces: Vec<(Float, Float)> = if split > 0.0 {
+        let s = Float::with_val(p, split);
+        vec![(zero, s.clone()), (s, pi)]
+    } else {
+        vec![(zero, pi)]
+    };
+    for (lo, hi) in pieces {
+        let r = tanh_sinh::integrate_with_complements(
+            |th: &Float, from_lo: &Float, _to_hi: &Float| {
+                // Near th = 0 use the accurate distance from 0 as the angle itself.
+                let angle = if lo.is_zero() { from_lo } else { th };
+                Ok(mp_kernel(kind, g, t, angle))
+            },
+            &lo,
+            &hi,
+            opts,
+        )?;
+        total += r.value;
+    }
+    Ok(total * 2u32)
+}
+
+fn mp_quadrature(kind: Quantity, a: &Float, zeta: &Float, amp: &Float, x: &Float, prec: u32) -> Result<QuadEstimateMp> {
+    for (v, n) in [(a, "a"), (zeta, "zeta"), (amp, "amp"), (x, "x")] {
+        check_finite(v, n)?;
+    }
+    check(a.to_f64(), zeta.to_f64(), amp.to_f64(), x.to_f64())?;
+    if *x < *a {
+        return Err(Error::Domain { what: "the wave displacement is for x >= a".into() });
+    }
+    crate::error::check_prec(prec)?;
+    let inner_opts = TanhSinhOptions::with_prec(prec + 24);
+    let wp = inner_opts.prec + inner_opts.guard_bits;
+    let d = Float::with_val(wp, Constant::Pi) * a * 2u32 / zeta;
+    let xma = exact_sub(x, a);
+    let g = MpGeometry {
+        cos_phi: Float::with_val(wp, a / x),
+        one_minus_cos_phi: Float::with_val(wp, &xma / x),
+        rm1: Float::with_val(wp, &xma / a),
+        d: d.clone(),
+    };
+    let split = split_point(kind, a.to_f64(), x.to_f64());
+    let mut outer_opts = TanhSinhOptions::with_prec(prec);
+    // The result may be small compared with its pieces: an absolute floor at the
+    // natural scale (|A| for u, 2 pi |A|/zeta for du).
+    outer_opts.abs_tol = Float::with_val(53, amp.abs_ref()) >> (prec as i32);
+    let zero = Float::new(wp);
+    let outer = tanh_sinh::integrate(
+        |t: &Float| {
+            let j0 = bessel_j_mp(0, t, t.prec())?;
+            let inner = mp_inner(kind, &g, t, split, &inner_opts)?;
+            Ok(Float::with_val(t.prec(), j0.mid() * &inner))
+        },
+        &zero,
+        &d,
+        &outer_opts,
+    )?;
+    let factor = match kind {
+        Quantity::Gradient => Float::with_val(wp, amp / zeta),
+        Quantity::Increment => Float::with_val(wp, amp * a) / zeta,
+    };
+    let mut value = Float::with_val(prec, &outer.value * &factor);
+    let err = Float::with_val(53, &outer.error_estimate * Float::with_val(53, factor.abs_ref()));
+    if kind == Quantity::Increment {
+        // + u_w(a) = A (1 - cos D) = 2 A sin^2(D/2)
+        let half = Float::with_val(wp, &d / 2u32);
+        let s = Float::with_val(wp, half.sin_ref());
+        value += Float::with_val(wp, s.square_ref()) * amp * 2u32;
+    }
+    Ok(QuadEstimateMp { value, error_estimate: err, evaluations: outer.evaluations })
+}
+
+/// `u_w(x)` from the Eq. 11a quadrature (tanh-sinh), to about `prec` bits (estimate).
+pub fn u_wave_quad_mp(a: &Float, zeta: &Float, amp: &Float, x: &Float, prec: u32) -> Result<QuadEstimateMp> {
+    mp_quadrature(Quantity::Increment, a, zeta, amp, x, prec)
+}
+
+/// `du_w/dx` from the Eq. 11a double integral (tanh-sinh), to about `prec` bits (estimate).
+pub fn du_wave_quad_mp(a: &Float, zeta: &Float, amp: &Float, x: &Float, prec: u32) -> Result<QuadEstimateMp> {
+    mp_quadrature(Quantity::Gradient, a, zeta, amp, x, prec)
+}
+
+// ---------------------------------------------------------------- f64
+
+/// Gauss–Legendre order per panel of the f64 route.
+const GL_ORDER: usize = 24;
+
+/// Widest panel (radians in `th`, units in `t`): with at most ~75 rad of phase
+/// per unit (`|t - D| <= D <= 75` in the tested range) a 24-point rule per panel
+/// resolves the oscillation to f64 accuracy.
+const MAX_PANEL: f64 = 0.25;
+
+/// Panels of `[0, pi]` for the inner integral: `[0, th_s]`, then geometrically
+/// growing panels from `th_s` (resolving the `phi`-scale feature at the left
+/// end), each at most [`MAX_PANEL`] wide.
+fn inner_panels(split: f64) -> Vec<(f64, f64)> {
+    let pi = std::f64::consts::PI;
+    let mut panels = Vec::new();
+    let mut lo = 0.0;
+    if split > 0.0 {
+        // [0, split] itself graded towards 0 for the log kernel.
+        let mut edges = vec![split];
+        let mut e = split;
+        for _ in 0..12 {
+            e *= 0.25;
+            edges.push(e);
+        }
+        edges.push(0.0);
+        edges.reverse();
+        for w in edges.windows(2) {
+            panels.push((w[0], w[1]));
+        }
+        lo = split;
+    }
+    let mut width = if split > 0.0 { split } else { MAX_PANEL };
+    while lo < pi {
+        let hi = (lo + width.min(MAX_PANEL)).min(pi);
+        panels.push((lo, hi));
+        lo = hi;
+        width *= 2.0;
+    }
+    // No panel wider than MAX_PANEL (the oscillation needs it).
+    panels
+        .into_iter()
+        .flat_map(|(lo, hi)| {
+            let pieces = ((hi - lo) / MAX_PANEL).ceil().max(1.0) as usize;
+            let w = (hi - lo) / pieces as f64;
+            (0..pieces).map(move |i| (lo + i as f64 * w, if i + 1 == pieces { hi } else { lo + (i + 1) as f64 * w }))
+        })
+        .collect()
+}
+
+fn f64_quadrature(kind: Quantity, a: f64, zeta: f64, amp: f64, x: f64) -> Result<QuadEstimate> {
+    check(a, zeta, amp, x)?;
+    let d = 2.0 * std::f64::consts::PI * a / zeta;
+    let cos_phi = a / x;
+    let one_minus_cos_phi = (x - a) / x;
+    let rm1 = (x - a) / a;
+    let split = split_point(kind, a, x);
+    let rule = gauss_legendre::rule(GL_ORDER)?;
+    // Inner nodes and the t-independent part of the kernel, once per x.
+    let mut nodes: Vec<(f64, f64, f64)> = Vec::new(); // (weight * geometric factor, cos th, 0)
+    for (lo, hi) in inner_panels(split) {
+        let half = 0.5 * (hi - lo);
+        let mid = 0.5 * (hi + lo);
+        for (xi, wi) in rule.nodes().iter().zip(rule.weights()) {
+            let th = mid + half * xi;
+            let s_half = (0.5 * th).sin();
+            let two_s2 = 2.0 * s_half * s_half;
+            let c = 1.0 - two_s2;
+            let sin2 = th.sin().powi(2);
+            let geom = match kind {
+                Quantity::Gradient => cos_phi * sin2 / (two_s2 + c * one_minus_cos_phi),
+                Quantity::Increment => {
+                    if two_s2 == 0.0 {
+                        0.0
+                    } else {
+                        sin2 * (rm1 / two_s2).ln_1p()
+                    }
+                }
+            };
+            nodes.push((wi * half * geom, c, 0.0));
+        }
+    }
+    let n_outer_panels = ((d / MAX_PANEL).ceil() as usize).max(1);
+    let mut evaluations = 0u64;
+    let mut outer = 0.0f64;
+    let mut comp = 0.0f64;
+    let width = d / n_outer_panels as f64;
+    for p in 0..n_outer_panels {
+        let mid = (p as f64 + 0.5) * width;
+        for (xi, wi) in rule.nodes().iter().zip(rule.weights()) {
+            let t = mid + 0.5 * width * xi;
+            let j0 = bessel_j_sequence(0, t).first().copied().unwrap_or(f64::NAN);
+            let inner: f64 = nodes.iter().map(|&(w, c, _)| w * ((t - d) * c).cos()).sum();
+            evaluations += nodes.len() as u64;
+            let term = 0.5 * width * wi * 2.0 * j0 * inner;
+            // Neumaier summation
+            let new = outer + term;
+            comp += if outer.abs() >= term.abs() { (outer - new) + term } else { (term - new) + outer };
+            outer = new;
+        }
+    }
+    let outer = outer + comp;
+    let factor = match kind {
+        Quantity::Gradient => amp / zeta,
+        Quantity::Increment => amp * a / zeta,
+    };
+    let mut value = outer * factor;
+    if kind == Quantity::Increment {
+        let s = (0.5 * d).sin();
+        value += 2.0 * amp * s * s;
+    }
+    // A fixed rule has no built-in estimate; report the rounding level of the sums.
+    let error_estimate = 1e-15 * (1.0 + d) * factor.abs().max(amp.abs());
+    Ok(QuadEstimate { value, error_estimate, evaluations })
+}
+
+/// `u_w(x)` from the Eq. 11a quadrature in f64 (nested adaptive Gauss–Kronrod).
+pub fn u_wave_quad(a: f64, zeta: f64, amp: f64, x: f64) -> Result<QuadEstimate> {
+    f64_quadrature(Quantity::Increment, a, zeta, amp, x)
+}
+
+/// `du_w/dx` from the Eq. 11a double integral in f64 (nested adaptive Gauss–Kronrod).
+pub fn du_wave_quad(a: f64, zeta: f64, amp: f64, x: f64) -> Result<QuadEstimate> {
+    f64_quadrature(Quantity::Gradient, a, zeta, amp, x)
+}
+
+/// Convenience: the MP quadrature at f64 arguments.
+pub fn u_wave_quad_mp_f64(a: f64, zeta: f64, amp: f64, x: f64, prec: u32) -> Result<QuadEstimateMp> {
+    check(a, zeta, amp, x)?;
+    u_wave_quad_mp(&exact(a), &exact(zeta), &exact(amp), &exact(x), prec)
+}
