@@ -72,7 +72,7 @@ use crate::special::pfq::pfq_series;
 use crate::special::{check_finite, exact, exact_add, exact_sub, f64_from_mp, ziv, ziv_with_floor, DEFAULT_GUARD_BITS};
 
 /// Largest `kmax` accepted by the truncated series.
-pub const MAX_KMAX: u64 = 1_000_000;
+pub const MAX_KMAX: u64 = 100_000;
 
 /// `1 + 2 ln 2`, rounded up: the largest value of `psi(k+2) - psi(k+1/2)` (at `k = 0`).
 const PSI_DIFF_MAX: f64 = 2.39;

@@ -334,6 +334,46 @@ pub fn du_wave_quad(a: f64, zeta: f64, amp: f64, x: f64) -> Result<QuadEstimate>
     f64_quadrature(Quantity::Gradient, a, zeta, amp, x)
 }
 
+/// The printed (garbled) Eq. 11a, kept only so a test can pin the erratum:
+/// outer integral over `t in [0, 2 pi]` with the factor `2 pi a/zeta` in front of
+/// `J0(t)` and prefactor `A/zeta`, f64. Do not use it for anything else.
+pub fn du_wave_quad_as_printed(a: f64, zeta: f64, amp: f64, x: f64) -> Result<f64> {
+    check(a, zeta, amp, x)?;
+    let d = 2.0 * std::f64::consts::PI * a / zeta;
+    let cos_phi = a / x;
+    let one_minus_cos_phi = (x - a) / x;
+    let rule = gauss_legendre::rule(GL_ORDER)?;
+    let inner = |t: f64| -> f64 {
+        let mut sum = 0.0;
+        for (lo, hi) in inner_panels(split_point(Quantity::Gradient, a, x)) {
+            let half = 0.5 * (hi - lo);
+            let mid = 0.5 * (hi + lo);
+            for (xi, wi) in rule.nodes().iter().zip(rule.weights()) {
+                let th = mid + half * xi;
+                let s_half = (0.5 * th).sin();
+                let two_s2 = 2.0 * s_half * s_half;
+                let c = 1.0 - two_s2;
+                let k = cos_phi * th.sin().powi(2) / (two_s2 + c * one_minus_cos_phi);
+                sum += wi * half * k * ((t - d) * c).cos();
+            }
+        }
+        2.0 * sum
+    };
+    let two_pi = 2.0 * std::f64::consts::PI;
+    let panels = (two_pi / MAX_PANEL).ceil() as usize;
+    let width = two_pi / panels as f64;
+    let mut total = 0.0;
+    for p in 0..panels {
+        let mid = (p as f64 + 0.5) * width;
+        for (xi, wi) in rule.nodes().iter().zip(rule.weights()) {
+            let t = mid + 0.5 * width * xi;
+            let j0 = bessel_j_sequence(0, t).first().copied().unwrap_or(f64::NAN);
+            total += 0.5 * width * wi * d * j0 * inner(t);
+        }
+    }
+    Ok(amp / zeta * total)
+}
+
 /// Convenience: the MP quadrature at f64 arguments.
 pub fn u_wave_quad_mp_f64(a: f64, zeta: f64, amp: f64, x: f64, prec: u32) -> Result<QuadEstimateMp> {
     check(a, zeta, amp, x)?;

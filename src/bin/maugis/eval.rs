@@ -18,6 +18,7 @@
 
 use std::io::{BufRead, Write};
 
+use maugis::contact::{displacement, wave_quadrature};
 use maugis::special::{bessel_j, hyp1f2, hyp2f1, meijer_g};
 use maugis::{Ball, Error, MAX_PREC};
 use rug::Float;
@@ -40,6 +41,12 @@ const FUNCTIONS: &[(&str, &[&str])] = &[
     ("hyp1f2", &["a", "b1", "b2", "z"]),
     ("hyp2f1", &["a", "b", "c", "z"]),
     ("meijer_g_k", &["k", "y"]),
+    ("u_wave", &["a", "zeta", "amp", "x"]),
+    ("u_wave_series", &["a", "zeta", "amp", "x", "kmax"]),
+    ("du_wave", &["a", "zeta", "amp", "x"]),
+    ("u_wave_quad", &["a", "zeta", "amp", "x"]),
+    ("u_hertz", &["a", "r", "x"]),
+    ("u_adhesive", &["a", "c", "sigma", "e_star", "x"]),
 ];
 
 /// The argument as decimal text (JSON number text or string).
@@ -182,6 +189,100 @@ fn evaluate(obj: &Map<String, Value>) -> Req<Value> {
         ("meijer_g_k", None) => f64_response(&id, meijer_g::meijer_g_k(arg_u32(obj, "k")?, arg_f64(obj, "y")?)?),
         ("meijer_g_k", Some(p)) => {
             mp_response(&id, &meijer_g::meijer_g_k_mp(arg_u32(obj, "k")?, &arg_float(obj, "y", p)?, p)?, p)
+        }
+        _ => return evaluate_contact(obj, fname, &id, prec),
+    };
+    Ok(out)
+}
+
+/// The four wave arguments, f64.
+fn wave_f64(obj: &Map<String, Value>) -> Req<(f64, f64, f64, f64)> {
+    Ok((arg_f64(obj, "a")?, arg_f64(obj, "zeta")?, arg_f64(obj, "amp")?, arg_f64(obj, "x")?))
+}
+
+/// The four wave arguments, MP.
+fn wave_mp(obj: &Map<String, Value>, p: u32) -> Req<(Float, Float, Float, Float)> {
+    Ok((arg_float(obj, "a", p)?, arg_float(obj, "zeta", p)?, arg_float(obj, "amp", p)?, arg_float(obj, "x", p)?))
+}
+
+/// The contact-model functions (displacements).
+fn evaluate_contact(obj: &Map<String, Value>, fname: &str, id: &Value, prec: Option<u32>) -> Req<Value> {
+    let out = match (fname, prec) {
+        ("u_wave", None) => {
+            let (a, z, m, x) = wave_f64(obj)?;
+            f64_response(id, displacement::u_wave(a, z, m, x)?)
+        }
+        ("u_wave", Some(p)) => {
+            let (a, z, m, x) = wave_mp(obj, p)?;
+            mp_response(id, &displacement::u_wave_mp(&a, &z, &m, &x, p)?, p)
+        }
+        ("du_wave", None) => {
+            let (a, z, m, x) = wave_f64(obj)?;
+            f64_response(id, displacement::du_wave(a, z, m, x)?)
+        }
+        ("du_wave", Some(p)) => {
+            let (a, z, m, x) = wave_mp(obj, p)?;
+            mp_response(id, &displacement::du_wave_mp(&a, &z, &m, &x, p)?, p)
+        }
+        ("u_wave_series", _) => {
+            let kmax = arg_int(obj, "kmax")?;
+            let kmax = u64::try_from(kmax).map_err(|_| BadRequest(format!("\"kmax\" must be >= 0 (got {kmax})")))?;
+            match prec {
+                None => {
+                    let (a, z, m, x) = wave_f64(obj)?;
+                    let (v, trunc) = displacement::u_wave_series(a, z, m, x, kmax)?;
+                    json!({"id": id, "f64": v, "trunc": trunc})
+                }
+                Some(p) => {
+                    let (a, z, m, x) = wave_mp(obj, p)?;
+                    let r = displacement::u_wave_series_mp(&a, &z, &m, &x, kmax, p)?;
+                    let mut resp = mp_response(id, &r.full(), p);
+                    resp["trunc"] = Value::String(maugis::ball::decimal_upper(&r.trunc));
+                    resp
+                }
+            }
+        }
+        ("u_wave_quad", None) => {
+            let (a, z, m, x) = wave_f64(obj)?;
+            let q = wave_quadrature::u_wave_quad(a, z, m, x)?;
+            json!({"id": id, "f64": q.value, "error_estimate": q.error_estimate, "certified": false})
+        }
+        ("u_wave_quad", Some(p)) => {
+            let (a, z, m, x) = wave_mp(obj, p)?;
+            let q = wave_quadrature::u_wave_quad_mp(&a, &z, &m, &x, p)?;
+            json!({
+                "id": id,
+                "mid": q.value.to_string_radix(10, Some(digits_for(p))),
+                "error_estimate": maugis::ball::decimal_upper(&q.error_estimate),
+                "prec": p,
+                "certified": false
+            })
+        }
+        ("u_hertz", None) => f64_response(id, displacement::u_hertz(arg_f64(obj, "a")?, arg_f64(obj, "r")?, arg_f64(obj, "x")?)?),
+        ("u_hertz", Some(p)) => {
+            let b = displacement::u_hertz_mp(&arg_float(obj, "a", p)?, &arg_float(obj, "r", p)?, &arg_float(obj, "x", p)?, p)?;
+            mp_response(id, &b, p)
+        }
+        ("u_adhesive", None) => f64_response(
+            id,
+            displacement::u_adhesive(
+                arg_f64(obj, "a")?,
+                arg_f64(obj, "c")?,
+                arg_f64(obj, "sigma")?,
+                arg_f64(obj, "e_star")?,
+                arg_f64(obj, "x")?,
+            )?,
+        ),
+        ("u_adhesive", Some(p)) => {
+            let b = displacement::u_adhesive_mp(
+                &arg_float(obj, "a", p)?,
+                &arg_float(obj, "c", p)?,
+                &arg_float(obj, "sigma", p)?,
+                &arg_float(obj, "e_star", p)?,
+                &arg_float(obj, "x", p)?,
+                p,
+            )?;
+            mp_response(id, &b, p)
         }
         _ => return Err(BadRequest(format!("internal: no dispatch for {fname}"))),
     };
