@@ -267,9 +267,10 @@ impl Ball {
         self.upper() < 0
     }
 
-    /// True when the ball contains zero.
+    /// True when the ball contains zero (`|mid| <= rad`, decided conservatively:
+    /// a ball that merely touches zero after rounding also counts).
     pub fn contains_zero(&self) -> bool {
-        !self.is_positive() && !self.is_negative()
+        self.abs_lower_mag().is_zero()
     }
 
     /// `log2(|mid| / rad)`: the number of bits the ball certifies

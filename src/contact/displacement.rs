@@ -632,6 +632,7 @@ fn wave_series_mp(
         SeriesKind::Gradient => gradient_scale(amp, zeta),
     };
     let partial = ziv_with_floor(name, prec, guard, Some(&floor), |wp| {
+        if std::env::var("MAUGIS_TRACE").is_ok() { eprintln!("{name}: wp = {wp}"); }
         let g = wave_geometry(a, zeta, amp, x, wp)?;
         wave_series_wp(kind, &g, kmax, wp)
     })?;

@@ -218,13 +218,6 @@ pub fn meijer_g_k_direct_ball(consts: &MeijerConstants, yb: &Ball, wp: u32) -> R
     Ok(consts.c_k.mul(&bracket))
 }
 
-/// Tail of the `I1`/`I2` sums is below this fraction of the accumulated scale.
-fn target(scale: &Float, wp: u32) -> Float {
-    let mut t = Float::with_val(crate::ball::MAG_PREC, scale);
-    t >>= wp as i32 + 4;
-    t
-}
-
 /// `G(k, y)` by the expansion in `w = 1 - y` at working precision `wp` (`y >= 1/2`).
 pub fn meijer_g_k_near_one(k: u32, y: &Float, wp: u32) -> Result<Ball> {
     if *y < 0.5 {
@@ -245,72 +238,63 @@ pub fn meijer_g_k_near_one_ball(consts: &MeijerConstants, w: &Ball, wp: u32) -> 
     }
     let kw = (k as f64) * w.upper().to_f64();
     let kk = k as i64;
-    let half = Ball::from_ratio(1, 2, wp);
-    let kb = Ball::from_i64(kk, wp);
-    let k_half = kb.add(&half);
-    // I1 = sum_j h_j w^{j+1}/(j+1)
+    let w_up = w.abs_upper_mag();
+    let one = Mag::from_f64(1.0);
+    // Integer ratios as Mag bounds (the integers are exact doubles).
+    let ratio = |num: i64, den: i64| Mag::from_f64(num as f64).div(Mag::from_f64(den as f64));
+    // I1 = sum_j h_j w^{j+1}/(j+1), r_{j+1} = r_j (2k+1+2j)/(1+2j)
     let mut r = Ball::one(wp); // r_j
     let mut h = Ball::one(wp); // h_j
     let mut wpow = w.clone(); // w^{j+1}
     let mut i1 = Ball::zero(wp);
-    let mut j: u64 = 0;
+    let mut j: i64 = 0;
     loop {
-        let term = h.mul(&wpow).div_i64(j as i64 + 1)?;
-        i1 = i1.add(&term);
-        // next r, h, wpow
-        let num = k_half.add_i64(j as i64);
-        let den = half.add_i64(j as i64);
-        r = r.mul(&num).div(&den)?;
+        i1 = i1.add(&h.mul(&wpow).div_i64(j + 1)?);
+        r = r.mul_i64(2 * kk + 1 + 2 * j).div_i64(1 + 2 * j)?;
         h = h.add(&r);
         wpow = wpow.mul(&w);
         j += 1;
-        // bound: tail from index j <= r_j w^{j+1} / (1 - rho), rho = w (k+1/2+j)/(1/2+j)
+        // tail from index j <= r_j w^{j+1} / (1 - rho), rho = w (2k+1+2j)/(1+2j)
         if (j as f64) > kw {
-            let rho = w.mul(&k_half.add_i64(j as i64)).div(&half.add_i64(j as i64))?;
-            let rho_up = rho.upper();
-            if rho_up < 1 {
-                let bound = r.mul(&wpow).abs_upper();
-                let one_minus = Float::with_val(crate::ball::MAG_PREC, 1 - &rho_up);
-                let mut tail = Float::with_val(crate::ball::MAG_PREC, &bound / &one_minus);
-                tail.next_up();
-                if tail <= target(&i1.abs_upper(), wp) {
-                    i1.add_error(&tail);
+            let rho = w_up.mul(ratio(2 * kk + 1 + 2 * j, 1 + 2 * j));
+            let one_minus = one.sub_lower(rho);
+            if !one_minus.is_zero() {
+                let tail = r.abs_upper_mag().mul(wpow.abs_upper_mag()).div(one_minus);
+                if tail.le(&i1.abs_upper_mag().mul_2exp(-(wp as i64) - 4)) {
+                    i1.add_error_mag(tail);
                     break;
                 }
             }
         }
         if j > 50_000_000 {
-            return Err(Error::NoConvergence { function: "meijer_g_k (near one, I1)", terms: j });
+            return Err(Error::NoConvergence { function: "meijer_g_k (near one, I1)", terms: j as u64 });
         }
     }
-    // I2 = w^{3/2} sum_j c_j w^j / (j + 3/2)
-    let three_half = Ball::from_ratio(3, 2, wp);
+    // I2 = w^{3/2} sum_j c_j w^j / (j + 3/2), c_{j+1} = c_j (k+2+j)/(j+1)
     let mut cj = Ball::one(wp);
     let mut wj = Ball::one(wp);
     let mut sum2 = Ball::zero(wp);
-    let mut j: u64 = 0;
+    let mut j: i64 = 0;
     loop {
-        let term = cj.mul(&wj).div(&three_half.add_i64(j as i64))?;
-        sum2 = sum2.add(&term);
-        cj = cj.mul(&kb.add_i64(2 + j as i64)).div_i64(j as i64 + 1)?;
+        sum2 = sum2.add(&cj.mul(&wj).mul_pow2(1).div_i64(2 * j + 3)?);
+        cj = cj.mul_i64(kk + 2 + j).div_i64(j + 1)?;
         wj = wj.mul(&w);
         j += 1;
         if (j as f64) > kw {
-            let rho = w.mul(&kb.add_i64(2 + j as i64)).div_i64(j as i64 + 1)?;
-            let rho_up = rho.upper();
-            if rho_up < 1 {
-                let next = cj.mul(&wj).div(&three_half.add_i64(j as i64))?.abs_upper();
-                let one_minus = Float::with_val(crate::ball::MAG_PREC, 1 - &rho_up);
-                let mut tail = Float::with_val(crate::ball::MAG_PREC, &next / &one_minus);
-                tail.next_up();
-                if tail <= target(&sum2.abs_upper(), wp) {
-                    sum2.add_error(&tail);
+            // term ratio <= w (k+2+j)/(j+1), decreasing in j
+            let rho = w_up.mul(ratio(kk + 2 + j, j + 1));
+            let one_minus = one.sub_lower(rho);
+            if !one_minus.is_zero() {
+                let next = cj.abs_upper_mag().mul(wj.abs_upper_mag()).mul(ratio(2, 2 * j + 3));
+                let tail = next.div(one_minus);
+                if tail.le(&sum2.abs_upper_mag().mul_2exp(-(wp as i64) - 4)) {
+                    sum2.add_error_mag(tail);
                     break;
                 }
             }
         }
         if j > 50_000_000 {
-            return Err(Error::NoConvergence { function: "meijer_g_k (near one, I2)", terms: j });
+            return Err(Error::NoConvergence { function: "meijer_g_k (near one, I2)", terms: j as u64 });
         }
     }
     let i2 = w.sqrt()?.mul(&w).mul(&sum2);

@@ -48,7 +48,7 @@ use rug::float::Round;
 use rug::ops::AssignRound;
 use rug::Float;
 
-use crate::ball::{Ball, MAG_PREC};
+use crate::ball::{Ball, Mag, MAG_PREC};
 use crate::error::{Error, Result};
 use crate::special::{check_finite, exact, f64_from_mp, ziv, DEFAULT_GUARD_BITS};
 
@@ -165,9 +165,10 @@ pub fn pfq_series(a: &[Ball], b: &[Ball], z: &Ball, wp: u32) -> Result<SeriesSum
     }
     let mut t = Ball::one(wp);
     let mut s = Ball::one(wp);
-    let mut abs_sum = Float::with_val(MAG_PREC, 1);
+    let mut abs_sum = Mag::from_f64(1.0);
+    let finish = |sum: Ball, abs_sum: Mag, terms: u64| SeriesSum { sum, abs_sum: abs_sum.to_float(), terms };
     if z.is_exact() && z.mid().is_zero() {
-        return Ok(SeriesSum { sum: s, abs_sum, terms: 1 });
+        return Ok(finish(s, abs_sum, 1));
     }
     let n_pos = first_positive_index(a)?.max(first_positive_index(b)?);
     let mut n: u64 = 0;
@@ -194,37 +195,26 @@ pub fn pfq_series(a: &[Ball], b: &[Ball], z: &Ball, wp: u32) -> Result<SeriesSum
         n += 1;
         if t.is_exact() && t.mid().is_zero() {
             // Terminating series: every later term is exactly zero.
-            return Ok(SeriesSum { sum: s, abs_sum, terms: n });
+            return Ok(finish(s, abs_sum, n));
         }
-        let t_up = t.abs_upper();
+        let t_up = t.abs_upper_mag();
         if !t_up.is_finite() {
             return Err(Error::Overflow { what: "hypergeometric series term".into() });
         }
         if n >= n_pos {
             // target = 2^-wp max(|s|, 2^-wp sum|t|)
-            let mut target = s.abs_lower();
-            let mut floor = abs_sum.clone();
-            floor >>= wp as i32;
-            if floor > target {
-                target = floor;
-            }
-            target >>= wp as i32;
-            if t_up <= target {
+            let target = s.abs_lower_mag().max(abs_sum.mul_2exp(-(wp as i64))).mul_2exp(-(wp as i64));
+            if t_up.le(&target) {
                 let rho = ratio_bound(a, b, z, n);
                 if rho < 1 {
-                    let mut one_minus = Float::new(MAG_PREC);
-                    one_minus.assign_round(1 - &rho, Round::Down);
-                    let mut tail = Float::new(MAG_PREC);
-                    tail.assign_round(&t_up / &one_minus, Round::Up);
-                    s.add_error(&tail);
-                    return Ok(SeriesSum { sum: s, abs_sum, terms: n });
+                    let one_minus = Mag::from_float_down(&Float::with_val_round(MAG_PREC, 1 - &rho, Round::Down).0);
+                    s.add_error_mag(t_up.div(one_minus));
+                    return Ok(finish(s, abs_sum, n));
                 }
             }
         }
         s = s.add(&t);
-        let mut acc = Float::new(MAG_PREC);
-        acc.assign_round(&abs_sum + &t_up, Round::Up);
-        abs_sum = acc;
+        abs_sum = abs_sum.add(t_up);
         if n > MAX_SERIES_TERMS {
             return Err(Error::NoConvergence { function: "pFq", terms: n });
         }
