@@ -327,44 +327,120 @@ fn ln_factorial(n: f64) -> f64 {
     n * n.ln() - n + 0.5 * (2.0 * std::f64::consts::PI * n).ln() + 1.0 / (12.0 * n)
 }
 
-/// f64 Bessel-form `(u_w, du_w/dx)`, evaluated in double-double (the Bessel
-/// values by Miller's recurrence, the geometry `q`, `g_n` and the sums) and
-/// rounded once at the end; `acosh(x/a)` is the f64 library value, whose
+/// The Bessel form at one contact size: `D = 2 pi a/zeta` and the sequence
+/// `J_n(D)` are computed once (double-double Miller recurrence), after which
+/// `u_w(x)`, `du_w/dx` and the wave-traction integral cost one short sum each.
+/// This is what the Maugis solver uses: `a` is fixed while the strip end moves.
+///
+/// Everything is evaluated in double-double (the geometry `q`, `g_n` and the
+/// sums) and rounded once; `acosh(x/a)` is the f64 library value, whose
 /// half-ulp error enters only through the `D J1(D) acosh(x/a)` term.
-fn wave_bessel_f64(a: f64, zeta: f64, amp: f64, x: f64) -> (f64, f64) {
-    let d = Dd::TWO_PI.mul_f64(a) / Dd::from_f64(zeta);
-    let n_terms = bessel_terms_f64(d.hi);
-    let j = bessel_j_sequence_dd(2 * n_terms + 1, d);
-    let ad = Dd::from_f64(a);
-    let rm1 = Dd::diff(x, a) / ad; // x/a - 1
-    let rp1 = (Dd::from_f64(x) + ad) / ad; // x/a + 1
-    let r = Dd::from_f64(x) / ad;
-    let sq = (rm1 * rp1).sqrt(); // sqrt((x/a)^2 - 1)
-    let q = (r + sq).recip();
-    let acosh_r = (rm1 + sq).to_f64().ln_1p();
-    let one_minus_q_over_s = Dd::ONE - (rm1 / rp1).sqrt();
-    let q2 = q * q;
-    let (mut q_pow, mut q_odd, mut geo) = (Dd::ONE, q, Dd::ZERO);
-    let (mut su, mut sdu) = (Dd::ZERO, Dd::ZERO);
-    for n in 1..=n_terms {
-        geo = geo + q_pow + q_odd;
-        q_pow = q_pow * q2;
-        q_odd = q_odd * q2;
-        let jn = j[2 * n];
-        let tu = jn * q_pow;
-        let tdu = (jn * geo).mul_f64(n as f64);
-        if n % 2 == 1 {
-            su = su + tu;
-            sdu = sdu + tdu;
-        } else {
-            su = su - tu;
-            sdu = sdu - tdu;
+#[derive(Debug, Clone)]
+pub struct WaveBessel {
+    a: f64,
+    amp: f64,
+    d: Dd,
+    n_terms: usize,
+    j: Vec<Dd>,
+    /// `S_n = 2 sum_{k>=0} (-1)^k J_{2n+2k+1}(D)`, `n = 0..=n_terms`.
+    conv: Vec<Dd>,
+}
+
+impl WaveBessel {
+    /// Precomputes the Bessel data for contact half-width `a`, wavelength `zeta`,
+    /// amplitude `amp`.
+    pub fn new(a: f64, zeta: f64, amp: f64) -> Result<WaveBessel> {
+        check_wave_f64(a, zeta, amp, a)?;
+        let d = Dd::TWO_PI.mul_f64(a) / Dd::from_f64(zeta);
+        let n_terms = bessel_terms_f64(d.hi);
+        let top = 2 * n_terms + 3;
+        let j = bessel_j_sequence_dd(top, d);
+        // S_n = J_{2n+1} - J_{2n+3} + ... (times 2): backward partial sums over the odd orders.
+        let mut conv = vec![Dd::ZERO; n_terms + 1];
+        // Start at the highest odd order available and accumulate downward;
+        // the neglected orders are below the sums' truncation level.
+        let mut tail = Dd::ZERO;
+        let mut k = top as isize - if top % 2 == 1 { 0 } else { 1 };
+        while k >= 1 {
+            // tail_k = J_k - tail_{k+2}
+            tail = j[k as usize] - tail;
+            if (k - 1) % 2 == 0 {
+                let idx = (k - 1) / 2;
+                if idx <= n_terms as isize {
+                    conv[idx as usize] = tail.mul_f64(2.0);
+                }
+            }
+            k -= 2;
         }
+        Ok(WaveBessel { a, amp, d, n_terms, j, conv })
     }
-    let inner = (Dd::ONE - j[0]) + (d * j[1]).mul_f64(acosh_r) + su.mul_f64(2.0);
-    let u = inner.mul_f64(amp).to_f64();
-    let du = (one_minus_q_over_s * sdu).mul_f64(4.0 * amp / a).to_f64();
-    (u, du)
+
+    /// `D = 2 pi a / zeta`.
+    pub fn d(&self) -> f64 {
+        self.d.to_f64()
+    }
+
+    /// `(u_w(x), du_w/dx)` for `x >= a`.
+    pub fn eval(&self, x: f64) -> (f64, f64) {
+        let (a, amp, d, j) = (self.a, self.amp, self.d, &self.j);
+        let ad = Dd::from_f64(a);
+        let rm1 = Dd::diff(x, a) / ad; // x/a - 1
+        let rp1 = (Dd::from_f64(x) + ad) / ad; // x/a + 1
+        let r = Dd::from_f64(x) / ad;
+        let sq = (rm1 * rp1).sqrt(); // sqrt((x/a)^2 - 1)
+        let q = (r + sq).recip();
+        let acosh_r = (rm1 + sq).to_f64().ln_1p();
+        let one_minus_q_over_s = Dd::ONE - (rm1 / rp1).sqrt();
+        let q2 = q * q;
+        let (mut q_pow, mut q_odd, mut geo) = (Dd::ONE, q, Dd::ZERO);
+        let (mut su, mut sdu) = (Dd::ZERO, Dd::ZERO);
+        for n in 1..=self.n_terms {
+            geo = geo + q_pow + q_odd;
+            q_pow = q_pow * q2;
+            q_odd = q_odd * q2;
+            let jn = j[2 * n];
+            let tu = jn * q_pow;
+            let tdu = (jn * geo).mul_f64(n as f64);
+            if n % 2 == 1 {
+                su = su + tu;
+                sdu = sdu + tdu;
+            } else {
+                su = su - tu;
+                sdu = sdu - tdu;
+            }
+        }
+        let inner = (Dd::ONE - j[0]) + (d * j[1]).mul_f64(acosh_r) + su.mul_f64(2.0);
+        let u = inner.mul_f64(amp).to_f64();
+        let du = (one_minus_q_over_s * sdu).mul_f64(4.0 * amp / a).to_f64();
+        (u, du)
+    }
+
+    /// The wave-traction integral of Eq. 7 / Eq. 16,
+    /// `K(c) = int_0^D J0(t) cos((t - D) c) dt` for `|c| <= 1` (`c = x/a = cos(theta)`).
+    ///
+    /// Jacobi–Anger, `cos(z c) = J0(z) + 2 sum_n (-1)^n J_{2n}(z) T_{2n}(c)` [DLMF 10.12.3],
+    /// and the convolution `int_0^D J0(t) J_{2n}(D-t) dt = 2 sum_k (-1)^k J_{2n+2k+1}(D)`
+    /// [DLMF 10.22.31] give `K(c) = sum_n eps_n (-1)^n S_n T_{2n}(c)`; the Chebyshev
+    /// polynomials by their recurrence. Same truncation as the displacement sums.
+    pub fn traction_integral(&self, c: f64) -> f64 {
+        let c = c.clamp(-1.0, 1.0);
+        let x2 = 2.0 * c * c - 1.0; // T_2(c)
+        // T_{2n}(c) = T_n(T_2(c)); recurrence in n on T_2
+        let (mut t_prev, mut t_cur) = (1.0f64, x2); // T_0(x2), T_1(x2)
+        let mut sum = self.conv[0];
+        for n in 1..=self.n_terms {
+            let coeff = self.conv[n].mul_f64(2.0 * t_cur);
+            sum = if n % 2 == 1 { sum - coeff } else { sum + coeff };
+            let t_next = 2.0 * x2 * t_cur - t_prev;
+            t_prev = t_cur;
+            t_cur = t_next;
+        }
+        sum.to_f64()
+    }
+}
+
+fn wave_bessel_f64(a: f64, zeta: f64, amp: f64, x: f64) -> Result<(f64, f64)> {
+    Ok(WaveBessel::new(a, zeta, amp)?.eval(x))
 }
 
 /// Wave displacement `u_w(x)` in f64 (Bessel form).
@@ -373,13 +449,13 @@ fn wave_bessel_f64(a: f64, zeta: f64, amp: f64, x: f64) -> (f64, f64) {
 /// cross-check tests; an estimate, not a bound).
 pub fn u_wave(a: f64, zeta: f64, amp: f64, x: f64) -> Result<f64> {
     check_wave_f64(a, zeta, amp, x)?;
-    Ok(wave_bessel_f64(a, zeta, amp, x).0)
+    Ok(wave_bessel_f64(a, zeta, amp, x)?.0)
 }
 
 /// Wave-displacement gradient `du_w/dx` in f64 (Bessel form).
 pub fn du_wave(a: f64, zeta: f64, amp: f64, x: f64) -> Result<f64> {
     check_wave_f64(a, zeta, amp, x)?;
-    Ok(wave_bessel_f64(a, zeta, amp, x).1)
+    Ok(wave_bessel_f64(a, zeta, amp, x)?.1)
 }
 
 // ---------------------------------------------------------------- Eq. 12 / 11b series
@@ -841,6 +917,27 @@ mod tests {
             let db = du_wave_mp(&e(a), &e(zeta), &e(1.0), &e(x), 100).unwrap();
             let ds = du_wave_series_mp(&e(a), &e(zeta), &e(1.0), &e(x), 1000, 100).unwrap();
             assert!(ds.full().overlaps(&db), "du: a={a} x={x}: {:?} vs {db:?}", ds.partial);
+        }
+    }
+
+    #[test]
+    fn traction_integral_matches_quadrature() {
+        use crate::quad::gauss_legendre;
+        for &(a, zeta) in &[(2.0, 1.125), (6.0, 1.125), (0.3, 2.0)] {
+            let wb = WaveBessel::new(a, zeta, 1.0).unwrap();
+            let d = wb.d();
+            for &c in &[0.0, 0.3, -0.7, 0.999, 1.0] {
+                let k = wb.traction_integral(c);
+                let q = gauss_legendre::integrate_composite(
+                    |t| crate::special::bessel_j::bessel_j_sequence(0, t)[0] * ((t - d) * c).cos(),
+                    0.0,
+                    d,
+                    24,
+                    64,
+                )
+                .unwrap();
+                assert!((k - q).abs() < 1e-13, "a={a} zeta={zeta} c={c}: {k} vs {q}");
+            }
         }
     }
 
