@@ -2,8 +2,14 @@
 //!
 //! * [`displacement`]: substrate displacements outside the contact, dimensional
 //!   form: Hertz (Eq. 10), wave (Eq. 12, its gradient Eq. 11b, the
-//!   cancellation-free Bessel form, and the Eq. 11a quadrature) and adhesive
-//!   (Box I / A.5a), plus the profile depth (Eq. 1).
+//!   cancellation-free Bessel form) and adhesive (Box I / A.5a), plus the
+//!   profile depth (Eq. 1).
+//! * [`wave_quadrature`]: the independent Eq. 11a quadrature route.
+//! * [`model`]: the normalised Maugis model at one contact size: the
+//!   adhesive-strip equation (15b corrected), its first root, the load (Eq. 14),
+//!   traction (Eq. 16), displacement, gap and the validity checks.
+//! * [`curve`]: the load-area response, turning points, jumps, pull-off.
+//! * [`limits`]: Appendix E (JKR, M-DMT) and the Eq. 17 envelope.
 //!
 //! Sign convention (notes/model.md, sec. 1): compressive traction is negative,
 //! `u` is positive "downward" like the profile depth
@@ -13,3 +19,6 @@
 
 pub mod displacement;
 pub mod wave_quadrature;
+pub mod model;
+pub mod curve;
+pub mod limits;
