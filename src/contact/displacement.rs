@@ -344,6 +344,8 @@ pub struct WaveBessel {
     j: Vec<Dd>,
     /// `S_n = 2 sum_{k>=0} (-1)^k J_{2n+2k+1}(D)`, `n = 0..=n_terms`.
     conv: Vec<Dd>,
+    /// `J_{2n}(D)` rounded to f64, for [`WaveBessel::u_fast`].
+    j_even_f64: Vec<f64>,
 }
 
 impl WaveBessel {
@@ -372,7 +374,8 @@ impl WaveBessel {
             }
             k -= 2;
         }
-        Ok(WaveBessel { a, amp, d, n_terms, j, conv })
+        let j_even_f64 = (0..=n_terms).map(|n| j[2 * n].to_f64()).collect();
+        Ok(WaveBessel { a, amp, d, n_terms, j, conv, j_even_f64 })
     }
 
     /// `D = 2 pi a / zeta`.
@@ -413,6 +416,29 @@ impl WaveBessel {
         let u = inner.mul_f64(amp).to_f64();
         let du = (one_minus_q_over_s * sdu).mul_f64(4.0 * amp / a).to_f64();
         (u, du)
+    }
+
+    /// `u_w(x)` in plain f64 arithmetic (from the double-double Bessel values):
+    /// about 4x faster than [`WaveBessel::eval`], with an error of a few ulps of
+    /// the largest term (`~ 1e-15 |A| D`) instead of one rounding. The Maugis
+    /// solver uses it in its scans; the public `u_wave` uses [`WaveBessel::eval`].
+    pub fn u_fast(&self, x: f64) -> f64 {
+        let a = self.a;
+        let rm1 = (x - a) / a;
+        let sq = (rm1 * (rm1 + 2.0)).sqrt();
+        let q = 1.0 / (1.0 + rm1 + sq);
+        let acosh_r = (rm1 + sq).ln_1p();
+        let q2 = q * q;
+        let mut q_pow = 1.0f64;
+        let mut su = 0.0f64;
+        for n in 1..=self.n_terms {
+            q_pow *= q2;
+            let t = self.j_even_f64[n] * q_pow;
+            su += if n % 2 == 1 { t } else { -t };
+        }
+        let j1 = self.j[1].to_f64();
+        let one_minus_j0 = (Dd::ONE - self.j[0]).to_f64();
+        self.amp * (one_minus_j0 + self.d.to_f64() * j1 * acosh_r + 2.0 * su)
     }
 
     /// The wave-traction integral of Eq. 7 / Eq. 16,

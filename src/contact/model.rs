@@ -24,9 +24,9 @@
 //!
 //! `F(1) = -1` because every gap term vanishes at the contact edge. The strip
 //! ends where the gap *first* reaches `delta` (notes sec. 6), so `m` is the
-//! smallest root: [`ContactSize::solve_m`] scans outward from `c = a` (geometric
-//! steps off the edge, then steps of at most `beta/16` so no wave period is
-//! skipped) for the first sign change and refines it with Brent's method to
+//! smallest root: [`ContactSize::solve_m`] scans outward from `c = a` (steps of
+//! at most `beta/16` so no wave period is skipped, halving towards the edge when
+//! the root is closer than one step) for the first sign change and refines it with Brent's method to
 //! `1e-13` relative. A root where `F` touches zero without changing sign is not
 //! detected (it is not a crossing). No root below `c - a = `[`MAX_STRIP`] is an
 //! [`Error::NoConvergence`].
@@ -64,7 +64,7 @@ pub const GAP_TOL: f64 = 1e-10;
 pub const TRACTION_TOL: f64 = 1e-10;
 
 /// Samples per extremum search in [`ContactSize::validity`].
-const VALIDITY_SAMPLES: usize = 96;
+const VALIDITY_SAMPLES: usize = 48;
 
 /// The model parameters: Maugis parameter `lambda`, roughness `alpha` (amplitude)
 /// and `beta` (wavelength).
@@ -147,7 +147,7 @@ impl ContactSize {
     /// `ubar_w(x)` for `x >= abar`.
     pub fn wave_displacement(&self, x: f64) -> f64 {
         match &self.wave {
-            Some(w) => w.eval(x.max(self.abar)).0,
+            Some(w) => w.u_fast(x.max(self.abar)),
             None => 0.0,
         }
     }
@@ -173,31 +173,55 @@ impl ContactSize {
     }
 
     /// The first root `m > 1` of [`Self::strip_residual`].
+    ///
+    /// Scan in the strip width `s = c - a` with steps of at most
+    /// `min(beta/16, 1/4)` (so no wave period is skipped); when the first
+    /// sampled point is already past the root, the crossing lies in
+    /// `(0, s_1]`, where the wave term changes little, and is bracketed by
+    /// halving `s` towards the edge (down to `s = 1e-14 a`).
     pub fn solve_m(&self) -> Result<f64> {
         let a = self.abar;
         let f = |m: f64| self.strip_residual(m);
         let max_step = (self.params.beta / 16.0).min(0.25).max(1e-6);
-        // Scan in the strip width s = c - a: geometric off the edge, then capped.
-        let mut s_prev = 0.0f64;
-        let mut f_prev = -1.0f64;
-        let mut s = a * 1e-12;
+        let eval = |s: f64| -> Result<f64> {
+            let v = f(1.0 + s / a);
+            if v.is_finite() {
+                Ok(v)
+            } else {
+                Err(Error::Internal { what: format!("strip residual not finite at m = {}", 1.0 + s / a) })
+            }
+        };
+        let first = max_step;
+        let f_first = eval(first)?;
+        if f_first >= 0.0 {
+            // Bracket towards the edge: F(0) = -1.
+            let (mut hi, mut f_hi) = (first, f_first);
+            let mut lo = 0.5 * first;
+            loop {
+                let f_lo = eval(lo)?;
+                if f_lo < 0.0 {
+                    return brent(f, 1.0 + lo / a, 1.0 + hi / a, f_lo, f_hi);
+                }
+                hi = lo;
+                f_hi = f_lo;
+                lo *= 0.5;
+                if lo < 1e-14 * a {
+                    return brent(f, 1.0, 1.0 + hi / a, -1.0, f_hi);
+                }
+            }
+        }
+        let (mut s_prev, mut f_prev) = (first, f_first);
         loop {
-            let m = 1.0 + s / a;
-            let fm = f(m);
-            if !fm.is_finite() {
-                return Err(Error::Internal { what: format!("strip residual not finite at m = {m}") });
+            let s = s_prev + max_step.max(s_prev * 0.05);
+            let fs = eval(s)?;
+            if fs >= 0.0 {
+                return brent(f, 1.0 + s_prev / a, 1.0 + s / a, f_prev, fs);
             }
-            if fm >= 0.0 {
-                let lo = 1.0 + s_prev / a;
-                let m_root = brent(f, lo, m, f_prev, fm)?;
-                return Ok(m_root);
-            }
-            s_prev = s;
-            f_prev = fm;
-            s = (s * 2.0).min(s + max_step);
             if s > MAX_STRIP {
                 return Err(Error::NoConvergence { function: "solve_m (no strip end below MAX_STRIP)", terms: 0 });
             }
+            s_prev = s;
+            f_prev = fs;
         }
     }
 
