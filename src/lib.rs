@@ -4,16 +4,21 @@
 //! Maugis line-contact model ("Instabilities and cavitation in cylindrical
 //! wavy line contact: A Maugis analysis").
 //!
-//! The crate has three layers:
+//! The layers, bottom up:
 //!
 //! * [`ball`]: ball arithmetic over MPFR (`rug::Float` midpoint, radius rounded
-//!   upward). Everything certified is built from it.
+//!   upward) and a double-double type for fast f64 paths. Everything certified
+//!   is built from it.
 //! * [`special`]: one module per function, arbitrary precision and f64 side by
 //!   side: [`bessel_j`](special::bessel_j), [`hyp1f2`](special::hyp1f2),
 //!   [`hyp2f1`](special::hyp2f1), the [`pFq` core](special::pfq) and the Eq. 12
 //!   Meijer-G family [`meijer_g_k`](special::meijer_g).
-//! * the `maugis` command line (`src/main.rs`), whose `eval` subcommand is a
-//!   JSON Lines calculator over these functions.
+//! * [`quad`]: tanh-sinh (MP), Gauss-Legendre and Gauss-Kronrod (f64).
+//! * [`contact`]: the application: displacements (Eqs. 10, 11a, 11b, 12, A.5a),
+//!   the normalised Maugis model (Eqs. 14, 15b, 16), the load-area response and
+//!   the limits of Appendix E.
+//! * the `maugis` command line (`src/bin/maugis/`): `curve` (the main job),
+//!   `profile`, `limits`, and `eval`, a JSON Lines calculator.
 //!
 //! ## Two kinds of answers
 //!
@@ -31,14 +36,18 @@
 //! use maugis::special::bessel_j::{bessel_j, bessel_j_mp};
 //! use rug::Float;
 //!
-//! // f64
-//! let j = bessel_j(5, 2.5).unwrap();
-//! assert!((j - 0.0195016251188).abs() < 1e-12);
-//!
-//! // certified, 200 bits
+//! // certified, 200 bits: the exact J_5(2.5) lies within rad of mid
 //! let ball = bessel_j_mp(5, &Float::with_val(53, 2.5), 200).unwrap();
 //! assert!(ball.meets_rel(200));
+//!
+//! // f64: within one ulp of the certified value
+//! let j = bessel_j(5, 2.5).unwrap();
+//! assert!((j - ball.to_f64()).abs() <= f64::EPSILON * j.abs());
 //! ```
+//!
+//! The wave displacement of the seed's Eq. 12, certified three ways, lives in
+//! [`contact::displacement`]; the Maugis solver in [`contact::model`] and
+//! [`contact::curve`]; quadrature rules in [`quad`].
 //!
 //! No public function panics: bad input returns an [`Error`].
 
