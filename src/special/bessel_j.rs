@@ -249,7 +249,7 @@ pub fn bessel_j_sequence_mp(nmax: u64, x: &Float, wp: u32) -> Result<Vec<Ball>> 
 ///
 /// The recurrence starts at an even order `M > max(nmax, |x|)` far enough above
 /// `|x|` that the neglected dominant solution is negligible at double-double
-/// accuracy ([`miller_start`]). Absolute error about `1e-30` times
+/// accuracy (see `miller_start`). Absolute error about `1e-30` times
 /// `max_n |J_n(x)| <= 1` (an estimate, not a bound; the golden and cross-check
 /// tests measure it). Returns an empty vector for non-finite `x`.
 pub fn bessel_j_sequence_dd(nmax: usize, x: Dd) -> Vec<Dd> {

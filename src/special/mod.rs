@@ -56,7 +56,7 @@ pub const DEFAULT_GUARD_BITS: u32 = 24;
 ///
 /// This is the internal driver: it accepts any `prec` up to
 /// [`MAX_WORKING_PREC`]; public functions check the user's precision with
-/// [`check_prec`] first.
+/// `check_prec` first.
 pub fn ziv<F>(function: &'static str, prec: u32, guard: u32, eval: F) -> Result<Ball>
 where
     F: FnMut(u32) -> Result<Ball>,
