@@ -9,7 +9,7 @@
 //! table is in docs/performance.md.
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
-use maugis::contact::displacement::{u_wave, u_wave_mp, u_wave_series_mp};
+use maugis::contact::displacement::{u_wave, u_wave_mp, u_wave_series_mp, WaveBessel};
 use maugis::contact::wave_quadrature::u_wave_quad;
 use maugis::special::exact;
 
@@ -39,6 +39,11 @@ fn bench_bessel_form(c: &mut Criterion) {
             let x = abar * r;
             g.bench_with_input(BenchmarkId::new("f64", format!("abar={abar},x/a={r}")), &x, |b, &x| {
                 b.iter(|| u_wave(abar, BETA, 1.0, black_box(x)).unwrap())
+            });
+            // With the Bessel data of one contact size precomputed (the solver's case).
+            let wb = WaveBessel::new(abar, BETA, 1.0).unwrap();
+            g.bench_with_input(BenchmarkId::new("f64_precomputed", format!("abar={abar},x/a={r}")), &x, |b, &x| {
+                b.iter(|| wb.eval(black_box(x)))
             });
             let (a, z, m, xe) = (exact(abar), exact(BETA), exact(1.0), exact(x));
             g.bench_with_input(BenchmarkId::new("mp128", format!("abar={abar},x/a={r}")), &x, |b, _| {

@@ -2,8 +2,8 @@
 //! `|lo| <= ulp(hi)/2`, about 106 bits, for the f64 paths that must round a
 //! cancelling sum correctly (the Bessel form of `u_w`, Miller's recurrence).
 //!
-//! Error-free transformations: `two_sum` (Knuth), `two_prod` through a fused
-//! multiply-add [Dekker 1971; Hida, Li, Bailey, "Library for double-double and
+//! Error-free transformations: `two_sum` (Knuth), `two_prod` by Veltkamp
+//! splitting [Dekker 1971; Hida, Li, Bailey, "Library for double-double and
 //! quad-double arithmetic", 2007]. Addition and multiplication are the
 //! "sloppy" variants with relative error about `2^-104` (a few units of `u^2`);
 //! division uses one Newton correction. These are estimates for fast f64 paths,
@@ -34,10 +34,25 @@ fn quick_two_sum(a: f64, b: f64) -> (f64, f64) {
     (s, b - (s - a))
 }
 
+/// Veltkamp split: `a = hi + lo` with both halves of 26 bits.
+#[inline]
+fn split(a: f64) -> (f64, f64) {
+    const SPLITTER: f64 = 134_217_729.0; // 2^27 + 1
+    let t = SPLITTER * a;
+    let hi = t - (t - a);
+    (hi, a - hi)
+}
+
+/// Dekker's exact product `a b = p + e` without a fused multiply-add (the
+/// portable x86-64 target has no FMA instruction, and the library call is
+/// slower than these 17 flops). Exact unless `a b` over/underflows.
 #[inline]
 fn two_prod(a: f64, b: f64) -> (f64, f64) {
     let p = a * b;
-    (p, a.mul_add(b, -p))
+    let (ah, al) = split(a);
+    let (bh, bl) = split(b);
+    let e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+    (p, e)
 }
 
 impl Dd {

@@ -308,9 +308,19 @@ pub fn bessel_j_sequence(nmax: usize, x: f64) -> Vec<f64> {
 /// Starting order of Miller's recurrence: even, above `nmax` and `x` by a margin
 /// that grows like `sqrt(x)` (the transition-region width) plus a constant for
 /// 60 bits of decay [Numerical Recipes 6.5, "IACC" rule, with a wider margin].
+/// Up to this `x` the short Miller margin is enough (see [`miller_start`]).
+const MILLER_SMALL_X: f64 = 400.0;
+
 fn miller_start(nmax: usize, x: f64) -> usize {
+    // Past the turning point n = x the minimal solution decays like
+    // exp(-(2/3) (2 t)^{3/2}), t = (n - x)/x^{1/3} (Airy region, DLMF 10.19.8), and
+    // then factorially: 24 + 6 x^{1/3} orders beyond max(nmax, x) put the
+    // neglected dominant solution below double-double accuracy (checked against
+    // the certified sequence in `double_double_sequence_accuracy`).
+    // For larger x the accumulated rounding of the long recurrence needs more
+    // room; the wider empirical margin `40 + 8 sqrt(base)` is used there.
     let base = (nmax as f64).max(x);
-    let m = base + 40.0 + 8.0 * base.sqrt();
+    let m = if x <= MILLER_SMALL_X { base + 24.0 + 6.0 * x.cbrt() } else { base + 40.0 + 8.0 * base.sqrt() };
     let m = m as usize + 2;
     m + (m % 2)
 }
@@ -358,6 +368,20 @@ mod tests {
                 assert!(seq[n as usize].overlaps(&single), "x={x} n={n}");
                 let v = single.to_f64();
                 assert!((f[n as usize] - v).abs() <= 8.0 * f64::EPSILON, "x={x} n={n}: {} vs {v}", f[n as usize]);
+            }
+        }
+    }
+
+    #[test]
+    fn double_double_sequence_accuracy() {
+        for &x in &[0.5, 5.0, 20.25, 75.5, 300.0, 1500.0] {
+            let nmax = (x as usize) + 60;
+            let dd = bessel_j_sequence_dd(nmax, Dd::from_f64(x));
+            let mp = bessel_j_sequence_mp(nmax as u64, &exact(x), 160).unwrap();
+            for n in 0..=nmax {
+                let exact_v = mp[n].mid();
+                let err = Float::with_val(200, Float::with_val(200, dd[n].hi) + dd[n].lo - exact_v).abs();
+                assert!(err < 1e-29, "x={x} n={n}: error {}", err.to_f64());
             }
         }
     }
