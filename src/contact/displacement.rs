@@ -519,7 +519,6 @@ enum SeriesKind {
 fn series_tail(kind: SeriesKind, g: &WaveGeometry, k0: u64) -> Result<Option<Float>> {
     let p = MAG_PREC + 32;
     let s = Ball::from_float(&g.s.upper(), p);
-    let d2 = s.mul_pow2(2);
     let k0f = k0 as f64;
     let s_up = s.upper().to_f64();
     let ratio = match kind {
@@ -533,28 +532,8 @@ fn series_tail(kind: SeriesKind, g: &WaveGeometry, k0: u64) -> Result<Option<Flo
     if !(ratio < 0.5) {
         return Ok(None);
     }
-    let k = k0;
-    let kk = u32::try_from(k).map_err(|_| Error::Domain { what: "kmax too large".into() })?;
-    let exp_factor = s.div(&Ball::from_i64(k as i64 + 1, p))?.exp()?;
-    let amp = Ball::from_float(&g.amp.abs_upper(), p);
-    let first = match kind {
-        SeriesKind::Displacement => {
-            // A s D^{2k}/(2k+1)! e^{s/(k+1)} (|ln y| + 2.39 + ln(k+2))
-            let coeff = d2.pow_u64(k).div(&Ball::factorial(2 * kk + 1, p))?;
-            let ln_y = Ball::from_float(&g.y.lower(), p).ln()?.neg();
-            let l = ln_y.add(&Ball::from_f64(PSI_DIFF_MAX, p)?).add(&Ball::from_i64(k as i64 + 2, p).ln()?);
-            amp.mul(&s).mul(&coeff).mul(&exp_factor).mul(&l)
-        }
-        SeriesKind::Gradient => {
-            // (2 A s/x) s^k/(k!(k+1)!(2k+1)) e^{s/(k+1)} 2(k+1)
-            let coeff = s
-                .pow_u64(k)
-                .div(&Ball::factorial(kk, p).mul(&Ball::factorial(kk + 1, p)).mul_i64(2 * k as i64 + 1))?;
-            let x_lo = Ball::from_float(&g.x.lower(), p);
-            amp.mul(&s).mul_pow2(1).div(&x_lo)?.mul(&coeff).mul(&exp_factor).mul_i64(2 * (k as i64 + 1))
-        }
-    };
-    let mut tail = Float::with_val(MAG_PREC, &first.abs_upper() / (1.0 - ratio));
+    let first = single_term_bound(kind, g, k0)?;
+    let mut tail = Float::with_val(MAG_PREC, &first / (1.0 - ratio));
     tail.next_up();
     Ok(Some(tail))
 }
@@ -570,8 +549,7 @@ fn truncation_bound(kind: SeriesKind, g: &WaveGeometry, kmax: u64) -> Result<Flo
             sum.next_up();
             return Ok(sum);
         }
-        // Not yet geometric: bound the single term T_k by the k-th bound with ratio ignored:
-        // use series_tail at a k where it applies is impossible, so bound T_k directly.
+        // Not yet geometric: bound the single term T_k.
         let single = single_term_bound(kind, g, k)?;
         let mut sum = Float::with_val(MAG_PREC, &total + &single);
         sum.next_up();

@@ -258,17 +258,14 @@ fn inner_panels(split: f64) -> Vec<(f64, f64)> {
         .collect()
 }
 
-fn f64_quadrature(kind: Quantity, a: f64, zeta: f64, amp: f64, x: f64) -> Result<QuadEstimate> {
-    check(a, zeta, amp, x)?;
-    let d = 2.0 * std::f64::consts::PI * a / zeta;
+/// Inner Gauss–Legendre nodes on the graded panels of `[0, pi]`, with the
+/// `t`-independent part of the kernel folded into the weight: `(w geom(th), cos th)`.
+fn inner_nodes(kind: Quantity, a: f64, x: f64, rule: &gauss_legendre::GaussLegendreRule) -> Vec<(f64, f64)> {
     let cos_phi = a / x;
     let one_minus_cos_phi = (x - a) / x;
     let rm1 = (x - a) / a;
-    let split = split_point(kind, a, x);
-    let rule = gauss_legendre::rule(GL_ORDER)?;
-    // Inner nodes and the t-independent part of the kernel, once per x.
-    let mut nodes: Vec<(f64, f64, f64)> = Vec::new(); // (weight * geometric factor, cos th, 0)
-    for (lo, hi) in inner_panels(split) {
+    let mut nodes = Vec::new();
+    for (lo, hi) in inner_panels(split_point(kind, a, x)) {
         let half = 0.5 * (hi - lo);
         let mid = 0.5 * (hi + lo);
         for (xi, wi) in rule.nodes().iter().zip(rule.weights()) {
@@ -287,9 +284,17 @@ fn f64_quadrature(kind: Quantity, a: f64, zeta: f64, amp: f64, x: f64) -> Result
                     }
                 }
             };
-            nodes.push((wi * half * geom, c, 0.0));
+            nodes.push((wi * half * geom, c));
         }
     }
+    nodes
+}
+
+fn f64_quadrature(kind: Quantity, a: f64, zeta: f64, amp: f64, x: f64) -> Result<QuadEstimate> {
+    check(a, zeta, amp, x)?;
+    let d = 2.0 * std::f64::consts::PI * a / zeta;
+    let rule = gauss_legendre::rule(GL_ORDER)?;
+    let nodes = inner_nodes(kind, a, x, &rule);
     let n_outer_panels = ((d / MAX_PANEL).ceil() as usize).max(1);
     let mut evaluations = 0u64;
     let mut outer = 0.0f64;
@@ -300,7 +305,7 @@ fn f64_quadrature(kind: Quantity, a: f64, zeta: f64, amp: f64, x: f64) -> Result
         for (xi, wi) in rule.nodes().iter().zip(rule.weights()) {
             let t = mid + 0.5 * width * xi;
             let j0 = bessel_j_sequence(0, t).first().copied().unwrap_or(f64::NAN);
-            let inner: f64 = nodes.iter().map(|&(w, c, _)| w * ((t - d) * c).cos()).sum();
+            let inner: f64 = nodes.iter().map(|&(w, c)| w * ((t - d) * c).cos()).sum();
             evaluations += nodes.len() as u64;
             let term = 0.5 * width * wi * 2.0 * j0 * inner;
             // Neumaier summation
@@ -340,25 +345,9 @@ pub fn du_wave_quad(a: f64, zeta: f64, amp: f64, x: f64) -> Result<QuadEstimate>
 pub fn du_wave_quad_as_printed(a: f64, zeta: f64, amp: f64, x: f64) -> Result<f64> {
     check(a, zeta, amp, x)?;
     let d = 2.0 * std::f64::consts::PI * a / zeta;
-    let cos_phi = a / x;
-    let one_minus_cos_phi = (x - a) / x;
     let rule = gauss_legendre::rule(GL_ORDER)?;
-    let inner = |t: f64| -> f64 {
-        let mut sum = 0.0;
-        for (lo, hi) in inner_panels(split_point(Quantity::Gradient, a, x)) {
-            let half = 0.5 * (hi - lo);
-            let mid = 0.5 * (hi + lo);
-            for (xi, wi) in rule.nodes().iter().zip(rule.weights()) {
-                let th = mid + half * xi;
-                let s_half = (0.5 * th).sin();
-                let two_s2 = 2.0 * s_half * s_half;
-                let c = 1.0 - two_s2;
-                let k = cos_phi * th.sin().powi(2) / (two_s2 + c * one_minus_cos_phi);
-                sum += wi * half * k * ((t - d) * c).cos();
-            }
-        }
-        2.0 * sum
-    };
+    let nodes = inner_nodes(Quantity::Gradient, a, x, &rule);
+    let inner = |t: f64| -> f64 { 2.0 * nodes.iter().map(|&(w, c)| w * ((t - d) * c).cos()).sum::<f64>() };
     let two_pi = 2.0 * std::f64::consts::PI;
     let panels = (two_pi / MAX_PANEL).ceil() as usize;
     let width = two_pi / panels as f64;
