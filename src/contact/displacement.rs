@@ -71,6 +71,9 @@ use crate::special::meijer_g::{self, meijer_g_k_at_one_with, meijer_g_k_direct_b
 use crate::special::pfq::pfq_series;
 use crate::special::{check_finite, exact, exact_add, exact_sub, f64_from_mp, ziv, ziv_with_floor, DEFAULT_GUARD_BITS};
 
+/// Largest `D = 2 pi a/zeta` (contact width in wavelengths times `pi`) accepted.
+pub const MAX_WAVE_D: f64 = 1.0e5;
+
 /// Largest `kmax` accepted by the truncated series.
 pub const MAX_KMAX: u64 = 100_000;
 
@@ -94,6 +97,17 @@ fn check_wave_f64(a: f64, zeta: f64, amp: f64, x: f64) -> Result<()> {
     if x < a {
         return Err(Error::Domain { what: format!("the wave displacement is for x >= a (got x = {x} < a = {a})") });
     }
+    check_wave_number(2.0 * std::f64::consts::PI * a / zeta)
+}
+
+/// The Bessel and Eq. 12 routes sum about `D/2 + 30` terms, `D = 2 pi a/zeta`;
+/// past [`MAX_WAVE_D`] the cost and the cancellation are out of proportion.
+fn check_wave_number(d: f64) -> Result<()> {
+    if !(d <= MAX_WAVE_D) {
+        return Err(Error::Domain {
+            what: format!("2 pi a/zeta = {d:e} exceeds {MAX_WAVE_D:e}: the contact spans too many wavelengths"),
+        });
+    }
     Ok(())
 }
 
@@ -111,7 +125,7 @@ fn check_wave_mp(a: &Float, zeta: &Float, amp: &Float, x: &Float) -> Result<()> 
     if *x < *a {
         return Err(Error::Domain { what: "the wave displacement is for x >= a".into() });
     }
-    Ok(())
+    check_wave_number(2.0 * std::f64::consts::PI * a.to_f64() / zeta.to_f64())
 }
 
 fn check_kmax(kmax: u64) -> Result<()> {

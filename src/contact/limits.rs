@@ -72,7 +72,7 @@ pub fn mdmt_strip_end(params: Params) -> Result<f64> {
         flo = fc;
         c += step.max(c * 1e-3);
     }
-    Err(Error::NoConvergence { function: "mdmt_strip_end", terms: 0 })
+    Err(Error::Domain { what: "no M-DMT strip end (E.43b) below c = 1e6: lambda too small".into() })
 }
 
 /// E.43c: the rigid pull-off load `L'_p = 2 lambda cbar`.

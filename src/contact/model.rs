@@ -63,6 +63,16 @@ pub const GAP_TOL: f64 = 1e-10;
 /// See [`GAP_TOL`].
 pub const TRACTION_TOL: f64 = 1e-10;
 
+/// Supported Maugis parameters: beyond these the strip equation over- or
+/// underflows in f64 (`lambda^2 abar` terms) or the strip leaves [`MAX_STRIP`].
+pub const LAMBDA_RANGE: (f64, f64) = (1e-6, 1e6);
+/// Largest supported `alpha`.
+pub const ALPHA_MAX: f64 = 1e6;
+/// Supported `beta`.
+pub const BETA_RANGE: (f64, f64) = (1e-6, 1e6);
+/// Largest supported contact size.
+pub const ABAR_MAX: f64 = 1e4;
+
 /// Samples per extremum search in [`ContactSize::validity`].
 const VALIDITY_SAMPLES: usize = 48;
 
@@ -84,14 +94,18 @@ impl Params {
         finite(lambda, "lambda")?;
         finite(alpha, "alpha")?;
         finite(beta, "beta")?;
-        if lambda <= 0.0 {
-            return Err(Error::Domain { what: format!("lambda must be > 0 (got {lambda})") });
+        if !(LAMBDA_RANGE.0..=LAMBDA_RANGE.1).contains(&lambda) {
+            return Err(Error::Domain {
+                what: format!("lambda must lie in [{:e}, {:e}] (got {lambda:?})", LAMBDA_RANGE.0, LAMBDA_RANGE.1),
+            });
         }
-        if alpha < 0.0 {
-            return Err(Error::Domain { what: format!("alpha must be >= 0 (got {alpha})") });
+        if !(0.0..=ALPHA_MAX).contains(&alpha) {
+            return Err(Error::Domain { what: format!("alpha must lie in [0, {ALPHA_MAX:e}] (got {alpha:?})") });
         }
-        if beta <= 0.0 {
-            return Err(Error::Domain { what: format!("beta must be > 0 (got {beta})") });
+        if !(BETA_RANGE.0..=BETA_RANGE.1).contains(&beta) {
+            return Err(Error::Domain {
+                what: format!("beta must lie in [{:e}, {:e}] (got {beta:?})", BETA_RANGE.0, BETA_RANGE.1),
+            });
         }
         Ok(Params { lambda, alpha, beta })
     }
@@ -126,8 +140,8 @@ impl ContactSize {
     /// Prepares contact size `abar > 0`.
     pub fn new(params: Params, abar: f64) -> Result<ContactSize> {
         finite(abar, "abar")?;
-        if abar <= 0.0 {
-            return Err(Error::Domain { what: format!("abar must be > 0 (got {abar})") });
+        if !(abar > 0.0 && abar <= ABAR_MAX) {
+            return Err(Error::Domain { what: format!("abar must lie in (0, {ABAR_MAX:e}] (got {abar:?})") });
         }
         let wave = if params.alpha > 0.0 { Some(WaveBessel::new(abar, params.beta, params.alpha)?) } else { None };
         let j1 = crate::special::bessel_j::bessel_j_sequence(1, 2.0 * PI * abar / params.beta).get(1).copied().unwrap_or(0.0);
@@ -218,7 +232,9 @@ impl ContactSize {
                 return brent(f, 1.0 + s_prev / a, 1.0 + s / a, f_prev, fs);
             }
             if s > MAX_STRIP {
-                return Err(Error::NoConvergence { function: "solve_m (no strip end below MAX_STRIP)", terms: 0 });
+                return Err(Error::Domain {
+                    what: format!("no end of the adhesive strip within c - a <= {MAX_STRIP:e} (abar = {a}): parameters too extreme"),
+                });
             }
             s_prev = s;
             f_prev = fs;

@@ -65,8 +65,15 @@ fn check(a: f64, zeta: f64, amp: f64, x: f64) -> Result<()> {
     if x < a {
         return Err(Error::Domain { what: format!("the wave displacement is for x >= a (got x = {x} < a = {a})") });
     }
+    let d = 2.0 * std::f64::consts::PI * a / zeta;
+    if !(d <= MAX_QUAD_D) {
+        return Err(Error::Domain { what: format!("2 pi a/zeta = {d:e} exceeds {MAX_QUAD_D:e}: the quadrature cost grows like D^2") });
+    }
     Ok(())
 }
+
+/// Largest `D = 2 pi a/zeta` the quadrature route accepts.
+pub const MAX_QUAD_D: f64 = 1.0e3;
 
 /// Inner-interval split point (f64 is enough: it only places nodes).
 fn split_point(kind: Quantity, a: f64, x: f64) -> f64 {

@@ -2,11 +2,23 @@
 //!
 //! * `maugis eval`: JSON Lines calculator over the special functions (see `eval.rs`).
 //! * `maugis demo`: evaluates a few representative requests through `eval` and
-//!   prints them (the quick-start main job until the Maugis solver lands).
+//!   prints them.
+//! * `maugis curve`: the main job, load-area responses for several Maugis
+//!   parameters with turning points, jumps, pull-off, validity, CSV/JSON/SVG
+//!   output (see `curve.rs`).
+//! * `maugis profile`: traction, displacement and gap of one state (`profile.rs`).
+//! * `maugis limits`: the Appendix E limits and the Eq. 17 envelope (`limits.rs`).
 //!
-//! Usage errors exit with code 2 and a one-line message on stderr.
+//! Usage errors and runtime errors exit with code 2 and a one-line message on
+//! stderr (`maugis: ...`); no output file is written then.
 
+mod args;
+mod curve;
 mod eval;
+mod limits;
+mod output;
+mod plot;
+mod profile;
 
 use clap::{Parser, Subcommand};
 
@@ -23,6 +35,13 @@ enum Command {
     Eval,
     /// Show a few certified evaluations (the Eq. 12 building blocks at the model's arguments).
     Demo,
+    /// Load-area curves Lbar(abar) for several lambda (default: the paper's Fig. 4c) with
+    /// turning points, jumps, pull-off and validity; writes CSV, summary.json and load-area.svg.
+    Curve(curve::CurveArgs),
+    /// Traction, displacement and gap profiles of one state at contact half-width abar.
+    Profile(profile::ProfileArgs),
+    /// The Appendix E limits (JKR, M-DMT, smooth M-DMT) and the Eq. 17 local envelope.
+    Limits(limits::LimitsArgs),
 }
 
 /// Requests of the demo: the Eq. 12 factors at abar = 6, beta = 9/8, and the edge x = a.
@@ -40,22 +59,98 @@ fn main() {
     let cli = match Cli::try_parse() {
         Ok(c) => c,
         Err(e) => {
-            let code = if e.use_stderr() { 2 } else { 0 };
-            let _ = e.print();
-            std::process::exit(code);
+            if !e.use_stderr() {
+                // --help / --version: clap's own output on stdout
+                let _ = e.print();
+                std::process::exit(0);
+            }
+            eprintln!("maugis: {}", one_line(&e));
+            std::process::exit(2);
         }
     };
     let code = match cli.command {
         Command::Eval => eval::run(),
         Command::Demo => {
-            println!("maugis demo: certified evaluations through the `maugis eval` protocol\n");
+            // Write through a handle so a closed pipe (`maugis demo | head`) ends quietly.
+            use std::io::Write;
+            let mut out = std::io::stdout().lock();
+            let mut text = String::from("maugis demo: certified evaluations through the `maugis eval` protocol\n\n");
             for req in DEMO_REQUESTS {
-                println!("> {req}");
-                println!("< {}\n", eval::handle_line(req));
+                text.push_str(&format!("> {req}\n< {}\n\n", eval::handle_line(req)));
             }
-            println!("Try: echo '{{\"id\":1,\"fn\":\"bessel_j\",\"n\":5,\"x\":\"2.5\",\"prec\":200}}' | maugis eval");
+            text.push_str("Try: echo '{\"id\":1,\"fn\":\"bessel_j\",\"n\":5,\"x\":\"2.5\",\"prec\":200}' | maugis eval\n");
+            let _ = out.write_all(text.as_bytes());
             0
         }
+        Command::Curve(a) => report(guarded(move || curve::run(a))),
+        Command::Profile(a) => report(guarded(move || profile::run(a))),
+        Command::Limits(a) => report(guarded(move || limits::run(a))),
     };
     std::process::exit(code);
+}
+
+/// Runs `f`, turning a panic (a bug, in the library or here) into an error
+/// reported on one line instead of a backtrace. Only the first panic of the run
+/// is reported (rayon may panic on several threads).
+fn guarded<F: FnOnce() -> Result<(), String> + std::panic::UnwindSafe>(f: F) -> Result<(), String> {
+    use std::sync::atomic::{AtomicBool, Ordering};
+    use std::sync::Mutex;
+    static FIRST: Mutex<Option<String>> = Mutex::new(None);
+    static SEEN: AtomicBool = AtomicBool::new(false);
+    std::panic::set_hook(Box::new(|info| {
+        if SEEN.swap(true, Ordering::SeqCst) {
+            return;
+        }
+        let payload = info.payload();
+        let msg = payload
+            .downcast_ref::<&str>()
+            .map(|s| s.to_string())
+            .or_else(|| payload.downcast_ref::<String>().cloned())
+            .unwrap_or_else(|| "unknown panic".into());
+        let at = info.location().map(|l| format!(" at {}:{}", l.file(), l.line())).unwrap_or_default();
+        if let Ok(mut first) = FIRST.lock() {
+            *first = Some(format!("internal error (please report): {}{at}", msg.replace('\n', " ")));
+        }
+    }));
+    let result = std::panic::catch_unwind(f);
+    let _ = std::panic::take_hook();
+    match result {
+        Ok(r) => r,
+        Err(_) => Err(FIRST
+            .lock()
+            .ok()
+            .and_then(|mut m| m.take())
+            .unwrap_or_else(|| "internal error (please report): panic".into())),
+    }
+}
+
+/// Exit code of a subcommand: 0, or 2 after a one-line message on stderr.
+fn report(r: Result<(), String>) -> i32 {
+    match r {
+        Ok(()) => 0,
+        Err(msg) => {
+            eprintln!("maugis: {}", msg.lines().next().unwrap_or("error"));
+            2
+        }
+    }
+}
+
+/// A clap error as one line: clap's message up to its usage block, joined,
+/// without the `error: ` prefix and tips, plus a pointer to `--help`.
+fn one_line(e: &clap::Error) -> String {
+    use clap::error::ErrorKind;
+    if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand || e.kind() == ErrorKind::MissingSubcommand {
+        return "a subcommand is required (eval, demo, curve, profile, limits); try 'maugis --help'".into();
+    }
+    let text = e.render().to_string();
+    let parts: Vec<&str> = text
+        .lines()
+        .map(str::trim)
+        .take_while(|l| !l.starts_with("Usage:") && !l.starts_with("For more information"))
+        .filter(|l| !l.is_empty() && !l.starts_with("tip:"))
+        .collect();
+    let joined = parts.join(" ");
+    let msg = joined.strip_prefix("error: ").unwrap_or(&joined);
+    let msg = if msg.is_empty() { "invalid command line" } else { msg };
+    format!("{msg} (try --help)")
 }

@@ -1,0 +1,733 @@
+//! `maugis curve`: load-area responses `Lbar(abar)` for several Maugis
+//! parameters, with turning points, jumps under load control, pull-off and the
+//! validity (cavitation / interpenetration) of every state.
+//!
+//! Without arguments it reproduces the setting of the paper's Fig. 4c:
+//! `alpha = 2 sqrt(2)/8`, `beta = 9/8`, `lambda in {1/10, 1/4, 1/2, 1, 3/2, 3, 6}`,
+//! `abar in (0, 6]` on 600 points, and writes into `maugis-out/`:
+//!
+//! * `curve_lambda_<L>.csv`: `abar,m,load,valid,min_strip_gap,max_traction`;
+//! * `summary.json`: parameters and, per lambda, turning points, jumps,
+//!   pull-off, the number of invalid states and the invalid `abar` stretches;
+//! * `load-area.svg`: all curves with the Appendix E limits and envelopes.
+//!
+//! `--format json` writes no file and prints one JSON object instead (see
+//! [`JsonOut`]). The curves are computed in parallel (rayon); a progress bar is
+//! shown on stderr when it is a terminal. Files are written atomically
+//! ([`crate::output`]).
+
+use std::io::IsTerminal;
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use std::time::{Duration, Instant};
+
+use clap::{Args, ValueEnum};
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use plotters::element::DashedPathElement;
+use plotters::prelude::*;
+use rayon::prelude::*;
+use serde::Serialize;
+
+use maugis::contact::curve::{load_area_curve, Curve, CurveOptions, JumpDirection, TurningKind};
+use maugis::contact::limits::{jkr_envelope, jkr_load, mdmt_envelope, mdmt_load};
+use maugis::contact::model::{Params, GAP_TOL, TRACTION_TOL};
+
+use crate::args::{self, num, short, FIG4C_ALPHA, FIG4C_BETA};
+use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
+use crate::plot::{tick, arrow_head, clip_y, colour, plot_err, triangle_down, triangle_up, DARK_GREY, LIGHT_GREY};
+
+/// The Maugis parameters of the paper's Figs. 4 and 13 (default run).
+pub const DEFAULT_LAMBDAS: [f64; 7] = [0.1, 0.25, 0.5, 1.0, 1.5, 3.0, 6.0];
+
+/// Output format.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum CurveFormat {
+    /// CSV per lambda, summary.json and load-area.svg in --out.
+    Files,
+    /// One JSON object on stdout, no files.
+    Json,
+}
+
+/// Flags of `maugis curve`.
+#[derive(Args, Debug)]
+pub struct CurveArgs {
+    /// Maugis parameter lambda > 0; repeat for several curves
+    /// [default: 1/10 1/4 1/2 1 3/2 3 6]. Fractions like 1/10 are accepted.
+    #[arg(long = "lambda", value_name = "L", value_parser = args::positive, allow_negative_numbers = true)]
+    pub lambda: Vec<f64>,
+    /// Normalised wave amplitude alpha >= 0 [default: 2 sqrt(2)/8].
+    #[arg(long, value_name = "A", value_parser = args::non_negative, allow_negative_numbers = true)]
+    pub alpha: Option<f64>,
+    /// Normalised wavelength beta > 0 [default: 9/8].
+    #[arg(long, value_name = "B", value_parser = args::positive, allow_negative_numbers = true)]
+    pub beta: Option<f64>,
+    /// Largest contact half-width abar.
+    #[arg(long, value_name = "AMAX", default_value = "6", value_parser = args::positive, allow_negative_numbers = true)]
+    pub amax: f64,
+    /// Grid points per curve, abar_i = amax i/points.
+    #[arg(long, value_name = "N", default_value = "600", value_parser = args::grid_points)]
+    pub points: usize,
+    /// Output directory (written atomically).
+    #[arg(long, value_name = "DIR", default_value = "maugis-out")]
+    pub out: PathBuf,
+    /// `files` (default) or `json` (print to stdout, write nothing).
+    #[arg(long, value_name = "FORMAT", default_value = "files")]
+    pub format: CurveFormat,
+}
+
+/// One computed curve.
+pub struct Run {
+    /// Its Maugis parameter.
+    pub lambda: f64,
+    /// The library's result.
+    pub curve: Curve,
+}
+
+// ---------------------------------------------------------------- JSON schema
+
+/// `--format json` output.
+#[derive(Serialize)]
+pub struct JsonOut {
+    params: JsonParams,
+    curves: Vec<JsonCurve>,
+}
+
+#[derive(Serialize)]
+struct JsonParams {
+    alpha: f64,
+    beta: f64,
+    amax: f64,
+    points: usize,
+}
+
+#[derive(Serialize)]
+struct JsonCurve {
+    lambda: f64,
+    points: Vec<JsonPoint>,
+    turning_points: Vec<JsonTurning>,
+    jumps: Vec<JsonJump>,
+    pull_off: Option<JsonPullOff>,
+}
+
+#[derive(Serialize)]
+struct JsonPoint {
+    abar: f64,
+    m: f64,
+    load: f64,
+    valid: bool,
+    min_strip_gap: f64,
+    max_traction: f64,
+}
+
+#[derive(Serialize)]
+struct JsonTurning {
+    abar: f64,
+    load: f64,
+    kind: &'static str,
+}
+
+#[derive(Serialize)]
+struct JsonJump {
+    direction: &'static str,
+    from_abar: f64,
+    to_abar: f64,
+    load: f64,
+}
+
+#[derive(Serialize)]
+struct JsonPullOff {
+    abar: f64,
+    load: f64,
+}
+
+/// `summary.json`.
+#[derive(Serialize)]
+struct Summary {
+    params: JsonParams,
+    /// The lambda used for the M-DMT limit and envelope in the plot.
+    mdmt_limit_lambda: f64,
+    curves: Vec<SummaryCurve>,
+}
+
+#[derive(Serialize)]
+struct SummaryCurve {
+    lambda: f64,
+    csv: String,
+    points: usize,
+    invalid_points: usize,
+    invalid_stretches: Vec<Stretch>,
+    turning_points: Vec<JsonTurning>,
+    jumps: Vec<JsonJump>,
+    pull_off: Option<JsonPullOff>,
+}
+
+/// A run of consecutive invalid grid states.
+#[derive(Serialize, Clone, Debug, PartialEq)]
+pub struct Stretch {
+    /// First invalid grid point.
+    pub from_abar: f64,
+    /// Last invalid grid point.
+    pub to_abar: f64,
+    /// Number of grid points.
+    pub points: usize,
+    /// Some state has `pbar > 1` inside the contact.
+    pub cavitation: bool,
+    /// Some state has a negative gap in the adhesive strip.
+    pub interpenetration: bool,
+}
+
+fn kind_str(k: TurningKind) -> &'static str {
+    match k {
+        TurningKind::Max => "max",
+        TurningKind::Min => "min",
+    }
+}
+
+fn direction_str(d: JumpDirection) -> &'static str {
+    match d {
+        JumpDirection::Loading => "loading",
+        JumpDirection::Unloading => "unloading",
+    }
+}
+
+fn turning_json(c: &Curve) -> Vec<JsonTurning> {
+    c.turning_points.iter().map(|t| JsonTurning { abar: t.abar, load: t.load, kind: kind_str(t.kind) }).collect()
+}
+
+fn jumps_json(c: &Curve) -> Vec<JsonJump> {
+    c.jumps
+        .iter()
+        .map(|j| JsonJump { direction: direction_str(j.direction), from_abar: j.from_abar, to_abar: j.to_abar, load: j.load })
+        .collect()
+}
+
+fn pull_off_json(c: &Curve) -> Option<JsonPullOff> {
+    c.pull_off.map(|(abar, load)| JsonPullOff { abar, load })
+}
+
+/// The invalid stretches of a curve.
+pub fn invalid_stretches(c: &Curve) -> Vec<Stretch> {
+    let mut out: Vec<Stretch> = Vec::new();
+    let mut open = false;
+    for p in &c.points {
+        let v = &p.validity;
+        if v.valid {
+            open = false;
+            continue;
+        }
+        let cav = v.max_traction > 1.0 + TRACTION_TOL;
+        let pen = v.min_strip_gap < -GAP_TOL;
+        match out.last_mut() {
+            Some(s) if open => {
+                s.to_abar = p.abar;
+                s.points += 1;
+                s.cavitation |= cav;
+                s.interpenetration |= pen;
+            }
+            _ => out.push(Stretch { from_abar: p.abar, to_abar: p.abar, points: 1, cavitation: cav, interpenetration: pen }),
+        }
+        open = true;
+    }
+    out
+}
+
+/// The CSV file name of a curve.
+pub fn csv_name(lambda: f64) -> String {
+    format!("curve_lambda_{lambda}.csv")
+}
+
+fn curve_csv(c: &Curve) -> Result<String, String> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    let err = |e: csv::Error| format!("could not format CSV: {e}");
+    w.write_record(["abar", "m", "load", "valid", "min_strip_gap", "max_traction"]).map_err(err)?;
+    for p in &c.points {
+        w.write_record([
+            p.abar.to_string(),
+            p.m.to_string(),
+            p.load.to_string(),
+            p.validity.valid.to_string(),
+            p.validity.min_strip_gap.to_string(),
+            p.validity.max_traction.to_string(),
+        ])
+        .map_err(err)?;
+    }
+    let bytes = w.into_inner().map_err(|e| format!("could not format CSV: {e}"))?;
+    String::from_utf8(bytes).map_err(|e| format!("could not format CSV: {e}"))
+}
+
+// ---------------------------------------------------------------- computing
+
+/// A progress bar on stderr, hidden when stderr is not a terminal.
+fn progress(len: u64, what: &str) -> ProgressBar {
+    if !std::io::stderr().is_terminal() {
+        return ProgressBar::hidden();
+    }
+    let pb = ProgressBar::with_draw_target(Some(len), ProgressDrawTarget::stderr());
+    if let Ok(style) = ProgressStyle::with_template("{spinner} {msg} [{bar:30}] {pos}/{len} ({elapsed})") {
+        pb.set_style(style.progress_chars("=> "));
+    }
+    pb.set_message(what.to_string());
+    pb.enable_steady_tick(Duration::from_millis(120));
+    pb
+}
+
+/// Computes the curves (in parallel over lambda).
+pub fn compute(lambdas: &[f64], alpha: f64, beta: f64, opts: CurveOptions) -> Result<Vec<Run>, String> {
+    let pb = progress(lambdas.len() as u64, "load-area curves");
+    let runs = lambdas
+        .par_iter()
+        .map(|&lambda| {
+            let params = Params::new(lambda, alpha, beta).map_err(|e| e.to_string())?;
+            let curve = load_area_curve(params, opts).map_err(|e| format!("lambda = {}: {e}", num(lambda)))?;
+            pb.inc(1);
+            Ok(Run { lambda, curve })
+        })
+        .collect::<Result<Vec<_>, String>>();
+    pb.finish_and_clear();
+    runs
+}
+
+/// Runs `maugis curve`.
+pub fn run(a: CurveArgs) -> Result<(), String> {
+    let alpha = a.alpha.unwrap_or(FIG4C_ALPHA);
+    let beta = a.beta.unwrap_or(FIG4C_BETA);
+    let mut lambdas = if a.lambda.is_empty() { DEFAULT_LAMBDAS.to_vec() } else { a.lambda.clone() };
+    lambdas.sort_by(f64::total_cmp);
+    lambdas.dedup();
+    // Everything is validated before any work: the parsers checked the ranges,
+    // the library checks the combination, and the output directory is usable.
+    for &l in &lambdas {
+        Params::new(l, alpha, beta).map_err(|e| e.to_string())?;
+    }
+    args::check_size("--amax", a.amax, alpha, beta)?;
+    if a.format == CurveFormat::Files {
+        check_out_dir(&a.out)?;
+    }
+    let opts = CurveOptions { amax: a.amax, points: a.points };
+    let params = || JsonParams { alpha, beta, amax: a.amax, points: a.points };
+
+    let t0 = Instant::now();
+    let runs = compute(&lambdas, alpha, beta, opts)?;
+    let elapsed = t0.elapsed();
+
+    if a.format == CurveFormat::Json {
+        let out = JsonOut {
+            params: params(),
+            curves: runs
+                .iter()
+                .map(|r| JsonCurve {
+                    lambda: r.lambda,
+                    points: r
+                        .curve
+                        .points
+                        .iter()
+                        .map(|p| JsonPoint {
+                            abar: p.abar,
+                            m: p.m,
+                            load: p.load,
+                            valid: p.validity.valid,
+                            min_strip_gap: p.validity.min_strip_gap,
+                            max_traction: p.validity.max_traction,
+                        })
+                        .collect(),
+                    turning_points: turning_json(&r.curve),
+                    jumps: jumps_json(&r.curve),
+                    pull_off: pull_off_json(&r.curve),
+                })
+                .collect(),
+        };
+        let text = serde_json::to_string(&out).map_err(|e| format!("could not format JSON: {e}"))?;
+        return print_stdout(&format!("{text}\n"));
+    }
+
+    // Every file is rendered in memory before anything touches the disk.
+    let mdmt_lambda = lambdas.first().copied().unwrap_or(0.1);
+    let mut files = Vec::new();
+    for r in &runs {
+        files.push(OutFile::text(csv_name(r.lambda), curve_csv(&r.curve)?));
+    }
+    let summary = Summary {
+        params: params(),
+        mdmt_limit_lambda: mdmt_lambda,
+        curves: runs
+            .iter()
+            .map(|r| SummaryCurve {
+                lambda: r.lambda,
+                csv: csv_name(r.lambda),
+                points: r.curve.points.len(),
+                invalid_points: r.curve.points.iter().filter(|p| !p.validity.valid).count(),
+                invalid_stretches: invalid_stretches(&r.curve),
+                turning_points: turning_json(&r.curve),
+                jumps: jumps_json(&r.curve),
+                pull_off: pull_off_json(&r.curve),
+            })
+            .collect(),
+    };
+    let mut text = serde_json::to_string_pretty(&summary).map_err(|e| format!("could not format JSON: {e}"))?;
+    text.push('\n');
+    files.push(OutFile::text("summary.json", text));
+    files.push(OutFile::text("load-area.svg", load_area_svg(&runs, alpha, beta, a.amax, mdmt_lambda)?));
+    let written = write_atomically(&a.out, &files)?;
+
+    let mut report = String::new();
+    let _ = writeln!(
+        report,
+        "maugis curve: alpha = {}, beta = {}, abar in (0, {}], {} points per curve, {} curve(s) in {:.1} s",
+        short(alpha),
+        short(beta),
+        short(a.amax),
+        a.points,
+        runs.len(),
+        elapsed.as_secs_f64()
+    );
+    let _ = writeln!(report, "  {:>8}  {:>16}  {:>17}  {:>24}  {:>8}", "lambda", "turning max/min", "jumps load/unload", "pull-off (abar, Lbar)", "invalid");
+    for r in &runs {
+        let c = &r.curve;
+        let nmax = c.turning_points.iter().filter(|t| t.kind == TurningKind::Max).count();
+        let nmin = c.turning_points.len() - nmax;
+        let nload = c.jumps.iter().filter(|j| j.direction == JumpDirection::Loading).count();
+        let nunload = c.jumps.len() - nload;
+        let po = match c.pull_off {
+            Some((ab, l)) => format!("({ab:.4}, {l:.4})"),
+            None => "none".into(),
+        };
+        let inv = c.points.iter().filter(|p| !p.validity.valid).count();
+        let _ = writeln!(
+            report,
+            "  {:>8}  {:>16}  {:>17}  {:>24}  {:>8}",
+            short(r.lambda),
+            format!("{nmax}/{nmin}"),
+            format!("{nload}/{nunload}"),
+            po,
+            format!("{inv}/{}", c.points.len())
+        );
+    }
+    let _ = writeln!(report, "wrote {} file(s) to {}:", written.len(), a.out.display());
+    for p in &written {
+        let _ = writeln!(report, "  {}", p.display());
+    }
+    print_stdout(&report)
+}
+
+// ---------------------------------------------------------------- plot
+
+/// Splits a curve into runs of equal validity; neighbouring runs share their
+/// boundary point so the drawn line is continuous.
+fn validity_runs(c: &Curve) -> Vec<(bool, Vec<(f64, f64)>)> {
+    let mut out: Vec<(bool, Vec<(f64, f64)>)> = Vec::new();
+    for p in &c.points {
+        let xy = (p.abar, p.load);
+        let v = p.validity.valid;
+        match out.last_mut() {
+            Some((lv, pts)) if *lv == v => pts.push(xy),
+            Some((_, pts)) => {
+                let last = pts.last().copied();
+                let mut new = Vec::new();
+                if let Some(l) = last {
+                    // draw the connecting segment in the style of the invalid side
+                    if v {
+                        pts.push(xy);
+                    } else {
+                        new.push(l);
+                    }
+                }
+                new.push(xy);
+                out.push((v, new));
+            }
+            None => out.push((v, vec![xy])),
+        }
+    }
+    out
+}
+
+/// A limit line: points, style, dash, gap, legend label.
+type LimitLine<'a> = (&'a [(f64, f64)], ShapeStyle, u32, u32, Option<String>);
+
+/// The load-area plot (SVG text).
+pub fn load_area_svg(runs: &[Run], alpha: f64, beta: f64, amax: f64, mdmt_lambda: f64) -> Result<String, String> {
+    // Limit curves on a fine grid.
+    let n = 800usize;
+    let grid: Vec<f64> = (1..=n).map(|i| amax * i as f64 / n as f64).collect();
+    let mdmt_params = Params::new(mdmt_lambda, alpha, beta).map_err(|e| e.to_string())?;
+    let mut jkr = Vec::with_capacity(n);
+    let mut jkr_lo = Vec::with_capacity(n);
+    let mut jkr_hi = Vec::with_capacity(n);
+    let mut mdmt = Vec::with_capacity(n);
+    let mut mdmt_lo = Vec::with_capacity(n);
+    let mut mdmt_hi = Vec::with_capacity(n);
+    for &x in &grid {
+        let e = |e: maugis::Error| format!("limits at abar = {}: {e}", num(x));
+        jkr.push((x, jkr_load(alpha, beta, x).map_err(e)?));
+        let (lo, hi) = jkr_envelope(alpha, beta, x).map_err(e)?;
+        jkr_lo.push((x, lo));
+        jkr_hi.push((x, hi));
+        mdmt.push((x, mdmt_load(mdmt_params, x).map_err(e)?));
+        let (lo, hi) = mdmt_envelope(mdmt_params, x).map_err(e)?;
+        mdmt_lo.push((x, lo));
+        mdmt_hi.push((x, hi));
+    }
+
+    // y window: the curves' range with a margin (the limits are clipped to it).
+    let (mut ymin, mut ymax) = (f64::INFINITY, f64::NEG_INFINITY);
+    for r in runs {
+        for p in &r.curve.points {
+            if p.load.is_finite() {
+                ymin = ymin.min(p.load);
+                ymax = ymax.max(p.load);
+            }
+        }
+    }
+    if !(ymin.is_finite() && ymax.is_finite()) {
+        ymin = -5.0;
+        ymax = 25.0;
+    }
+    let span = (ymax - ymin).max(1.0);
+    let (ymin, ymax) = (ymin - 0.06 * span, ymax + 0.06 * span);
+
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (1400, 950)).into_drawing_area();
+        root.fill(&WHITE).map_err(plot_err)?;
+        let title = format!(
+            "Wavy Maugis line contact: load-area response, α = {}, β = {} (Johnson parameter √(β/α²) = {})",
+            short(alpha),
+            short(beta),
+            if alpha > 0.0 { short((beta / (alpha * alpha)).sqrt()) } else { "∞".into() }
+        );
+        let mut chart = ChartBuilder::on(&root)
+            .caption(title, ("sans-serif", 26))
+            .margin(20)
+            .x_label_area_size(60)
+            .y_label_area_size(75)
+            .build_cartesian_2d(0.0..amax, ymin..ymax)
+            .map_err(plot_err)?;
+        chart
+            .configure_mesh()
+            .x_desc("contact half-width abar")
+            .y_desc("load Lbar")
+            .axis_desc_style(("sans-serif", 22))
+            .label_style(("sans-serif", 17))
+            .x_label_formatter(&tick)
+            .y_label_formatter(&tick)
+            .light_line_style(RGBColor(235, 235, 235))
+            .bold_line_style(RGBColor(205, 205, 205))
+            .draw()
+            .map_err(plot_err)?;
+
+        // zero-load line
+        chart.draw_series(LineSeries::new(vec![(0.0, 0.0), (amax, 0.0)], BLACK.mix(0.5).stroke_width(1))).map_err(plot_err)?;
+
+        // Limits (medium dash) and envelopes (long dash), grey.
+        let limit_style = |c: RGBColor, w: u32| ShapeStyle { color: c.to_rgba(), filled: false, stroke_width: w };
+        // (line, style, dash, gap, legend label); the legend entries are added
+        // after the curves so that the lambda entries come first.
+        let ml = short(mdmt_lambda);
+        let limit_lines: [LimitLine<'_>; 6] = [
+            (&jkr, limit_style(DARK_GREY, 2), 9, 6, Some("JKR limit λ→∞ (E.42a)".into())),
+            (&jkr_lo, limit_style(DARK_GREY, 1), 20, 8, Some("JKR envelope (E.42b)".into())),
+            (&jkr_hi, limit_style(DARK_GREY, 1), 20, 8, None),
+            (&mdmt, limit_style(LIGHT_GREY, 2), 9, 6, Some(format!("M-DMT limit at λ = {ml} (E.43a)"))),
+            (&mdmt_lo, limit_style(LIGHT_GREY, 1), 20, 8, Some(format!("M-DMT envelope at λ = {ml} (E.43d)"))),
+            (&mdmt_hi, limit_style(LIGHT_GREY, 1), 20, 8, None),
+        ];
+        for (pts, style, dash, gap, _) in &limit_lines {
+            for piece in clip_y(pts, ymin, ymax) {
+                chart.draw_series(DashedLineSeries::new(piece, *dash, *gap, *style)).map_err(plot_err)?;
+            }
+        }
+
+        // Curves: valid parts solid, invalid parts thin, faded and dashed.
+        for (i, r) in runs.iter().enumerate() {
+            let col = colour(i);
+            let solid = col.stroke_width(3);
+            let faded = ShapeStyle { color: col.mix(0.6), filled: false, stroke_width: 2 };
+            let mut labelled = false;
+            for (valid, pts) in validity_runs(&r.curve) {
+                for piece in clip_y(&pts, ymin, ymax) {
+                    if valid {
+                        let ann = chart.draw_series(LineSeries::new(piece, solid)).map_err(plot_err)?;
+                        if !labelled {
+                            ann.label(format!("λ = {}", short(r.lambda)))
+                                .legend(move |(x, y)| PathElement::new(vec![(x - 4, y), (x + 26, y)], solid));
+                            labelled = true;
+                        }
+                    } else {
+                        chart.draw_series(DashedLineSeries::new(piece, 3, 5, faded)).map_err(plot_err)?;
+                    }
+                }
+            }
+            if !labelled {
+                // an all-invalid curve still gets its legend entry
+                chart
+                    .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
+                    .map_err(plot_err)?
+                    .label(format!("λ = {} (all states invalid)", short(r.lambda)))
+                    .legend(move |(x, y)| DashedPathElement::new(vec![(x - 4, y), (x + 26, y)], 3, 5, faded));
+            }
+        }
+
+        // Jumps: horizontal arrows at constant load, in the curve's colour; thin
+        // and faded when they start on an invalid state.
+        let inside = |y: f64| y >= ymin && y <= ymax;
+        for (i, r) in runs.iter().enumerate() {
+            let col = colour(i);
+            for j in &r.curve.jumps {
+                if !inside(j.load) {
+                    continue;
+                }
+                let ok = valid_at(&r.curve, j.from_abar);
+                let (line, head) = if ok {
+                    (col.stroke_width(2), col.filled())
+                } else {
+                    (ShapeStyle { color: col.mix(0.5), filled: false, stroke_width: 1 }, col.mix(0.5).filled())
+                };
+                chart
+                    .draw_series(LineSeries::new(vec![(j.from_abar, j.load), (j.to_abar, j.load)], line))
+                    .map_err(plot_err)?;
+                let right = j.to_abar > j.from_abar;
+                let (len, half) = if ok { (12, 5) } else { (9, 4) };
+                chart
+                    .draw_series(std::iter::once(
+                        EmptyElement::at((j.to_abar, j.load)) + Polygon::new(arrow_head(right, len, half), head),
+                    ))
+                    .map_err(plot_err)?;
+            }
+        }
+
+        // Turning points (triangles) and pull-off (circle), outlined in black;
+        // hollow when the state there is invalid.
+        for (i, r) in runs.iter().enumerate() {
+            let col = colour(i);
+            for t in &r.curve.turning_points {
+                if !inside(t.load) {
+                    continue;
+                }
+                let shape = match t.kind {
+                    TurningKind::Max => triangle_up(7),
+                    TurningKind::Min => triangle_down(7),
+                };
+                let (fill, outline) = if valid_at(&r.curve, t.abar) {
+                    (col.filled(), BLACK.stroke_width(1))
+                } else {
+                    (WHITE.filled(), col.stroke_width(2))
+                };
+                chart
+                    .draw_series(std::iter::once(
+                        EmptyElement::at((t.abar, t.load))
+                            + Polygon::new(shape.clone(), fill)
+                            + PathElement::new(closed(&shape), outline),
+                    ))
+                    .map_err(plot_err)?;
+            }
+            if let Some((ab, l)) = r.curve.pull_off {
+                if inside(l) {
+                    let (fill, outline) = if valid_at(&r.curve, ab) {
+                        (col.filled(), BLACK.stroke_width(2))
+                    } else {
+                        (WHITE.filled(), col.stroke_width(2))
+                    };
+                    chart
+                        .draw_series(std::iter::once(
+                            EmptyElement::at((ab, l)) + Circle::new((0, 0), 6, fill) + Circle::new((0, 0), 6, outline),
+                        ))
+                        .map_err(plot_err)?;
+                }
+            }
+        }
+
+        // Legend-only entries: the limits, then the symbols.
+        for (_, style, dash, gap, label) in limit_lines {
+            if let Some(l) = label {
+                chart
+                    .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
+                    .map_err(plot_err)?
+                    .label(l)
+                    .legend(move |(x, y)| DashedPathElement::new(vec![(x - 4, y), (x + 26, y)], dash.min(14), gap.min(6), style));
+            }
+        }
+        {
+            let faded = ShapeStyle { color: BLACK.mix(0.6), filled: false, stroke_width: 2 };
+            chart
+                .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
+                .map_err(plot_err)?
+                .label("invalid state: cavitation (p̄ > 1) or interpenetration (ḡ < 0)")
+                .legend(move |(x, y)| DashedPathElement::new(vec![(x - 4, y), (x + 26, y)], 3, 5, faded));
+            chart
+                .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
+                .map_err(plot_err)?
+                .label("turning point: load maximum")
+                .legend(|(x, y)| {
+                    EmptyElement::at((x + 11, y))
+                        + Polygon::new(triangle_up(7), RGBColor(120, 120, 120).filled())
+                        + PathElement::new(closed(&triangle_up(7)), BLACK.stroke_width(1))
+                });
+            chart
+                .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
+                .map_err(plot_err)?
+                .label("turning point: load minimum")
+                .legend(|(x, y)| {
+                    EmptyElement::at((x + 11, y))
+                        + Polygon::new(triangle_down(7), RGBColor(120, 120, 120).filled())
+                        + PathElement::new(closed(&triangle_down(7)), BLACK.stroke_width(1))
+                });
+            chart
+                .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
+                .map_err(plot_err)?
+                .label("jump at constant load (loading →, unloading ←)")
+                .legend(|(x, y)| {
+                    EmptyElement::at((x - 4, y))
+                        + PathElement::new(vec![(0, 0), (30, 0)], BLACK.stroke_width(2))
+                        + Polygon::new(arrow_head(true, 12, 5).into_iter().map(|(a, b)| (a + 30, b)).collect::<Vec<_>>(), BLACK.filled())
+                });
+            chart
+                .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
+                .map_err(plot_err)?
+                .label("hollow marker, thin arrow: turning point or jump on an invalid state")
+                .legend(|(x, y)| {
+                    EmptyElement::at((x + 11, y))
+                        + Polygon::new(triangle_up(7), WHITE.filled())
+                        + PathElement::new(closed(&triangle_up(7)), RGBColor(120, 120, 120).stroke_width(2))
+                });
+            chart
+                .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
+                .map_err(plot_err)?
+                .label("pull-off")
+                .legend(|(x, y)| {
+                    EmptyElement::at((x + 11, y))
+                        + Circle::new((0, 0), 6, RGBColor(120, 120, 120).filled())
+                        + Circle::new((0, 0), 6, BLACK.stroke_width(2))
+                });
+        }
+
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::UpperLeft)
+            .margin(12)
+            .legend_area_size(40)
+            .label_font(("sans-serif", 17))
+            .background_style(WHITE.mix(0.88))
+            .border_style(BLACK.mix(0.6))
+            .draw()
+            .map_err(plot_err)?;
+        root.present().map_err(plot_err)?;
+    }
+    Ok(svg)
+}
+
+/// Validity of the grid state nearest to `abar`.
+fn valid_at(c: &Curve, abar: f64) -> bool {
+    c.points
+        .iter()
+        .min_by(|p, q| (p.abar - abar).abs().total_cmp(&(q.abar - abar).abs()))
+        .map(|p| p.validity.valid)
+        .unwrap_or(true)
+}
+
+/// A closed outline of a polygon.
+fn closed(shape: &[(i32, i32)]) -> Vec<(i32, i32)> {
+    let mut v = shape.to_vec();
+    if let Some(&f) = shape.first() {
+        v.push(f);
+    }
+    v
+}

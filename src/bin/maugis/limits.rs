@@ -1,0 +1,306 @@
+//! `maugis limits`: the closed-form limits and envelopes of Appendix E and the
+//! Eq. 17 local envelope over `abar in (0, amax]`.
+//!
+//! Columns (all loads `Lbar`): `abar`, `jkr` (E.42a), `jkr_env_lower`,
+//! `jkr_env_upper` (E.42b), `mdmt` (E.43a at the given lambda),
+//! `mdmt_env_lower`, `mdmt_env_upper` (E.43d), `smooth_mdmt` (E.44),
+//! `local_env_lower`, `local_env_upper` (Eq. 17: the smooth Maugis load at the
+//! same lambda +/- the envelope half-width; this one solves the smooth model at
+//! every point).
+//!
+//! Default: `limits.csv` and `limits.svg` in `--out`; `--format csv` or
+//! `--format json` print the table on stdout and write nothing.
+
+use std::fmt::Write as _;
+use std::path::PathBuf;
+
+use clap::{Args, ValueEnum};
+use plotters::element::DashedPathElement;
+use plotters::prelude::*;
+use rayon::prelude::*;
+use serde::Serialize;
+
+use maugis::contact::limits::{
+    jkr_envelope, jkr_load, local_envelope, mdmt_envelope, mdmt_load, mdmt_pull_off, smooth_mdmt_load,
+};
+use maugis::contact::model::Params;
+
+use crate::args::{self, num, short, FIG4C_ALPHA, FIG4C_BETA};
+use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
+use crate::plot::{tick, clip_y, colour, plot_err, DARK_GREY, LIGHT_GREY};
+
+/// Output format.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum LimitsFormat {
+    /// limits.csv and limits.svg in --out.
+    Files,
+    /// The CSV table on stdout, no files.
+    Csv,
+    /// One JSON object on stdout, no files.
+    Json,
+}
+
+/// Flags of `maugis limits`.
+#[derive(Args, Debug)]
+pub struct LimitsArgs {
+    /// Normalised wave amplitude alpha >= 0 [default: 2 sqrt(2)/8].
+    #[arg(long, value_name = "A", value_parser = args::non_negative, allow_negative_numbers = true)]
+    pub alpha: Option<f64>,
+    /// Normalised wavelength beta > 0 [default: 9/8].
+    #[arg(long, value_name = "B", value_parser = args::positive, allow_negative_numbers = true)]
+    pub beta: Option<f64>,
+    /// Maugis parameter of the M-DMT (E.43), smooth M-DMT (E.44) and local (Eq. 17) curves.
+    #[arg(long, value_name = "L", default_value = "1/10", value_parser = args::positive, allow_negative_numbers = true)]
+    pub lambda: f64,
+    /// Largest contact half-width abar.
+    #[arg(long, value_name = "AMAX", default_value = "6", value_parser = args::positive, allow_negative_numbers = true)]
+    pub amax: f64,
+    /// Grid points, abar_i = amax i/points.
+    #[arg(long, value_name = "N", default_value = "300", value_parser = args::grid_points)]
+    pub points: usize,
+    /// Output directory (written atomically).
+    #[arg(long, value_name = "DIR", default_value = "maugis-out")]
+    pub out: PathBuf,
+    /// `files` (default), `csv` or `json` (print to stdout, write nothing).
+    #[arg(long, value_name = "FORMAT", default_value = "files")]
+    pub format: LimitsFormat,
+}
+
+/// One row of the table.
+#[derive(Serialize, Clone, Copy)]
+struct Row {
+    abar: f64,
+    jkr: f64,
+    jkr_env_lower: f64,
+    jkr_env_upper: f64,
+    mdmt: f64,
+    mdmt_env_lower: f64,
+    mdmt_env_upper: f64,
+    smooth_mdmt: f64,
+    local_env_lower: f64,
+    local_env_upper: f64,
+}
+
+const COLUMNS: [&str; 10] = [
+    "abar",
+    "jkr",
+    "jkr_env_lower",
+    "jkr_env_upper",
+    "mdmt",
+    "mdmt_env_lower",
+    "mdmt_env_upper",
+    "smooth_mdmt",
+    "local_env_lower",
+    "local_env_upper",
+];
+
+impl Row {
+    fn values(&self) -> [f64; 10] {
+        [
+            self.abar,
+            self.jkr,
+            self.jkr_env_lower,
+            self.jkr_env_upper,
+            self.mdmt,
+            self.mdmt_env_lower,
+            self.mdmt_env_upper,
+            self.smooth_mdmt,
+            self.local_env_lower,
+            self.local_env_upper,
+        ]
+    }
+}
+
+#[derive(Serialize)]
+struct LimitsJson {
+    params: LimitsParams,
+    rows: Vec<Row>,
+}
+
+#[derive(Serialize)]
+struct LimitsParams {
+    alpha: f64,
+    beta: f64,
+    lambda: f64,
+    amax: f64,
+    points: usize,
+    /// E.43c rigid pull-off `L'_p = 2 lambda cbar`.
+    mdmt_pull_off: f64,
+}
+
+fn row(params: Params, abar: f64) -> Result<Row, String> {
+    let Params { lambda, alpha, beta } = params;
+    let e = |e: maugis::Error| format!("limits at abar = {}: {e}", num(abar));
+    let (jl, jh) = jkr_envelope(alpha, beta, abar).map_err(e)?;
+    let (ml, mh) = mdmt_envelope(params, abar).map_err(e)?;
+    let (ll, lh) = local_envelope(params, abar).map_err(e)?;
+    Ok(Row {
+        abar,
+        jkr: jkr_load(alpha, beta, abar).map_err(e)?,
+        jkr_env_lower: jl,
+        jkr_env_upper: jh,
+        mdmt: mdmt_load(params, abar).map_err(e)?,
+        mdmt_env_lower: ml,
+        mdmt_env_upper: mh,
+        smooth_mdmt: smooth_mdmt_load(lambda, abar).map_err(e)?,
+        local_env_lower: ll,
+        local_env_upper: lh,
+    })
+}
+
+fn table_csv(rows: &[Row]) -> Result<String, String> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    let err = |e: csv::Error| format!("could not format CSV: {e}");
+    w.write_record(COLUMNS).map_err(err)?;
+    for r in rows {
+        w.write_record(r.values().map(|v| v.to_string())).map_err(err)?;
+    }
+    let bytes = w.into_inner().map_err(|e| format!("could not format CSV: {e}"))?;
+    String::from_utf8(bytes).map_err(|e| format!("could not format CSV: {e}"))
+}
+
+/// Runs `maugis limits`.
+pub fn run(a: LimitsArgs) -> Result<(), String> {
+    let alpha = a.alpha.unwrap_or(FIG4C_ALPHA);
+    let beta = a.beta.unwrap_or(FIG4C_BETA);
+    let params = Params::new(a.lambda, alpha, beta).map_err(|e| e.to_string())?;
+    args::check_size("--amax", a.amax, alpha, beta)?;
+    if a.format == LimitsFormat::Files {
+        check_out_dir(&a.out)?;
+    }
+    let n = a.points;
+    let rows = (1..=n)
+        .into_par_iter()
+        .map(|i| row(params, a.amax * i as f64 / n as f64))
+        .collect::<Result<Vec<_>, String>>()?;
+    let pull_off = mdmt_pull_off(params).map_err(|e| e.to_string())?;
+    match a.format {
+        LimitsFormat::Csv => {
+            print_stdout(&table_csv(&rows)?)
+        }
+        LimitsFormat::Json => {
+            let out = LimitsJson {
+                params: LimitsParams { alpha, beta, lambda: a.lambda, amax: a.amax, points: n, mdmt_pull_off: pull_off },
+                rows,
+            };
+            let text = serde_json::to_string(&out).map_err(|e| format!("could not format JSON: {e}"))?;
+            print_stdout(&format!("{text}\n"))
+        }
+        LimitsFormat::Files => {
+            let files = [
+                OutFile::text("limits.csv", table_csv(&rows)?),
+                OutFile::text("limits.svg", limits_svg(&rows, alpha, beta, a.lambda, a.amax)?),
+            ];
+            let written = write_atomically(&a.out, &files)?;
+            let mut report = String::new();
+            let _ = writeln!(
+                report,
+                "maugis limits: alpha = {}, beta = {}, lambda = {}, abar in (0, {}], {} points; M-DMT pull-off L'_p = {:.6}",
+                short(alpha),
+                short(beta),
+                short(a.lambda),
+                short(a.amax),
+                n,
+                pull_off
+            );
+            let _ = writeln!(report, "wrote {} file(s) to {}:", written.len(), a.out.display());
+            for p in &written {
+                let _ = writeln!(report, "  {}", p.display());
+            }
+            print_stdout(&report)
+        }
+    }
+}
+
+/// A line of the plot: legend label, points, style, dash, gap (dash 0: solid).
+type Series = (Option<String>, Vec<(f64, f64)>, ShapeStyle, u32, u32);
+
+/// The limits plot (SVG text).
+fn limits_svg(rows: &[Row], alpha: f64, beta: f64, lambda: f64, amax: f64) -> Result<String, String> {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for r in rows {
+        for v in [r.jkr, r.mdmt, r.smooth_mdmt, r.local_env_lower, r.local_env_upper] {
+            if v.is_finite() {
+                lo = lo.min(v);
+                hi = hi.max(v);
+            }
+        }
+    }
+    if !(lo.is_finite() && hi.is_finite()) {
+        (lo, hi) = (-5.0, 25.0);
+    }
+    let span = (hi - lo).max(1.0);
+    let (ymin, ymax) = (lo - 0.06 * span, hi + 0.06 * span);
+    let col = |f: fn(&Row) -> f64| rows.iter().map(|r| (r.abar, f(r))).collect::<Vec<_>>();
+    let l = short(lambda);
+    let style = |c: RGBColor, w: u32| ShapeStyle { color: c.to_rgba(), filled: false, stroke_width: w };
+    // (label, points, style, dash, gap); dash 0 = solid
+    let series: Vec<Series> = vec![
+        (Some("JKR limit (E.42a)".into()), col(|r| r.jkr), style(DARK_GREY, 3), 0, 0),
+        (Some("JKR envelope (E.42b)".into()), col(|r| r.jkr_env_lower), style(DARK_GREY, 1), 18, 7),
+        (None, col(|r| r.jkr_env_upper), style(DARK_GREY, 1), 18, 7),
+        (Some(format!("M-DMT limit, λ = {l} (E.43a)")), col(|r| r.mdmt), style(LIGHT_GREY, 3), 0, 0),
+        (Some(format!("M-DMT envelope, λ = {l} (E.43d)")), col(|r| r.mdmt_env_lower), style(LIGHT_GREY, 1), 18, 7),
+        (None, col(|r| r.mdmt_env_upper), style(LIGHT_GREY, 1), 18, 7),
+        (Some(format!("smooth M-DMT, λ = {l} (E.44)")), col(|r| r.smooth_mdmt), style(colour(0), 2), 9, 6),
+        (Some(format!("local envelope, λ = {l} (Eq. 17)")), col(|r| r.local_env_lower), style(colour(3), 2), 0, 0),
+        (None, col(|r| r.local_env_upper), style(colour(3), 2), 0, 0),
+    ];
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (1300, 900)).into_drawing_area();
+        root.fill(&WHITE).map_err(plot_err)?;
+        let title = format!("Appendix E limits and Eq. 17 envelope, α = {}, β = {}, λ = {l}", short(alpha), short(beta));
+        let mut chart = ChartBuilder::on(&root)
+            .caption(title, ("sans-serif", 26))
+            .margin(20)
+            .x_label_area_size(60)
+            .y_label_area_size(75)
+            .build_cartesian_2d(0.0..amax, ymin..ymax)
+            .map_err(plot_err)?;
+        chart
+            .configure_mesh()
+            .x_desc("contact half-width abar")
+            .y_desc("load Lbar")
+            .axis_desc_style(("sans-serif", 22))
+            .label_style(("sans-serif", 17))
+            .x_label_formatter(&tick)
+            .y_label_formatter(&tick)
+            .light_line_style(RGBColor(235, 235, 235))
+            .bold_line_style(RGBColor(205, 205, 205))
+            .draw()
+            .map_err(plot_err)?;
+        for (label, pts, st, dash, gap) in series {
+            let mut first = true;
+            for piece in clip_y(&pts, ymin, ymax) {
+                let ann = if dash == 0 {
+                    chart.draw_series(LineSeries::new(piece, st)).map_err(plot_err)?
+                } else {
+                    chart.draw_series(DashedLineSeries::new(piece, dash, gap, st)).map_err(plot_err)?
+                };
+                if let (true, Some(lab)) = (first, label.as_ref()) {
+                    ann.label(lab.clone()).legend(move |(x, y)| {
+                        if dash == 0 {
+                            DashedPathElement::new(vec![(x - 4, y), (x + 26, y)], 30, 1, st)
+                        } else {
+                            DashedPathElement::new(vec![(x - 4, y), (x + 26, y)], dash.min(8), gap.min(5), st)
+                        }
+                    });
+                }
+                first = false;
+            }
+        }
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::UpperLeft)
+            .margin(12)
+            .legend_area_size(40)
+            .label_font(("sans-serif", 17))
+            .background_style(WHITE.mix(0.88))
+            .border_style(BLACK.mix(0.6))
+            .draw()
+            .map_err(plot_err)?;
+        root.present().map_err(plot_err)?;
+    }
+    Ok(svg)
+}

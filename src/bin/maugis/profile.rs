@@ -1,0 +1,371 @@
+//! `maugis profile`: the traction, displacement and gap profiles of one state
+//! (one contact half-width `abar`), like the paper's Figs. 6, 8 and 9.
+//!
+//! The strip ratio `m` comes from [`ContactSize::solve_m`]. Over the symmetric
+//! half `xbar in [0, 1.5 m abar]` it writes `profile.csv` with the columns
+//! `xbar,pbar,ubar,gbar,hbar` (traction, substrate displacement, gap, rigid
+//! profile depth, all normalised) and `profile.svg` with three panels: traction;
+//! displacement and rigid profile; gap with the interaction range
+//! `deltabar = 1/lambda`. The contact edge `x = abar` and the strip end
+//! `x = m abar` are marked with vertical lines, and the title states the
+//! validity of the state. `--format json` prints the same data instead.
+
+use std::fmt::Write as _;
+use std::path::PathBuf;
+
+use clap::{Args, ValueEnum};
+use plotters::coord::Shift;
+use plotters::element::DashedPathElement;
+use plotters::prelude::*;
+use serde::Serialize;
+
+use maugis::contact::displacement::profile_depth;
+use maugis::contact::model::{ContactSize, Params, Validity, GAP_TOL, TRACTION_TOL};
+
+use crate::args::{self, num, short, FIG4C_ALPHA, FIG4C_BETA};
+use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
+use crate::plot::{tick, clip_y, colour, plot_err, DARK_GREY, LIGHT_GREY};
+
+/// Output format.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum ProfileFormat {
+    /// profile.csv and profile.svg in --out.
+    Files,
+    /// One JSON object on stdout, no files.
+    Json,
+}
+
+/// Flags of `maugis profile`.
+#[derive(Args, Debug)]
+pub struct ProfileArgs {
+    /// Contact half-width abar > 0.
+    #[arg(long, value_name = "A", value_parser = args::positive, allow_negative_numbers = true)]
+    pub abar: f64,
+    /// Maugis parameter lambda > 0.
+    #[arg(long, value_name = "L", default_value = "1", value_parser = args::positive, allow_negative_numbers = true)]
+    pub lambda: f64,
+    /// Normalised wave amplitude alpha >= 0 [default: 2 sqrt(2)/8].
+    #[arg(long, value_name = "A", value_parser = args::non_negative, allow_negative_numbers = true)]
+    pub alpha: Option<f64>,
+    /// Normalised wavelength beta > 0 [default: 9/8].
+    #[arg(long, value_name = "B", value_parser = args::positive, allow_negative_numbers = true)]
+    pub beta: Option<f64>,
+    /// Sample points over xbar in [0, 1.5 m abar] (the edge and strip end are added).
+    #[arg(long, value_name = "N", default_value = "600", value_parser = args::grid_points)]
+    pub points: usize,
+    /// Output directory (written atomically).
+    #[arg(long, value_name = "DIR", default_value = "maugis-out")]
+    pub out: PathBuf,
+    /// `files` (default) or `json` (print to stdout, write nothing).
+    #[arg(long, value_name = "FORMAT", default_value = "files")]
+    pub format: ProfileFormat,
+}
+
+/// One sample of the profile.
+#[derive(Serialize, Clone, Copy)]
+struct Sample {
+    xbar: f64,
+    pbar: f64,
+    ubar: f64,
+    gbar: f64,
+    hbar: f64,
+}
+
+#[derive(Serialize)]
+struct ProfileJson {
+    lambda: f64,
+    alpha: f64,
+    beta: f64,
+    abar: f64,
+    m: f64,
+    load: f64,
+    valid: bool,
+    min_strip_gap: f64,
+    min_strip_gap_at: f64,
+    max_traction: f64,
+    max_traction_at: f64,
+    samples: Vec<Sample>,
+}
+
+/// A one-line description of the validity of a state.
+fn validity_text(v: &Validity) -> String {
+    let cav = v.max_traction > 1.0 + TRACTION_TOL;
+    let pen = v.min_strip_gap < -GAP_TOL;
+    match (cav, pen) {
+        (false, false) => format!(
+            "valid (max p̄ = {:.4} ≤ 1, min strip gap = {:.3e} ≥ 0)",
+            v.max_traction, v.min_strip_gap
+        ),
+        (true, false) => format!("INVALID: cavitation, max p̄ = {:.4} > 1 at x̄ = {:.3}", v.max_traction, v.max_traction_at),
+        (false, true) => format!(
+            "INVALID: interpenetration, strip gap = {:.3e} < 0 at x̄ = {:.3}",
+            v.min_strip_gap, v.min_strip_gap_at
+        ),
+        (true, true) => format!(
+            "INVALID: cavitation (max p̄ = {:.4}) and interpenetration (min gap = {:.3e})",
+            v.max_traction, v.min_strip_gap
+        ),
+    }
+}
+
+/// Runs `maugis profile`.
+pub fn run(a: ProfileArgs) -> Result<(), String> {
+    let alpha = a.alpha.unwrap_or(FIG4C_ALPHA);
+    let beta = a.beta.unwrap_or(FIG4C_BETA);
+    let params = Params::new(a.lambda, alpha, beta).map_err(|e| e.to_string())?;
+    args::check_size("--abar", a.abar, alpha, beta)?;
+    if a.format == ProfileFormat::Files {
+        check_out_dir(&a.out)?;
+    }
+    let cs = ContactSize::new(params, a.abar).map_err(|e| e.to_string())?;
+    let m = cs.solve_m().map_err(|e| format!("abar = {}: {e}", num(a.abar)))?;
+    let load = cs.load(m);
+    let validity = cs.validity(m).map_err(|e| format!("abar = {}: {e}", num(a.abar)))?;
+    let c = m * a.abar;
+    let xmax = 1.5 * c;
+
+    // Uniform grid plus the contact edge and the strip end.
+    let mut xs: Vec<f64> = (0..a.points).map(|i| xmax * i as f64 / (a.points - 1) as f64).collect();
+    xs.push(a.abar);
+    xs.push(c);
+    xs.sort_by(f64::total_cmp);
+    xs.dedup();
+    let mut samples = Vec::with_capacity(xs.len());
+    for &x in &xs {
+        let e = |e: maugis::Error| format!("at xbar = {}: {e}", num(x));
+        samples.push(Sample {
+            xbar: x,
+            pbar: cs.traction(m, x),
+            ubar: cs.displacement(m, x).map_err(e)?,
+            gbar: cs.gap(m, x).map_err(e)?,
+            hbar: profile_depth(1.0, alpha, beta, x).map_err(e)?,
+        });
+    }
+
+    if a.format == ProfileFormat::Json {
+        let out = ProfileJson {
+            lambda: a.lambda,
+            alpha,
+            beta,
+            abar: a.abar,
+            m,
+            load,
+            valid: validity.valid,
+            min_strip_gap: validity.min_strip_gap,
+            min_strip_gap_at: validity.min_strip_gap_at,
+            max_traction: validity.max_traction,
+            max_traction_at: validity.max_traction_at,
+            samples,
+        };
+        let text = serde_json::to_string(&out).map_err(|e| format!("could not format JSON: {e}"))?;
+        return print_stdout(&format!("{text}\n"));
+    }
+
+    let mut w = csv::Writer::from_writer(Vec::new());
+    let err = |e: csv::Error| format!("could not format CSV: {e}");
+    w.write_record(["xbar", "pbar", "ubar", "gbar", "hbar"]).map_err(err)?;
+    for s in &samples {
+        w.write_record([s.xbar.to_string(), s.pbar.to_string(), s.ubar.to_string(), s.gbar.to_string(), s.hbar.to_string()])
+            .map_err(err)?;
+    }
+    let csv_bytes = w.into_inner().map_err(|e| format!("could not format CSV: {e}"))?;
+    let svg = profile_svg(&samples, a.lambda, alpha, beta, a.abar, m, load, &validity)?;
+    let files = [OutFile { name: "profile.csv".into(), bytes: csv_bytes }, OutFile::text("profile.svg", svg)];
+    let written = write_atomically(&a.out, &files)?;
+    let mut report = String::new();
+    let _ = writeln!(
+        report,
+        "maugis profile: lambda = {}, alpha = {}, beta = {}, abar = {}: m = {:.6}, strip end c = {:.6}, load = {:.6}",
+        short(a.lambda),
+        short(alpha),
+        short(beta),
+        short(a.abar),
+        m,
+        c,
+        load
+    );
+    let _ = writeln!(report, "  {}", validity_text(&validity));
+    let _ = writeln!(report, "wrote {} file(s) to {}:", written.len(), a.out.display());
+    for p in &written {
+        let _ = writeln!(report, "  {}", p.display());
+    }
+    print_stdout(&report)
+}
+
+/// Range of the given values with a margin.
+fn range_of(vals: impl Iterator<Item = f64>) -> (f64, f64) {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for v in vals.filter(|v| v.is_finite()) {
+        lo = lo.min(v);
+        hi = hi.max(v);
+    }
+    if !(lo.is_finite() && hi.is_finite()) {
+        return (-1.0, 1.0);
+    }
+    let span = (hi - lo).max(1e-3);
+    (lo - 0.08 * span, hi + 0.08 * span)
+}
+
+/// A line of a panel: legend label, colour, stroke width, points.
+type Series = (String, RGBColor, u32, Vec<(f64, f64)>);
+
+/// Draws one panel with series `(label, colour, points)`, vertical lines at the
+/// contact edge and strip end, and optional horizontal reference lines.
+#[allow(clippy::too_many_arguments)]
+fn panel(
+    area: &DrawingArea<SVGBackend<'_>, Shift>,
+    caption: Option<&str>,
+    ylabel: &str,
+    xmax: f64,
+    series: &[Series],
+    hlines: &[(String, f64)],
+    abar: f64,
+    c: f64,
+    show_x_label: bool,
+    legend_at: SeriesLabelPosition,
+) -> Result<(), String> {
+    let (ylo, yhi) = range_of(series.iter().flat_map(|s| s.3.iter().map(|p| p.1)).chain(hlines.iter().map(|h| h.1)));
+    let mut b = ChartBuilder::on(area);
+    b.margin(12).margin_right(30).x_label_area_size(if show_x_label { 55 } else { 30 }).y_label_area_size(80);
+    if let Some(cap) = caption {
+        b.caption(cap, ("sans-serif", 22));
+    }
+    let mut chart = b.build_cartesian_2d(0.0..xmax, ylo..yhi).map_err(plot_err)?;
+    let mut mesh = chart.configure_mesh();
+    mesh.y_desc(ylabel)
+        .axis_desc_style(("sans-serif", 20))
+        .label_style(("sans-serif", 15))
+        .x_label_formatter(&tick)
+            .y_label_formatter(&tick)
+            .light_line_style(RGBColor(238, 238, 238))
+        .bold_line_style(RGBColor(210, 210, 210));
+    if show_x_label {
+        mesh.x_desc("position x̄ (normalised, symmetric half x̄ ≥ 0)");
+    }
+    mesh.draw().map_err(plot_err)?;
+
+    let edge = ShapeStyle { color: DARK_GREY.to_rgba(), filled: false, stroke_width: 2 };
+    let strip = ShapeStyle { color: LIGHT_GREY.to_rgba(), filled: false, stroke_width: 2 };
+    chart
+        .draw_series(DashedLineSeries::new(vec![(abar, ylo), (abar, yhi)], 8, 5, edge))
+        .map_err(plot_err)?
+        .label(format!("contact edge x̄ = ā = {}", short(abar)))
+        .legend(move |(x, y)| DashedPathElement::new(vec![(x - 4, y), (x + 26, y)], 8, 5, edge));
+    chart
+        .draw_series(DashedLineSeries::new(vec![(c, ylo), (c, yhi)], 3, 4, strip))
+        .map_err(plot_err)?
+        .label(format!("strip end x̄ = m ā = {:.4}", c))
+        .legend(move |(x, y)| DashedPathElement::new(vec![(x - 4, y), (x + 26, y)], 3, 4, strip));
+    for (label, y) in hlines {
+        let st = ShapeStyle { color: BLACK.mix(0.5), filled: false, stroke_width: 1 };
+        chart
+            .draw_series(DashedLineSeries::new(vec![(0.0, *y), (xmax, *y)], 12, 6, st))
+            .map_err(plot_err)?
+            .label(label.clone())
+            .legend(move |(x, y)| DashedPathElement::new(vec![(x - 4, y), (x + 26, y)], 12, 6, st));
+    }
+    for (label, col, width, pts) in series {
+        let st = col.stroke_width(*width);
+        let mut first = true;
+        for piece in clip_y(pts, ylo, yhi) {
+            let ann = chart.draw_series(LineSeries::new(piece, st)).map_err(plot_err)?;
+            if first {
+                ann.label(label.clone()).legend(move |(x, y)| PathElement::new(vec![(x - 4, y), (x + 26, y)], st));
+                first = false;
+            }
+        }
+    }
+    chart
+        .configure_series_labels()
+        .position(legend_at)
+        .margin(8)
+        .legend_area_size(40)
+        .label_font(("sans-serif", 15))
+        .background_style(WHITE.mix(0.88))
+        .border_style(BLACK.mix(0.5))
+        .draw()
+        .map_err(plot_err)?;
+    Ok(())
+}
+
+/// The three-panel profile plot (SVG text).
+#[allow(clippy::too_many_arguments)]
+fn profile_svg(
+    s: &[Sample],
+    lambda: f64,
+    alpha: f64,
+    beta: f64,
+    abar: f64,
+    m: f64,
+    load: f64,
+    v: &Validity,
+) -> Result<String, String> {
+    let c = m * abar;
+    let xmax = s.last().map(|p| p.xbar).unwrap_or(1.5 * c).max(1e-9);
+    let pts = |f: fn(&Sample) -> f64| s.iter().map(|p| (p.xbar, f(p))).collect::<Vec<_>>();
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (1200, 1250)).into_drawing_area();
+        root.fill(&WHITE).map_err(plot_err)?;
+        let title = format!(
+            "State at ā = {}, λ = {}, α = {}, β = {}: strip ratio m = {:.4}, load = {:.4}",
+            short(abar),
+            short(lambda),
+            short(alpha),
+            short(beta),
+            m,
+            load
+        );
+        let root = root.titled(&title, ("sans-serif", 26)).map_err(plot_err)?;
+        let (head, body) = root.split_vertically(40);
+        let vt = validity_text(v);
+        let vcol = if v.valid { RGBColor(30, 120, 30) } else { RGBColor(200, 20, 20) };
+        head.draw(&Text::new(vt, (80, 8), ("sans-serif", 21).into_font().color(&vcol))).map_err(plot_err)?;
+        let panels = body.split_evenly((3, 1));
+        let [top, mid, bottom] = match panels.as_slice() {
+            [a, b, c] => [a, b, c],
+            _ => return Err("internal error: could not split the plot".into()),
+        };
+        panel(
+            top,
+            Some("traction (tensile > 0; p̄ = 1 in the adhesive strip)"),
+            "traction p̄",
+            xmax,
+            &[("traction p̄".into(), colour(3), 3, pts(|p| p.pbar))],
+            &[("p̄ = 1 (cohesive stress)".into(), 1.0), ("p̄ = 0".into(), 0.0)],
+            abar,
+            c,
+            false,
+            SeriesLabelPosition::UpperRight,
+        )?;
+        panel(
+            mid,
+            Some("substrate displacement and rigid profile (positive downward)"),
+            "ū, h̄",
+            xmax,
+            &[
+                ("rigid profile h̄".into(), RGBColor(90, 90, 90), 2, pts(|p| p.hbar)),
+                ("substrate displacement ū".into(), colour(2), 3, pts(|p| p.ubar)),
+            ],
+            &[],
+            abar,
+            c,
+            false,
+            SeriesLabelPosition::UpperLeft,
+        )?;
+        panel(
+            bottom,
+            Some("gap ḡ = h̄ − ū (zero in the contact)"),
+            "gap ḡ",
+            xmax,
+            &[("gap ḡ".into(), colour(0), 3, pts(|p| p.gbar))],
+            &[(format!("interaction range δ̄ = 1/λ = {}", short(1.0 / lambda)), 1.0 / lambda)],
+            abar,
+            c,
+            true,
+            SeriesLabelPosition::UpperLeft,
+        )?;
+        root.present().map_err(plot_err)?;
+    }
+    Ok(svg)
+}

@@ -1,0 +1,327 @@
+//! `maugis curve`, `maugis profile` and `maugis limits` end to end: the JSON
+//! schema, the files written, atomic output, and one-line usage errors (exit
+//! code 2, nothing written). Small grids keep it fast.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use serde_json::Value;
+
+fn maugis(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_maugis")).args(args).output().expect("spawn maugis")
+}
+
+/// A fresh, not yet existing path under the temp directory; removed on drop
+/// (with any `<name>.tmp-*` sibling).
+struct TempPath(PathBuf);
+
+impl TempPath {
+    fn new(tag: &str) -> TempPath {
+        static N: AtomicUsize = AtomicUsize::new(0);
+        let nanos = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map(|d| d.as_nanos()).unwrap_or(0);
+        let name = format!("maugis-cli-{tag}-{}-{}-{nanos}", std::process::id(), N.fetch_add(1, Ordering::SeqCst));
+        let p = std::env::temp_dir().join(name);
+        assert!(!p.exists());
+        TempPath(p)
+    }
+    fn path(&self) -> &Path {
+        &self.0
+    }
+    fn str(&self) -> &str {
+        self.0.to_str().expect("utf-8 temp path")
+    }
+    /// Leftover temporary siblings `<name>.tmp-*`.
+    fn tmp_siblings(&self) -> Vec<PathBuf> {
+        let name = self.0.file_name().unwrap().to_string_lossy().into_owned();
+        let parent = self.0.parent().unwrap();
+        std::fs::read_dir(parent)
+            .unwrap()
+            .filter_map(|e| e.ok())
+            .map(|e| e.path())
+            .filter(|p| p.file_name().map(|f| f.to_string_lossy().starts_with(&format!("{name}.tmp-"))).unwrap_or(false))
+            .collect()
+    }
+}
+
+impl Drop for TempPath {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+        for p in self.tmp_siblings() {
+            let _ = std::fs::remove_dir_all(p);
+        }
+    }
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8(o.stdout.clone()).expect("utf-8 stdout")
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8(o.stderr.clone()).expect("utf-8 stderr")
+}
+
+fn keys(v: &Value) -> Vec<String> {
+    let mut k: Vec<String> = v.as_object().expect("object").keys().cloned().collect();
+    k.sort();
+    k
+}
+
+fn sorted(k: &[&str]) -> Vec<String> {
+    let mut v: Vec<String> = k.iter().map(|s| s.to_string()).collect();
+    v.sort();
+    v
+}
+
+fn is_num(v: &Value) -> bool {
+    v.is_number()
+}
+
+#[test]
+fn curve_json_follows_the_schema() {
+    let dir = TempPath::new("json");
+    let o = maugis(&["curve", "--lambda", "1", "--lambda", "6", "--points", "60", "--format", "json", "--out", dir.str()]);
+    assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(&o));
+    assert!(!dir.path().exists(), "--format json must write no files");
+    let text = stdout(&o);
+    assert_eq!(text.trim().lines().count(), 1, "one JSON object on one line");
+    let v: Value = serde_json::from_str(text.trim()).expect("valid JSON");
+    assert_eq!(keys(&v), sorted(&["params", "curves"]));
+    let p = &v["params"];
+    assert_eq!(keys(p), sorted(&["alpha", "beta", "amax", "points"]));
+    assert!((p["alpha"].as_f64().unwrap() - 2f64.sqrt() / 4.0).abs() < 1e-15);
+    assert_eq!(p["beta"].as_f64(), Some(1.125));
+    assert_eq!(p["amax"].as_f64(), Some(6.0));
+    assert_eq!(p["points"].as_u64(), Some(60));
+
+    let curves = v["curves"].as_array().expect("curves array");
+    assert_eq!(curves.len(), 2);
+    let lambdas: Vec<f64> = curves.iter().map(|c| c["lambda"].as_f64().unwrap()).collect();
+    assert_eq!(lambdas, [1.0, 6.0]);
+    let mut n_turning = 0;
+    let mut n_jumps = 0;
+    for c in curves {
+        assert_eq!(keys(c), sorted(&["lambda", "points", "turning_points", "jumps", "pull_off"]));
+        let pts = c["points"].as_array().unwrap();
+        assert_eq!(pts.len(), 60);
+        let mut prev = 0.0;
+        for q in pts {
+            assert_eq!(keys(q), sorted(&["abar", "m", "load", "valid", "min_strip_gap", "max_traction"]));
+            for k in ["abar", "m", "load", "min_strip_gap", "max_traction"] {
+                assert!(is_num(&q[k]), "{k} = {}", q[k]);
+            }
+            assert!(q["valid"].is_boolean());
+            let a = q["abar"].as_f64().unwrap();
+            assert!(a > prev && a <= 6.0 + 1e-12);
+            prev = a;
+            assert!(q["m"].as_f64().unwrap() > 1.0);
+        }
+        for t in c["turning_points"].as_array().unwrap() {
+            assert_eq!(keys(t), sorted(&["abar", "load", "kind"]));
+            assert!(is_num(&t["abar"]) && is_num(&t["load"]));
+            let k = t["kind"].as_str().unwrap();
+            assert!(k == "max" || k == "min", "{k}");
+            n_turning += 1;
+        }
+        for j in c["jumps"].as_array().unwrap() {
+            assert_eq!(keys(j), sorted(&["direction", "from_abar", "to_abar", "load"]));
+            for k in ["from_abar", "to_abar", "load"] {
+                assert!(is_num(&j[k]));
+            }
+            let d = j["direction"].as_str().unwrap();
+            assert!(d == "loading" || d == "unloading", "{d}");
+            let (from, to) = (j["from_abar"].as_f64().unwrap(), j["to_abar"].as_f64().unwrap());
+            if d == "loading" {
+                assert!(to > from);
+            } else {
+                assert!(to < from);
+            }
+            n_jumps += 1;
+        }
+        let po = &c["pull_off"];
+        assert!(po.is_null() || (keys(po) == sorted(&["abar", "load"]) && is_num(&po["abar"]) && is_num(&po["load"])));
+    }
+    // lambda = 6 on this roughness is JKR-like with roughness-induced instabilities
+    assert!(n_turning > 0 && n_jumps > 0);
+}
+
+#[test]
+fn curve_writes_csv_summary_and_svg() {
+    let dir = TempPath::new("files");
+    let o = maugis(&["curve", "--lambda", "1/2", "--lambda", "3", "--points", "40", "--out", dir.str()]);
+    assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(&o));
+    let out = stdout(&o);
+    assert!(out.contains("summary.json") && out.contains("load-area.svg"), "{out}");
+    assert!(dir.tmp_siblings().is_empty(), "temporary directory left behind");
+
+    for (lambda, name) in [(0.5, "curve_lambda_0.5.csv"), (3.0, "curve_lambda_3.csv")] {
+        let mut r = csv::Reader::from_path(dir.path().join(name)).expect(name);
+        let header: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
+        assert_eq!(header, ["abar", "m", "load", "valid", "min_strip_gap", "max_traction"]);
+        let rows: Vec<csv::StringRecord> = r.records().map(|x| x.unwrap()).collect();
+        assert_eq!(rows.len(), 40, "lambda {lambda}");
+        for row in &rows {
+            for (i, field) in row.iter().enumerate() {
+                if i == 3 {
+                    assert!(field == "true" || field == "false");
+                } else {
+                    field.parse::<f64>().unwrap_or_else(|_| panic!("{field}"));
+                }
+            }
+        }
+        // agrees with the library
+        let params = maugis::contact::model::Params::new(lambda, 2f64.sqrt() / 4.0, 1.125).unwrap();
+        let a: f64 = rows[10][0].parse().unwrap();
+        let s = maugis::contact::curve::state(params, a).unwrap();
+        let load: f64 = rows[10][2].parse().unwrap();
+        assert!((load - s.load).abs() <= 1e-12 * (1.0 + s.load.abs()), "{load} vs {}", s.load);
+    }
+
+    let summary: Value = serde_json::from_str(&std::fs::read_to_string(dir.path().join("summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["params"]["points"].as_u64(), Some(40));
+    let curves = summary["curves"].as_array().unwrap();
+    assert_eq!(curves.len(), 2);
+    for c in curves {
+        for k in ["lambda", "turning_points", "jumps", "pull_off", "invalid_points", "invalid_stretches"] {
+            assert!(c.get(k).is_some(), "summary curve lacks {k}");
+        }
+        let invalid = c["invalid_points"].as_u64().unwrap();
+        let in_stretches: u64 = c["invalid_stretches"].as_array().unwrap().iter().map(|s| s["points"].as_u64().unwrap()).sum();
+        assert_eq!(invalid, in_stretches);
+    }
+
+    let svg = std::fs::read_to_string(dir.path().join("load-area.svg")).unwrap();
+    assert!(svg.len() > 1000 && svg.contains("<svg"));
+    assert!(svg.contains("contact half-width abar") && svg.contains("load Lbar"));
+
+    // A second run into the existing directory replaces the files.
+    let o = maugis(&["curve", "--lambda", "3", "--points", "20", "--out", dir.str()]);
+    assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(&o));
+    let r = csv::Reader::from_path(dir.path().join("curve_lambda_3.csv")).unwrap();
+    assert_eq!(r.into_records().count(), 20);
+    assert!(dir.tmp_siblings().is_empty());
+}
+
+#[test]
+fn bad_parameters_exit_2_with_one_line_and_no_files() {
+    let cases: &[&[&str]] = &[
+        &["curve", "--lambda", "0"],
+        &["curve", "--alpha", "-1"],
+        &["curve", "--beta", "0"],
+        &["curve", "--amax", "0"],
+        &["curve", "--points", "1"],
+        &["curve", "--lambda", "NaN"],
+        &["curve", "--lambda", "inf"],
+        &["curve", "--bogus"],
+        &["curve", "--lambda"],
+        &["curve", "--format", "xml"],
+        &["curve", "--amax", "1e300"],
+        &["curve", "--beta", "1e-9"],
+        &["profile", "--lambda", "1"],
+        &["profile", "--abar", "0"],
+        &["profile", "--abar", "2", "--beta", "-3"],
+        &["limits", "--amax", "-1"],
+        &["limits", "--points", "1"],
+        &["frobnicate"],
+    ];
+    for args in cases {
+        let dir = TempPath::new("bad");
+        let mut full: Vec<&str> = args.to_vec();
+        // put --out first so a missing value at the end stays missing
+        full.insert(1, "--out");
+        full.insert(2, dir.str());
+        if args[0] == "frobnicate" {
+            full.truncate(1);
+        }
+        let o = maugis(&full);
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: stderr {err}");
+        assert_eq!(err.lines().count(), 1, "{args:?}: not one line: {err:?}");
+        assert!(err.starts_with("maugis: "), "{args:?}: {err}");
+        assert!(stdout(&o).is_empty(), "{args:?}: stdout {}", stdout(&o));
+        assert!(!dir.path().exists(), "{args:?}: created the output directory");
+        assert!(dir.tmp_siblings().is_empty(), "{args:?}: left a temporary directory");
+    }
+}
+
+#[test]
+fn out_that_is_a_file_is_refused_before_computing() {
+    let file = TempPath::new("file");
+    std::fs::write(file.path(), "not a directory").unwrap();
+    let o = maugis(&["curve", "--lambda", "1", "--points", "10", "--out", file.str()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert_eq!(stderr(&o).lines().count(), 1);
+    assert_eq!(std::fs::read_to_string(file.path()).unwrap(), "not a directory");
+    let _ = std::fs::remove_file(file.path());
+}
+
+#[test]
+fn profile_writes_csv_and_svg() {
+    let dir = TempPath::new("profile");
+    let o = maugis(&["profile", "--abar", "2.71", "--lambda", "6", "--points", "50", "--out", dir.str()]);
+    assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(&o));
+    let mut r = csv::Reader::from_path(dir.path().join("profile.csv")).unwrap();
+    let header: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
+    assert_eq!(header, ["xbar", "pbar", "ubar", "gbar", "hbar"]);
+    let rows: Vec<Vec<f64>> = r.records().map(|x| x.unwrap().iter().map(|f| f.parse::<f64>().unwrap()).collect()).collect();
+    assert!(rows.len() >= 50);
+    assert_eq!(rows[0][0], 0.0);
+    // edge x = abar is sampled; the gap vanishes inside the contact, pbar = 1 in the strip
+    assert!(rows.iter().any(|r| r[0] == 2.71));
+    for r in &rows {
+        if r[0] <= 2.71 {
+            assert_eq!(r[3], 0.0);
+        }
+    }
+    assert!(rows.iter().any(|r| r[0] > 2.71 && r[1] == 1.0));
+    let svg = std::fs::read_to_string(dir.path().join("profile.svg")).unwrap();
+    assert!(svg.contains("<svg") && svg.contains("valid"));
+    assert!(dir.tmp_siblings().is_empty());
+
+    let o = maugis(&["profile", "--abar", "3", "--points", "20", "--format", "json"]);
+    assert_eq!(o.status.code(), Some(0));
+    let v: Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert!(v["m"].as_f64().unwrap() > 1.0 && v["valid"].is_boolean());
+    assert!(v["samples"].as_array().unwrap().len() >= 20);
+}
+
+#[test]
+fn limits_write_csv_and_svg_or_print() {
+    let dir = TempPath::new("limits");
+    let o = maugis(&["limits", "--points", "30", "--out", dir.str()]);
+    assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(&o));
+    let mut r = csv::Reader::from_path(dir.path().join("limits.csv")).unwrap();
+    let header: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
+    assert_eq!(
+        header,
+        [
+            "abar",
+            "jkr",
+            "jkr_env_lower",
+            "jkr_env_upper",
+            "mdmt",
+            "mdmt_env_lower",
+            "mdmt_env_upper",
+            "smooth_mdmt",
+            "local_env_lower",
+            "local_env_upper"
+        ]
+    );
+    let rows: Vec<Vec<f64>> = r.records().map(|x| x.unwrap().iter().map(|f| f.parse::<f64>().unwrap()).collect()).collect();
+    assert_eq!(rows.len(), 30);
+    for row in &rows {
+        assert!(row[2] <= row[3] && row[5] <= row[6] && row[8] <= row[9]);
+        // E.44 at abar: pi a^2/4 - 2 sqrt(2 lambda), lambda = 1/10 by default
+        let a = row[0];
+        assert!((row[7] - (std::f64::consts::PI * a * a / 4.0 - 2.0 * 0.2f64.sqrt())).abs() < 1e-12);
+    }
+    assert!(std::fs::read_to_string(dir.path().join("limits.svg")).unwrap().contains("<svg"));
+
+    let o = maugis(&["limits", "--points", "5", "--format", "json"]);
+    assert_eq!(o.status.code(), Some(0));
+    let v: Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(v["rows"].as_array().unwrap().len(), 5);
+    let o = maugis(&["limits", "--points", "5", "--format", "csv"]);
+    assert_eq!(o.status.code(), Some(0));
+    assert_eq!(stdout(&o).lines().count(), 6);
+}
