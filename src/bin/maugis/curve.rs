@@ -34,7 +34,7 @@ use maugis::contact::model::{Params, GAP_TOL, TRACTION_TOL};
 
 use crate::args::{self, num, short, FIG4C_ALPHA, FIG4C_BETA};
 use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
-use crate::plot::{tick, arrow_head, clip_y, colour, plot_err, triangle_down, triangle_up, DARK_GREY, LIGHT_GREY};
+use crate::plot::{load_area_chart, arrow_head, clip_y, colour, plot_err, triangle_down, triangle_up, DARK_GREY, LIGHT_GREY};
 
 /// The Maugis parameters of the paper's Figs. 4 and 13 (default run).
 pub const DEFAULT_LAMBDAS: [f64; 7] = [0.1, 0.25, 0.5, 1.0, 1.5, 3.0, 6.0];
@@ -494,25 +494,7 @@ pub fn load_area_svg(runs: &[Run], alpha: f64, beta: f64, amax: f64, mdmt_lambda
             short(beta),
             if alpha > 0.0 { short((beta / (alpha * alpha)).sqrt()) } else { "∞".into() }
         );
-        let mut chart = ChartBuilder::on(&root)
-            .caption(title, ("sans-serif", 26))
-            .margin(20)
-            .x_label_area_size(60)
-            .y_label_area_size(75)
-            .build_cartesian_2d(0.0..amax, ymin..ymax)
-            .map_err(plot_err)?;
-        chart
-            .configure_mesh()
-            .x_desc("contact half-width abar")
-            .y_desc("load Lbar")
-            .axis_desc_style(("sans-serif", 22))
-            .label_style(("sans-serif", 17))
-            .x_label_formatter(&tick)
-            .y_label_formatter(&tick)
-            .light_line_style(RGBColor(235, 235, 235))
-            .bold_line_style(RGBColor(205, 205, 205))
-            .draw()
-            .map_err(plot_err)?;
+        let mut chart = load_area_chart(&root, title, amax, ymin, ymax)?;
 
         // zero-load line
         chart.draw_series(LineSeries::new(vec![(0.0, 0.0), (amax, 0.0)], BLACK.mix(0.5).stroke_width(1))).map_err(plot_err)?;

@@ -27,7 +27,7 @@ use maugis::contact::model::Params;
 
 use crate::args::{self, num, short, FIG4C_ALPHA, FIG4C_BETA};
 use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
-use crate::plot::{tick, clip_y, colour, plot_err, DARK_GREY, LIGHT_GREY};
+use crate::plot::{load_area_chart, clip_y, colour, plot_err, DARK_GREY, LIGHT_GREY};
 
 /// Output format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -251,25 +251,7 @@ fn limits_svg(rows: &[Row], alpha: f64, beta: f64, lambda: f64, amax: f64) -> Re
         let root = SVGBackend::with_string(&mut svg, (1300, 900)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_err)?;
         let title = format!("Appendix E limits and Eq. 17 envelope, α = {}, β = {}, λ = {l}", short(alpha), short(beta));
-        let mut chart = ChartBuilder::on(&root)
-            .caption(title, ("sans-serif", 26))
-            .margin(20)
-            .x_label_area_size(60)
-            .y_label_area_size(75)
-            .build_cartesian_2d(0.0..amax, ymin..ymax)
-            .map_err(plot_err)?;
-        chart
-            .configure_mesh()
-            .x_desc("contact half-width abar")
-            .y_desc("load Lbar")
-            .axis_desc_style(("sans-serif", 22))
-            .label_style(("sans-serif", 17))
-            .x_label_formatter(&tick)
-            .y_label_formatter(&tick)
-            .light_line_style(RGBColor(235, 235, 235))
-            .bold_line_style(RGBColor(205, 205, 205))
-            .draw()
-            .map_err(plot_err)?;
+        let mut chart = load_area_chart(&root, title, amax, ymin, ymax)?;
         for (label, pts, st, dash, gap) in series {
             let mut first = true;
             for piece in clip_y(&pts, ymin, ymax) {

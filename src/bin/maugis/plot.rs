@@ -43,6 +43,37 @@ pub fn tick(v: &f64) -> String {
     }
 }
 
+/// A load-area chart (`abar` against `Lbar`) with the shared caption, label
+/// areas and grid style of the `curve` and `limits` plots.
+pub fn load_area_chart<'a, 'b>(
+    root: &'a DrawingArea<SVGBackend<'b>, plotters::coord::Shift>,
+    title: String,
+    amax: f64,
+    ymin: f64,
+    ymax: f64,
+) -> Result<ChartContext<'a, SVGBackend<'b>, Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>>, String> {
+    let mut chart = ChartBuilder::on(root)
+        .caption(title, ("sans-serif", 26))
+        .margin(20)
+        .x_label_area_size(60)
+        .y_label_area_size(75)
+        .build_cartesian_2d(0.0..amax, ymin..ymax)
+        .map_err(plot_err)?;
+    chart
+        .configure_mesh()
+        .x_desc("contact half-width abar")
+        .y_desc("load Lbar")
+        .axis_desc_style(("sans-serif", 22))
+        .label_style(("sans-serif", 17))
+        .x_label_formatter(&tick)
+        .y_label_formatter(&tick)
+        .light_line_style(RGBColor(235, 235, 235))
+        .bold_line_style(RGBColor(205, 205, 205))
+        .draw()
+        .map_err(plot_err)?;
+    Ok(chart)
+}
+
 /// Error text of a failed drawing call.
 pub fn plot_err<E: std::fmt::Debug>(e: E) -> String {
     format!("could not draw the plot: {e:?}")
