@@ -141,6 +141,12 @@ proptest! {
             let mm = 1.0 + (m - 1.0) * i as f64 / 400.0;
             prop_assert!(cs.strip_residual(mm) < 0.0, "residual >= 0 at m = {} < root {}", mm, m);
         }
+        // and the gap of the solved state stays below delta = 1/lambda inside the strip
+        for i in 1..200 {
+            let x = abar * (1.0 + (m - 1.0) * i as f64 / 200.0);
+            let g = cs.gap(m, x).unwrap();
+            prop_assert!(lambda * g < 1.0 + 1e-9, "lambda g = {} at x = {} inside the strip (c = {})", lambda * g, x, m * abar);
+        }
     }
 }
 
@@ -190,6 +196,21 @@ fn turning_points_and_jumps_are_consistent() {
                 JumpDirection::Unloading => assert!(j.to_abar < j.from_abar),
             }
         }
+    }
+}
+
+/// Hysteresis loops pair an unloading jump with the loading jump it encloses,
+/// and enclose a positive area.
+#[test]
+fn hysteresis_loops_are_closed() {
+    let p = Params::new(6.0, FIG4C_ALPHA, FIG4C_BETA).unwrap();
+    let c = load_area_curve(p, CurveOptions { amax: 6.0, points: 300 }).unwrap();
+    assert!(c.loops.len() >= 3, "{} loops", c.loops.len());
+    for l in &c.loops {
+        assert!(l.unloading.to_abar < l.loading.from_abar && l.loading.from_abar < l.unloading.from_abar);
+        assert!(l.unloading.from_abar < l.loading.to_abar);
+        assert!(l.loading.load > l.unloading.load);
+        assert!(l.area > 0.0);
     }
 }
 

@@ -74,6 +74,24 @@ pub struct Jump {
     pub load: f64,
 }
 
+/// A hysteresis loop under load control: a loading jump (from a load maximum
+/// to a larger contact) and the unloading jump that returns past it (from a
+/// load minimum to a smaller contact). Following the loop, the contact climbs
+/// the curve from `unloading.to_abar` to `loading.from_abar`, jumps out to
+/// `loading.to_abar`, descends the curve back to `unloading.from_abar` and jumps
+/// in to `unloading.to_abar`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HysteresisLoop {
+    /// The loading jump.
+    pub loading: Jump,
+    /// The unloading jump.
+    pub unloading: Jump,
+    /// Area enclosed in the `(abar, Lbar)` plane (shoelace formula over the
+    /// grid states on both stable branches and the two jumps). A measure of the
+    /// loop's size, not the dissipated energy (that needs the approach `delta`).
+    pub area: f64,
+}
+
 /// A whole load-area response.
 #[derive(Debug, Clone)]
 pub struct Curve {
@@ -87,6 +105,8 @@ pub struct Curve {
     pub jumps: Vec<Jump>,
     /// The pull-off state `(abar, load)`.
     pub pull_off: Option<(f64, f64)>,
+    /// Hysteresis loops formed by pairs of loading and unloading jumps.
+    pub loops: Vec<HysteresisLoop>,
 }
 
 /// Grid options.
@@ -138,7 +158,38 @@ pub fn load_area_curve(params: Params, opts: CurveOptions) -> Result<Curve> {
         .collect::<Result<Vec<_>>>()?;
     let turning_points = turning_points(params, &points)?;
     let (jumps, pull_off) = jumps(params, &points, &turning_points)?;
-    Ok(Curve { params, points, turning_points, jumps, pull_off })
+    let loops = hysteresis_loops(&points, &jumps);
+    Ok(Curve { params, points, turning_points, jumps, pull_off, loops })
+}
+
+/// Pairs each unloading jump with the loading jump whose maximum lies inside
+/// it and whose target lies beyond it.
+fn hysteresis_loops(pts: &[CurvePoint], jumps: &[Jump]) -> Vec<HysteresisLoop> {
+    let mut out = Vec::new();
+    for u in jumps.iter().filter(|j| j.direction == JumpDirection::Unloading) {
+        let partner = jumps.iter().find(|l| {
+            l.direction == JumpDirection::Loading
+                && l.from_abar > u.to_abar
+                && l.from_abar < u.from_abar
+                && l.to_abar > u.from_abar
+        });
+        if let Some(l) = partner {
+            // polygon: lower branch u.to -> l.from, jump to l.to, upper branch l.to -> u.from, jump back
+            let mut poly: Vec<(f64, f64)> = vec![(u.to_abar, u.load)];
+            poly.extend(pts.iter().filter(|p| p.abar > u.to_abar && p.abar < l.from_abar).map(|p| (p.abar, p.load)));
+            poly.push((l.from_abar, l.load));
+            poly.push((l.to_abar, l.load));
+            poly.extend(pts.iter().rev().filter(|p| p.abar < l.to_abar && p.abar > u.from_abar).map(|p| (p.abar, p.load)));
+            poly.push((u.from_abar, u.load));
+            let twice: f64 = poly
+                .iter()
+                .zip(poly.iter().cycle().skip(1))
+                .map(|(p, q)| p.0 * q.1 - q.0 * p.1)
+                .sum();
+            out.push(HysteresisLoop { loading: *l, unloading: *u, area: 0.5 * twice.abs() });
+        }
+    }
+    out
 }
 
 /// Turning points from the grid, refined.

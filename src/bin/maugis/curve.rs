@@ -159,6 +159,35 @@ struct SummaryCurve {
     turning_points: Vec<JsonTurning>,
     jumps: Vec<JsonJump>,
     pull_off: Option<JsonPullOff>,
+    hysteresis_loops: Vec<JsonLoop>,
+}
+
+/// A hysteresis loop in `summary.json`.
+#[derive(Serialize)]
+struct JsonLoop {
+    loading_from_abar: f64,
+    loading_to_abar: f64,
+    loading_load: f64,
+    unloading_from_abar: f64,
+    unloading_to_abar: f64,
+    unloading_load: f64,
+    /// Area enclosed in the (abar, Lbar) plane.
+    area: f64,
+}
+
+fn loops_json(c: &Curve) -> Vec<JsonLoop> {
+    c.loops
+        .iter()
+        .map(|l| JsonLoop {
+            loading_from_abar: l.loading.from_abar,
+            loading_to_abar: l.loading.to_abar,
+            loading_load: l.loading.load,
+            unloading_from_abar: l.unloading.from_abar,
+            unloading_to_abar: l.unloading.to_abar,
+            unloading_load: l.unloading.load,
+            area: l.area,
+        })
+        .collect()
 }
 
 /// A run of consecutive invalid grid states.
@@ -360,6 +389,7 @@ pub fn run(a: CurveArgs) -> Result<(), String> {
                 turning_points: turning_json(&r.curve),
                 jumps: jumps_json(&r.curve),
                 pull_off: pull_off_json(&r.curve),
+                hysteresis_loops: loops_json(&r.curve),
             })
             .collect(),
     };
