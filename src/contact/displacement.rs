@@ -69,7 +69,7 @@ use crate::ball::Dd;
 use crate::special::bessel_j::{bessel_j_sequence_dd, bessel_j_sequence_mp};
 use crate::special::meijer_g::{self, meijer_g_k_at_one_with, meijer_g_k_direct_ball, meijer_g_k_near_one_ball, MeijerConstants};
 use crate::special::pfq::pfq_series;
-use crate::special::{check_finite, exact, exact_add, exact_sub, f64_from_mp, ziv, ziv_with_floor, DEFAULT_GUARD_BITS};
+use crate::special::{check_finite, exact, exact_add, exact_sub, ziv, ziv_with_floor, DEFAULT_GUARD_BITS};
 
 /// Largest `D = 2 pi a/zeta` (contact width in wavelengths times `pi`) accepted.
 pub const MAX_WAVE_D: f64 = 1.0e5;
@@ -802,7 +802,7 @@ pub fn u_hertz_mp(a: &Float, r: &Float, x: &Float, prec: u32) -> Result<Ball> {
         let xpa = Ball::from_float(&exact_add(&ax, a), wp);
         let sq = xma.mul(&xpa).sqrt()?;
         let acosh = xma.add(&sq).div(&ab)?.ln_1p()?;
-        ab.sqr().div(&rb.mul_pow2(1))?.mul(&xb.div(&xb.add(&sq))?.add(&acosh)).into_ok()
+        Ok(ab.sqr().div(&rb.mul_pow2(1))?.mul(&xb.div(&xb.add(&sq))?.add(&acosh)))
     })
 }
 
@@ -890,21 +890,6 @@ pub fn u_adhesive_mp(a: &Float, c: &Float, sigma: &Float, e_star: &Float, x: &Fl
         };
         Ok(kfac.mul(&v))
     })
-}
-
-/// Lifts a value into `Ok` (keeps closures in `ziv` uniform).
-trait IntoOk: Sized {
-    fn into_ok(self) -> Result<Self> {
-        Ok(self)
-    }
-}
-impl IntoOk for Ball {}
-
-/// f64 helper for the CLI: the certified Eq. 12 value as an f64.
-pub fn u_wave_f64_via_mp(a: f64, zeta: f64, amp: f64, x: f64) -> Result<f64> {
-    check_wave_f64(a, zeta, amp, x)?;
-    let (ae, ze, me, xe) = (exact(a), exact(zeta), exact(amp), exact(x));
-    f64_from_mp("u_wave", DEFAULT_GUARD_BITS, |wp| Ok(wave_bessel_wp(&ae, &ze, &me, &xe, wp)?.0))
 }
 
 #[cfg(test)]

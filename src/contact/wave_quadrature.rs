@@ -43,7 +43,7 @@ use rug::Float;
 use crate::error::{finite, Error, Result};
 use crate::quad::{gauss_legendre, tanh_sinh, QuadEstimate, QuadEstimateMp, TanhSinhOptions};
 use crate::special::bessel_j::{bessel_j_mp, bessel_j_sequence};
-use crate::special::{check_finite, exact, exact_sub};
+use crate::special::{check_finite, exact_sub};
 
 /// Which quantity.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -368,10 +368,4 @@ pub fn du_wave_quad_as_printed(a: f64, zeta: f64, amp: f64, x: f64) -> Result<f6
         }
     }
     Ok(amp / zeta * total)
-}
-
-/// Convenience: the MP quadrature at f64 arguments.
-pub fn u_wave_quad_mp_f64(a: f64, zeta: f64, amp: f64, x: f64, prec: u32) -> Result<QuadEstimateMp> {
-    check(a, zeta, amp, x)?;
-    u_wave_quad_mp(&exact(a), &exact(zeta), &exact(amp), &exact(x), prec)
 }
