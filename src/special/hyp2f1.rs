@@ -1774,36 +1774,4 @@ mod tests {
         assert_eq!(hyp2f1(0.3, 0.4, 0.5, 0.0).unwrap(), 1.0);
     }
 
-    /// Timing of the model case (run with `--release -- --ignored --nocapture`).
-    #[test]
-    #[ignore]
-    fn model_case_timing() {
-        for &k in &[0.0, 10.0, 100.0, 1000.0] {
-            for &y in &[0.1, 0.5, 0.6, 0.75, 0.9, 0.95, 0.99, 0.999, 1.0 - 1e-12, 1.0] {
-                let (a, b, c, z) = (f(1.0), f(k + 0.5), f(k + 2.0), f(y));
-                let alg = choose_algorithm(&a, &b, &c, &z, 152);
-                // Best of 5 batches of 10 (the machine may be shared).
-                let time = |g: &dyn Fn()| {
-                    (0..5)
-                        .map(|_| {
-                            let t = std::time::Instant::now();
-                            for _ in 0..10 {
-                                g();
-                            }
-                            t.elapsed() / 10
-                        })
-                        .min()
-                        .unwrap_or_default()
-                };
-                let v = hyp2f1_mp(&a, &b, &c, &z, 128).unwrap();
-                let dt = time(&|| {
-                    let _ = hyp2f1_mp(&a, &b, &c, &z, 128);
-                });
-                let df = time(&|| {
-                    let _ = hyp2f1(1.0, k + 0.5, k + 2.0, y);
-                });
-                println!("k={k:6} y={y:<18} {alg:?}: mp128 {dt:?}  f64 {df:?}  {v:?}");
-            }
-        }
-    }
 }
