@@ -196,9 +196,28 @@ pub(crate) fn bessel_j_ball(n: i64, x: &Float, prec: u32) -> Result<Ball> {
         return Ok(if n == 0 { Ball::one(prec) } else { Ball::zero(prec) });
     }
     let (m, ax, negate) = reduce(n, x);
-    let guard = initial_guard(m, ax.to_f64(), prec);
+    let guard = check_cost(m, ax.to_f64(), prec)?;
     let b = ziv("bessel_j", prec, guard, |wp| bessel_j_positive(m, &ax, wp))?;
     Ok(if negate { b.neg() } else { b })
+}
+
+/// Guard bits past which the power series is refused instead of run: it would
+/// need about `guard` bits and as many terms (at `n ~ x ~ 1e5`, hours of work).
+pub const MAX_SERIES_GUARD: u32 = 1 << 17;
+
+/// The initial guard, or an error when the power series would be out of
+/// proportion (outside the documented domain |n|, |x| <= 1e4 this can happen).
+fn check_cost(m: u64, x: f64, prec: u32) -> Result<u32> {
+    let guard = initial_guard(m, x, prec);
+    if guard > MAX_SERIES_GUARD {
+        return Err(Error::Domain {
+            what: format!(
+                "J_n(x) with n = {m}, x = {x:e} would need ~{guard} guard bits in the power series; \
+                 the supported domain is |n|, |x| <= 1e4 (and Hankel's expansion for larger x)"
+            ),
+        });
+    }
+    Ok(guard)
 }
 
 /// `J_n(x)` in f64, within 1 ulp (see the module docs).
@@ -210,7 +229,7 @@ pub fn bessel_j(n: i64, x: f64) -> Result<f64> {
         return Ok(if n == 0 { 1.0 } else { 0.0 });
     }
     let (m, ax, negate) = reduce(n, &xe);
-    let guard = initial_guard(m, ax.to_f64(), crate::special::F64_FALLBACK_PREC);
+    let guard = check_cost(m, ax.to_f64(), crate::special::F64_FALLBACK_PREC)?;
     let v = f64_from_mp("bessel_j", guard, |wp| bessel_j_positive(m, &ax, wp))?;
     Ok(if negate { -v } else { v })
 }
