@@ -68,6 +68,7 @@ use crate::error::{finite, Error, Result};
 use crate::ball::Dd;
 use crate::special::bessel_j::{bessel_j_sequence_dd, bessel_j_sequence_mp};
 use crate::special::meijer_g::{self, meijer_g_k_at_one_with, meijer_g_k_direct_ball, meijer_g_k_near_one_ball, MeijerConstants};
+use crate::special::hyp1f2::hyp1f2_model_ball;
 use crate::special::pfq::pfq_series;
 use crate::special::{check_finite, exact, exact_add, exact_sub, ziv, ziv_with_floor, DEFAULT_GUARD_BITS};
 
@@ -636,8 +637,6 @@ fn model_hyp2f1(k: u32, g: &WaveGeometry, wp: u32) -> Result<Ball> {
 
 /// Sums Eq. 12 or Eq. 11b through `kmax` at working precision `wp`.
 fn wave_series_wp(kind: SeriesKind, g: &WaveGeometry, kmax: u64, wp: u32) -> Result<Ball> {
-    let half = Ball::from_ratio(1, 2, wp);
-    let neg_s = g.s.neg();
     let mut coeff = Ball::one(wp); // D^{2k}/(2k+1)!  or  s^k/(k!(k+1)!(2k+1))
     let mut sum = Ball::zero(wp);
     let pre = prefactor(kind, g, wp)?;
@@ -649,8 +648,7 @@ fn wave_series_wp(kind: SeriesKind, g: &WaveGeometry, kmax: u64, wp: u32) -> Res
     let mut k: u64 = 0;
     loop {
         let kk = u32::try_from(k).map_err(|_| Error::Domain { what: "kmax too large".into() })?;
-        let kb = Ball::from_i64(k as i64, wp);
-        let f12 = pfq_series(std::slice::from_ref(&half), &[kb.add_i64(1), kb.add(&half).add_i64(1)], &neg_s, wp)?.sum;
+        let f12 = hyp1f2_model_ball(kk, &g.s, wp)?;
         let other = match kind {
             SeriesKind::Displacement => match &consts {
                 Some(c) => meijer_at(c, g, wp)?,
