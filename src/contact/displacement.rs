@@ -67,7 +67,10 @@ use crate::ball::{Ball, MAG_PREC};
 use crate::error::{finite, Error, Result};
 use crate::ball::Dd;
 use crate::special::bessel_j::{bessel_j_sequence_dd, bessel_j_sequence_mp};
-use crate::special::meijer_g::{self, meijer_g_k_at_one_with, meijer_g_k_direct_ball, meijer_g_k_near_one_ball, MeijerConstants};
+use crate::special::meijer_g::{
+    self, direct_sums_sweep, meijer_g_k_at_one_with, meijer_g_k_direct_ball, meijer_g_k_from_sum, meijer_g_k_near_one_ball,
+    MeijerConstants,
+};
 use crate::special::hyp1f2::hyp1f2_model_ball;
 use crate::special::pfq::pfq_series;
 use crate::special::{check_finite, exact, exact_add, exact_sub, ziv, ziv_with_floor, DEFAULT_GUARD_BITS};
@@ -645,14 +648,28 @@ fn wave_series_wp(kind: SeriesKind, g: &WaveGeometry, kmax: u64, wp: u32) -> Res
         SeriesKind::Displacement => Some(MeijerConstants::new(0, wp)?),
         SeriesKind::Gradient => None,
     };
+    // In the direct region (y <= 1/2) all S_k(y) come from one sweep up to a
+    // k beyond which the terms are negligible at this precision; later k (if the
+    // early stop has not come by then) are evaluated one by one.
+    let sweep = if kind == SeriesKind::Displacement && !g.at_edge && g.y.upper() <= 0.5 {
+        let d = g.d.to_f64();
+        let k_top = ((1.5 * d + wp as f64 / 8.0 + 20.0) as u64).min(kmax);
+        let k_top = u32::try_from(k_top).map_err(|_| Error::Domain { what: "kmax too large".into() })?;
+        Some((direct_sums_sweep(k_top, &g.y, wp)?, g.y.ln()?))
+    } else {
+        None
+    };
     let mut k: u64 = 0;
     loop {
         let kk = u32::try_from(k).map_err(|_| Error::Domain { what: "kmax too large".into() })?;
         let f12 = hyp1f2_model_ball(kk, &g.s, wp)?;
         let other = match kind {
-            SeriesKind::Displacement => match &consts {
-                Some(c) => meijer_at(c, g, wp)?,
-                None => return Err(Error::Internal { what: "missing Meijer constants".into() }),
+            SeriesKind::Displacement => match (&consts, &sweep) {
+                (Some(c), Some((sums, ln_y))) if (kk as usize) < sums.len() => {
+                    meijer_g_k_from_sum(c, ln_y, &sums[kk as usize])
+                }
+                (Some(c), _) => meijer_at(c, g, wp)?,
+                (None, _) => return Err(Error::Internal { what: "missing Meijer constants".into() }),
             },
             SeriesKind::Gradient => model_hyp2f1(kk, g, wp)?,
         };

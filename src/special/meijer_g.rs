@@ -209,6 +209,63 @@ fn direct_sum(k: u32, yb: &Ball, wp: u32) -> Result<Ball> {
     }
 }
 
+/// `S_k(y)` for every `k = 0..=kmax` at once (`0 < y < 1`), for sums over `k`
+/// such as Eq. 12.
+///
+/// With `b = k+1/2`, `c = k+2`, the Pochhammer ratios of consecutive `k` differ by
+/// `u_n^(k) - u_n^(k+1) = -(3/2) n u_n^(k) / (b (c+n))`, which sums to
+/// `S_{k+1} = S_k + (3/((2k+1)(k+2))) (H_k - 1)`, `H_k = 2F1(1, k+1/2; k+3; y)`, and
+/// `H_k = 1 + ((2k+1)/(2k+6)) y H_{k+1}` [DLMF 15.5.11-type contiguity for `a = 1`].
+/// `H` is run downward from its series at `kmax` (the recurrence contracts by `y`),
+/// `S` upward from the direct `S_0` (positive increments): two series instead of
+/// `kmax + 1`. All in balls; the tails are those of [`direct_sum`] and of the `H`
+/// series (ratio `<= y`).
+pub fn direct_sums_sweep(kmax: u32, yb: &Ball, wp: u32) -> Result<Vec<Ball>> {
+    let y_up = yb.upper();
+    if y_up >= 1 {
+        return Err(Error::Domain { what: "the direct series needs y < 1".into() });
+    }
+    let top = kmax as i64;
+    // H_top = sum_n (b)_n/(c')_n y^n, b = top + 1/2, c' = top + 3: ratio y (2b + 2n)/(2c' + 2n)
+    let one_minus_y = Mag::from_float_down(&Float::with_val(MAG_PREC, 1 - &y_up));
+    let mut t = Ball::one(wp);
+    let mut h_top = Ball::one(wp);
+    let mut n: i64 = 0;
+    loop {
+        t = t.mul(yb).mul_i64(2 * top + 1 + 2 * n).div_i64(2 * top + 6 + 2 * n)?;
+        n += 1;
+        let tail = t.abs_upper_mag().div(one_minus_y);
+        if tail.le(&h_top.abs_lower_mag().mul_2exp(-(wp as i64) - 4)) {
+            h_top.add_error_mag(tail);
+            break;
+        }
+        h_top = h_top.add(&t);
+        if n > 100_000_000 {
+            return Err(Error::NoConvergence { function: "meijer_g_k (sweep)", terms: n as u64 });
+        }
+    }
+    let mut h = vec![Ball::zero(wp); kmax as usize + 1];
+    h[kmax as usize] = h_top;
+    for k in (0..top).rev() {
+        let next = h[k as usize + 1].mul(yb).mul_i64(2 * k + 1).div_i64(2 * k + 6)?;
+        h[k as usize] = next.add_i64(1);
+    }
+    let mut out = Vec::with_capacity(kmax as usize + 1);
+    out.push(direct_sum(0, yb, wp)?);
+    for k in 0..top {
+        let inc = h[k as usize].add_i64(-1).mul_i64(3).div_i64((2 * k + 1) * (k + 2))?;
+        let next = out[k as usize].add(&inc);
+        out.push(next);
+    }
+    Ok(out)
+}
+
+/// `G(k, y)` from `S_k(y)` (e.g. from [`direct_sums_sweep`]) and the constants.
+pub fn meijer_g_k_from_sum(consts: &MeijerConstants, ln_y: &Ball, s: &Ball) -> Ball {
+    let bracket = ln_y.neg().sub(s).add(&consts.psi_diff).mul_pow2(-1);
+    consts.c_k.mul(&bracket)
+}
+
 /// [`meijer_g_k_direct`] for an argument known only as a ball (`0 < y < 1`
 /// over the whole ball): every operation is a ball operation, so the result
 /// encloses `G(k, y)` for every `y` in the ball.
@@ -435,6 +492,20 @@ mod tests {
             // |G(k,y) - G(k,1)| = O(sqrt(1-y)) (the I2 term), tiny here.
             let d = g.sub(&g1).abs_upper().to_f64();
             assert!(d < 1e-4, "k={k}: {d}");
+        }
+    }
+
+    #[test]
+    fn sweep_matches_direct_sums() {
+        let wp = 160;
+        for &y in &[0.01, 0.25, 0.5, 0.875] {
+            let yb = Ball::from_f64(y, wp).unwrap();
+            let sweep = direct_sums_sweep(120, &yb, wp).unwrap();
+            for k in [0u32, 1, 5, 37, 120] {
+                let d = direct_sum(k, &yb, wp).unwrap();
+                assert!(sweep[k as usize].overlaps(&d), "y={y} k={k}");
+                assert!(sweep[k as usize].meets_rel(wp - 20), "y={y} k={k}: {:?}", sweep[k as usize]);
+            }
         }
     }
 
