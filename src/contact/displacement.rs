@@ -68,7 +68,7 @@ use crate::error::{finite, Error, Result};
 use crate::ball::Dd;
 use crate::special::bessel_j::{bessel_j_sequence_dd, bessel_j_sequence_mp};
 use crate::special::meijer_g::{
-    self, direct_sums_sweep, meijer_g_k_at_one_with, meijer_g_k_direct_ball, meijer_g_k_from_sum, meijer_g_k_near_one_ball,
+    self, direct_sums_sweep, meijer_g_k_at_one_with, near_one_sums_sweep, meijer_g_k_direct_ball, meijer_g_k_from_sum, meijer_g_k_near_one_ball,
     MeijerConstants,
 };
 use crate::special::hyp1f2::hyp1f2_model_ball;
@@ -80,6 +80,9 @@ pub const MAX_WAVE_D: f64 = 1.0e5;
 
 /// Largest `kmax` accepted by the truncated series.
 pub const MAX_KMAX: u64 = 100_000;
+
+/// Largest `k_top (1 - y)` for the near-one sweep of the Meijer sums in Eq. 12.
+const NEAR_ONE_SWEEP_MAX_KW: f64 = 10.0;
 
 /// `1 + 2 ln 2`, rounded up: the largest value of `psi(k+2) - psi(k+1/2)` (at `k = 0`).
 const PSI_DIFF_MAX: f64 = 2.39;
@@ -651,11 +654,17 @@ fn wave_series_wp(kind: SeriesKind, g: &WaveGeometry, kmax: u64, wp: u32) -> Res
     // In the direct region (y <= 1/2) all S_k(y) come from one sweep up to a
     // k beyond which the terms are negligible at this precision; later k (if the
     // early stop has not come by then) are evaluated one by one.
-    let sweep = if kind == SeriesKind::Displacement && !g.at_edge && g.y.upper() <= 0.5 {
-        let d = g.d.to_f64();
-        let k_top = ((1.5 * d + wp as f64 / 8.0 + 20.0) as u64).min(kmax);
-        let k_top = u32::try_from(k_top).map_err(|_| Error::Domain { what: "kmax too large".into() })?;
+    // Near y = 1 the same recurrences start from the near-one expansion, as long
+    // as k_top (1 - y) stays small (the connection formula's pieces cancel by
+    // about e^{k w}).
+    let k_top = ((1.5 * g.d.to_f64() + wp as f64 / 8.0 + 20.0) as u64).min(kmax);
+    let k_top = u32::try_from(k_top).map_err(|_| Error::Domain { what: "kmax too large".into() })?;
+    let sweep = if kind != SeriesKind::Displacement || g.at_edge {
+        None
+    } else if g.y.upper() <= 0.5 {
         Some((direct_sums_sweep(k_top, &g.y, wp)?, g.y.ln()?))
+    } else if k_top as f64 * g.w.upper().to_f64() <= NEAR_ONE_SWEEP_MAX_KW {
+        Some((near_one_sums_sweep(k_top, &g.w, wp)?, g.y.ln()?))
     } else {
         None
     };

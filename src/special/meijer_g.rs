@@ -244,6 +244,13 @@ pub fn direct_sums_sweep(kmax: u32, yb: &Ball, wp: u32) -> Result<Vec<Ball>> {
             return Err(Error::NoConvergence { function: "meijer_g_k (sweep)", terms: n as u64 });
         }
     }
+    sums_by_recurrence(direct_sum(0, yb, wp)?, h_top, kmax, yb)
+}
+
+/// The two recurrences of [`direct_sums_sweep`] from `S_0` and `H_kmax`.
+fn sums_by_recurrence(s0: Ball, h_top: Ball, kmax: u32, yb: &Ball) -> Result<Vec<Ball>> {
+    let top = kmax as i64;
+    let wp = s0.prec();
     let mut h = vec![Ball::zero(wp); kmax as usize + 1];
     h[kmax as usize] = h_top;
     for k in (0..top).rev() {
@@ -251,13 +258,66 @@ pub fn direct_sums_sweep(kmax: u32, yb: &Ball, wp: u32) -> Result<Vec<Ball>> {
         h[k as usize] = next.add_i64(1);
     }
     let mut out = Vec::with_capacity(kmax as usize + 1);
-    out.push(direct_sum(0, yb, wp)?);
+    out.push(s0);
     for k in 0..top {
         let inc = h[k as usize].add_i64(-1).mul_i64(3).div_i64((2 * k + 1) * (k + 2))?;
         let next = out[k as usize].add(&inc);
         out.push(next);
     }
     Ok(out)
+}
+
+/// [`direct_sums_sweep`] near `y = 1` (`w = 1 - y` small, `kmax w` moderate):
+/// `S_0 = -ln y + psi(2) - psi(1/2) - 2 B_0(y)` from the near-one expansion of
+/// `G(0, y)`, and `H_kmax` from the 1-z connection formula [DLMF 15.8.4]
+/// (`c - a - b = 3/2`; the second piece collapses to a power):
+/// `2F1(1, b; k+3; y) = (2(k+2)/3) 2F1(1, b; -1/2; w) + (8 sqrt(pi)/3) ((k+2)/C_k) w^{3/2} y^{-k-2}`,
+/// `b = k+1/2`, with `Gamma(k+3)/Gamma(k+1/2) = 2(k+2)/C_k`. The series
+/// `2F1(1, b; -1/2; w)` has term ratio `w (b+n)/(n-1/2)`, decreasing for `n >= 1`,
+/// so its tail is geometric once that ratio is below 1.
+pub fn near_one_sums_sweep(kmax: u32, w: &Ball, wp: u32) -> Result<Vec<Ball>> {
+    let w = if w.lower() < 0 { Ball::hull(&Float::new(wp), &w.upper(), wp) } else { w.clone() };
+    if w.upper() > 0.5 {
+        return Err(Error::Domain { what: "the near-one sweep needs 1 - y <= 1/2".into() });
+    }
+    let yb = Ball::one(wp).sub(&w);
+    let c0 = MeijerConstants::new(0, wp)?;
+    // S_0 from B_0 = G_0 / C_0
+    let b0 = meijer_g_k_near_one_ball(&c0, &w, wp)?.div(&c0.c_k)?;
+    let s0 = yb.ln()?.neg().add(&c0.psi_diff).sub(&b0.mul_pow2(1));
+    // H_top by the connection formula
+    let top = kmax as i64;
+    let ct = MeijerConstants::new(kmax, wp)?;
+    let w_up = w.abs_upper_mag();
+    let one = Mag::from_f64(1.0);
+    let mut t = Ball::one(wp);
+    let mut f = Ball::one(wp);
+    let mut n: i64 = 0;
+    loop {
+        // t_{n+1} = t_n w (b+n)/(n-1/2) = t_n w (2k+1+2n)/(2n-1)
+        t = t.mul(&w).mul_i64(2 * top + 1 + 2 * n).div_i64(2 * n - 1)?;
+        n += 1;
+        let rho = w_up
+            .mul(Mag::from_f64(((2 * top + 1 + 2 * n) as f64).next_up()))
+            .div(Mag::from_f64(((2 * n - 1) as f64).next_down()));
+        let one_minus = one.sub_lower(rho);
+        if !one_minus.is_zero() {
+            let tail = t.abs_upper_mag().div(one_minus);
+            if tail.le(&f.abs_lower_mag().mul_2exp(-(wp as i64) - 4)) {
+                f.add_error_mag(tail);
+                break;
+            }
+        }
+        f = f.add(&t);
+        if n > 100_000_000 {
+            return Err(Error::NoConvergence { function: "meijer_g_k (near-one sweep)", terms: n as u64 });
+        }
+    }
+    let first = f.mul_i64(2 * (top + 2)).div_i64(3)?;
+    let power = w.sqrt()?.mul(&w).div(&yb.pow_u64(kmax as u64 + 2))?;
+    let second = Ball::pi(wp).sqrt()?.mul_i64(8 * (top + 2)).div_i64(3)?.div(&ct.c_k)?.mul(&power);
+    let h_top = first.add(&second);
+    sums_by_recurrence(s0, h_top, kmax, &yb)
 }
 
 /// `G(k, y)` from `S_k(y)` (e.g. from [`direct_sums_sweep`]) and the constants.
@@ -492,6 +552,26 @@ mod tests {
             // |G(k,y) - G(k,1)| = O(sqrt(1-y)) (the I2 term), tiny here.
             let d = g.sub(&g1).abs_upper().to_f64();
             assert!(d < 1e-4, "k={k}: {d}");
+        }
+    }
+
+    #[test]
+    fn near_one_sweep_matches_the_per_k_expansion() {
+        let wp = 160;
+        for &w in &[0.001, 1e-6, 0.0625] {
+            let wb = Ball::from_f64(w, wp).unwrap();
+            let y = Ball::one(wp).sub(&wb);
+            let ln_y = y.ln().unwrap();
+            let sums = near_one_sums_sweep(60, &wb, wp).unwrap();
+            let mut c = MeijerConstants::new(0, wp).unwrap();
+            for k in 0..=60u32 {
+                let per_k = meijer_g_k_near_one_ball(&c, &wb, wp).unwrap();
+                let swept = meijer_g_k_from_sum(&c, &ln_y, &sums[k as usize]);
+                assert!(swept.overlaps(&per_k), "w={w} k={k}: {swept:?} vs {per_k:?}");
+                // absolute accuracy (G(1, y) is O(sqrt(w)) while S_1 is O(1))
+                assert!(swept.rad().to_f64() < 1e-35, "w={w} k={k}: {swept:?}");
+                c = c.next().unwrap();
+            }
         }
     }
 
