@@ -34,7 +34,7 @@ use maugis::contact::model::{Params, GAP_TOL, TRACTION_TOL};
 
 use crate::args::{self, num, short, FIG4C_ALPHA, FIG4C_BETA};
 use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
-use crate::plot::{load_area_chart, arrow_head, clip_y, colour, plot_err, triangle_down, triangle_up, DARK_GREY, LIGHT_GREY};
+use crate::plot::{finish_load_area_chart, load_area_chart, arrow_head, clip_y, colour, plot_err, triangle_down, triangle_up, DARK_GREY, LIGHT_GREY};
 
 /// The Maugis parameters of the paper's Figs. 4 and 13 (default run).
 pub const DEFAULT_LAMBDAS: [f64; 7] = [0.1, 0.25, 0.5, 1.0, 1.5, 3.0, 6.0];
@@ -711,17 +711,7 @@ pub fn load_area_svg(runs: &[Run], alpha: f64, beta: f64, amax: f64, mdmt_lambda
                 });
         }
 
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperLeft)
-            .margin(12)
-            .legend_area_size(40)
-            .label_font(("sans-serif", 17))
-            .background_style(WHITE.mix(0.88))
-            .border_style(BLACK.mix(0.6))
-            .draw()
-            .map_err(plot_err)?;
-        root.present().map_err(plot_err)?;
+        finish_load_area_chart(chart, &root)?;
     }
     Ok(svg)
 }

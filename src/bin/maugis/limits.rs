@@ -27,7 +27,7 @@ use maugis::contact::model::Params;
 
 use crate::args::{self, num, short, FIG4C_ALPHA, FIG4C_BETA};
 use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
-use crate::plot::{load_area_chart, clip_y, colour, plot_err, DARK_GREY, LIGHT_GREY};
+use crate::plot::{finish_load_area_chart, load_area_chart, clip_y, colour, plot_err, DARK_GREY, LIGHT_GREY};
 
 /// Output format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -272,17 +272,7 @@ fn limits_svg(rows: &[Row], alpha: f64, beta: f64, lambda: f64, amax: f64) -> Re
                 first = false;
             }
         }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperLeft)
-            .margin(12)
-            .legend_area_size(40)
-            .label_font(("sans-serif", 17))
-            .background_style(WHITE.mix(0.88))
-            .border_style(BLACK.mix(0.6))
-            .draw()
-            .map_err(plot_err)?;
-        root.present().map_err(plot_err)?;
+        finish_load_area_chart(chart, &root)?;
     }
     Ok(svg)
 }

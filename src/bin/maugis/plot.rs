@@ -74,6 +74,24 @@ pub fn load_area_chart<'a, 'b>(
     Ok(chart)
 }
 
+/// Draws the legend box (upper left) of a load-area chart and finishes the SVG.
+pub fn finish_load_area_chart<'a, 'b: 'a>(
+    mut chart: ChartContext<'a, SVGBackend<'b>, Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>>,
+    root: &DrawingArea<SVGBackend<'b>, plotters::coord::Shift>,
+) -> Result<(), String> {
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperLeft)
+        .margin(12)
+        .legend_area_size(40)
+        .label_font(("sans-serif", 17))
+        .background_style(WHITE.mix(0.88))
+        .border_style(BLACK.mix(0.6))
+        .draw()
+        .map_err(plot_err)?;
+    root.present().map_err(plot_err)
+}
+
 /// Error text of a failed drawing call.
 pub fn plot_err<E: std::fmt::Debug>(e: E) -> String {
     format!("could not draw the plot: {e:?}")
