@@ -66,3 +66,8 @@ pub const MAX_PREC: u32 = 1 << 16;
 /// Largest working precision (bits) the Ziv loops may reach before giving up
 /// with [`Error::PrecisionExhausted`].
 pub const MAX_WORKING_PREC: u32 = 1 << 20;
+
+/// The README's Rust example, compiled and run as a doctest.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;
