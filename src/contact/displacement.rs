@@ -247,7 +247,7 @@ fn bessel_terms(d_upper: &Float, wp: u32) -> Result<(u64, Float, Float)> {
 }
 
 /// Bessel-form `(u_w, du_w/dx)` as balls at working precision `wp`.
-fn wave_bessel_wp(a: &Float, zeta: &Float, amp: &Float, x: &Float, wp: u32) -> Result<(Ball, Ball)> {
+pub(crate) fn wave_bessel_wp(a: &Float, zeta: &Float, amp: &Float, x: &Float, wp: u32) -> Result<(Ball, Ball)> {
     let g = wave_geometry(a, zeta, amp, x, wp)?;
     let d_mid = g.d.mid().clone();
     let d_upper = g.d.upper();

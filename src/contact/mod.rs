@@ -8,6 +8,8 @@
 //! * [`model`]: the normalised Maugis model at one contact size: the
 //!   adhesive-strip equation (15b corrected), its first root, the load (Eq. 14),
 //!   traction (Eq. 16), displacement, gap and the validity checks.
+//! * [`model_mp`]: the strip residual, a certified enclosure of the strip end `m`
+//!   and the load in arbitrary precision, on request (the solver works in f64).
 //! * [`curve`]: the load-area response, turning points, jumps, pull-off.
 //! * [`limits`]: Appendix E (JKR, M-DMT) and the Eq. 17 envelope.
 //!
@@ -22,3 +24,4 @@ pub mod wave_quadrature;
 pub mod model;
 pub mod curve;
 pub mod limits;
+pub mod model_mp;
