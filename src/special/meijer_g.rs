@@ -218,7 +218,7 @@ fn direct_sum(k: u32, yb: &Ball, wp: u32) -> Result<Ball> {
 /// `H_k = 1 + ((2k+1)/(2k+6)) y H_{k+1}` [DLMF 15.5.11-type contiguity for `a = 1`].
 /// `H` is run downward from its series at `kmax` (the recurrence contracts by `y`),
 /// `S` upward from the direct `S_0` (positive increments): two series instead of
-/// `kmax + 1`. All in balls; the tails are those of [`direct_sum`] and of the `H`
+/// `kmax + 1`. All in balls; the tails are those of `direct_sum` and of the `H`
 /// series (ratio `<= y`).
 pub fn direct_sums_sweep(kmax: u32, yb: &Ball, wp: u32) -> Result<Vec<Ball>> {
     let y_up = yb.upper();
