@@ -169,7 +169,7 @@ pub fn run(a: ProfileArgs) -> Result<(), String> {
             .map_err(err)?;
     }
     let csv_bytes = w.into_inner().map_err(|e| format!("could not format CSV: {e}"))?;
-    let svg = profile_svg(&samples, a.lambda, alpha, beta, a.abar, m, load, &validity)?;
+    let svg = profile_svg(&samples, &cs, m, load, &validity)?;
     let files = [OutFile { name: "profile.csv".into(), bytes: csv_bytes }, OutFile::text("profile.svg", svg)];
     let written = write_atomically(&a.out, &files)?;
     let mut report = String::new();
@@ -288,18 +288,10 @@ fn panel(
     Ok(())
 }
 
-/// The three-panel profile plot (SVG text).
-#[allow(clippy::too_many_arguments)]
-fn profile_svg(
-    s: &[Sample],
-    lambda: f64,
-    alpha: f64,
-    beta: f64,
-    abar: f64,
-    m: f64,
-    load: f64,
-    v: &Validity,
-) -> Result<String, String> {
+/// The three-panel profile plot (SVG text) of the state `(cs, m)`.
+fn profile_svg(s: &[Sample], cs: &ContactSize, m: f64, load: f64, v: &Validity) -> Result<String, String> {
+    let Params { lambda, alpha, beta } = cs.params();
+    let abar = cs.abar();
     let c = m * abar;
     let xmax = s.last().map(|p| p.xbar).unwrap_or(1.5 * c).max(1e-9);
     let pts = |f: fn(&Sample) -> f64| s.iter().map(|p| (p.xbar, f(p))).collect::<Vec<_>>();
