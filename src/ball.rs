@@ -34,8 +34,10 @@ use rug::Float;
 
 use crate::error::{Error, Result};
 
+mod bounded;
 mod double_double;
 mod mag;
+pub use bounded::Bounded;
 pub use double_double::Dd;
 pub use mag::Mag;
 

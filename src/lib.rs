@@ -17,7 +17,7 @@
 //! * [`contact`]: the application: displacements (Eqs. 10, 11a, 11b, 12, A.5a),
 //!   the normalised Maugis model (Eqs. 14, 15b, 16), the load-area response and
 //!   the limits of Appendix E.
-//! * the `maugis` command line (`src/bin/maugis/`): `curve` (the main job),
+//! * the `maugis` command line (its own crate, `cli/`): `curve` (the main job),
 //!   `profile`, `limits`, and `eval`, a JSON Lines calculator.
 //!
 //! ## Two kinds of answers
@@ -57,7 +57,11 @@ pub mod error;
 pub mod quad;
 pub mod special;
 
-pub use ball::Ball;
+/// `rug` is in the public API (`Float` arguments, [`Ball`] midpoints); this is the
+/// version the crate was built with, so users need no separate, matching dependency.
+pub use rug;
+
+pub use ball::{Ball, Bounded};
 pub use error::{Error, Result};
 
 /// Largest output precision (bits) a caller may request.

@@ -14,6 +14,7 @@
 //!   largest contact that has no unloading target; if the curve has no such
 //!   minimum (M-DMT-like monotone curves), it is the smallest computed contact.
 
+#[cfg(feature = "parallel")]
 use rayon::prelude::*;
 
 use crate::contact::model::{brent, ContactSize, Params, Validity};
@@ -152,8 +153,11 @@ pub fn load_area_curve(params: Params, opts: CurveOptions) -> Result<Curve> {
         return Err(Error::Domain { what: format!("points must be >= 2 (got {})", opts.points) });
     }
     let n = opts.points;
-    let points: Vec<CurvePoint> = (1..=n)
-        .into_par_iter()
+    #[cfg(feature = "parallel")]
+    let grid = (1..=n).into_par_iter();
+    #[cfg(not(feature = "parallel"))]
+    let grid = 1..=n;
+    let points: Vec<CurvePoint> = grid
         .map(|i| state(params, opts.amax * i as f64 / n as f64))
         .collect::<Result<Vec<_>>>()?;
     let turning_points = turning_points(params, &points)?;

@@ -63,7 +63,7 @@
 
 use rug::Float;
 
-use crate::ball::{Ball, MAG_PREC};
+use crate::ball::{Ball, Bounded, MAG_PREC};
 use crate::error::{finite, Error, Result};
 use crate::ball::Dd;
 use crate::special::bessel_j::{bessel_j_sequence_dd, bessel_j_sequence_mp};
@@ -503,6 +503,20 @@ pub fn u_wave(a: f64, zeta: f64, amp: f64, x: f64) -> Result<f64> {
 pub fn du_wave(a: f64, zeta: f64, amp: f64, x: f64) -> Result<f64> {
     check_wave_f64(a, zeta, amp, x)?;
     Ok(wave_bessel_f64(a, zeta, amp, x)?.1)
+}
+
+/// `u_w(x)` in f64 with a proven error bound for the f64 inputs as given.
+pub fn u_wave_bounded(a: f64, zeta: f64, amp: f64, x: f64) -> Result<Bounded> {
+    check_wave_f64(a, zeta, amp, x)?;
+    let (a, zeta, amp, x) = (exact(a), exact(zeta), exact(amp), exact(x));
+    crate::special::bounded_from_ball("u_wave", &u_wave_mp(&a, &zeta, &amp, &x, crate::special::F64_FALLBACK_PREC)?)
+}
+
+/// `du_w/dx` in f64 with a proven error bound for the f64 inputs as given.
+pub fn du_wave_bounded(a: f64, zeta: f64, amp: f64, x: f64) -> Result<Bounded> {
+    check_wave_f64(a, zeta, amp, x)?;
+    let (a, zeta, amp, x) = (exact(a), exact(zeta), exact(amp), exact(x));
+    crate::special::bounded_from_ball("du_wave", &du_wave_mp(&a, &zeta, &amp, &x, crate::special::F64_FALLBACK_PREC)?)
 }
 
 // ---------------------------------------------------------------- Eq. 12 / 11b series

@@ -38,7 +38,7 @@
 
 use rug::Float;
 
-use crate::ball::{Ball, Dd};
+use crate::ball::{Ball, Bounded, Dd};
 use crate::error::{Error, Result};
 use crate::special::pfq::pfq_series;
 use crate::special::{check_finite, exact, f64_from_mp, ziv};
@@ -232,6 +232,20 @@ pub fn bessel_j(n: i64, x: f64) -> Result<f64> {
     let guard = check_cost(m, ax.to_f64(), crate::special::F64_FALLBACK_PREC)?;
     let v = f64_from_mp("bessel_j", guard, |wp| bessel_j_positive(m, &ax, wp))?;
     Ok(if negate { -v } else { v })
+}
+
+/// `J_n(x)` in f64 with a proven error bound for the f64 `x` as given.
+pub fn bessel_j_bounded(n: i64, x: f64) -> Result<Bounded> {
+    crate::error::finite(x, "x")?;
+    let xe = exact(x);
+    validate(n, &xe)?;
+    if x == 0.0 {
+        return Ok(Bounded { value: if n == 0 { 1.0 } else { 0.0 }, err: 0.0 });
+    }
+    let (m, ax, negate) = reduce(n, &xe);
+    let guard = check_cost(m, ax.to_f64(), crate::special::F64_FALLBACK_PREC)?;
+    let b = crate::special::bounded_from_mp("bessel_j", guard, |wp| bessel_j_positive(m, &ax, wp))?;
+    Ok(if negate { Bounded { value: -b.value, err: b.err } } else { b })
 }
 
 /// Certified `J_0(x), ..., J_nmax(x)` at working precision `wp` (`x > 0`).

@@ -40,7 +40,7 @@
 
 use rug::Float;
 
-use crate::ball::Ball;
+use crate::ball::{Ball, Bounded};
 use crate::error::Result;
 use crate::special::exact;
 use crate::special::pfq::{hyp_pfq, hyp_pfq_mp};
@@ -97,6 +97,11 @@ pub fn hyp1f2_mp(a: &Float, b1: &Float, b2: &Float, z: &Float, prec: u32) -> Res
 /// `1F2(a; b1, b2; z)` in f64, within `1e-14` relative.
 pub fn hyp1f2(a: f64, b1: f64, b2: f64, z: f64) -> Result<f64> {
     hyp_pfq(&[a], &[b1, b2], z)
+}
+
+/// `1F2(a; b1, b2; z)` in f64 with a proven error bound for the f64 inputs as given.
+pub fn hyp1f2_bounded(a: f64, b1: f64, b2: f64, z: f64) -> Result<Bounded> {
+    crate::special::bounded_from_ball("hyp1f2", &hyp1f2_mp_f64(a, b1, b2, z, crate::special::F64_FALLBACK_PREC)?)
 }
 
 /// Certified `1F2` at f64 arguments (convenience wrapper).

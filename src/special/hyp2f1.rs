@@ -163,7 +163,7 @@ use rug::float::Round;
 use rug::ops::{AddAssignRound, AssignRound, DivAssignRound, MulAssignRound, SubAssignRound};
 use rug::{Float, Rational};
 
-use crate::ball::{Ball, MAG_PREC};
+use crate::ball::{Ball, Bounded, MAG_PREC};
 use crate::error::{check_prec, finite, Error, Result};
 use crate::special::pfq::{pfq_f64, pfq_series, F64_TRUST, MAX_SERIES_TERMS};
 use crate::special::{
@@ -1405,6 +1405,16 @@ pub fn hyp2f1_mp(a: &Float, b: &Float, c: &Float, z: &Float, prec: u32) -> Resul
     }
     let (alg, lost) = plan(a, b, c, z, prec + DEFAULT_GUARD_BITS);
     ziv("hyp2f1", prec, DEFAULT_GUARD_BITS + lost, |wp| evaluate(alg, a, b, c, z, wp))
+}
+
+/// `2F1(a, b; c; z)` in f64 with a proven error bound for the f64 inputs as given.
+pub fn hyp2f1_bounded(a: f64, b: f64, c: f64, z: f64) -> Result<Bounded> {
+    finite(a, "a")?;
+    finite(b, "b")?;
+    finite(c, "c")?;
+    finite(z, "z")?;
+    let ball = hyp2f1_mp(&exact(a), &exact(b), &exact(c), &exact(z), crate::special::F64_FALLBACK_PREC)?;
+    crate::special::bounded_from_ball("hyp2f1", &ball)
 }
 
 /// `2F1(a, b; c; z)` in f64 for real `z <= 1`, within `1e-14` relative

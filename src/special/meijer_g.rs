@@ -74,7 +74,7 @@
 
 use rug::Float;
 
-use crate::ball::{Ball, Mag, MAG_PREC};
+use crate::ball::{Ball, Bounded, Mag, MAG_PREC};
 use crate::error::{Error, Result};
 use crate::special::pfq::pfq_series;
 use crate::special::{check_finite, exact, exact_add, exact_sub, f64_from_mp, ziv, DEFAULT_GUARD_BITS};
@@ -463,6 +463,14 @@ pub fn meijer_g_k(k: u32, y: f64) -> Result<f64> {
     let ye = exact(y);
     validate(k, &ye)?;
     f64_from_mp("meijer_g_k", guard_bits(k, y), |wp| meijer_g_k_wp(k, &ye, wp))
+}
+
+/// `G(k, y)` in f64 with a proven error bound for the f64 `y` as given.
+pub fn meijer_g_k_bounded(k: u32, y: f64) -> Result<Bounded> {
+    crate::error::finite(y, "y")?;
+    let ye = exact(y);
+    validate(k, &ye)?;
+    crate::special::bounded_from_mp("meijer_g_k", guard_bits(k, y), |wp| meijer_g_k_wp(k, &ye, wp))
 }
 
 /// Real and imaginary parts of `G^{2,2}_{3,3}(z | a1, a2, a3; b1, b2, b3)` for

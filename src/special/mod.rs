@@ -34,9 +34,11 @@ pub mod hyp2f1;
 pub mod meijer_g;
 pub mod pfq;
 
+use rug::float::Round;
+use rug::ops::{AddAssignRound, AssignRound};
 use rug::Float;
 
-use crate::ball::Ball;
+use crate::ball::{Ball, Bounded};
 use crate::error::{Error, Result};
 use crate::MAX_WORKING_PREC;
 
@@ -106,6 +108,35 @@ where
     } else {
         Err(Error::Overflow { what: format!("{function} (result exceeds the f64 range)") })
     }
+}
+
+/// An f64 with a proven error bound from a certified ball: `value` is the
+/// midpoint rounded to nearest, and `err = |mid - value| + rad`, each step
+/// rounded upward, so the exact value lies within `err` of `value`.
+///
+/// This is the MP fallback of the `*_bounded` functions: always valid, slower
+/// than a native f64 algorithm with its own running error analysis.
+pub fn bounded_from_ball(function: &'static str, b: &Ball) -> Result<Bounded> {
+    let value = b.to_f64();
+    if !value.is_finite() {
+        return Err(Error::Overflow { what: format!("{function} (result exceeds the f64 range)") });
+    }
+    // mid - value is exact at this precision (both are binary floats).
+    let rounding = exact_sub(b.mid(), &exact(value));
+    let mut err = Float::with_val(crate::ball::MAG_PREC, 0);
+    err.assign_round(rounding.abs_ref(), Round::Up);
+    err.add_assign_round(&b.rad(), Round::Up);
+    let err = err.to_f64_round(Round::Up);
+    Ok(Bounded { value, err })
+}
+
+/// Runs a certified MP evaluation at [`F64_FALLBACK_PREC`] bits and returns its
+/// f64 rounding with the proven bound ([`bounded_from_ball`]).
+pub fn bounded_from_mp<F>(function: &'static str, guard: u32, eval: F) -> Result<Bounded>
+where
+    F: FnMut(u32) -> Result<Ball>,
+{
+    bounded_from_ball(function, &ziv(function, F64_FALLBACK_PREC, guard, eval)?)
 }
 
 /// An exact binary float from an f64 (53 bits hold every double exactly).
