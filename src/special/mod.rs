@@ -8,6 +8,17 @@
 //! | [`hyp2f1`](hyp2f1::hyp2f1) | [`hyp2f1_mp`](hyp2f1::hyp2f1_mp) | transformations + pFq core |
 //! | [`meijer_g_k`](meijer_g::meijer_g_k) | [`meijer_g_k_mp`](meijer_g::meijer_g_k_mp) | closed form / MP fallback |
 //!
+//! # Public surface
+//!
+//! Per function: the f64 value (`f`), the f64 value with a proven bound
+//! (`f_bounded`, a [`Bounded`]) and the certified ball (`f_mp`), plus
+//! [`hyp_pfq`](pfq::hyp_pfq)/[`hyp_pfq_mp`](pfq::hyp_pfq_mp), [`exact`] (an f64
+//! as an exact `Float` argument) and the constants [`F64_FALLBACK_PREC`] and
+//! [`F64_TRUST`](pfq::F64_TRUST). Everything else (the Ziv driver, the series
+//! engines, the per-method `2F1` entry points, Gamma and magnitude helpers in
+//! `gamma.rs`) is crate-internal, so that it can change without breaking users;
+//! the unit tests next to each file compare the methods where they overlap.
+//!
 //! # Precision policy (Ziv)
 //!
 //! Every `*_mp` function takes an output precision `prec` (bits) and returns a
@@ -29,6 +40,7 @@
 //! which is then within one ulp.
 
 pub mod bessel_j;
+pub(crate) mod gamma;
 pub mod hyp1f2;
 pub mod hyp2f1;
 pub mod meijer_g;
@@ -47,7 +59,7 @@ use crate::MAX_WORKING_PREC;
 pub const F64_FALLBACK_PREC: u32 = 64;
 
 /// Initial guard bits of the Ziv loop when a function gives no better estimate.
-pub const DEFAULT_GUARD_BITS: u32 = 24;
+pub(crate) const DEFAULT_GUARD_BITS: u32 = 24;
 
 /// Runs `eval(working_prec)` with rising working precision until the ball meets
 /// `rad <= 2^-prec |mid|`.
@@ -59,7 +71,7 @@ pub const DEFAULT_GUARD_BITS: u32 = 24;
 /// This is the internal driver: it accepts any `prec` up to
 /// [`MAX_WORKING_PREC`]; public functions check the user's precision with
 /// `check_prec` first.
-pub fn ziv<F>(function: &'static str, prec: u32, guard: u32, eval: F) -> Result<Ball>
+pub(crate) fn ziv<F>(function: &'static str, prec: u32, guard: u32, eval: F) -> Result<Ball>
 where
     F: FnMut(u32) -> Result<Ball>,
 {
@@ -71,7 +83,7 @@ where
 /// Used where the function has a natural scale and may vanish at exact inputs
 /// (for example `u_w(a) = A (1 - cos(2 pi a/zeta))` is exactly zero when `a/zeta`
 /// is an integer): the accuracy promise there is relative to `max(|value|, floor)`.
-pub fn ziv_with_floor<F>(function: &'static str, prec: u32, guard: u32, floor: Option<&Float>, mut eval: F) -> Result<Ball>
+pub(crate) fn ziv_with_floor<F>(function: &'static str, prec: u32, guard: u32, floor: Option<&Float>, mut eval: F) -> Result<Ball>
 where
     F: FnMut(u32) -> Result<Ball>,
 {
@@ -97,7 +109,7 @@ where
 }
 
 /// Runs the MP path for an f64 function and rounds the certified midpoint.
-pub fn f64_from_mp<F>(function: &'static str, guard: u32, eval: F) -> Result<f64>
+pub(crate) fn f64_from_mp<F>(function: &'static str, guard: u32, eval: F) -> Result<f64>
 where
     F: FnMut(u32) -> Result<Ball>,
 {
@@ -116,7 +128,7 @@ where
 ///
 /// This is the MP fallback of the `*_bounded` functions: always valid, slower
 /// than a native f64 algorithm with its own running error analysis.
-pub fn bounded_from_ball(function: &'static str, b: &Ball) -> Result<Bounded> {
+pub(crate) fn bounded_from_ball(function: &'static str, b: &Ball) -> Result<Bounded> {
     let value = b.to_f64();
     if !value.is_finite() {
         return Err(Error::Overflow { what: format!("{function} (result exceeds the f64 range)") });
@@ -132,7 +144,7 @@ pub fn bounded_from_ball(function: &'static str, b: &Ball) -> Result<Bounded> {
 
 /// Runs a certified MP evaluation at [`F64_FALLBACK_PREC`] bits and returns its
 /// f64 rounding with the proven bound ([`bounded_from_ball`]).
-pub fn bounded_from_mp<F>(function: &'static str, guard: u32, eval: F) -> Result<Bounded>
+pub(crate) fn bounded_from_mp<F>(function: &'static str, guard: u32, eval: F) -> Result<Bounded>
 where
     F: FnMut(u32) -> Result<Ball>,
 {
@@ -145,7 +157,7 @@ pub fn exact(x: f64) -> Float {
 }
 
 /// Checks a Float argument for finiteness.
-pub fn check_finite(x: &Float, what: &'static str) -> Result<()> {
+pub(crate) fn check_finite(x: &Float, what: &'static str) -> Result<()> {
     if x.is_finite() {
         Ok(())
     } else {
@@ -154,12 +166,12 @@ pub fn check_finite(x: &Float, what: &'static str) -> Result<()> {
 }
 
 /// The exact sum `a + b` of two binary floats (enough bits that nothing rounds).
-pub fn exact_add(a: &Float, b: &Float) -> Float {
+pub(crate) fn exact_add(a: &Float, b: &Float) -> Float {
     Float::with_val(exact_sum_prec(a, b), a + b)
 }
 
 /// The exact difference `a - b` of two binary floats.
-pub fn exact_sub(a: &Float, b: &Float) -> Float {
+pub(crate) fn exact_sub(a: &Float, b: &Float) -> Float {
     Float::with_val(exact_sum_prec(a, b), a - b)
 }
 
@@ -176,6 +188,6 @@ fn exact_sum_prec(a: &Float, b: &Float) -> u32 {
 }
 
 /// Whether an exact float is an integer `<= 0`.
-pub fn is_nonpositive_integer(x: &Float) -> bool {
+pub(crate) fn is_nonpositive_integer(x: &Float) -> bool {
     crate::ball::is_nonpositive_integer(x)
 }

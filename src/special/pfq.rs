@@ -38,7 +38,7 @@
 //!
 //! # f64 path
 //!
-//! [`pfq_f64`] sums the same recurrence in f64 and returns an error *estimate*:
+//! `pfq_f64` sums the same recurrence in f64 and returns an error *estimate*:
 //! each term carries at most `c n` roundings (`c = 2 (p + q + 2)`), so with
 //! `u = 2^-53`, `|error| <~ ((c + 1) N u) * sum |t_n| + tail`. It is an estimate,
 //! not a proof (the bound itself is evaluated in f64); [`hyp_pfq`] uses it only
@@ -53,15 +53,18 @@ use crate::error::{Error, Result};
 use crate::special::{check_finite, exact, f64_from_mp, ziv, DEFAULT_GUARD_BITS};
 
 /// Hard cap on the number of series terms.
-pub const MAX_SERIES_TERMS: u64 = 5_000_000;
+pub(crate) const MAX_SERIES_TERMS: u64 = 5_000_000;
 
 /// Relative error-estimate threshold under which the f64 fast path is trusted:
 /// the f64 functions built on this core promise `1e-14` relative.
 pub const F64_TRUST: f64 = 4e-15;
 
 /// A summed series: the enclosure of the full sum and a cancellation measure.
+/// (`abs_sum`, `terms` and `cancellation_bits` are diagnostics for callers'
+/// guard estimates; no caller reads them at present.)
 #[derive(Debug, Clone)]
-pub struct SeriesSum {
+#[allow(dead_code)]
+pub(crate) struct SeriesSum {
     /// Ball containing the whole infinite sum (tail included).
     pub sum: Ball,
     /// Upper bound on `sum |t_n|` over the summed terms.
@@ -70,6 +73,7 @@ pub struct SeriesSum {
     pub terms: u64,
 }
 
+#[allow(dead_code)]
 impl SeriesSum {
     /// Bits lost to cancellation, `log2(sum |t_n| / |sum|)`, as an estimate for
     /// the guard bits of the next Ziv round.
@@ -149,7 +153,7 @@ fn ratio_bound(a: &[Ball], b: &[Ball], z: &Ball, n: u64) -> Float {
 }
 
 /// Sums `pFq(a; b; z)` in ball arithmetic at working precision `wp`, tail included.
-pub fn pfq_series(a: &[Ball], b: &[Ball], z: &Ball, wp: u32) -> Result<SeriesSum> {
+pub(crate) fn pfq_series(a: &[Ball], b: &[Ball], z: &Ball, wp: u32) -> Result<SeriesSum> {
     let p = a.len();
     let q = b.len();
     let terminates = a.iter().any(|x| x.is_exact_nonpositive_integer());
@@ -227,7 +231,7 @@ pub fn pfq_series(a: &[Ball], b: &[Ball], z: &Ball, wp: u32) -> Result<SeriesSum
 /// (Neumaier's TwoSum), so summation contributes about `u |s| + N u^2 sum |t_n|`;
 /// term `n` carries a relative error of at most about `c n u` from its `c n`
 /// roundings, which contributes `c u sum n |t_n|`.
-pub fn pfq_f64(a: &[f64], b: &[f64], z: f64) -> Option<(f64, f64, f64)> {
+pub(crate) fn pfq_f64(a: &[f64], b: &[f64], z: f64) -> Option<(f64, f64, f64)> {
     let p = a.len();
     let q = b.len();
     let terminates = a.iter().any(|&x| x <= 0.0 && x == x.floor());

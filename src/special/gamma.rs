@@ -1,0 +1,224 @@
+//! Gamma, Pochhammer and upward-rounded magnitude helpers shared by the
+//! hypergeometric functions.
+//!
+//! # Method
+//!
+//! * **Gamma at exact points** ([`gamma_ball`]): MPFR's correctly rounded `gamma`
+//!   (one ulp) wrapped in a ball. Small integers and half-integers use `(n-1)!`
+//!   and `sqrt(pi) (1/2)_n` (MPFR's `gamma` is slowest there), other small
+//!   arguments are shifted into `[1, 2)` by `Gamma(x) = Gamma(x+K)/(x)_K`
+//!   [DLMF 5.5.1]; all in ball arithmetic.
+//! * **Gamma ratios** ([`gamma_ratio`]): `prod Gamma(num_i) / prod Gamma(den_j)`.
+//!   Arguments that differ by an integer `k <= 64` are paired into Pochhammer
+//!   products `Gamma(x+k)/Gamma(x) = (x)_k` [DLMF 5.2.5], which is exact in the
+//!   limit and cheap; `1/Gamma` at a pole is the exact zero [DLMF 5.2.1].
+//! * **Magnitudes** (`mag_*`): non-negative upper bounds as `Float`s at
+//!   [`MAG_PREC`] bits, every operation rounded upward (or downward where a lower
+//!   bound is needed, `mag_abs_down`), for the radius and tail bounds of the
+//!   series engines. They complement [`Mag`](crate::ball::Mag), which has an f64
+//!   mantissa; these keep MPFR's exponent range for tail bounds of huge terms.
+//! * [`lgamma_est`]: an f64 *estimate* of `ln |Gamma(x)|` for cost models only
+//!   (never inside a bound).
+
+use std::f64::consts::PI;
+
+use rug::float::Round;
+use rug::Float;
+
+use crate::ball::{Ball, MAG_PREC};
+use crate::error::{Error, Result};
+use crate::special::{exact_add, exact_sub, is_nonpositive_integer};
+
+/// Gamma ratios whose arguments differ by an integer up to this are Pochhammer products.
+const POCHHAMMER_PAIR_MAX: u64 = 64;
+
+/// An exact ball for an exact float (precision at least `wp`).
+pub(crate) fn xball(x: &Float, wp: u32) -> Ball {
+    Ball::from_float(x, wp.max(x.prec()))
+}
+
+/// The exact float `n`.
+pub(crate) fn int_float(n: u64) -> Float {
+    Float::with_val(64, n)
+}
+
+// ----- upward-rounded magnitudes -------------------------------------------
+
+pub(crate) fn mag_zero() -> Float {
+    Float::new(MAG_PREC)
+}
+
+pub(crate) fn mag_inf() -> Float {
+    Float::with_val(MAG_PREC, rug::float::Special::Infinity)
+}
+
+pub(crate) fn mag_abs(x: &Float) -> Float {
+    Float::with_val_round(MAG_PREC, x.abs_ref(), Round::Up).0
+}
+
+pub(crate) fn mag_abs_down(x: &Float) -> Float {
+    Float::with_val_round(MAG_PREC, x.abs_ref(), Round::Down).0
+}
+
+pub(crate) fn mag_add(a: &Float, b: &Float) -> Float {
+    Float::with_val_round(MAG_PREC, a + b, Round::Up).0
+}
+
+pub(crate) fn mag_mul(a: &Float, b: &Float) -> Float {
+    Float::with_val_round(MAG_PREC, a * b, Round::Up).0
+}
+
+pub(crate) fn mag_div(a: &Float, b: &Float) -> Float {
+    if b.is_zero() || b.is_sign_negative() {
+        return mag_inf();
+    }
+    Float::with_val_round(MAG_PREC, a / b, Round::Up).0
+}
+
+pub(crate) fn mag_u64(n: u64) -> Float {
+    Float::with_val_round(MAG_PREC, n, Round::Up).0
+}
+
+pub(crate) fn mag_pow2(e: i64) -> Float {
+    let mut r = Float::with_val(MAG_PREC, 1);
+    r <<= e.clamp(i32::MIN as i64 / 2, i32::MAX as i64 / 2) as i32;
+    r
+}
+
+pub(crate) fn mag_min(a: Float, b: Float) -> Float {
+    if a <= b {
+        a
+    } else {
+        b
+    }
+}
+
+/// Upper bound of `1 / (1 - rho)` for `rho < 1`.
+pub(crate) fn mag_geometric(rho: &Float) -> Float {
+    let den = Float::with_val_round(MAG_PREC, 1 - rho, Round::Down).0;
+    mag_div(&Float::with_val(MAG_PREC, 1), &den)
+}
+
+/// Upper bound of `expm1(x)` for `x >= 0`.
+pub(crate) fn expm1_up(x: &Float) -> Float {
+    let mut e = x.clone();
+    e.exp_m1_round(Round::Up);
+    e
+}
+
+// ----- Gamma and Pochhammer --------------------------------------------------
+
+/// `(x)_k = x (x+1) ... (x+k-1)` in balls.
+pub(crate) fn pochhammer(x: &Float, k: u64, wp: u32) -> Ball {
+    let xb = xball(x, wp);
+    let mut r = Ball::one(wp);
+    for i in 0..k {
+        r = r.mul(&xb.add_i64(i as i64));
+    }
+    r
+}
+
+/// `prod Gamma(num_i) / prod Gamma(den_j)` at exact points. `num` must avoid the
+/// poles; a pole in `den` makes the product an exact zero. Arguments that differ
+/// by an integer of at most 64 are paired into Pochhammer
+/// products.
+pub(crate) fn gamma_ratio(num: &[&Float], den: &[&Float], wp: u32) -> Result<Ball> {
+    if den.iter().any(|y| is_nonpositive_integer(y)) {
+        return Ok(Ball::zero(wp));
+    }
+    let mut used = vec![false; den.len()];
+    let mut r = Ball::one(wp);
+    for x in num {
+        if is_nonpositive_integer(x) {
+            return Err(Error::Domain { what: format!("Gamma at the pole {}", x.to_f64()) });
+        }
+        let mut best: Option<(usize, Float)> = None;
+        for (j, y) in den.iter().enumerate() {
+            if used[j] {
+                continue;
+            }
+            let d = exact_sub(x, y);
+            if d.is_integer() && d.clone().abs() <= POCHHAMMER_PAIR_MAX {
+                let better = match &best {
+                    Some((_, bd)) => d.clone().abs() < bd.clone().abs(),
+                    None => true,
+                };
+                if better {
+                    best = Some((j, d));
+                }
+            }
+        }
+        match best {
+            Some((j, d)) => {
+                used[j] = true;
+                let k = d.to_f64().abs() as u64;
+                if d.is_sign_negative() {
+                    // Gamma(x) / Gamma(x + k) = 1 / (x)_k
+                    r = r.div(&pochhammer(x, k, wp))?;
+                } else {
+                    // Gamma(y + k) / Gamma(y) = (y)_k
+                    r = r.mul(&pochhammer(den[j], k, wp));
+                }
+            }
+            None => r = r.mul(&gamma_ball(x, wp)?),
+        }
+    }
+    for (j, y) in den.iter().enumerate() {
+        if !used[j] {
+            r = r.div(&gamma_ball(y, wp)?)?;
+        }
+    }
+    Ok(r)
+}
+
+/// `Gamma(x)` at an exact non-pole `x`: `(n-1)!` and `sqrt(pi) (1/2)_n` (or
+/// `sqrt(pi) / (1/2 - n)_n`) at small integers and half-integers, a shift
+/// `Gamma(x) = Gamma(x+K) / (x)_K` into `[1, 2)` for other small `x < 1` (MPFR is
+/// slowest there), otherwise MPFR's correctly rounded value.
+pub(crate) fn gamma_ball(x: &Float, wp: u32) -> Result<Ball> {
+    const SMALL: f64 = 64.0;
+    if is_nonpositive_integer(x) {
+        return Err(Error::Domain { what: format!("Gamma at the pole {}", x.to_f64()) });
+    }
+    let xf = x.to_f64();
+    if x.is_integer() && xf <= SMALL {
+        return Ok(Ball::factorial(xf as u32 - 1, wp));
+    }
+    let twice = Float::with_val(x.prec() + 1, x * 2u32);
+    if twice.is_integer() && xf.abs() <= SMALL {
+        let sqrt_pi = Ball::pi(wp).sqrt()?;
+        let half = Float::with_val(2, 0.5);
+        return if xf > 0.0 {
+            Ok(sqrt_pi.mul(&pochhammer(&half, (xf - 0.5) as u64, wp)))
+        } else {
+            sqrt_pi.div(&pochhammer(x, (0.5 - xf) as u64, wp))
+        };
+    }
+    if xf < 1.0 && xf > -SMALL {
+        let k = (1.0 - xf).ceil() as u64;
+        let shifted = exact_add(x, &int_float(k));
+        return xball(&shifted, wp).gamma()?.div(&pochhammer(x, k, wp));
+    }
+    xball(x, wp).gamma()
+}
+
+// ----- estimates (choosing only) ---------------------------------------------
+
+/// f64 estimate of `ln |Gamma(x)|` (`+inf` at the poles); only for choosing.
+pub(crate) fn lgamma_est(x: f64) -> f64 {
+    if !x.is_finite() || (x <= 0.0 && x == x.floor()) {
+        return f64::INFINITY;
+    }
+    if x < 0.5 {
+        let s = (PI * x).sin().abs();
+        return PI.ln() - s.ln() - lgamma_est(1.0 - x);
+    }
+    let mut x = x;
+    let mut acc = 0.0;
+    while x < 10.0 {
+        acc -= x.ln();
+        x += 1.0;
+    }
+    acc + (x - 0.5) * x.ln() - x + 0.5 * (2.0 * PI).ln() + 1.0 / (12.0 * x) - 1.0 / (360.0 * x * x * x)
+}
+

@@ -1,0 +1,237 @@
+//! Gauss hypergeometric function `2F1(a, b; c; z)`, real parameters, real `z <= 1`.
+//!
+//! # Method
+//!
+//! `2F1(a, b; c; z) = sum_n (a)_n (b)_n / ((c)_n n!) z^n` [DLMF 15.2.1] for
+//! `|z| < 1`, continued to `z < -1` and to `z = 1` as below. Every formula is
+//! evaluated in ball arithmetic (or in place with an a-priori rounding bound,
+//! see *Error argument*), so the returned ball contains the exact value at the
+//! given binary inputs. `choose_algorithm` picks one `Algorithm`; each is a
+//! public function callable on its own at a working precision `wp`.
+//!
+//! ## Special cases first
+//!
+//! * **Terminating** (`Algorithm::Polynomial`): `a` or `b` a non-positive
+//!   integer `-d`. `2F1` is a polynomial of degree `d`, summed for any `z <= 1`.
+//!   For `d <= 300` it is summed *exactly* in rationals (`rug::Rational`) and
+//!   rounded once, so exact zeros (e.g. Chu-Vandermonde zeros at `z = 1`) come
+//!   back as `[0 +/- 0]`; longer polynomials use the series engine below.
+//! * **`c` a non-positive integer** `-m`: a pole of every term with `n > m`;
+//!   allowed only when the series terminates first (`d <= m`, the usual
+//!   convention, as in mpmath), otherwise [`Error::Domain`].
+//! * **`z = 1`** (`Algorithm::Gauss`): Gauss's sum
+//!   `Gamma(c) Gamma(c-a-b) / (Gamma(c-a) Gamma(c-b))` when `c - a - b > 0`
+//!   [DLMF 15.4.20]; a terminating series uses the polynomial (Chu-Vandermonde,
+//!   DLMF 15.4.24, for any `c - a - b`); otherwise the series diverges and the
+//!   result is [`Error::Domain`].
+//! * `z = 0` gives exactly 1.
+//!
+//! ## Regions (non-terminating)
+//!
+//! | region | algorithm | series argument |
+//! |---|---|---|
+//! | `|z| <= 1/2` | `Algorithm::Direct`: DLMF 15.2.1 | `z`, `|z| <= 1/2` |
+//! | `-1 <= z < -1/2` | `Algorithm::Pfaff`: `(1-z)^{-a} 2F1(a, c-b; c; z/(z-1))` [DLMF 15.8.1] | `w in (1/3, 1/2]` |
+//! | `1/2 < z < 1` | `Algorithm::Connection` / `Algorithm::ConnectionLog` (1-z formula) | `1 - z in (0, 1/2)` |
+//! | `z < -1` | `Algorithm::PfaffConnection` / `Algorithm::PfaffConnectionLog`: Pfaff to `w = z/(z-1) in (1/2, 1)`, then the 1-w formula with `1 - w = 1/(1-z)` | `1/(1-z) in (0, 1/2)` |
+//!
+//! Within `-1 <= z <= 1/2` the same function is also
+//! `(1-z)^{c-a-b} 2F1(c-a, c-b; c; z)` (`Algorithm::Euler`, DLMF 15.8.1) and
+//! `(1-z)^{-b} 2F1(c-a, b; c; w)` (`Algorithm::PfaffSwapped`); for `z < 0`
+//! also `(1-z)^{-a} 2F1(a, c-b; c; w)` with `|w| < |z|`. `choose_algorithm`
+//! simulates the term magnitudes of these series in f64 and takes the cheapest
+//! (terms times precision plus cancellation, the direct series on ties). This
+//! matters for large negative parameters: `2F1(-N+1/2, 2; 3; 1/2)` loses about
+//! `0.6 N` bits to cancellation in the direct series, while the Euler transform
+//! has positive terms (`N = 10^6` takes 0.2 s instead of minutes).
+//!
+//!
+//! # Branch cut
+//!
+//! The principal branch of `2F1` has its cut on `[1, inf)` [DLMF 15.2(i)]; on
+//! the cut the value depends on the side of approach and is complex. Only real
+//! `z <= 1` is supported; `z > 1` is [`Error::Domain`].
+//!
+//! # Performance
+//!
+//! The paper's model case `2F1(1, k+1/2; k+2; y)`, `k <= 1000`, 128 bits
+//! (release build, best of 5): 6-30 us for `y <= 1/2`, 20-100 us on
+//! `(1/2, 1)` (direct series up to about `y = 0.9` at `k = 1000`, the 1-z
+//! formula above; about 40 us at `y = 1 - 10^-12`), about 1 us at `y = 1`.
+//! `model_case_timing` (ignored test) prints the table.
+//!
+//! # Accuracy
+//!
+//! * MP: certified, `rad <= 2^-prec |mid|`.
+//! * f64: for `|z| <= 1/2` the f64 series (`pfq_f64`) when its error estimate is
+//!   below `F64_TRUST` relative; otherwise the certified 64-bit value rounded
+//!   (within one ulp). Tolerance `1e-14` relative (absolute near zeros).
+//!
+//! Domain: finite real `a, b, c`, real `z <= 1`; `|c - a - b| <= 10^5` when it is
+//! an integer and `z > 1/2` or `z < -1`. Tested: `|a|, |b| <= 10`,
+//! `0.25 <= c <= 15`, `-10^6 <= z <= 1`, and the model case up to `k = 1000`.
+//! Larger parameters work but cost grows with them (`2F1(-10^6+1/2, 2; 3; 1/2)`
+//! takes 0.2 s); a series that would need more than 5 * 10^6 terms is
+//! [`Error::NoConvergence`]. When `c - a - b` is within `eps` of an integer
+//! without being one, the 1-z formula cancels about `log2(1/eps)` bits, which
+//! the Ziv loop supplies.
+//!
+//! # Files
+//!
+//! One file per method, as in Arb's `acb_hypgeom/2f1_*.c`; each opens with its
+//! formula and error bound: `series` (the power-series engine), `polynomial`
+//! (terminating series, exact rationals), `transform` (direct, Euler, Pfaff),
+//! `connection` (1-z formula, Pfaff + 1-w, Gauss's sum), `log_case` (the
+//! degenerate 1-z formula), `choose` (the cost model and dispatcher).
+//! Gamma, Pochhammer and the magnitude helpers live in `special/gamma.rs`.
+
+mod choose;
+mod connection;
+mod log_case;
+mod polynomial;
+mod series;
+mod transform;
+
+#[cfg(test)]
+mod tests;
+
+use rug::Float;
+
+use choose::{evaluate, plan};
+
+use crate::ball::{Ball, Bounded};
+use crate::error::{check_prec, finite, Error, Result};
+use crate::special::pfq::{pfq_f64, F64_TRUST};
+use crate::special::{
+    check_finite, exact, exact_sub, f64_from_mp, is_nonpositive_integer, ziv, DEFAULT_GUARD_BITS, F64_FALLBACK_PREC,
+};
+
+/// Up to `|z| = 1/2` (and down to `z = -1`) only series in `z` or `w = z/(z-1)`
+/// are used (direct, Euler, Pfaff); beyond, the 1-z formulas are candidates.
+pub(crate) const DIRECT_RADIUS: f64 = 0.5;
+
+/// Polynomials up to this degree are summed exactly in rationals.
+pub(crate) const EXACT_POLY_MAX_DEGREE: u64 = 300;
+
+/// Largest `|c - a - b|` for the logarithmic formula (its finite sum has that many terms).
+pub(crate) const MAX_LOG_M: u64 = 100_000;
+
+/// Minimum precision of the series engine (its error bound assumes `8 N 2^-p` tiny).
+const MIN_SERIES_PREC: u32 = 64;
+
+// ----- small exact helpers ------------------------------------------------
+
+/// `d` when `x = -d` is a non-positive integer.
+fn nonpos_degree(x: &Float) -> Option<u64> {
+    if is_nonpositive_integer(x) {
+        Some((-x.to_f64()) as u64)
+    } else {
+        None
+    }
+}
+
+/// Degree of the polynomial when `a` or `b` is a non-positive integer.
+fn terminating_degree(a: &Float, b: &Float) -> Option<u64> {
+    match (nonpos_degree(a), nonpos_degree(b)) {
+        (Some(x), Some(y)) => Some(x.min(y)),
+        (x, y) => x.or(y),
+    }
+}
+
+fn one() -> Float {
+    Float::with_val(2, 1)
+}
+
+fn pole_error(c: &Float) -> Error {
+    Error::Domain {
+        what: format!(
+            "2F1: c = {} is a non-positive integer, a pole of the series; it is defined only when a or b \
+             is a non-positive integer of no larger magnitude (terminating series)",
+            c.to_f64()
+        ),
+    }
+}
+
+// ----- public entry points ---------------------------------------------------------
+
+/// Checks the arguments: finite, `z <= 1`, `c` not a pole, `z = 1` convergent.
+fn validate(a: &Float, b: &Float, c: &Float, z: &Float) -> Result<()> {
+    check_finite(a, "a")?;
+    check_finite(b, "b")?;
+    check_finite(c, "c")?;
+    check_finite(z, "z")?;
+    if *z > 1 {
+        return Err(Error::Domain {
+            what: format!(
+                "2F1: z = {} > 1 lies on the branch cut [1, inf) of the principal branch (complex values); \
+                 only real z <= 1 is supported",
+                z.to_f64()
+            ),
+        });
+    }
+    let deg = terminating_degree(a, b);
+    if let Some(m) = nonpos_degree(c) {
+        if deg.map_or(true, |d| d > m) {
+            return Err(pole_error(c));
+        }
+    }
+    if *z == 1 && deg.is_none() {
+        let s = exact_sub(&exact_sub(c, a), b);
+        if s <= 0 {
+            return Err(Error::Domain {
+                what: format!(
+                    "2F1(a, b; c; 1) diverges when c - a - b <= 0 (here {}); Gauss's sum needs c - a - b > 0",
+                    s.to_f64()
+                ),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Certified `2F1(a, b; c; z)` for real `z <= 1`, with `rad <= 2^-prec |mid|`.
+pub fn hyp2f1_mp(a: &Float, b: &Float, c: &Float, z: &Float, prec: u32) -> Result<Ball> {
+    check_prec(prec)?;
+    validate(a, b, c, z)?;
+    if z.is_zero() {
+        return Ok(Ball::one(prec));
+    }
+    let (alg, lost) = plan(a, b, c, z, prec + DEFAULT_GUARD_BITS);
+    ziv("hyp2f1", prec, DEFAULT_GUARD_BITS + lost, |wp| evaluate(alg, a, b, c, z, wp))
+}
+
+/// `2F1(a, b; c; z)` in f64 with a proven error bound for the f64 inputs as given.
+pub fn hyp2f1_bounded(a: f64, b: f64, c: f64, z: f64) -> Result<Bounded> {
+    finite(a, "a")?;
+    finite(b, "b")?;
+    finite(c, "c")?;
+    finite(z, "z")?;
+    let ball = hyp2f1_mp(&exact(a), &exact(b), &exact(c), &exact(z), crate::special::F64_FALLBACK_PREC)?;
+    crate::special::bounded_from_ball("hyp2f1", &ball)
+}
+
+/// `2F1(a, b; c; z)` in f64 for real `z <= 1`, within `1e-14` relative
+/// (absolute near zeros); see the module docs.
+pub fn hyp2f1(a: f64, b: f64, c: f64, z: f64) -> Result<f64> {
+    finite(a, "a")?;
+    finite(b, "b")?;
+    finite(c, "c")?;
+    finite(z, "z")?;
+    let (ae, be, ce, ze) = (exact(a), exact(b), exact(c), exact(z));
+    validate(&ae, &be, &ce, &ze)?;
+    if z == 0.0 {
+        return Ok(1.0);
+    }
+    if z.abs() <= DIRECT_RADIUS {
+        // Pair the larger numerator with the larger denominator for the tail estimate.
+        let (hi, lo) = if a >= b { (a, b) } else { (b, a) };
+        let nums = if c >= 1.0 { [hi, lo] } else { [lo, hi] };
+        if let Some((s, err, _)) = pfq_f64(&nums, &[c], z) {
+            if s.is_finite() && err <= F64_TRUST * s.abs() {
+                return Ok(s);
+            }
+        }
+    }
+    let (alg, lost) = plan(&ae, &be, &ce, &ze, F64_FALLBACK_PREC + DEFAULT_GUARD_BITS);
+    f64_from_mp("hyp2f1", DEFAULT_GUARD_BITS + lost, |wp| evaluate(alg, &ae, &be, &ce, &ze, wp))
+}
