@@ -35,9 +35,11 @@ use rug::Float;
 use crate::error::{Error, Result};
 
 mod bounded;
+mod decimal;
 mod double_double;
 mod mag;
 pub use bounded::Bounded;
+pub use decimal::{eval_at_decimals, Decimal, MAX_DECIMAL_DIGITS, MAX_DECIMAL_EXPONENT, MAX_DECIMAL_INPUT_PREC};
 pub use double_double::Dd;
 pub use mag::Mag;
 

@@ -9,17 +9,36 @@
 //! {"id": 2, "f64": 1.0718...}
 //! ```
 //!
-//! Arguments are JSON numbers or decimal strings. With `"prec"` the certified
-//! MP path runs; decimal inputs that are not binary fractions are rounded to
-//! nearest at `max(prec, 53) + 64` bits and the ball encloses the function at
-//! that binary number. Without `"prec"` the f64 path runs (inputs rounded to the
-//! nearest double). A bad line gets `{"id": ..., "error": "..."}` and the stream
-//! goes on.
+//! # Input contract
+//!
+//! Arguments are JSON numbers or decimal strings; either way the decimal text
+//! as typed is what counts (JSON numbers keep their text: serde_json runs with
+//! `arbitrary_precision`).
+//!
+//! * Without `"prec"` the f64 path runs: each decimal is rounded to the nearest
+//!   double and the answer is for those doubles.
+//! * With `"prec"` the certified path runs. For the functions wired to ball
+//!   inputs (today: `bessel_j`) each decimal becomes a ball that **contains the
+//!   decimal** ([`maugis::ball::Decimal`], Arb's convention): exact when the
+//!   decimal is a binary fraction (`2.5`, `0.375`), otherwise the decimal rounded
+//!   to nearest with a one-ulp radius. The printed ball contains the function
+//!   **at the decimal typed**. The decimals are rounded at `max(prec, 53) + 64`
+//!   bits first and, where the input radius keeps the answer from `prec` bits
+//!   (near a zero), at more bits ([`maugis::ball::eval_at_decimals`]).
+//!   If an edge of the function (a pole, a divergence) lies inside the input
+//!   ball, the answer is an error that names it, never a number.
+//! * Functions not yet wired to ball inputs round each decimal to nearest at
+//!   `max(prec, 53) + 64` bits and certify the function at that binary number
+//!   (see `arg_float`); they move to the contract above one by one.
+//!
+//! Integer arguments (`n`, `k`, `kmax`, `prec`) must be integers as typed.
+//! A bad line gets `{"id": ..., "error": "..."}` and the stream goes on.
 
 use std::io::{BufRead, Write};
 
 use maugis::contact::{displacement, wave_quadrature};
 use maugis::special::{bessel_j, hyp1f2, hyp2f1, meijer_g};
+use maugis::ball::{eval_at_decimals, Decimal};
 use maugis::{Ball, Error, MAX_PREC};
 use rug::Float;
 use serde_json::{json, Map, Value};
@@ -68,6 +87,14 @@ fn arg_f64(obj: &Map<String, Value>, name: &str) -> Req<f64> {
     Ok(v)
 }
 
+/// The argument as an exact [`Decimal`] (for functions wired to ball inputs).
+fn arg_decimal(obj: &Map<String, Value>, name: &str) -> Req<Decimal> {
+    let t = arg_text(obj, name)?;
+    Decimal::parse(&t).map_err(|e| BadRequest(format!("argument \"{name}\": {e}")))
+}
+
+/// The argument rounded to nearest at `max(prec, 53) + 64` bits (the legacy
+/// contract of functions not yet wired to ball inputs).
 fn arg_float(obj: &Map<String, Value>, name: &str, prec: u32) -> Req<Float> {
     let t = arg_text(obj, name)?;
     let parsed = Float::parse(&t).map_err(|_| BadRequest(format!("argument \"{name}\" = {t:?} is not a decimal number")))?;
@@ -156,7 +183,9 @@ fn evaluate(obj: &Map<String, Value>) -> Req<Value> {
     let out = match (fname, prec) {
         ("bessel_j", None) => f64_response(&id, bessel_j::bessel_j(arg_int(obj, "n")?, arg_f64(obj, "x")?)?),
         ("bessel_j", Some(p)) => {
-            mp_response(&id, &bessel_j::bessel_j_mp(arg_int(obj, "n")?, &arg_float(obj, "x", p)?, p)?, p)
+            let n = arg_int(obj, "n")?;
+            let x = arg_decimal(obj, "x")?;
+            mp_response(&id, &eval_at_decimals(&[x], p, |b| bessel_j::bessel_j_ball_mp(n, &b[0], p))?, p)
         }
         ("hyp1f2", None) => f64_response(
             &id,

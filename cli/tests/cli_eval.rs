@@ -100,3 +100,25 @@ fn unknown_subcommand_exits_2() {
     let out = Command::new(env!("CARGO_BIN_EXE_maugis")).arg("frobnicate").output().unwrap();
     assert_eq!(out.status.code(), Some(2));
 }
+
+#[test]
+fn decimal_input_is_a_ball_that_contains_the_decimal() {
+    // J_n at a Bessel zero typed to 20+ digits: the printed ball contains J_n at
+    // the decimal (reference: reference/data/bessel_j_decimal.csv, mpmath).
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../reference/data/bessel_j_decimal.csv");
+    let table = std::fs::read_to_string(path).expect("reference table");
+    let mut checked = 0;
+    for line in table.lines().filter(|l| !l.starts_with('#') && !l.starts_with("n,")).step_by(13) {
+        let cols: Vec<&str> = line.split(',').collect();
+        let (n, x, value) = (cols[0], cols[1], cols[2]);
+        let req = format!("{{\"id\":1,\"fn\":\"bessel_j\",\"n\":{n},\"x\":\"{x}\",\"prec\":53}}\n");
+        let (out, code) = eval_lines(&req);
+        assert_eq!(code, 0);
+        let mid = Float::with_val(400, Float::parse(out[0]["mid"].as_str().unwrap()).unwrap());
+        let rad = Float::with_val(400, Float::parse(out[0]["rad"].as_str().unwrap()).unwrap());
+        let exact = Float::with_val(400, Float::parse(value).unwrap());
+        assert!(Float::with_val(400, &mid - &exact).abs() <= rad, "{req}: {:?}", out[0]);
+        checked += 1;
+    }
+    assert!(checked >= 20);
+}

@@ -36,11 +36,19 @@
 //!
 //! Domain: `|n| <= 10^4` and `|x| <= 10^4` are tested; larger values work but are slow.
 
+
+mod hankel;
+mod recurrence;
+mod series;
+
+pub use hankel::bessel_j_hankel;
+pub use recurrence::{bessel_j_sequence, bessel_j_sequence_dd, bessel_j_sequence_mp};
+pub use series::bessel_j_series;
+
 use rug::Float;
 
-use crate::ball::{Ball, Bounded, Dd};
+use crate::ball::{Ball, Bounded};
 use crate::error::{Error, Result};
-use crate::special::pfq::pfq_series;
 use crate::special::{check_finite, exact, f64_from_mp, ziv};
 
 /// Largest |n| accepted (the documented domain is |n| <= 1e4; this is the hard cap).
@@ -102,75 +110,6 @@ fn reduce(n: i64, x: &Float) -> (u64, Float, bool) {
     (m, Float::with_val(x.prec(), x.abs_ref()), negate)
 }
 
-/// `J_n(x)` by the power series at working precision `wp` (`x > 0`).
-pub fn bessel_j_series(n: u64, x: &Float, wp: u32) -> Result<Ball> {
-    let xb = Ball::from_float(x, wp);
-    let half_x = xb.mul_pow2(-1);
-    let z = half_x.sqr().neg();
-    let b = [Ball::from_i64(n as i64 + 1, wp)];
-    let sum = pfq_series(&[], &b, &z, wp)?.sum;
-    // (x/2)^n / n!, n! correctly rounded by MPFR.
-    let order = u32::try_from(n).map_err(|_| Error::Domain { what: "Bessel order too large".into() })?;
-    let fact = Ball::factorial(order, wp);
-    let pre = half_x.pow_u64(n).div(&fact)?;
-    Ok(pre.mul(&sum))
-}
-
-/// `J_n(x)` by Hankel's expansion at working precision `wp` (`x > 0`);
-/// `None` if the expansion cannot reach `2^-wp` (terms stop decreasing).
-pub fn bessel_j_hankel(n: u64, x: &Float, wp: u32) -> Result<Option<Ball>> {
-    let xb = Ball::from_float(x, wp);
-    let four_n2 = Ball::from_i64(4, wp).mul(&Ball::from_i64(n as i64, wp).sqr());
-    let eight_x = xb.mul_i64(8);
-    let mut term = Ball::one(wp); // a_k x^-k
-    let mut p = Ball::one(wp);
-    let mut q = Ball::zero(wp);
-    let mut prev_abs = term.abs_upper();
-    let min_k = (n as u64).max(2);
-    let mut k: u64 = 0;
-    loop {
-        // term_{k+1} = term_k (4n^2 - (2k+1)^2) / (8 (k+1) x)
-        let odd = Ball::from_i64(2 * k as i64 + 1, wp).sqr();
-        let factor = four_n2.sub(&odd).div(&eight_x.mul_i64(k as i64 + 1))?;
-        term = term.mul(&factor);
-        k += 1;
-        let t_abs = term.abs_upper();
-        if k >= min_k && k % 2 == 0 {
-            // Candidate stop at K = k: the remainders are bounded by |u_K| (for P)
-            // and |u_{K+1}| (for Q).
-            let next = term.mul(&four_n2.sub(&Ball::from_i64(2 * k as i64 + 1, wp).sqr()).div(&eight_x.mul_i64(k as i64 + 1))?);
-            let n_abs = next.abs_upper();
-            let mut target = Float::with_val(crate::ball::MAG_PREC, 1);
-            target >>= wp as i32;
-            if t_abs <= target && n_abs <= target {
-                p.add_error(&t_abs);
-                q.add_error(&n_abs);
-                break;
-            }
-        }
-        if k > min_k && t_abs > prev_abs {
-            return Ok(None);
-        }
-        prev_abs = t_abs;
-        // (-1)^j a_{2j} x^{-2j} into P (k = 2j), (-1)^j a_{2j+1} x^{-2j-1} into Q (k = 2j+1).
-        let j = k / 2;
-        let signed = if j % 2 == 1 { term.neg() } else { term.clone() };
-        if k % 2 == 0 {
-            p = p.add(&signed);
-        } else {
-            q = q.add(&signed);
-        }
-        if k > 10_000_000 {
-            return Err(Error::NoConvergence { function: "bessel_j (Hankel)", terms: k });
-        }
-    }
-    // w = x - (2n+1) pi / 4
-    let pi = Ball::pi(wp);
-    let w = xb.sub(&pi.mul_i64(2 * n as i64 + 1).mul_pow2(-2));
-    let (s, c) = w.sin_cos();
-    let amp = Ball::from_i64(2, wp).div(&pi.mul(&xb))?.sqrt()?;
-    Ok(Some(amp.mul(&c.mul(&p).sub(&s.mul(&q)))))
-}
 
 /// `J_n(x)` at working precision `wp` (`n >= 0`, `x > 0`), algorithm by [`choose_algorithm`].
 fn bessel_j_positive(n: u64, x: &Float, wp: u32) -> Result<Ball> {
@@ -186,6 +125,35 @@ fn bessel_j_positive(n: u64, x: &Float, wp: u32) -> Result<Ball> {
 pub fn bessel_j_mp(n: i64, x: &Float, prec: u32) -> Result<Ball> {
     crate::error::check_prec(prec)?;
     bessel_j_ball(n, x, prec)
+}
+
+/// Certified `J_n` over a ball of arguments: the result contains `J_n(t)` for
+/// every `t` in `x` (Arb's convention for inputs; see [`crate::ball::Decimal`]
+/// for decimal text).
+///
+/// # Input-radius propagation
+///
+/// `J_n(t) - J_n(m) = int_m^t J_n'(s) ds` and `|J_n'(s)| <= 1` for every real
+/// `s` and integer `n`: `J_n' = (J_{n-1} - J_{n+1}) / 2` [DLMF 10.6.1] and
+/// `|J_k(s)| <= 1` for integer `k` [DLMF 10.14.1, with `J_{-k} = (-1)^k J_k`].
+/// So with `m = mid(x)`, `r = rad(x)`:
+/// `J_n(x) ⊂ [J_n(m) ± (rad_J + r)]`, where `[mid_J ± rad_J]` is the certified
+/// [`bessel_j_mp`] ball at the exact binary number `m`.
+///
+/// The midpoint part meets `rad <= 2^-prec |mid|`; the total does too when
+/// `r` is small against `2^-prec |J_n(m)|` (for an exact `x` the result is
+/// [`bessel_j_mp`]'s). Near a zero of `J_n` the input radius dominates: the
+/// ball is then honest but wide, and callers that know the input exactly
+/// (decimal text) narrow it with [`crate::ball::eval_at_decimals`].
+pub fn bessel_j_ball_mp(n: i64, x: &Ball, prec: u32) -> Result<Ball> {
+    crate::error::check_prec(prec)?;
+    if !x.is_finite() {
+        return Err(Error::NonFinite { what: "x" });
+    }
+    let mut out = bessel_j_ball(n, x.mid(), prec)?;
+    // |J_n'| <= 1 on the whole real line.
+    out.add_error_mag(x.rad_mag());
+    Ok(out)
 }
 
 /// [`bessel_j_mp`] without the user-precision cap (internal callers run at
@@ -248,119 +216,10 @@ pub fn bessel_j_bounded(n: i64, x: f64) -> Result<Bounded> {
     Ok(if negate { Bounded { value: -b.value, err: b.err } } else { b })
 }
 
-/// Certified `J_0(x), ..., J_nmax(x)` at working precision `wp` (`x > 0`).
-///
-/// `J_nmax` and `J_{nmax+1}` are certified by [`bessel_j_mp`]; the rest follows
-/// from the three-term recurrence run downward, `J_{n-1} = (2n/x) J_n - J_{n+1}`
-/// [DLMF 10.6.1], in ball arithmetic, so every entry is certified. Downward is the
-/// stable direction for `n > x` (J_n is the minimal solution there); below `x`
-/// the recurrence is neutral and the radii grow only mildly.
-pub fn bessel_j_sequence_mp(nmax: u64, x: &Float, wp: u32) -> Result<Vec<Ball>> {
-    check_finite(x, "x")?;
-    if *x <= 0 {
-        return Err(Error::Domain { what: "bessel_j_sequence_mp needs x > 0".into() });
-    }
-    let top = i64::try_from(nmax).map_err(|_| Error::Domain { what: "order too large".into() })?;
-    let upper = bessel_j_ball(top + 1, x, wp)?;
-    let lower = bessel_j_ball(top, x, wp)?;
-    let xb = Ball::from_float(x, wp);
-    let mut seq = vec![Ball::zero(wp); nmax as usize + 1];
-    seq[nmax as usize] = lower.clone();
-    let mut next = upper;
-    let mut cur = lower;
-    for n in (1..=nmax).rev() {
-        let prev = cur.mul_i64(2 * n as i64).div(&xb)?.sub(&next);
-        seq[n as usize - 1] = prev.clone();
-        next = cur;
-        cur = prev;
-    }
-    Ok(seq)
-}
-
-/// `J_0(x), ..., J_nmax(x)` by Miller's backward recurrence in double-double,
-/// normalised with `J_0 + 2 sum_k J_{2k} = 1` [DLMF 10.12.4 at theta = 0].
-///
-/// The recurrence starts at an even order `M > max(nmax, |x|)` far enough above
-/// `|x|` that the neglected dominant solution is negligible at double-double
-/// accuracy (see `miller_start`). Absolute error about `1e-30` times
-/// `max_n |J_n(x)| <= 1` (an estimate, not a bound; the golden and cross-check
-/// tests measure it). Returns an empty vector for non-finite `x`.
-pub fn bessel_j_sequence_dd(nmax: usize, x: Dd) -> Vec<Dd> {
-    if !x.hi.is_finite() {
-        return Vec::new();
-    }
-    let mut out = vec![Dd::ZERO; nmax + 1];
-    if x.hi == 0.0 {
-        out[0] = Dd::ONE;
-        return out;
-    }
-    let ax = x.abs();
-    let inv_x = ax.recip();
-    let m = miller_start(nmax, ax.hi);
-    let tiny = 2f64.powi(-900);
-    let rescale = 2f64.powi(-800);
-    let mut j_next = Dd::ZERO; // J_{m+1}
-    let mut j_cur = Dd::from_f64(tiny); // J_m (arbitrary scale)
-    let mut norm = j_cur.mul_f64(2.0); // m is even
-    if m <= nmax {
-        out[m] = j_cur;
-    }
-    for n in (1..=m).rev() {
-        let j_prev = (j_cur * inv_x).mul_f64(2.0 * n as f64) - j_next;
-        j_next = j_cur;
-        j_cur = j_prev;
-        let k = n - 1;
-        if k <= nmax {
-            out[k] = j_cur;
-        }
-        if k % 2 == 0 {
-            norm = norm + if k == 0 { j_cur } else { j_cur.mul_f64(2.0) };
-        }
-        if j_cur.hi.abs() > 1e200 {
-            j_cur = j_cur.mul_f64(rescale);
-            j_next = j_next.mul_f64(rescale);
-            norm = norm.mul_f64(rescale);
-            for v in out.iter_mut().skip(k) {
-                *v = v.mul_f64(rescale);
-            }
-        }
-    }
-    let inv_norm = norm.recip();
-    for (n, v) in out.iter_mut().enumerate() {
-        let scaled = *v * inv_norm;
-        *v = if x.hi < 0.0 && n % 2 == 1 { -scaled } else { scaled };
-    }
-    out
-}
-
-/// `J_0(x), ..., J_nmax(x)` in f64 (the double-double sequence, rounded).
-pub fn bessel_j_sequence(nmax: usize, x: f64) -> Vec<f64> {
-    bessel_j_sequence_dd(nmax, Dd::from_f64(x)).into_iter().map(Dd::to_f64).collect()
-}
-
-/// Starting order of Miller's recurrence: even, above `nmax` and `x` by a margin
-/// that grows like `sqrt(x)` (the transition-region width) plus a constant for
-/// 60 bits of decay [Numerical Recipes 6.5, "IACC" rule, with a wider margin].
-/// Up to this `x` the short Miller margin is enough (see [`miller_start`]).
-const MILLER_SMALL_X: f64 = 400.0;
-
-fn miller_start(nmax: usize, x: f64) -> usize {
-    // Past the turning point n = x the minimal solution decays like
-    // exp(-(2/3) (2 t)^{3/2}), t = (n - x)/x^{1/3} (Airy region, DLMF 10.19.8), and
-    // then factorially: 24 + 6 x^{1/3} orders beyond max(nmax, x) put the
-    // neglected dominant solution below double-double accuracy (checked against
-    // the certified sequence in `double_double_sequence_accuracy`).
-    // For larger x the accumulated rounding of the long recurrence needs more
-    // room; the wider empirical margin `40 + 8 sqrt(base)` is used there.
-    let base = (nmax as f64).max(x);
-    let m = if x <= MILLER_SMALL_X { base + 24.0 + 6.0 * x.cbrt() } else { base + 40.0 + 8.0 * base.sqrt() };
-    let m = m as usize + 2;
-    m + (m % 2)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ball::Dd;
 
     #[test]
     fn small_values() {
@@ -426,3 +285,4 @@ mod tests {
         assert!(bessel_j(MAX_ORDER + 1, 1.0).is_err());
     }
 }
+

@@ -1,0 +1,281 @@
+//! Decimal text as a ball that contains it (Arb's convention for typed inputs).
+//!
+//! # Contract
+//!
+//! A [`Decimal`] is the exact rational number the text denotes
+//! (`[+-]digits[.digits][e[+-]digits]`). [`Decimal::to_ball`] turns it into a
+//! [`Ball`] that **contains** that rational:
+//!
+//! * if the decimal is a binary fraction (its reduced denominator is a power of
+//!   two, e.g. `2.5`, `0.375`, `1e3`), the ball is exact: radius zero, with as
+//!   many midpoint bits as the number needs (at least the requested precision);
+//! * otherwise the midpoint is the rational rounded to nearest at the requested
+//!   precision and the radius is one ulp of it (round to nearest errs by at most
+//!   half an ulp, so the ball contains the decimal).
+//!
+//! A function evaluated on the ball therefore encloses the function **at the
+//! decimal typed**, not at some nearby binary number. Where the function is
+//! steep or vanishes near the decimal, the input radius may dominate; then
+//! [`eval_at_decimals`] re-rounds the decimals at more bits (they are known
+//! exactly) until the answer meets the requested relative precision or a cap.
+//!
+//! Rejected with a typed [`Error`]: empty text, anything that is not a plain
+//! decimal (`nan`, `inf`, hexadecimal, embedded spaces), and exponents beyond
+//! `±MAX_DECIMAL_EXPONENT`.
+
+use rug::float::Round;
+use rug::{Float, Integer, Rational};
+
+use super::{rounded, Ball};
+use crate::error::{Error, Result};
+
+/// Largest |decimal exponent| accepted (after folding in the digits' position).
+/// `1e100000` is far beyond any quantity the crate's functions take; the cap
+/// keeps the exact rational (and its memory) bounded.
+pub const MAX_DECIMAL_EXPONENT: i64 = 100_000;
+
+/// Largest number of mantissa digits accepted (the exact rational's size).
+pub const MAX_DECIMAL_DIGITS: usize = 100_000;
+
+/// A decimal number, held exactly.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Decimal {
+    value: Rational,
+    /// Bits of the odd part of the numerator when the value is a binary fraction.
+    binary_bits: Option<u32>,
+}
+
+impl Decimal {
+    /// Parses `[+-]digits[.digits][(e|E)[+-]digits]` (surrounding whitespace allowed).
+    pub fn parse(text: &str) -> Result<Decimal> {
+        let t = text.trim();
+        let bad = || Error::Domain {
+            what: format!("{t:?} is not a decimal number (expected e.g. 2.5, -0.125, 3.8317e-2)"),
+        };
+        let (neg, rest) = match t.as_bytes().first() {
+            Some(b'-') => (true, &t[1..]),
+            Some(b'+') => (false, &t[1..]),
+            _ => (false, t),
+        };
+        let (mantissa, exp_text) = match rest.find(['e', 'E']) {
+            Some(i) => (&rest[..i], Some(&rest[i + 1..])),
+            None => (rest, None),
+        };
+        let (int_part, frac_part) = match mantissa.find('.') {
+            Some(i) => (&mantissa[..i], &mantissa[i + 1..]),
+            None => (mantissa, ""),
+        };
+        let all_digits = |s: &str| s.bytes().all(|b| b.is_ascii_digit());
+        if (int_part.is_empty() && frac_part.is_empty()) || !all_digits(int_part) || !all_digits(frac_part) {
+            return Err(bad());
+        }
+        if int_part.len() + frac_part.len() > MAX_DECIMAL_DIGITS {
+            return Err(Error::Domain {
+                what: format!("decimal with more than {MAX_DECIMAL_DIGITS} digits; shorten {:.20}...", t),
+            });
+        }
+        let exp: i64 = match exp_text {
+            None => 0,
+            Some(e) => {
+                let digits = e.strip_prefix(['+', '-']).unwrap_or(e);
+                if digits.is_empty() || !all_digits(digits) {
+                    return Err(bad());
+                }
+                // Saturate absurdly long exponents; the range check below rejects them.
+                e.parse::<i64>().unwrap_or(if e.starts_with('-') { i64::MIN / 2 } else { i64::MAX / 2 })
+            }
+        };
+        // value = digits * 10^(exp - len(frac)); leading zeros dropped, trailing zeros
+        // folded into the exponent, so "1000e-3" and "1" are the same number.
+        let all: String = [int_part, frac_part].concat();
+        let significant = all.trim_start_matches('0');
+        if significant.is_empty() {
+            return Ok(Decimal { value: Rational::new(), binary_bits: Some(0) });
+        }
+        let trimmed = significant.trim_end_matches('0');
+        let trailing = (significant.len() - trimmed.len()) as i64;
+        let scale = exp.saturating_sub(frac_part.len() as i64).saturating_add(trailing);
+        let magnitude = scale.saturating_add(trimmed.len() as i64);
+        if !(-MAX_DECIMAL_EXPONENT..=MAX_DECIMAL_EXPONENT).contains(&magnitude) {
+            return Err(Error::Domain {
+                what: format!("{t:?} is out of range: decimal exponents up to ±{MAX_DECIMAL_EXPONENT} are accepted"),
+            });
+        }
+        let mut num = Integer::from_str_radix(trimmed, 10).map_err(|_| bad())?;
+        if neg {
+            num = -num;
+        }
+        let pow10 = Integer::from(Integer::u_pow_u(10, scale.unsigned_abs() as u32));
+        let value = if scale >= 0 { Rational::from(num * pow10) } else { Rational::from((num, pow10)) };
+        let binary_bits = binary_fraction_bits(&value);
+        Ok(Decimal { value, binary_bits })
+    }
+
+    /// The exact value.
+    pub fn as_rational(&self) -> &Rational {
+        &self.value
+    }
+
+    /// Whether the decimal is a binary fraction (exactly representable in binary).
+    pub fn is_binary_fraction(&self) -> bool {
+        self.binary_bits.is_some()
+    }
+
+    /// A ball at `prec` bits that contains the decimal; exact (radius zero) when
+    /// the decimal is a binary fraction, with as many midpoint bits as it needs.
+    pub fn to_ball(&self, prec: u32) -> Ball {
+        let prec = prec.clamp(2, rug::float::prec_max());
+        if let Some(bits) = self.binary_bits {
+            let p = prec.max(bits).max(2);
+            let mid = Float::with_val(p, &self.value);
+            return Ball::from_float(&mid, p);
+        }
+        let (mid, ord) = Float::with_val_round(prec, &self.value, Round::Nearest);
+        rounded(mid, ord)
+    }
+
+    /// The nearest f64 (round to nearest, ties to even).
+    pub fn to_f64(&self) -> f64 {
+        self.value.to_f64()
+    }
+}
+
+/// For a binary fraction `m 2^e` (m odd), the bits of `m`; `None` otherwise.
+fn binary_fraction_bits(q: &Rational) -> Option<u32> {
+    let den = q.denom();
+    if !den.is_power_of_two() {
+        return None;
+    }
+    let num = q.numer().clone().abs();
+    let tz = num.find_one(0).unwrap_or(0);
+    let bits = num.significant_bits() - tz;
+    // A binary fraction with more bits than MPFR allows is treated as a general decimal.
+    (bits <= rug::float::prec_max()).then_some(bits.max(1))
+}
+
+impl Ball {
+    /// The ball at `prec` bits that contains the decimal `text` (see [`Decimal`]).
+    pub fn from_decimal(text: &str, prec: u32) -> Result<Ball> {
+        Ok(Decimal::parse(text)?.to_ball(prec))
+    }
+}
+
+/// Largest midpoint precision [`eval_at_decimals`] rounds decimals to.
+pub const MAX_DECIMAL_INPUT_PREC: u32 = 1 << 16;
+
+/// Evaluates `f` on balls that contain the decimals `args`, so that the result
+/// contains the function at the decimals as typed.
+///
+/// The decimals are rounded at `max(prec, 53) + 64` bits first. When the
+/// result misses `rad <= 2^-prec |mid|` and some input is not exact, the input
+/// precision is raised by the bits missing plus a margin (at least doubled) and
+/// `f` runs again, up to [`MAX_DECIMAL_INPUT_PREC`] bits; past that the last
+/// (enclosing but wider) ball is returned. Binary-fraction inputs are exact from
+/// the start, so for them `f` runs once. Errors of `f` (for example an edge
+/// inside the input ball) are returned as they are.
+pub fn eval_at_decimals<F>(args: &[Decimal], prec: u32, mut f: F) -> Result<Ball>
+where
+    F: FnMut(&[Ball]) -> Result<Ball>,
+{
+    let all_exact = args.iter().all(Decimal::is_binary_fraction);
+    let mut input_prec = prec.max(53) + 64;
+    loop {
+        let balls: Vec<Ball> = args.iter().map(|d| d.to_ball(input_prec)).collect();
+        let out = f(&balls)?;
+        if all_exact || out.meets_rel(prec) || input_prec >= MAX_DECIMAL_INPUT_PREC {
+            return Ok(out);
+        }
+        let achieved = out.rel_accuracy_bits();
+        let missing = if achieved.is_finite() { (prec as f64 - achieved).max(0.0) } else { input_prec as f64 };
+        let next = (input_prec as f64 + missing + 32.0).max(2.0 * input_prec as f64);
+        input_prec = next.min(MAX_DECIMAL_INPUT_PREC as f64) as u32;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(s: &str) -> Rational {
+        Decimal::parse(s).unwrap().as_rational().clone()
+    }
+
+    #[test]
+    fn parses_exactly() {
+        assert_eq!(q("2.5"), Rational::from((5, 2)));
+        assert_eq!(q("-0.125e1"), Rational::from((-5, 4)));
+        assert_eq!(q(".1"), Rational::from((1, 10)));
+        assert_eq!(q("1000E-3"), Rational::from(1));
+        assert_eq!(q("+7."), Rational::from(7));
+        assert_eq!(q("-0"), Rational::new());
+        assert_eq!(q("  3.83170597020751231561  "), Rational::from((383170597020751231561u128, 10u128.pow(20))));
+        for bad in ["", ".", "e5", "1e", "1e+", "nan", "inf", "0x10", "1.2.3", "1 2", "--1", "1e99999999999999999999"] {
+            assert!(Decimal::parse(bad).is_err(), "{bad:?} accepted");
+        }
+        assert!(Decimal::parse("1e100001").is_err());
+        assert!(Decimal::parse("1e-100002").is_err());
+        assert!(Decimal::parse("1e-100000").is_ok());
+    }
+
+    #[test]
+    fn binary_fractions_are_exact() {
+        for (s, bits) in [("2.5", 3), ("0.375", 2), ("1e3", 7), ("-1048576", 1), ("0", 1)] {
+            let d = Decimal::parse(s).unwrap();
+            assert!(d.is_binary_fraction(), "{s}");
+            let b = d.to_ball(2);
+            assert!(b.is_exact(), "{s}: {b:?}");
+            assert!(b.prec() >= bits);
+            assert_eq!(Rational::from(b.mid().to_rational().unwrap()), *d.as_rational());
+        }
+        // 2^-200 + 1, typed in full: exact with 201 midpoint bits at any requested precision.
+        // 2^-200 = 5^200 / 10^200.
+        let five = Integer::from(Integer::u_pow_u(5, 200)).to_string_radix(10);
+        let text = format!("1.{five:0>200}");
+        let d = Decimal::parse(&text).unwrap();
+        let b = d.to_ball(53);
+        assert!(b.is_exact() && b.prec() == 201, "{b:?}");
+    }
+
+    #[test]
+    fn other_decimals_are_contained() {
+        for s in ["0.1", "3.83170597020751231561", "-1e-30", "123456789.123456789123456789", "7e-100000"] {
+            let d = Decimal::parse(s).unwrap();
+            assert!(!d.is_binary_fraction(), "{s}");
+            for prec in [2, 53, 64, 300] {
+                let b = d.to_ball(prec);
+                assert!(!b.is_exact());
+                // |mid - q| <= rad, checked in exact rational arithmetic.
+                let mid = b.mid().to_rational().unwrap();
+                let rad = b.rad().to_rational().unwrap();
+                let diff = Rational::from(&mid - d.as_rational()).abs();
+                assert!(diff <= rad, "{s} at {prec}: {b:?}");
+                assert!(b.meets_rel(prec.saturating_sub(2)));
+            }
+        }
+    }
+
+    #[test]
+    fn refinement_reaches_the_target() {
+        // f(x) = x - 0.1 at the decimal 0.1000000000000000000000001: needs input bits ~ 80 + prec.
+        let d = Decimal::parse("0.1000000000000000000000001").unwrap();
+        let tenth = Decimal::parse("0.1").unwrap();
+        let mut calls = 0;
+        let out = eval_at_decimals(&[d, tenth], 53, |b| {
+            calls += 1;
+            Ok(b[0].sub(&b[1]))
+        })
+        .unwrap();
+        assert!(out.meets_rel(53), "{out:?}");
+        assert!(out.contains(&Float::with_val(200, Float::parse("1e-25").unwrap())));
+        assert!(calls >= 2);
+        // Exact inputs: one call.
+        let mut calls = 0;
+        let two = Decimal::parse("2").unwrap();
+        eval_at_decimals(&[two], 53, |b| {
+            calls += 1;
+            Ok(b[0].clone())
+        })
+        .unwrap();
+        assert_eq!(calls, 1);
+    }
+}
