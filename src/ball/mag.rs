@@ -30,6 +30,13 @@ fn frexp(x: f64) -> (f64, i64) {
     (m, biased - 1022)
 }
 
+/// `2^-d` for `0 <= d <= 60`, exact, built from its bits (`powi` is a libcall).
+#[inline]
+fn pow2_neg(d: i64) -> f64 {
+    debug_assert!((0..=60).contains(&d));
+    f64::from_bits(((1023 - d) as u64) << 52)
+}
+
 impl Mag {
     /// Zero.
     pub const ZERO: Mag = Mag { man: 0.0, exp: 0 };
@@ -146,7 +153,7 @@ impl Mag {
         if d > 60 {
             return Mag::norm(big.man.next_up(), big.exp);
         }
-        let sum = big.man + small.man * 2f64.powi(-(d as i32));
+        let sum = big.man + small.man * pow2_neg(d);
         Mag::norm(sum.next_up(), big.exp)
     }
 
@@ -201,7 +208,7 @@ impl Mag {
         if d > 60 {
             return Mag::norm(self.man.next_down(), self.exp);
         }
-        let diff = self.man - o.man * 2f64.powi(-(d as i32));
+        let diff = self.man - o.man * pow2_neg(d);
         if diff <= 0.0 {
             return Mag::ZERO;
         }

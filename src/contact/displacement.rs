@@ -71,7 +71,7 @@ use crate::special::meijer_g::{
     self, direct_sums_sweep, meijer_g_k_at_one_with, near_one_sums_sweep, meijer_g_k_direct_ball, meijer_g_k_from_sum, meijer_g_k_near_one_ball,
     MeijerConstants,
 };
-use crate::special::hyp1f2::hyp1f2_model_ball;
+use crate::special::hyp1f2::{hyp1f2_model_ball, hyp1f2_model_family};
 use crate::special::pfq::pfq_series;
 use crate::special::{check_finite, exact, exact_add, exact_sub, ziv, ziv_with_floor, DEFAULT_GUARD_BITS};
 
@@ -81,8 +81,9 @@ pub const MAX_WAVE_D: f64 = 1.0e5;
 /// Largest `kmax` accepted by the truncated series.
 pub const MAX_KMAX: u64 = 100_000;
 
-/// Largest `k_top (1 - y)` for the near-one sweep of the Meijer sums in Eq. 12.
-const NEAR_ONE_SWEEP_MAX_KW: f64 = 10.0;
+/// Largest `k_top (1 - y)` for the near-one sweep of the Meijer sums in Eq. 12
+/// (it then runs with `1.45 k_top w <= 58` extra bits).
+const NEAR_ONE_SWEEP_MAX_KW: f64 = 40.0;
 
 /// `1 + 2 ln 2`, rounded up: the largest value of `psi(k+2) - psi(k+1/2)` (at `k = 0`).
 const PSI_DIFF_MAX: f64 = 2.39;
@@ -673,19 +674,28 @@ fn wave_series_wp(kind: SeriesKind, g: &WaveGeometry, kmax: u64, wp: u32) -> Res
     // about e^{k w}).
     let k_top = ((1.5 * g.d.to_f64() + wp as f64 / 8.0 + 20.0) as u64).min(kmax);
     let k_top = u32::try_from(k_top).map_err(|_| Error::Domain { what: "kmax too large".into() })?;
-    let sweep = if kind != SeriesKind::Displacement || g.at_edge {
-        None
-    } else if g.y.upper() <= 0.5 {
-        Some((direct_sums_sweep(k_top, &g.y, wp)?, g.y.ln()?))
-    } else if k_top as f64 * g.w.upper().to_f64() <= NEAR_ONE_SWEEP_MAX_KW {
-        Some((near_one_sums_sweep(k_top, &g.w, wp)?, g.y.ln()?))
-    } else {
-        None
+    let sweep = match choose_meijer_sweep(kind, g, k_top, wp) {
+        MeijerSweep::PerK => None,
+        MeijerSweep::Direct => Some((direct_sums_sweep(k_top, &g.y, wp)?, g.y.ln()?)),
+        MeijerSweep::NearOne { extra_bits } => {
+            // The connection formula's two pieces cancel by about e^{k_top w}:
+            // run the sweep with that many extra bits, then round back.
+            let hp = wp + extra_bits;
+            let (x_hp, a_hp) = (g.x.set_prec(hp), g.a.set_prec(hp));
+            let w_hp = x_hp.sub(&a_hp).mul(&x_hp.add(&a_hp)).div(&x_hp.sqr())?;
+            let sums = near_one_sums_sweep(k_top, &w_hp, hp)?;
+            Some((sums.into_iter().map(|b| b.set_prec(wp)).collect(), g.y.ln()?))
+        }
     };
+    // All 1F2 factors through k_top from one downward recurrence.
+    let family = hyp1f2_model_family(k_top, &g.s, wp)?;
     let mut k: u64 = 0;
     loop {
         let kk = u32::try_from(k).map_err(|_| Error::Domain { what: "kmax too large".into() })?;
-        let f12 = hyp1f2_model_ball(kk, &g.s, wp)?;
+        let f12 = match family.get(kk as usize) {
+            Some(f) => f.clone(),
+            None => hyp1f2_model_ball(kk, &g.s, wp)?,
+        };
         let other = match kind {
             SeriesKind::Displacement => match (&consts, &sweep) {
                 (Some(c), Some((sums, ln_y))) if (kk as usize) < sums.len() => {
@@ -729,6 +739,49 @@ fn wave_series_wp(kind: SeriesKind, g: &WaveGeometry, kmax: u64, wp: u32) -> Res
         k += 1;
     }
     Ok(pre.mul(&sum))
+}
+
+/// How the Meijer sums `S_k(y)`, `k <= k_top`, of one Eq. 12 evaluation are obtained.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum MeijerSweep {
+    /// One `G(k, y)` per term (the gradient series, or the edge `x = a`).
+    PerK,
+    /// [`direct_sums_sweep`]: two series with term ratio `<= y`.
+    Direct,
+    /// [`near_one_sums_sweep`] with `extra_bits` against the cancellation `~ e^{k_top w}`.
+    NearOne { extra_bits: u32 },
+}
+
+/// Picks the cheaper sweep by the number of series terms each needs at `wp` bits.
+///
+/// * direct: the two series have term ratio `<= y`: about `wp ln 2 / (-ln y)` terms each;
+/// * near one: the `2F1(1, k_top+1/2; -1/2; w)` series grows while `w (k_top+n)/n > 1`,
+///   i.e. for about `k_top w/(1-w)` terms, then decays like `w^n`: about
+///   `k_top w/(1-w) + wp ln 2/(-ln w)` terms, and the connection formula loses
+///   `1.45 k_top w` bits, paid as extra precision (`NEAR_ONE_SWEEP_MAX_KW` caps it).
+///
+/// Before this choice, points with `1/2 < y` and `k_top w > 10` (x/a from about 1.1
+/// to 1.4 at abar = 3 and 6) fell back to one Meijer series per k: 50-90 ms at 128 bits.
+fn choose_meijer_sweep(kind: SeriesKind, g: &WaveGeometry, k_top: u32, wp: u32) -> MeijerSweep {
+    if kind != SeriesKind::Displacement || g.at_edge {
+        return MeijerSweep::PerK;
+    }
+    let y = g.y.upper().to_f64();
+    let w = g.w.upper().to_f64().max(f64::MIN_POSITIVE);
+    if !(y < 1.0) {
+        return MeijerSweep::PerK;
+    }
+    let bits = wp as f64 * std::f64::consts::LN_2;
+    let direct_cost = 2.0 * bits / -y.ln();
+    let kw = k_top as f64 * w;
+    if w <= 0.5 && kw <= NEAR_ONE_SWEEP_MAX_KW {
+        let extra = 1.45 * kw;
+        let near_cost = (kw / (1.0 - w) + (bits + extra) / -w.ln()) * (1.0 + extra / wp as f64);
+        if near_cost < direct_cost {
+            return MeijerSweep::NearOne { extra_bits: extra.ceil() as u32 + 8 };
+        }
+    }
+    MeijerSweep::Direct
 }
 
 /// `(A/sqrt(pi)) s` for Eq. 12, `2 A s/x` for Eq. 11b.
