@@ -6,25 +6,26 @@
 //! [DLMF 10.4.1, 10.11.1], so the algorithms see `n >= 0`, `x > 0`.
 //! `J_0(0) = 1`, `J_n(0) = 0` for `n != 0` (exact).
 //!
-//! Two algorithms, chosen by [`choose_algorithm`]:
+//! Methods, one file each, picked by [`choose_algorithm`] from f64 cost estimates
+//! (terms times working bits; the cheaper wins):
 //!
-//! * **Power series** [DLMF 10.2.2]:
+//! * **Power series** (`series.rs`) [DLMF 10.2.2]:
 //!   `J_n(x) = (x/2)^n / n! * 0F1(; n+1; -x^2/4)`, summed by the pFq core with its
 //!   rigorous tail bound. The terms alternate and their magnitudes sum to
 //!   `I_n(x) n! (2/x)^n`, so about `log2(I_n(x)/|J_n(x)|)` bits cancel (roughly
-//!   `1.44 x` for `x > n`); the Ziv loop adds them as guard bits.
-//! * **Hankel asymptotic expansion** for large `x` [DLMF 10.17.3]:
-//!   `J_n(x) = sqrt(2/(pi x)) (cos(w) P - sin(w) Q)`, `w = x - n pi/2 - pi/4`,
-//!   `P = sum_k (-1)^k a_{2k}(n) x^{-2k}`, `Q = sum_k (-1)^k a_{2k+1}(n) x^{-2k-1}`,
-//!   `a_k(n) = prod_{j=1..k} (4n^2 - (2j-1)^2) / (k! 8^k)` [DLMF 10.17.1].
-//!   **Error bound** [DLMF 10.17(iii)]: for `n >= 0`, `x > 0`, the remainder of
-//!   `P` after `l` terms is at most the first neglected term in absolute value
-//!   when `l >= max(n/2 - 1/4, 1)`, and that of `Q` when `l >= max(n/2 - 3/4, 1)`.
-//!   We stop at an even index `K >= max(n, 2)` with `|a_K x^-K|` and
-//!   `|a_{K+1} x^{-K-1}|` below the target and add those two terms to the radii
-//!   of `P` and `Q`. The expansion is tried when
-//!   `x >= n^2/8 + 0.4 wp + 20` (its smallest term is about `e^{-2x}`); if its
-//!   terms stop decreasing before reaching the target, the power series is used.
+//!   `1.44 x` for `x > n`); the Ziv loop adds them as guard bits. Cost about
+//!   `(2 k_peak + wp/8) (wp + loss)`, `k_peak (n + k_peak) = x^2/4`.
+//! * **Hankel's expansion** (`hankel.rs`) [DLMF 10.17.3] with the remainder bound
+//!   of DLMF 10.17(iv) on the real axis, `|R_l| <= 2 |a_l(n) x^-l| exp(|n^2-1/4|/x)`,
+//!   valid for every `l`: it stops as soon as the bound is below `2^-wp` and
+//!   pays `log2 e * n^2/x` bits for the exponential factor. It wins for `x`
+//!   beyond about `n^2/(wp + ...)`; see the file's method block.
+//! * **Recurrence** (`recurrence.rs`): sequences `J_0..J_nmax`, certified
+//!   downward from two certified values, and Miller's algorithm in double-double.
+//!
+//! Not yet here (issue 13 item 4): the Debye and Airy-type uniform expansions
+//! [DLMF 10.19, 10.20] for `n` and `x` both large and comparable
+//! (`n ~ x >= 2000`), where both methods above cost tens of milliseconds.
 //!
 //! # Accuracy
 //!
@@ -34,8 +35,8 @@
 //!   (tolerance 2 ulp; absolute `2^-53` near zeros is therefore also met).
 //!   This path costs a few microseconds; a double-double fast path is future work.
 //!
-//! Domain: `|n| <= 10^4` and `|x| <= 10^4` are tested; larger values work but are slow.
-
+//! Domain: `|n| <= 10^4`, `|x| <= 10^6` are tested (the issue-13 grid); the
+//! power series is refused only past [`MAX_SERIES_GUARD`] guard bits (a time limit).
 
 mod hankel;
 mod recurrence;
@@ -54,38 +55,69 @@ use crate::special::{check_finite, exact, f64_from_mp, ziv};
 /// Largest |n| accepted (the documented domain is |n| <= 1e4; this is the hard cap).
 pub const MAX_ORDER: i64 = 1_000_000;
 
-/// Minimum x for the Hankel expansion, beyond the precision-dependent bound.
-const HANKEL_X_MIN: f64 = 20.0;
-
-/// The two algorithms.
+/// The algorithms.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Algorithm {
     /// Power series through 0F1.
     PowerSeries,
-    /// Hankel's asymptotic expansion with DLMF 10.17(iii) bounds.
+    /// Hankel's asymptotic expansion with the DLMF 10.17(iv) remainder bound.
     Hankel,
+}
+
+/// A choice with its f64 cost estimate and the guard bits it needs.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Choice {
+    pub algorithm: Algorithm,
+    /// Initial guard bits (cancellation and phase reduction).
+    pub guard: u32,
+    /// Estimated work: terms times working bits.
+    pub cost: f64,
+}
+
+/// Bits the power series loses to cancellation, `log2(I_n(x) / |J_n(x)|)`,
+/// estimated as `1.4427 min(x, x^2/(n+1))` (the sum of |terms| is `I_n(x)`
+/// up to the prefactor; `I_n(x) ~ e^x` for `x >> n`).
+fn series_loss_bits(n: u64, x: f64) -> f64 {
+    1.4427 * x.min(x * x / (n as f64 + 1.0))
+}
+
+/// The power series' choice: about `2 k_peak + wp/8` terms, `k_peak` the largest
+/// term's index (`k (n + k) = x^2/4`), at `wp` plus the cancellation bits.
+fn series_choice(n: u64, x: f64, wp: u32) -> Choice {
+    let nf = n as f64;
+    let k_peak = ((nf * nf + x * x).sqrt() - nf) / 2.0;
+    let loss = series_loss_bits(n, x);
+    let terms = 2.0 * k_peak + 10.0 + wp as f64 / 8.0;
+    Choice { algorithm: Algorithm::PowerSeries, guard: (loss + 24.0).min(4.0e6) as u32, cost: terms * (wp as f64 + loss) }
+}
+
+/// Hankel's choice, if its terms reach `2^-wp` before diverging: the peak term
+/// and the phase `x - (2n+1) pi/4` (about `log2(x + n)` bits) are the guard.
+fn hankel_choice(n: u64, x: f64, wp: u32) -> Option<Choice> {
+    let plan = hankel::plan(n, x, wp)?;
+    let guard = plan.peak_bits + (x + n as f64).log2().max(0.0) + 16.0;
+    let cost = plan.terms as f64 * (wp as f64 + guard);
+    Some(Choice { algorithm: Algorithm::Hankel, guard: guard.min(4.0e6) as u32, cost })
+}
+
+/// The chooser: the cheaper of the power series and Hankel's expansion
+/// (`n >= 0`, `x > 0`, working precision `wp`), by the f64 cost estimates.
+pub(crate) fn choose(n: u64, x: f64, wp: u32) -> Choice {
+    let series = series_choice(n, x, wp);
+    match hankel_choice(n, x, wp) {
+        Some(h) if h.cost < series.cost => h,
+        _ => series,
+    }
 }
 
 /// Picks the algorithm for `n >= 0`, `x > 0` at working precision `wp`.
 pub fn choose_algorithm(n: u64, x: f64, wp: u32) -> Algorithm {
-    let nf = n as f64;
-    if x >= HANKEL_X_MIN && x >= nf * nf / 8.0 + 0.4 * wp as f64 + 20.0 {
-        Algorithm::Hankel
-    } else {
-        Algorithm::PowerSeries
-    }
+    choose(n, x, wp).algorithm
 }
 
-/// Initial guard bits at output precision `prec`: for the Hankel expansion the
-/// bits lost to `cos(w) P - sin(w) Q` (about `log2 x`), for the power series an
-/// estimate of `log2(I_n(x)/|J_n(x)|)`.
+/// Initial guard bits at output precision `prec` (from the chosen algorithm).
 fn initial_guard(n: u64, x: f64, prec: u32) -> u32 {
-    if choose_algorithm(n, x, prec + 32) == Algorithm::Hankel {
-        return 32 + x.log2().max(0.0) as u32;
-    }
-    let nf = n as f64;
-    let est = 1.4427 * x.min(x * x / (nf + 1.0));
-    (est + 24.0).min(4.0e6) as u32
+    choose(n, x, prec + 32).guard
 }
 
 fn validate(n: i64, x: &Float) -> Result<()> {
@@ -180,8 +212,9 @@ fn check_cost(m: u64, x: f64, prec: u32) -> Result<u32> {
     if guard > MAX_SERIES_GUARD {
         return Err(Error::Domain {
             what: format!(
-                "J_n(x) with n = {m}, x = {x:e} would need ~{guard} guard bits in the power series; \
-                 the supported domain is |n|, |x| <= 1e4 (and Hankel's expansion for larger x)"
+                "J_n(x) with n = {m}, x = {x:e} would need ~{guard} guard bits and as many terms \
+                 (minutes of work) in the power series, and Hankel's expansion does not reach the \
+                 precision there; n ~ x this large needs the uniform expansion (not yet implemented)"
             ),
         });
     }
