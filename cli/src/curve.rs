@@ -26,11 +26,11 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use rayon::prelude::*;
-use serde::Serialize;
 
 use maugis::contact::curve::{load_area_curve, Curve, CurveOptions, JumpDirection, TurningKind};
+use maugis::contact::summary::{CurveSummary, RunParams, RunSummary};
 use maugis::contact::limits::{jkr_envelope, jkr_load, mdmt_envelope, mdmt_load};
-use maugis::contact::model::{Params, GAP_TOL, TRACTION_TOL};
+use maugis::contact::model::Params;
 
 use crate::args::{self, num, short, FIG4C_ALPHA, FIG4C_BETA};
 use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
@@ -83,181 +83,16 @@ pub struct Run {
     pub curve: Curve,
 }
 
-// ---------------------------------------------------------------- JSON schema
+// ---------------------------------------------------------------- output
 
-/// `--format json` output.
-#[derive(Serialize)]
-pub struct JsonOut {
-    params: JsonParams,
-    curves: Vec<JsonCurve>,
-}
-
-#[derive(Serialize)]
-struct JsonParams {
-    alpha: f64,
-    beta: f64,
-    amax: f64,
-    points: usize,
-}
-
-#[derive(Serialize)]
-struct JsonCurve {
-    lambda: f64,
-    points: Vec<JsonPoint>,
-    turning_points: Vec<JsonTurning>,
-    jumps: Vec<JsonJump>,
-    pull_off: Option<JsonPullOff>,
-}
-
-#[derive(Serialize)]
-struct JsonPoint {
-    abar: f64,
-    m: f64,
-    load: f64,
-    valid: bool,
-    min_strip_gap: f64,
-    max_traction: f64,
-}
-
-#[derive(Serialize)]
-struct JsonTurning {
-    abar: f64,
-    load: f64,
-    kind: &'static str,
-}
-
-#[derive(Serialize)]
-struct JsonJump {
-    direction: &'static str,
-    from_abar: f64,
-    to_abar: f64,
-    load: f64,
-}
-
-#[derive(Serialize)]
-struct JsonPullOff {
-    abar: f64,
-    load: f64,
-}
-
-/// `summary.json`.
-#[derive(Serialize)]
-struct Summary {
-    params: JsonParams,
-    /// The lambda used for the M-DMT limit and envelope in the plot.
-    mdmt_limit_lambda: f64,
-    curves: Vec<SummaryCurve>,
-}
-
-#[derive(Serialize)]
-struct SummaryCurve {
-    lambda: f64,
-    csv: String,
-    points: usize,
-    invalid_points: usize,
-    invalid_stretches: Vec<Stretch>,
-    turning_points: Vec<JsonTurning>,
-    jumps: Vec<JsonJump>,
-    pull_off: Option<JsonPullOff>,
-    hysteresis_loops: Vec<JsonLoop>,
-}
-
-/// A hysteresis loop in `summary.json`.
-#[derive(Serialize)]
-struct JsonLoop {
-    loading_from_abar: f64,
-    loading_to_abar: f64,
-    loading_load: f64,
-    unloading_from_abar: f64,
-    unloading_to_abar: f64,
-    unloading_load: f64,
-    /// Area enclosed in the (abar, Lbar) plane.
-    area: f64,
-}
-
-fn loops_json(c: &Curve) -> Vec<JsonLoop> {
-    c.loops
-        .iter()
-        .map(|l| JsonLoop {
-            loading_from_abar: l.loading.from_abar,
-            loading_to_abar: l.loading.to_abar,
-            loading_load: l.loading.load,
-            unloading_from_abar: l.unloading.from_abar,
-            unloading_to_abar: l.unloading.to_abar,
-            unloading_load: l.unloading.load,
-            area: l.area,
-        })
-        .collect()
-}
-
-/// A run of consecutive invalid grid states.
-#[derive(Serialize, Clone, Debug, PartialEq)]
-pub struct Stretch {
-    /// First invalid grid point.
-    pub from_abar: f64,
-    /// Last invalid grid point.
-    pub to_abar: f64,
-    /// Number of grid points.
-    pub points: usize,
-    /// Some state has `pbar > 1` inside the contact.
-    pub cavitation: bool,
-    /// Some state has a negative gap in the adhesive strip.
-    pub interpenetration: bool,
-}
-
-fn kind_str(k: TurningKind) -> &'static str {
-    match k {
-        TurningKind::Max => "max",
-        TurningKind::Min => "min",
+/// The run's summary: the library's schema ([`RunSummary`]), the same object
+/// for `summary.json` and `--format json`.
+fn summary(runs: &[Run], alpha: f64, beta: f64, opts: CurveOptions, mdmt_lambda: f64, with_csv: bool) -> RunSummary {
+    RunSummary {
+        params: RunParams::new(alpha, beta, opts),
+        mdmt_limit_lambda: mdmt_lambda,
+        curves: runs.iter().map(|r| CurveSummary::new(&r.curve, with_csv.then(|| csv_name(r.lambda)))).collect(),
     }
-}
-
-fn direction_str(d: JumpDirection) -> &'static str {
-    match d {
-        JumpDirection::Loading => "loading",
-        JumpDirection::Unloading => "unloading",
-    }
-}
-
-fn turning_json(c: &Curve) -> Vec<JsonTurning> {
-    c.turning_points.iter().map(|t| JsonTurning { abar: t.abar, load: t.load, kind: kind_str(t.kind) }).collect()
-}
-
-fn jumps_json(c: &Curve) -> Vec<JsonJump> {
-    c.jumps
-        .iter()
-        .map(|j| JsonJump { direction: direction_str(j.direction), from_abar: j.from_abar, to_abar: j.to_abar, load: j.load })
-        .collect()
-}
-
-fn pull_off_json(c: &Curve) -> Option<JsonPullOff> {
-    c.pull_off.map(|(abar, load)| JsonPullOff { abar, load })
-}
-
-/// The invalid stretches of a curve.
-pub fn invalid_stretches(c: &Curve) -> Vec<Stretch> {
-    let mut out: Vec<Stretch> = Vec::new();
-    let mut open = false;
-    for p in &c.points {
-        let v = &p.validity;
-        if v.valid {
-            open = false;
-            continue;
-        }
-        let cav = v.max_traction > 1.0 + TRACTION_TOL;
-        let pen = v.min_strip_gap < -GAP_TOL;
-        match out.last_mut() {
-            Some(s) if open => {
-                s.to_abar = p.abar;
-                s.points += 1;
-                s.cavitation |= cav;
-                s.interpenetration |= pen;
-            }
-            _ => out.push(Stretch { from_abar: p.abar, to_abar: p.abar, points: 1, cavitation: cav, interpenetration: pen }),
-        }
-        open = true;
-    }
-    out
 }
 
 /// The CSV file name of a curve.
@@ -265,15 +100,25 @@ pub fn csv_name(lambda: f64) -> String {
     format!("curve_lambda_{lambda}.csv")
 }
 
+/// The grid states of a curve as CSV; every row carries the curve's parameters.
 fn curve_csv(c: &Curve) -> Result<String, String> {
     let mut w = csv::Writer::from_writer(Vec::new());
     let err = |e: csv::Error| format!("could not format CSV: {e}");
-    w.write_record(["abar", "m", "load", "valid", "min_strip_gap", "max_traction"]).map_err(err)?;
+    w.write_record([
+        "lambda", "alpha", "beta", "abar", "m", "m_minus_1", "load", "approach", "valid", "min_strip_gap", "max_traction",
+    ])
+    .map_err(err)?;
+    let Params { lambda, alpha, beta } = c.params;
     for p in &c.points {
         w.write_record([
+            lambda.to_string(),
+            alpha.to_string(),
+            beta.to_string(),
             p.abar.to_string(),
             p.m.to_string(),
+            p.m_minus_1.to_string(),
             p.load.to_string(),
+            p.approach.to_string(),
             p.validity.valid.to_string(),
             p.validity.min_strip_gap.to_string(),
             p.validity.max_traction.to_string(),
@@ -332,67 +177,25 @@ pub fn run(a: CurveArgs) -> Result<(), String> {
     if a.format == CurveFormat::Files {
         check_out_dir(&a.out)?;
     }
-    let opts = CurveOptions { amax: a.amax, points: a.points };
-    let params = || JsonParams { alpha, beta, amax: a.amax, points: a.points };
+    let opts = CurveOptions { amax: a.amax, points: a.points, ..CurveOptions::default() };
 
     let t0 = Instant::now();
     let runs = compute(&lambdas, alpha, beta, opts)?;
     let elapsed = t0.elapsed();
+    let mdmt_lambda = lambdas.first().copied().unwrap_or(0.1);
 
     if a.format == CurveFormat::Json {
-        let out = JsonOut {
-            params: params(),
-            curves: runs
-                .iter()
-                .map(|r| JsonCurve {
-                    lambda: r.lambda,
-                    points: r
-                        .curve
-                        .points
-                        .iter()
-                        .map(|p| JsonPoint {
-                            abar: p.abar,
-                            m: p.m,
-                            load: p.load,
-                            valid: p.validity.valid,
-                            min_strip_gap: p.validity.min_strip_gap,
-                            max_traction: p.validity.max_traction,
-                        })
-                        .collect(),
-                    turning_points: turning_json(&r.curve),
-                    jumps: jumps_json(&r.curve),
-                    pull_off: pull_off_json(&r.curve),
-                })
-                .collect(),
-        };
+        let out = summary(&runs, alpha, beta, opts, mdmt_lambda, false);
         let text = serde_json::to_string(&out).map_err(|e| format!("could not format JSON: {e}"))?;
         return print_stdout(&format!("{text}\n"));
     }
 
     // Every file is rendered in memory before anything touches the disk.
-    let mdmt_lambda = lambdas.first().copied().unwrap_or(0.1);
     let mut files = Vec::new();
     for r in &runs {
         files.push(OutFile::text(csv_name(r.lambda), curve_csv(&r.curve)?));
     }
-    let summary = Summary {
-        params: params(),
-        mdmt_limit_lambda: mdmt_lambda,
-        curves: runs
-            .iter()
-            .map(|r| SummaryCurve {
-                lambda: r.lambda,
-                csv: csv_name(r.lambda),
-                points: r.curve.points.len(),
-                invalid_points: r.curve.points.iter().filter(|p| !p.validity.valid).count(),
-                invalid_stretches: invalid_stretches(&r.curve),
-                turning_points: turning_json(&r.curve),
-                jumps: jumps_json(&r.curve),
-                pull_off: pull_off_json(&r.curve),
-                hysteresis_loops: loops_json(&r.curve),
-            })
-            .collect(),
-    };
+    let summary = summary(&runs, alpha, beta, opts, mdmt_lambda, true);
     let mut text = serde_json::to_string_pretty(&summary).map_err(|e| format!("could not format JSON: {e}"))?;
     text.push('\n');
     files.push(OutFile::text("summary.json", text));
@@ -418,7 +221,7 @@ pub fn run(a: CurveArgs) -> Result<(), String> {
         let nload = c.jumps.iter().filter(|j| j.direction == JumpDirection::Loading).count();
         let nunload = c.jumps.len() - nload;
         let po = match c.pull_off {
-            Some((ab, l)) => format!("({ab:.4}, {l:.4})"),
+            Some(p) => format!("({:.4}, {:.4}){}", p.abar, p.load, if p.validity.valid { "" } else { " invalid" }),
             None => "none".into(),
         };
         let inv = c.points.iter().filter(|p| !p.validity.valid).count();
@@ -584,23 +387,24 @@ pub fn load_area_svg(runs: &[Run], alpha: f64, beta: f64, amax: f64, mdmt_lambda
         for (i, r) in runs.iter().enumerate() {
             let col = colour(i);
             for j in &r.curve.jumps {
-                if !inside(j.load) {
+                let (from_abar, to_abar, load) = (j.from.abar, j.to.abar, j.from.load);
+                if !inside(load) {
                     continue;
                 }
-                let ok = valid_at(&r.curve, j.from_abar);
+                let ok = j.from.valid;
                 let (line, head) = if ok {
                     (col.stroke_width(2), col.filled())
                 } else {
                     (ShapeStyle { color: col.mix(0.5), filled: false, stroke_width: 1 }, col.mix(0.5).filled())
                 };
                 chart
-                    .draw_series(LineSeries::new(vec![(j.from_abar, j.load), (j.to_abar, j.load)], line))
+                    .draw_series(LineSeries::new(vec![(from_abar, load), (to_abar, load)], line))
                     .map_err(plot_err)?;
-                let right = j.to_abar > j.from_abar;
+                let right = to_abar > from_abar;
                 let (len, half) = if ok { (12, 5) } else { (9, 4) };
                 chart
                     .draw_series(std::iter::once(
-                        EmptyElement::at((j.to_abar, j.load)) + Polygon::new(arrow_head(right, len, half), head),
+                        EmptyElement::at((to_abar, load)) + Polygon::new(arrow_head(right, len, half), head),
                     ))
                     .map_err(plot_err)?;
             }
@@ -631,9 +435,10 @@ pub fn load_area_svg(runs: &[Run], alpha: f64, beta: f64, amax: f64, mdmt_lambda
                     ))
                     .map_err(plot_err)?;
             }
-            if let Some((ab, l)) = r.curve.pull_off {
+            if let Some(po) = r.curve.pull_off {
+                let (ab, l) = (po.abar, po.load);
                 if inside(l) {
-                    let (fill, outline) = if valid_at(&r.curve, ab) {
+                    let (fill, outline) = if po.validity.valid {
                         (col.filled(), BLACK.stroke_width(2))
                     } else {
                         (WHITE.filled(), col.stroke_width(2))

@@ -20,7 +20,7 @@ use plotters::prelude::*;
 use serde::Serialize;
 
 use maugis::contact::displacement::profile_depth;
-use maugis::contact::model::{ContactSize, Params, Validity, GAP_TOL, TRACTION_TOL};
+use maugis::contact::model::{ContactSize, Params, Validity};
 
 use crate::args::{self, num, short, FIG4C_ALPHA, FIG4C_BETA};
 use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
@@ -89,8 +89,7 @@ struct ProfileJson {
 
 /// A one-line description of the validity of a state.
 fn validity_text(v: &Validity) -> String {
-    let cav = v.max_traction > 1.0 + TRACTION_TOL;
-    let pen = v.min_strip_gap < -GAP_TOL;
+    let (cav, pen) = (v.cavitation, v.interpenetration);
     match (cav, pen) {
         (false, false) => format!(
             "valid (max p̄ = {:.4} ≤ 1, min strip gap = {:.3e} ≥ 0)",
@@ -118,9 +117,10 @@ pub fn run(a: ProfileArgs) -> Result<(), String> {
         check_out_dir(&a.out)?;
     }
     let cs = ContactSize::new(params, a.abar).map_err(|e| e.to_string())?;
-    let m = cs.solve_m().map_err(|e| format!("abar = {}: {e}", num(a.abar)))?;
-    let load = cs.load(m);
-    let validity = cs.validity(m).map_err(|e| format!("abar = {}: {e}", num(a.abar)))?;
+    let strip = cs.solve_strip().map_err(|e| format!("abar = {}: {e}", num(a.abar)))?;
+    let m = strip.m();
+    let load = cs.load_at(strip);
+    let validity = cs.validity_at(strip).map_err(|e| format!("abar = {}: {e}", num(a.abar)))?;
     let c = m * a.abar;
     let xmax = 1.5 * c;
 
@@ -135,9 +135,9 @@ pub fn run(a: ProfileArgs) -> Result<(), String> {
         let e = |e: maugis::Error| format!("at xbar = {}: {e}", num(x));
         samples.push(Sample {
             xbar: x,
-            pbar: cs.traction(m, x),
-            ubar: cs.displacement(m, x).map_err(e)?,
-            gbar: cs.gap(m, x).map_err(e)?,
+            pbar: cs.traction_at(strip, x),
+            ubar: cs.displacement_at(strip, x).map_err(e)?,
+            gbar: cs.gap_at(strip, x).map_err(e)?,
             hbar: profile_depth(1.0, alpha, beta, x).map_err(e)?,
         });
     }

@@ -86,9 +86,9 @@ fn curve_json_follows_the_schema() {
     let text = stdout(&o);
     assert_eq!(text.trim().lines().count(), 1, "one JSON object on one line");
     let v: Value = serde_json::from_str(text.trim()).expect("valid JSON");
-    assert_eq!(keys(&v), sorted(&["params", "curves"]));
+    assert_eq!(keys(&v), sorted(&["params", "mdmt_limit_lambda", "curves"]));
     let p = &v["params"];
-    assert_eq!(keys(p), sorted(&["alpha", "beta", "amax", "points"]));
+    assert_eq!(keys(p), sorted(&["alpha", "beta", "amax", "points", "datum"]));
     assert!((p["alpha"].as_f64().unwrap() - 2f64.sqrt() / 4.0).abs() < 1e-15);
     assert_eq!(p["beta"].as_f64(), Some(1.125));
     assert_eq!(p["amax"].as_f64(), Some(6.0));
@@ -101,48 +101,70 @@ fn curve_json_follows_the_schema() {
     let mut n_turning = 0;
     let mut n_jumps = 0;
     for c in curves {
-        assert_eq!(keys(c), sorted(&["lambda", "points", "turning_points", "jumps", "pull_off"]));
+        assert_eq!(
+            keys(c),
+            sorted(&[
+                "lambda", "alpha", "beta", "csv", "invalid_points", "invalid_stretches", "turning_points", "jumps", "loops",
+                "pull_off", "valid_pull_off", "dissipation", "load_control", "displacement_control", "points",
+            ])
+        );
+        assert!(c["csv"].is_null());
         let pts = c["points"].as_array().unwrap();
         assert_eq!(pts.len(), 60);
         let mut prev = 0.0;
         for q in pts {
-            assert_eq!(keys(q), sorted(&["abar", "m", "load", "valid", "min_strip_gap", "max_traction"]));
-            for k in ["abar", "m", "load", "min_strip_gap", "max_traction"] {
+            assert_eq!(keys(q), sorted(&["abar", "m", "m_minus_1", "load", "approach", "validity"]));
+            for k in ["abar", "m", "m_minus_1", "load", "approach"] {
                 assert!(is_num(&q[k]), "{k} = {}", q[k]);
             }
-            assert!(q["valid"].is_boolean());
+            assert!(q["validity"]["valid"].is_boolean());
             let a = q["abar"].as_f64().unwrap();
             assert!(a > prev && a <= 6.0 + 1e-12);
             prev = a;
-            assert!(q["m"].as_f64().unwrap() > 1.0);
+            assert!(q["m_minus_1"].as_f64().unwrap() > 0.0);
         }
         for t in c["turning_points"].as_array().unwrap() {
             assert_eq!(keys(t), sorted(&["abar", "load", "kind"]));
-            assert!(is_num(&t["abar"]) && is_num(&t["load"]));
             let k = t["kind"].as_str().unwrap();
             assert!(k == "max" || k == "min", "{k}");
             n_turning += 1;
         }
         for j in c["jumps"].as_array().unwrap() {
-            assert_eq!(keys(j), sorted(&["direction", "from_abar", "to_abar", "load"]));
-            for k in ["from_abar", "to_abar", "load"] {
-                assert!(is_num(&j[k]));
-            }
+            assert_eq!(keys(j), sorted(&["direction", "from", "to", "from_turning_point"]));
             let d = j["direction"].as_str().unwrap();
             assert!(d == "loading" || d == "unloading", "{d}");
-            let (from, to) = (j["from_abar"].as_f64().unwrap(), j["to_abar"].as_f64().unwrap());
+            let (from, to) = (j["from"]["abar"].as_f64().unwrap(), j["to"]["abar"].as_f64().unwrap());
             if d == "loading" {
                 assert!(to > from);
             } else {
                 assert!(to < from);
             }
+            assert_eq!(j["from"]["load"].as_f64(), j["to"]["load"].as_f64(), "a load-control jump keeps the load");
             n_jumps += 1;
         }
+        let d = &c["dissipation"];
+        assert!(is_num(&d["load_control"]) && is_num(&d["displacement_control"]));
         let po = &c["pull_off"];
-        assert!(po.is_null() || (keys(po) == sorted(&["abar", "load"]) && is_num(&po["abar"]) && is_num(&po["load"])));
+        assert!(is_num(&po["abar"]) && is_num(&po["load"]) && po["validity"]["valid"].is_boolean());
     }
-    // lambda = 6 on this roughness is JKR-like with roughness-induced instabilities
     assert!(n_turning > 0 && n_jumps > 0);
+}
+
+/// summary.json and --format json are the same object (up to the CSV names).
+#[test]
+fn summary_json_equals_format_json() {
+    let dir = TempPath::new("same");
+    let args = ["curve", "--lambda", "3", "--points", "30"];
+    let o = maugis(&[&args[..], &["--format", "json"]].concat());
+    assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(&o));
+    let mut from_stdout: Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    let o = maugis(&[&args[..], &["--out", dir.str()]].concat());
+    assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(&o));
+    let mut from_file: Value = serde_json::from_str(&std::fs::read_to_string(dir.path().join("summary.json")).unwrap()).unwrap();
+    assert_eq!(from_file["curves"][0]["csv"].as_str(), Some("curve_lambda_3.csv"));
+    from_file["curves"][0]["csv"] = Value::Null;
+    from_stdout["curves"][0]["csv"] = Value::Null;
+    assert_eq!(from_file, from_stdout);
 }
 
 #[test]
@@ -157,12 +179,15 @@ fn curve_writes_csv_summary_and_svg() {
     for (lambda, name) in [(0.5, "curve_lambda_0.5.csv"), (3.0, "curve_lambda_3.csv")] {
         let mut r = csv::Reader::from_path(dir.path().join(name)).expect(name);
         let header: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
-        assert_eq!(header, ["abar", "m", "load", "valid", "min_strip_gap", "max_traction"]);
+        assert_eq!(
+            header,
+            ["lambda", "alpha", "beta", "abar", "m", "m_minus_1", "load", "approach", "valid", "min_strip_gap", "max_traction"]
+        );
         let rows: Vec<csv::StringRecord> = r.records().map(|x| x.unwrap()).collect();
         assert_eq!(rows.len(), 40, "lambda {lambda}");
         for row in &rows {
             for (i, field) in row.iter().enumerate() {
-                if i == 3 {
+                if i == 8 {
                     assert!(field == "true" || field == "false");
                 } else {
                     field.parse::<f64>().unwrap_or_else(|_| panic!("{field}"));
@@ -171,9 +196,10 @@ fn curve_writes_csv_summary_and_svg() {
         }
         // agrees with the library
         let params = maugis::contact::model::Params::new(lambda, 2f64.sqrt() / 4.0, 1.125).unwrap();
-        let a: f64 = rows[10][0].parse().unwrap();
+        assert_eq!(rows[10][0].parse::<f64>().unwrap(), lambda, "every row carries lambda");
+        let a: f64 = rows[10][3].parse().unwrap();
         let s = maugis::contact::curve::state(params, a).unwrap();
-        let load: f64 = rows[10][2].parse().unwrap();
+        let load: f64 = rows[10][6].parse().unwrap();
         assert!((load - s.load).abs() <= 1e-12 * (1.0 + s.load.abs()), "{load} vs {}", s.load);
     }
 

@@ -1,40 +1,52 @@
-//! The load-area response `Lbar(abar)` and its stability under load control.
+//! The load-area response `Lbar(abar)`, its approach `Delta-bar(abar)` and its
+//! stability under load and displacement control.
 //!
 //! * [`load_area_curve`] solves the model on a grid of contact sizes (default
-//!   `abar in (0, 6]`, 600 points), with the validity flags of every state.
-//! * Turning points (`dLbar/dabar = 0`) are located on the grid and refined with
-//!   Brent's method on the derivative (central differences of the solved load,
-//!   step `1e-6`), to about `1e-9` in `abar`.
-//! * Jumps under load control: **loading** goes from each local maximum to the
-//!   next larger `abar` with the same load; **unloading** goes from each local
-//!   minimum to the next smaller `abar` with the same load, or out of contact
-//!   (pull-off) when there is none. Jump targets are refined with Brent's method
-//!   on `Lbar(abar) - L_turn`.
-//! * The pull-off point is the first local minimum met when unloading from the
-//!   largest contact that has no unloading target; if the curve has no such
-//!   minimum (M-DMT-like monotone curves), it is the smallest computed contact.
+//!   `abar in (0, 6]`, 600 points), with the approach and the validity flags of
+//!   every state.
+//! * Turning points of the load (`dLbar/dabar = 0`) are located on the grid and
+//!   refined with Brent's method on the derivative (central differences of the
+//!   solved load, step `1e-6`), to about `1e-9` in `abar`.
+//! * The quasi-static paths, the jumps they meet, the hysteresis loops and the
+//!   dissipation are built by [`crate::contact::paths`], under load control
+//!   ([`Curve::load_control`]) and under displacement control
+//!   ([`Curve::displacement_control`]). [`Curve::jumps`] and [`Curve::loops`]
+//!   are those of load control: only the jumps a path meets.
+//! * The pull-off state is the end of the unloading path under load control,
+//!   refined (golden section on the solved load), with the validity of the
+//!   refined state itself; [`Curve::valid_pull_off`] is the most tensile valid
+//!   state the unloading path visits.
 
 #[cfg(feature = "parallel")]
 use rayon::prelude::*;
 
 use crate::contact::model::{brent, ContactSize, Params, Validity};
+pub use crate::contact::paths::{HysteresisLoop, Jump, JumpDirection};
+use crate::contact::paths::{control_paths, ControlPaths, Driver, PathNode};
 use crate::error::{Error, Result};
 
 /// One solved state.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct CurvePoint {
     /// Contact half-width.
     pub abar: f64,
-    /// Strip ratio `c/a`.
+    /// Strip ratio `c/a` (rounded; see `m_minus_1`).
     pub m: f64,
+    /// `m - 1` to full relative accuracy.
+    pub m_minus_1: f64,
     /// Load, Eq. 14.
     pub load: f64,
+    /// Approach from a datum at infinity ([`ContactSize::approach_at`]).
+    pub approach: f64,
     /// Validity diagnostics.
     pub validity: Validity,
 }
 
 /// Maximum or minimum of the load.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum TurningKind {
     /// Local maximum of `Lbar(abar)`.
     Max,
@@ -44,6 +56,7 @@ pub enum TurningKind {
 
 /// A turning point `dLbar/dabar = 0`.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct TurningPoint {
     /// Where.
     pub abar: f64,
@@ -53,44 +66,21 @@ pub struct TurningPoint {
     pub kind: TurningKind,
 }
 
-/// Direction of a jump.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum JumpDirection {
-    /// Increasing load: from a maximum to a larger contact.
-    Loading,
-    /// Decreasing load: from a minimum to a smaller contact.
-    Unloading,
-}
-
-/// A jump at constant load.
+/// The pull-off state: the end of the unloading path under load control.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Jump {
-    /// Direction.
-    pub direction: JumpDirection,
-    /// From this contact size (a turning point).
-    pub from_abar: f64,
-    /// To this one (on the curve, same load).
-    pub to_abar: f64,
-    /// The load.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct PullOff {
+    /// Contact half-width.
+    pub abar: f64,
+    /// The (most tensile) load.
     pub load: f64,
-}
-
-/// A hysteresis loop under load control: a loading jump (from a load maximum
-/// to a larger contact) and the unloading jump that returns past it (from a
-/// load minimum to a smaller contact). Following the loop, the contact climbs
-/// the curve from `unloading.to_abar` to `loading.from_abar`, jumps out to
-/// `loading.to_abar`, descends the curve back to `unloading.from_abar` and jumps
-/// in to `unloading.to_abar`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct HysteresisLoop {
-    /// The loading jump.
-    pub loading: Jump,
-    /// The unloading jump.
-    pub unloading: Jump,
-    /// Area enclosed in the `(abar, Lbar)` plane (shoelace formula over the
-    /// grid states on both stable branches and the two jumps). A measure of the
-    /// loop's size, not the dissipated energy (that needs the approach `delta`).
-    pub area: f64,
+    /// The approach there.
+    pub approach: f64,
+    /// Validity of this state (computed there, not read off the grid).
+    pub validity: Validity,
+    /// The unloading path reached the smallest grid contact without meeting a
+    /// minimum: the load keeps falling towards smaller contacts.
+    pub at_grid_edge: bool,
 }
 
 /// A whole load-area response.
@@ -100,42 +90,63 @@ pub struct Curve {
     pub params: Params,
     /// The grid states.
     pub points: Vec<CurvePoint>,
-    /// Refined turning points, by increasing `abar`.
+    /// Refined turning points of the load, by increasing `abar`.
     pub turning_points: Vec<TurningPoint>,
-    /// Jumps under load control.
+    /// Jumps under load control (only those the paths meet).
     pub jumps: Vec<Jump>,
-    /// The pull-off state `(abar, load)`.
-    pub pull_off: Option<(f64, f64)>,
-    /// Hysteresis loops formed by pairs of loading and unloading jumps.
+    /// The pull-off state.
+    pub pull_off: Option<PullOff>,
+    /// The most tensile valid state on the unloading path under load control.
+    pub valid_pull_off: Option<PathNode>,
+    /// Hysteresis loops under load control, each counted once.
     pub loops: Vec<HysteresisLoop>,
+    /// Paths, jumps, loops and dissipation under load control.
+    pub load_control: ControlPaths,
+    /// The same under displacement control.
+    pub displacement_control: ControlPaths,
 }
 
 /// Grid options.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct CurveOptions {
     /// Largest contact size.
     pub amax: f64,
     /// Number of grid points, `abar_i = amax i / points`, `i = 1..=points`.
     pub points: usize,
+    /// Where the machine grips the body under displacement control (units of
+    /// `l_h`, see [`crate::contact::paths::Driver`]); [`DEFAULT_DATUM`] by default.
+    pub datum: f64,
 }
+
+/// Default datum of displacement control: 100 `l_h` (far outside the paper's
+/// contacts, `abar <= 6`).
+pub const DEFAULT_DATUM: f64 = 100.0;
 
 impl Default for CurveOptions {
     fn default() -> Self {
-        CurveOptions { amax: 6.0, points: 600 }
+        CurveOptions { amax: 6.0, points: 600, datum: DEFAULT_DATUM }
     }
 }
 
 /// Solves and checks one state.
 pub fn state(params: Params, abar: f64) -> Result<CurvePoint> {
     let cs = ContactSize::new(params, abar)?;
-    let m = cs.solve_m()?;
-    Ok(CurvePoint { abar, m, load: cs.load(m), validity: cs.validity(m)? })
+    let strip = cs.solve_strip()?;
+    Ok(CurvePoint {
+        abar,
+        m: strip.m(),
+        m_minus_1: strip.m_minus_1(),
+        load: cs.load_at(strip),
+        approach: cs.approach_at(strip),
+        validity: cs.validity_at(strip)?,
+    })
 }
 
 /// The load at `abar` (solving for `m`).
 pub fn load_at(params: Params, abar: f64) -> Result<f64> {
     let cs = ContactSize::new(params, abar)?;
-    Ok(cs.load(cs.solve_m()?))
+    Ok(cs.load_at(cs.solve_strip()?))
 }
 
 /// `dLbar/dabar` by a central difference of solved loads.
@@ -161,39 +172,39 @@ pub fn load_area_curve(params: Params, opts: CurveOptions) -> Result<Curve> {
         .map(|i| state(params, opts.amax * i as f64 / n as f64))
         .collect::<Result<Vec<_>>>()?;
     let turning_points = turning_points(params, &points)?;
-    let (jumps, pull_off) = jumps(params, &points, &turning_points)?;
-    let loops = hysteresis_loops(&points, &jumps);
-    Ok(Curve { params, points, turning_points, jumps, pull_off, loops })
-}
-
-/// Pairs each unloading jump with the loading jump whose maximum lies inside
-/// it and whose target lies beyond it.
-fn hysteresis_loops(pts: &[CurvePoint], jumps: &[Jump]) -> Vec<HysteresisLoop> {
-    let mut out = Vec::new();
-    for u in jumps.iter().filter(|j| j.direction == JumpDirection::Unloading) {
-        let partner = jumps.iter().find(|l| {
-            l.direction == JumpDirection::Loading
-                && l.from_abar > u.to_abar
-                && l.from_abar < u.from_abar
-                && l.to_abar > u.from_abar
-        });
-        if let Some(l) = partner {
-            // polygon: lower branch u.to -> l.from, jump to l.to, upper branch l.to -> u.from, jump back
-            let mut poly: Vec<(f64, f64)> = vec![(u.to_abar, u.load)];
-            poly.extend(pts.iter().filter(|p| p.abar > u.to_abar && p.abar < l.from_abar).map(|p| (p.abar, p.load)));
-            poly.push((l.from_abar, l.load));
-            poly.push((l.to_abar, l.load));
-            poly.extend(pts.iter().rev().filter(|p| p.abar < l.to_abar && p.abar > u.from_abar).map(|p| (p.abar, p.load)));
-            poly.push((u.from_abar, u.load));
-            let twice: f64 = poly
-                .iter()
-                .zip(poly.iter().cycle().skip(1))
-                .map(|(p, q)| p.0 * q.1 - q.0 * p.1)
-                .sum();
-            out.push(HysteresisLoop { loading: *l, unloading: *u, area: 0.5 * twice.abs() });
+    let load_control = control_paths(params, &points, Driver::load())?;
+    let displacement_control = control_paths(params, &points, Driver::displacement(opts.datum)?)?;
+    let pull_off = match load_control.end {
+        Some(end) => {
+            let cs = ContactSize::new(params, end.state.abar)?;
+            let validity = cs.validity_at(cs.solve_strip()?)?;
+            Some(PullOff {
+                abar: end.state.abar,
+                load: end.state.load,
+                approach: end.state.approach,
+                validity,
+                at_grid_edge: end.at_grid_edge,
+            })
         }
-    }
-    out
+        None => None,
+    };
+    let valid_pull_off = load_control
+        .unloading
+        .iter()
+        .filter(|n| n.valid)
+        .min_by(|p, q| p.load.total_cmp(&q.load))
+        .copied();
+    Ok(Curve {
+        params,
+        points,
+        turning_points,
+        jumps: load_control.jumps.clone(),
+        pull_off,
+        valid_pull_off,
+        loops: load_control.loops.clone(),
+        load_control,
+        displacement_control,
+    })
 }
 
 /// Turning points from the grid, refined.
@@ -229,69 +240,3 @@ fn turning_points(params: Params, pts: &[CurvePoint]) -> Result<Vec<TurningPoint
     Ok(out)
 }
 
-/// Jumps and pull-off.
-fn jumps(params: Params, pts: &[CurvePoint], tps: &[TurningPoint]) -> Result<(Vec<Jump>, Option<(f64, f64)>)> {
-    let mut jumps = Vec::new();
-    let mut pull_off = None;
-    let target = |lo: f64, hi: f64, level: f64| -> Result<f64> {
-        let f = |a: f64| load_at(params, a).map(|l| l - level).unwrap_or(f64::NAN);
-        let (flo, fhi) = (f(lo), f(hi));
-        if flo < 0.0 {
-            brent(f, lo, hi, flo, fhi)
-        } else {
-            brent(|a| -f(a), lo, hi, -flo, -fhi)
-        }
-    };
-    for tp in tps {
-        match tp.kind {
-            TurningKind::Max => {
-                // first grid point beyond the max where the load is back at L_max
-                let start = pts.iter().position(|p| p.abar > tp.abar).unwrap_or(pts.len());
-                let mut dipped = false;
-                for j in start..pts.len() {
-                    if pts[j].load < tp.load {
-                        dipped = true;
-                    } else if dipped {
-                        let lo = if j > 0 { pts[j - 1].abar } else { tp.abar };
-                        let to = target(lo, pts[j].abar, tp.load)?;
-                        jumps.push(Jump { direction: JumpDirection::Loading, from_abar: tp.abar, to_abar: to, load: tp.load });
-                        break;
-                    }
-                }
-            }
-            TurningKind::Min => {
-                let end = pts.iter().rposition(|p| p.abar < tp.abar);
-                let mut found = false;
-                if let Some(end) = end {
-                    let mut rose = false;
-                    for j in (0..=end).rev() {
-                        if pts[j].load > tp.load {
-                            rose = true;
-                        } else if rose {
-                            let hi = if j + 1 < pts.len() { pts[j + 1].abar } else { tp.abar };
-                            let to = target(pts[j].abar, hi, tp.load)?;
-                            jumps.push(Jump {
-                                direction: JumpDirection::Unloading,
-                                from_abar: tp.abar,
-                                to_abar: to,
-                                load: tp.load,
-                            });
-                            found = true;
-                            break;
-                        }
-                    }
-                }
-                if !found {
-                    // unloading from the large-contact end meets the rightmost such minimum first
-                    pull_off = Some((tp.abar, tp.load));
-                }
-            }
-        }
-    }
-    if pull_off.is_none() {
-        if let Some(p) = pts.first() {
-            pull_off = Some((p.abar, p.load));
-        }
-    }
-    Ok((jumps, pull_off))
-}

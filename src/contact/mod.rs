@@ -10,7 +10,10 @@
 //!   traction (Eq. 16), displacement, gap and the validity checks.
 //! * [`model_mp`]: the strip residual, a certified enclosure of the strip end `m`
 //!   and the load in arbitrary precision, on request (the solver works in f64).
-//! * [`curve`]: the load-area response, turning points, jumps, pull-off.
+//! * [`curve`]: the load-area response, turning points, pull-off.
+//! * [`paths`]: load- and displacement-controlled paths, the jumps they meet,
+//!   hysteresis loops and the dissipated energy.
+//! * [`summary`]: the output schema of a run (summary.json, `--format json`).
 //! * [`limits`]: Appendix E (JKR, M-DMT) and the Eq. 17 envelope.
 //!
 //! Sign convention (notes/model.md, sec. 1): compressive traction is negative,
@@ -25,3 +28,5 @@ pub mod model;
 pub mod curve;
 pub mod limits;
 pub mod model_mp;
+pub mod paths;
+pub mod summary;

@@ -5,7 +5,7 @@
 //! `F` is evaluated in ball arithmetic (the wave term by the certified Bessel form
 //! of [`crate::contact::displacement`]), so the sign of `F` at a point is proven
 //! when its ball excludes zero. [`solve_m_mp`] starts from the f64 first root of
-//! [`ContactSize::solve_m`], proves a sign change of `F` across a small bracket and
+//! [`ContactSize::solve_strip`] (solved in `m - 1`, so the bracket is tight even as `m -> 1`), proves a sign change of `F` across a small bracket and
 //! bisects it to the requested width: the returned ball provably contains a root
 //! of `F`. That it is the *first* root rests on the f64 scan (see `model.rs`).
 
@@ -54,16 +54,17 @@ pub fn strip_residual_mp(params: Params, abar: f64, m: &Float, wp: u32) -> Resul
 /// of relative width `2^-prec`.
 pub fn solve_m_mp(params: Params, abar: f64, prec: u32) -> Result<Ball> {
     check_prec(prec)?;
-    let m0 = ContactSize::new(params, abar)?.solve_m()?;
-    let mut wp = prec + 32;
+    let e0 = ContactSize::new(params, abar)?.solve_strip()?.m_minus_1();
+    // m = 1 + (m - 1) must be exact: enough bits for the exponent gap of m - 1.
+    let gap_bits = (-e0.log2()).max(0.0).min(1100.0) as u32;
+    let mut wp = (prec + 32).max(gap_bits + 64);
     // Bracket around the f64 root with a proven sign change.
-    let mut delta = (m0 - 1.0).max(1e-300) * 1e-9;
+    let mut delta = e0 * 1e-9;
     let (mut lo, mut hi);
     let mut tries = 0;
     loop {
-        let lo_f = (m0 - delta).max(1.0);
-        lo = Float::with_val(wp, lo_f);
-        hi = Float::with_val(wp, m0 + delta);
+        lo = Float::with_val(wp, 1) + (e0 - delta).max(0.0);
+        hi = Float::with_val(wp, 1) + (e0 + delta);
         let (flo, fhi) = (strip_residual_mp(params, abar, &lo, wp)?, strip_residual_mp(params, abar, &hi, wp)?);
         if flo.is_negative() && fhi.is_positive() {
             break;
@@ -71,7 +72,7 @@ pub fn solve_m_mp(params: Params, abar: f64, prec: u32) -> Result<Ball> {
         delta *= 16.0;
         tries += 1;
         if tries > 12 {
-            return Err(Error::Internal { what: format!("no certified sign change of F around the f64 root m = {m0}") });
+            return Err(Error::Internal { what: format!("no certified sign change of F around the f64 root m - 1 = {e0}") });
         }
     }
     // Bisection until the bracket is 2^-prec m wide.
@@ -133,11 +134,12 @@ mod tests {
             let p = Params::new(lambda, 2f64.sqrt() / 4.0, 1.125).unwrap();
             let cs = ContactSize::new(p, abar).unwrap();
             let m0 = cs.solve_m().unwrap();
+            let l0 = cs.load(m0).unwrap();
             let m = solve_m_mp(p, abar, 128).unwrap();
             assert!(m.meets_rel(120), "{m:?}");
             assert!((m.to_f64() - m0).abs() <= 1e-12 * m0, "f64 {m0} vs MP {m:?}");
             let l = load_mp(p, abar, &m, 128).unwrap();
-            assert!((l.to_f64() - cs.load(m0)).abs() < 1e-10, "load {l:?} vs {}", cs.load(m0));
+            assert!((l.to_f64() - l0).abs() < 1e-10, "load {l:?} vs {l0}");
             // the residual changes sign across the returned ball
             assert!(strip_residual_mp(p, abar, &m.lower(), 192).unwrap().is_negative());
             assert!(strip_residual_mp(p, abar, &m.upper(), 192).unwrap().is_positive());
