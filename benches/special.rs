@@ -65,6 +65,50 @@ fn bench_hyp2f1(c: &mut Criterion) {
     g.finish();
 }
 
+/// The issue-8 domain for the f64 comparison with SciPy: a, b in [-3, 3],
+/// c in [0.5, 6], z in [-5, 0.9], from the 64-bit LCG that
+/// reference/bench_scipy.py reproduces (same seed, same points).
+fn hyp2f1_bench_points(n: usize) -> Vec<[f64; 4]> {
+    let mut state: u64 = 0x2f1_5c1;
+    let mut uniform = |lo: f64, hi: f64| {
+        state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        lo + (hi - lo) * ((state >> 11) as f64 / (1u64 << 53) as f64)
+    };
+    (0..n).map(|_| [uniform(-3.0, 3.0), uniform(-3.0, 3.0), uniform(0.5, 6.0), uniform(-5.0, 0.9)]).collect()
+}
+
+/// f64 2F1 over 1000 random points of the SciPy domain (time per 1000 values),
+/// with the native-path fallback count and the worst error against the
+/// certified 120-bit value printed once.
+fn bench_hyp2f1_f64(c: &mut Criterion) {
+    let pts = hyp2f1_bench_points(1000);
+    let mut fallbacks = 0;
+    let (mut worst, mut worst_bound) = (0.0f64, 0.0f64);
+    for p in &pts {
+        let native = hyp2f1::hyp2f1_native_bounded(p[0], p[1], p[2], p[3], hyp2f1::NATIVE_ACCEPT_REL).unwrap();
+        if native.is_none() {
+            fallbacks += 1;
+        }
+        let v = hyp2f1::hyp2f1_bounded(p[0], p[1], p[2], p[3]).unwrap();
+        let m = hyp2f1::hyp2f1_mp(&exact(p[0]), &exact(p[1]), &exact(p[2]), &exact(p[3]), 120).unwrap().to_f64();
+        worst = worst.max(((v.value - m) / m).abs());
+        worst_bound = worst_bound.max(v.err / v.value.abs());
+    }
+    eprintln!(
+        "hyp2f1_f64 points: {} MP fallbacks of {}, worst rel error {worst:.2e}, worst rel bound {worst_bound:.2e}",
+        fallbacks,
+        pts.len()
+    );
+    let mut g = c.benchmark_group("hyp2f1_f64");
+    g.bench_function("hyp2f1/1000 random points", |b| {
+        b.iter(|| pts.iter().map(|p| hyp2f1::hyp2f1(p[0], p[1], p[2], black_box(p[3])).unwrap()).sum::<f64>())
+    });
+    g.bench_function("hyp2f1_bounded/1000 random points", |b| {
+        b.iter(|| pts.iter().map(|p| hyp2f1::hyp2f1_bounded(p[0], p[1], p[2], black_box(p[3])).unwrap().err).sum::<f64>())
+    });
+    g.finish();
+}
+
 fn bench_bessel(c: &mut Criterion) {
     let mut g = c.benchmark_group("bessel_j");
     for &(n, x) in &[(0i64, 2.5f64), (10, 37.699), (100, 120.0), (0, 1000.0)] {
@@ -82,6 +126,6 @@ fn bench_bessel(c: &mut Criterion) {
 criterion_group! {
     name = benches;
     config = Criterion::default().sample_size(20).warm_up_time(std::time::Duration::from_millis(300)).measurement_time(std::time::Duration::from_secs(1));
-    targets = bench_meijer, bench_hyp1f2, bench_hyp2f1, bench_bessel
+    targets = bench_meijer, bench_hyp1f2, bench_hyp2f1, bench_hyp2f1_f64, bench_bessel
 }
 criterion_main!(benches);

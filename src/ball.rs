@@ -37,6 +37,7 @@ use crate::error::{Error, Result};
 mod bounded;
 mod decimal;
 mod double_double;
+pub(crate) use double_double::{quick_two_sum, two_prod, two_sum};
 mod mag;
 pub use bounded::Bounded;
 pub use decimal::{eval_at_decimals, Decimal, MAX_DECIMAL_DIGITS, MAX_DECIMAL_EXPONENT, MAX_DECIMAL_INPUT_PREC};

@@ -21,7 +21,7 @@ pub struct Dd {
 }
 
 #[inline]
-fn two_sum(a: f64, b: f64) -> (f64, f64) {
+pub(crate) fn two_sum(a: f64, b: f64) -> (f64, f64) {
     let s = a + b;
     let bb = s - a;
     let e = (a - (s - bb)) + (b - bb);
@@ -29,7 +29,7 @@ fn two_sum(a: f64, b: f64) -> (f64, f64) {
 }
 
 #[inline]
-fn quick_two_sum(a: f64, b: f64) -> (f64, f64) {
+pub(crate) fn quick_two_sum(a: f64, b: f64) -> (f64, f64) {
     let s = a + b;
     (s, b - (s - a))
 }
@@ -47,7 +47,7 @@ fn split(a: f64) -> (f64, f64) {
 /// portable x86-64 target has no FMA instruction, and the library call is
 /// slower than these 17 flops). Exact unless `a b` over/underflows.
 #[inline]
-fn two_prod(a: f64, b: f64) -> (f64, f64) {
+pub(crate) fn two_prod(a: f64, b: f64) -> (f64, f64) {
     let p = a * b;
     let (ah, al) = split(a);
     let (bh, bl) = split(b);
