@@ -207,7 +207,8 @@ fn series_dw(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64) -> Option<(Dw, f64)> {
     }
     let e_step = 128.0 * U * U + x_rel;
     let n_pos = first_positive_index([p1.hi, p2.hi, q.hi])?;
-    const STOP: f64 = 1.2325951644078310e-32; // 2^-106
+    // The tail only needs to be far below the rounding bound (u |s|): 2^-60.
+    const STOP: f64 = 8.673617379884035e-19; // 2^-60
     let mut t = Dw::new(1.0);
     let mut s = Dw::new(1.0);
     let (mut sum_abs_s, mut sum_nt, mut tail) = (0.0f64, 0.0f64, 0.0f64);
@@ -338,15 +339,12 @@ mod tests {
         for _ in 0..4000 {
             let (a, b, c, z) = (rng.uniform(-3.0, 3.0), rng.uniform(-3.0, 3.0), rng.uniform(0.5, 6.0), rng.uniform(-5.0, 0.9));
             total += 1;
-            let Some(r) = hyp2f1_native(a, b, c, z, super::super::NATIVE_ACCEPT_REL) else {
-                eprintln!("REJ {a:.3} {b:.3} {c:.3} {z:.3}");
-                continue;
-            };
+            let Some(r) = hyp2f1_native(a, b, c, z, super::super::NATIVE_VALUE_REL) else { continue };
             let m = hyp2f1_mp(&exact(a), &exact(b), &exact(c), &exact(z), 120).unwrap();
             let diff = Float::with_val(200, m.mid() - r.value).abs();
             let diff_up = diff.to_f64() + m.rad().to_f64();
             assert!(diff_up <= r.err, "2F1({a}, {b}; {c}; {z}): |error| {diff_up:e} > bound {:e}", r.err);
-            if r.err <= super::super::NATIVE_ACCEPT_REL * r.value.abs() {
+            if r.err <= super::super::NATIVE_VALUE_REL * r.value.abs() {
                 accepted += 1;
                 worst = worst.max(diff_up / r.value.abs());
                 worst_bound = worst_bound.max(r.err / r.value.abs());
