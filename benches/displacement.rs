@@ -10,8 +10,9 @@
 //! `reference/bench_mpmath.py` times mpmath on the same cases; the side-by-side
 //! table is in docs/performance.md.
 
-use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
-use maugis::contact::displacement::{u_wave, u_wave_mp, u_wave_series_mp, WaveBessel};
+use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use maugis::contact::displacement::{du_wave_bounded, u_wave, u_wave_bounded, u_wave_mp, u_wave_series_mp, WaveBessel};
+use maugis::contact::wave_bounded::wave_bounded_fallbacks;
 use maugis::contact::wave_quadrature::u_wave_quad;
 use maugis::special::exact;
 
@@ -49,7 +50,7 @@ fn bench_bessel_form(c: &mut Criterion) {
             // With the Bessel data of one contact size precomputed (the solver's case).
             let wb = WaveBessel::new(abar, BETA, 1.0).unwrap();
             g.bench_with_input(BenchmarkId::new("f64_precomputed", format!("abar={abar},x/a={r}")), &x, |b, &x| {
-                b.iter(|| wb.eval(black_box(x)))
+                b.iter(|| wb.eval(black_box(x)).unwrap())
             });
             let (a, z, m, xe) = (exact(abar), exact(BETA), exact(1.0), exact(x));
             g.bench_with_input(BenchmarkId::new("mp128", format!("abar={abar},x/a={r}")), &x, |b, _| {
@@ -58,6 +59,50 @@ fn bench_bessel_form(c: &mut Criterion) {
         }
     }
     g.finish();
+}
+
+/// 64 points over the issue-8 domain a in [0.5, 6], zeta = 9/8, x/a in [1, 3]
+/// (a fixed low-discrepancy sequence, so every run times the same points).
+fn domain_points() -> Vec<(f64, f64)> {
+    (0..64)
+        .map(|i| {
+            let u = (i as f64 * 0.618_033_988_749_895).fract();
+            let v = (i as f64 * 0.754_877_666_246_693).fract();
+            let a = 0.5 + 5.5 * u;
+            (a, a * (1.0 + 2.0 * v))
+        })
+        .collect()
+}
+
+/// The f64 wave functions per value over the domain, from scratch and with the
+/// contact precomputed (the solver's case), estimate and proven-bound paths.
+/// Criterion reports elements per second: 64 values per iteration.
+fn bench_wave_f64_domain(c: &mut Criterion) {
+    let pts = domain_points();
+    let before = wave_bounded_fallbacks();
+    let mut g = c.benchmark_group("wave_f64_domain");
+    g.throughput(Throughput::Elements(pts.len() as u64));
+    g.bench_function("u_wave/scratch", |b| {
+        b.iter(|| pts.iter().map(|&(a, x)| u_wave(a, BETA, 1.0, black_box(x)).unwrap()).sum::<f64>())
+    });
+    g.bench_function("u_wave_bounded/scratch", |b| {
+        b.iter(|| pts.iter().map(|&(a, x)| u_wave_bounded(a, BETA, 1.0, black_box(x)).unwrap().value).sum::<f64>())
+    });
+    g.bench_function("du_wave_bounded/scratch", |b| {
+        b.iter(|| pts.iter().map(|&(a, x)| du_wave_bounded(a, BETA, 1.0, black_box(x)).unwrap().value).sum::<f64>())
+    });
+    // one contact per a in {1, 3, 6}, 64 x in [a, 3a]
+    for &abar in &ABARS {
+        let wb = WaveBessel::new(abar, BETA, 1.0).unwrap();
+        let xs: Vec<f64> = pts.iter().map(|&(a, x)| abar * x / a).collect();
+        wb.eval_bounded(xs[0]).unwrap(); // certified data built once, outside the timing
+        g.bench_function(format!("eval/precomputed/abar={abar}"), |b| b.iter(|| wb.eval_many(black_box(&xs)).unwrap()));
+        g.bench_function(format!("eval_bounded/precomputed/abar={abar}"), |b| {
+            b.iter(|| wb.eval_bounded_many(black_box(&xs)).unwrap())
+        });
+    }
+    g.finish();
+    eprintln!("wave_f64_domain: MP fallbacks of the bounded path: {}", wave_bounded_fallbacks() - before);
 }
 
 fn bench_quadrature(c: &mut Criterion) {
@@ -74,6 +119,6 @@ fn bench_quadrature(c: &mut Criterion) {
 criterion_group! {
     name = benches;
     config = Criterion::default().sample_size(10).warm_up_time(std::time::Duration::from_millis(300)).measurement_time(std::time::Duration::from_secs(1));
-    targets = bench_eq12, bench_bessel_form, bench_quadrature
+    targets = bench_eq12, bench_bessel_form, bench_wave_f64_domain, bench_quadrature
 }
 criterion_main!(benches);

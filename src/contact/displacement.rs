@@ -66,6 +66,8 @@ use rug::Float;
 use crate::ball::{Ball, Bounded, MAG_PREC};
 use crate::error::{finite, Error, Result};
 use crate::ball::Dd;
+use crate::contact::wave_bounded::{count_fallback, CertifiedBessel};
+use std::sync::OnceLock;
 use crate::special::bessel_j::{bessel_j_sequence_dd, bessel_j_sequence_mp};
 use crate::special::meijer_g::{
     self, direct_sums_sweep, meijer_g_k_at_one_with, near_one_sums_sweep, meijer_g_k_direct_ball, meijer_g_k_from_sum, meijer_g_k_near_one_ball,
@@ -230,7 +232,7 @@ fn bessel_tail_bound(d_upper: &Float, n_terms: u64, power: i32) -> Option<Float>
 }
 
 /// Number of Bessel terms `N` with both tails below `2^-wp` (times the weights).
-fn bessel_terms(d_upper: &Float, wp: u32) -> Result<(u64, Float, Float)> {
+pub(crate) fn bessel_terms(d_upper: &Float, wp: u32) -> Result<(u64, Float, Float)> {
     let mut target = Float::with_val(MAG_PREC, 1);
     target >>= wp as i32;
     let mut n = (d_upper.to_f64() / 2.0).ceil().max(1.0) as u64 + 2;
@@ -287,7 +289,8 @@ pub(crate) fn wave_bessel_wp(a: &Float, zeta: &Float, amp: &Float, x: &Float, wp
         }
     }
     sum_u.add_error(&tail0);
-    sum_du.add_error(&tail2);
+    // n |J_2n| geo_n <= 2 n^2 |J_2n|
+    sum_du.add_error(&Float::with_val(MAG_PREC, &tail2 * 2u32));
     // u = A [1 - J0 + D J1 acosh(r) + 2 sum]
     let inner = Ball::one(wp).sub(&j[0]).add(&g.d.mul(&j[1]).mul(&g.acosh_r)).add(&sum_u.mul_pow2(1));
     let u = g.amp.mul(&inner);
@@ -360,7 +363,10 @@ fn ln_factorial(n: f64) -> f64 {
 #[derive(Debug, Clone)]
 pub struct WaveBessel {
     a: f64,
+    zeta: f64,
     amp: f64,
+    /// Certified Bessel data for the `*_bounded` evaluations, built on first use.
+    cert: OnceLock<Option<CertifiedBessel>>,
     d: Dd,
     n_terms: usize,
     j: Vec<Dd>,
@@ -397,7 +403,7 @@ impl WaveBessel {
             k -= 2;
         }
         let j_even_f64 = (0..=n_terms).map(|n| j[2 * n].to_f64()).collect();
-        Ok(WaveBessel { a, amp, d, n_terms, j, conv, j_even_f64 })
+        Ok(WaveBessel { a, zeta, amp, cert: OnceLock::new(), d, n_terms, j, conv, j_even_f64 })
     }
 
     /// `D = 2 pi a / zeta`.
@@ -405,8 +411,53 @@ impl WaveBessel {
         self.d.to_f64()
     }
 
-    /// `(u_w(x), du_w/dx)` for `x >= a`.
-    pub fn eval(&self, x: f64) -> (f64, f64) {
+    /// `(u_w(x), du_w/dx)` for `x >= a` (double-double, rounded once; an
+    /// estimate: about `1e-16` of `max(|u_w|, |A|)`, see [`WaveBessel::eval_bounded`]
+    /// for a proven bound).
+    ///
+    /// Errors: `x` NaN or infinite, or `x < a` (the Bessel form is for the
+    /// outside of the contact).
+    pub fn eval(&self, x: f64) -> Result<(f64, f64)> {
+        self.check_x(x)?;
+        Ok(self.eval_unchecked(x))
+    }
+
+    /// [`WaveBessel::eval`] over a slice of `x` (one contact, many points: the
+    /// solver's case). Fails on the first invalid `x`, naming it.
+    pub fn eval_many(&self, xs: &[f64]) -> Result<Vec<(f64, f64)>> {
+        xs.iter().map(|&x| self.eval(x)).collect()
+    }
+
+    /// `(u_w(x), du_w/dx)` with proven error bounds for the f64 inputs as given
+    /// ([`crate::contact::wave_bounded`]). The certified Bessel data are computed
+    /// on the first call (MP, once per contact); each later call costs one short
+    /// double-double sum. Falls back to the MP Bessel form for `x/a > 25/7`
+    /// (counted by [`wave_bounded_fallbacks`](crate::contact::wave_bounded::wave_bounded_fallbacks)).
+    pub fn eval_bounded(&self, x: f64) -> Result<(Bounded, Bounded)> {
+        self.check_x(x)?;
+        let cert = self.cert.get_or_init(|| CertifiedBessel::new(self.a, self.zeta).ok());
+        if let Some(r) = cert.as_ref().and_then(|c| c.eval_bounded(self.a, self.amp, x)) {
+            return Ok(r);
+        }
+        wave_bounded_fallback(self.a, self.zeta, self.amp, x)
+    }
+
+    /// [`WaveBessel::eval_bounded`] over a slice of `x`.
+    pub fn eval_bounded_many(&self, xs: &[f64]) -> Result<Vec<(Bounded, Bounded)>> {
+        xs.iter().map(|&x| self.eval_bounded(x)).collect()
+    }
+
+    fn check_x(&self, x: f64) -> Result<()> {
+        finite(x, "x")?;
+        if x < self.a {
+            return Err(Error::Domain {
+                what: format!("the wave displacement is for x >= a (got x = {x} < a = {})", self.a),
+            });
+        }
+        Ok(())
+    }
+
+    fn eval_unchecked(&self, x: f64) -> (f64, f64) {
         let (a, amp, d, j) = (self.a, self.amp, self.d, &self.j);
         let ad = Dd::from_f64(a);
         let rm1 = Dd::diff(x, a) / ad; // x/a - 1
@@ -488,7 +539,27 @@ impl WaveBessel {
 }
 
 fn wave_bessel_f64(a: f64, zeta: f64, amp: f64, x: f64) -> Result<(f64, f64)> {
-    Ok(WaveBessel::new(a, zeta, amp)?.eval(x))
+    WaveBessel::new(a, zeta, amp)?.eval(x)
+}
+
+/// The MP fallback of the bounded f64 wave functions: both Bessel-form balls
+/// at [`F64_FALLBACK_PREC`](crate::special::F64_FALLBACK_PREC) bits (counted).
+fn wave_bounded_fallback(a: f64, zeta: f64, amp: f64, x: f64) -> Result<(Bounded, Bounded)> {
+    count_fallback();
+    let (a, zeta, amp, x) = (exact(a), exact(zeta), exact(amp), exact(x));
+    let p = crate::special::F64_FALLBACK_PREC;
+    let u = crate::special::bounded_from_ball("u_wave", &u_wave_mp(&a, &zeta, &amp, &x, p)?)?;
+    let du = crate::special::bounded_from_ball("du_wave", &du_wave_mp(&a, &zeta, &amp, &x, p)?)?;
+    Ok((u, du))
+}
+
+/// Both bounded values from scratch: certified Bessel data, then the native sum.
+fn wave_bounded_pair(a: f64, zeta: f64, amp: f64, x: f64) -> Result<(Bounded, Bounded)> {
+    check_wave_f64(a, zeta, amp, x)?;
+    match CertifiedBessel::new(a, zeta).ok().and_then(|c| c.eval_bounded(a, amp, x)) {
+        Some(r) => Ok(r),
+        None => wave_bounded_fallback(a, zeta, amp, x),
+    }
 }
 
 /// Wave displacement `u_w(x)` in f64 (Bessel form).
@@ -506,18 +577,17 @@ pub fn du_wave(a: f64, zeta: f64, amp: f64, x: f64) -> Result<f64> {
     Ok(wave_bessel_f64(a, zeta, amp, x)?.1)
 }
 
-/// `u_w(x)` in f64 with a proven error bound for the f64 inputs as given.
+/// `u_w(x)` in f64 with a proven error bound for the f64 inputs as given
+/// (native double-double with running error analysis,
+/// [`crate::contact::wave_bounded`]; for many `x` at one contact use
+/// [`WaveBessel::eval_bounded`], which computes the Bessel data once).
 pub fn u_wave_bounded(a: f64, zeta: f64, amp: f64, x: f64) -> Result<Bounded> {
-    check_wave_f64(a, zeta, amp, x)?;
-    let (a, zeta, amp, x) = (exact(a), exact(zeta), exact(amp), exact(x));
-    crate::special::bounded_from_ball("u_wave", &u_wave_mp(&a, &zeta, &amp, &x, crate::special::F64_FALLBACK_PREC)?)
+    Ok(wave_bounded_pair(a, zeta, amp, x)?.0)
 }
 
 /// `du_w/dx` in f64 with a proven error bound for the f64 inputs as given.
 pub fn du_wave_bounded(a: f64, zeta: f64, amp: f64, x: f64) -> Result<Bounded> {
-    check_wave_f64(a, zeta, amp, x)?;
-    let (a, zeta, amp, x) = (exact(a), exact(zeta), exact(amp), exact(x));
-    crate::special::bounded_from_ball("du_wave", &du_wave_mp(&a, &zeta, &amp, &x, crate::special::F64_FALLBACK_PREC)?)
+    Ok(wave_bounded_pair(a, zeta, amp, x)?.1)
 }
 
 // ---------------------------------------------------------------- Eq. 12 / 11b series

@@ -4,6 +4,7 @@
 //!   form: Hertz (Eq. 10), wave (Eq. 12, its gradient Eq. 11b, the
 //!   cancellation-free Bessel form) and adhesive (Box I / A.5a), plus the
 //!   profile depth (Eq. 1).
+//! * [`wave_bounded`]: `u_w` and `du_w/dx` in f64 with a proven error bound.
 //! * [`wave_quadrature`]: the independent Eq. 11a quadrature route.
 //! * [`model`]: the normalised Maugis model at one contact size: the
 //!   adhesive-strip equation (15b corrected), its first root, the load (Eq. 14),
@@ -23,6 +24,7 @@
 //! The gap is `g(x) = h(x) - u_H(x) - u_w(x) - u_a(x)` for `|x| >= a`.
 
 pub mod displacement;
+pub mod wave_bounded;
 pub mod wave_quadrature;
 pub mod model;
 pub mod curve;

@@ -1,0 +1,324 @@
+//! The wave displacement `u_w(x)` and its gradient `du_w/dx` in f64 with a
+//! **proven** error bound: the Bessel form of [`super::displacement`] evaluated
+//! in double-double with a running error analysis.
+//!
+//! # Method
+//!
+//! With `D = 2 pi a/zeta`, `r = x/a >= 1` and `t = sqrt((r-1)/(r+1))` in `[0, 1)`
+//! (notes/model.md sec. 3; the module docs of [`super::displacement`]):
+//!
+//! ```text
+//! q = (1 - t)/(1 + t) = r - sqrt(r^2 - 1),        acosh(r) = 2 atanh(t),
+//! u_w     = A [1 - J0(D) + D J1(D) acosh(r) + 2 sum_{n=1}^{N} (-1)^{n+1} J_{2n}(D) q^{2n}],
+//! du_w/dx = (4A/a) (1 - t) sum_{n=1}^{N} (-1)^{n+1} n J_{2n}(D) geo_n,   geo_n = sum_{j<2n} q^j,
+//! ```
+//!
+//! (`(1 - q)/sqrt(r^2-1) = 1 - t`). Everything is a function of `t`, which is
+//! computed from the exact difference `x - a`, so nothing cancels at the contact
+//! edge. `atanh(t) = t + t^3/3 + t^5 P(t^2)`, `P(s) = sum_j s^j/(2j+5)`: the
+//! first two terms in double-double, `P` by Horner in f64 (its contribution is
+//! below `t^5/(5(1-t^2))`, so an f64 relative error there is ~1e-17 of the total).
+//!
+//! **Per contact** ([`CertifiedBessel`]): `D` and `J_0(D), ..., J_{2N+1}(D)` as
+//! certified balls at [`CERT_PREC`] bits ([`bessel_j_sequence_mp`] at the midpoint
+//! of the ball `D`, widened by `rad(D)` since `|J_n'| <= 1` [DLMF 10.14.1]),
+//! each converted to a double-double with its conversion error added. `N` is
+//! chosen by the truncation bounds below.
+//!
+//! # Error bound
+//!
+//! Every quantity is a pair `(v, e)` of a double-double value and an f64 bound
+//! `e >= |exact - v|`. With `u = 2^-53`, `|a|` standing for `|a.hi| + |a.lo|`,
+//! and the double-double algorithms of [`Dd`] (two_sum and Dekker's two_prod are
+//! exact; the correction terms are two or three f64 operations on quantities of
+//! size `<= u |a|`, so each costs `<= u^2`-level error; quick_two_sum is exact or
+//! off by `u` times its `u`-sized correction):
+//!
+//! * `a + b`: `e = e_a + e_b + 8 u^2 (|a| + |b|)`   (the derivation gives `6 u^2`);
+//! * `a b`: `e = |a| e_b + |b| e_a + e_a e_b + 8 u^2 |a| |b|`   (derivation: `4 u^2`);
+//! * `a / b`: `e = (e_a + |a/b| e_b)/(|b| - e_b) + 16 u^2 |a/b|`   (three-quotient
+//!   long division, derivation `~6 u^2`), refused unless `|b| > e_b`;
+//! * `sqrt(a)`: `e = e_a/sqrt(|a| - e_a) + 16 u^2 sqrt|a|`   (one Newton step from the
+//!   f64 root, `~3 u^2`), refused unless `|a| > e_a`; `sqrt(0) = 0` exactly;
+//! * Horner in f64 for `P(s)` over `J` terms: Higham's running error bound
+//!   `u (2 mu - |p|)` [Higham, *Accuracy and Stability*, Alg. 5.1] (times 1.01 for
+//!   its second-order terms), plus `u P(|s|)` for the rounded coefficients, plus the truncation
+//!   `s^J/((2J+5)(1-s))`, plus `e_s / (1 - s)^2` for the input error of `s`;
+//! * the truncated Bessel sums: `|J_{2n}(D)| <= (D/2)^{2n}/(2n)!` [DLMF 10.14.4],
+//!   `0 <= q <= 1`, `0 <= geo_n <= 2n`, so the neglected terms are at most
+//!   `tail0 = sum_{n>N} (D/2)^{2n}/(2n)!` and `2 tail2`, `tail2 = sum_{n>N} n^2 (D/2)^{2n}/(2n)!`
+//!   (computed rigorously in MP once per contact).
+//!
+//! The bound itself is evaluated in f64: each of its operations has relative
+//! error `<= u`, and no chain is longer than `2^20` operations, so multiplying
+//! the final bound by `1 + 2^-30` (and stepping one ulp up) covers that. The
+//! final rounding of `hi + lo` to f64 adds `u |value|`.
+//!
+//! # Regions and fallback
+//!
+//! The native path certifies for `t <= T_MAX = 3/4`, i.e. `x/a <= 25/7 ~ 3.57`,
+//! which covers the model's range `x/a in [1, 3]`. Beyond it (and if a division
+//! or square root cannot be certified, which does not happen for valid inputs)
+//! the `*_bounded` entry points fall back to the certified MP Bessel form at 64
+//! bits; [`wave_bounded_fallbacks`] counts those calls (the benches report it).
+//!
+//! References: seed paper Eq. 12 and Appendix B.11; notes/model.md sec. 3;
+//! DLMF 10.6.1, 10.12.4, 10.14.1, 10.14.4; Dekker (1971); Hida, Li, Bailey (2007);
+//! Joldes, Muller, Popescu, "Tight and rigorous error bounds for basic building
+//! blocks of double-word arithmetic", ACM TOMS 44 (2017).
+
+use std::sync::atomic::{AtomicU64, Ordering};
+
+use rug::float::Round;
+use rug::Float;
+
+use crate::ball::{Ball, Bounded, Dd};
+use crate::error::Result;
+use crate::special::bessel_j::bessel_j_sequence_mp;
+use crate::special::exact_sub;
+
+/// Precision (bits) of the per-contact certified Bessel data.
+pub const CERT_PREC: u32 = 128;
+
+/// Largest `t = sqrt((x/a - 1)/(x/a + 1))` of the native path (`x/a <= 25/7`).
+pub const T_MAX: f64 = 0.75;
+
+/// Unit roundoff of f64, `2^-53`.
+const U: f64 = f64::EPSILON / 2.0;
+const U2: f64 = U * U;
+const C_ADD: f64 = 8.0 * U2;
+const C_MUL: f64 = 8.0 * U2;
+const C_DIV: f64 = 16.0 * U2;
+const C_SQRT: f64 = 16.0 * U2;
+/// Inflation of the f64-evaluated bound (covers its own roundings, see the module docs).
+const BOUND_INFLATION: f64 = 1.0 + 1.0 / (1u64 << 30) as f64;
+
+static FALLBACKS: AtomicU64 = AtomicU64::new(0);
+
+/// How many `u_wave_bounded` / `du_wave_bounded` / `WaveBessel::eval_bounded`
+/// calls (per x) fell back to the MP path since the process started.
+pub fn wave_bounded_fallbacks() -> u64 {
+    FALLBACKS.load(Ordering::Relaxed)
+}
+
+pub(crate) fn count_fallback() {
+    FALLBACKS.fetch_add(1, Ordering::Relaxed);
+}
+
+/// A double-double value with an error bound.
+#[derive(Debug, Clone, Copy)]
+struct Tr {
+    v: Dd,
+    e: f64,
+}
+
+impl Tr {
+    const ZERO: Tr = Tr { v: Dd::ZERO, e: 0.0 };
+    const ONE: Tr = Tr { v: Dd::ONE, e: 0.0 };
+
+    fn exact(x: f64) -> Tr {
+        Tr { v: Dd::from_f64(x), e: 0.0 }
+    }
+
+    fn mag(self) -> f64 {
+        self.v.hi.abs() + self.v.lo.abs()
+    }
+
+    fn add(self, o: Tr) -> Tr {
+        Tr { v: self.v + o.v, e: self.e + o.e + C_ADD * (self.mag() + o.mag()) }
+    }
+
+    fn sub(self, o: Tr) -> Tr {
+        Tr { v: self.v - o.v, e: self.e + o.e + C_ADD * (self.mag() + o.mag()) }
+    }
+
+    fn mul(self, o: Tr) -> Tr {
+        let (ma, mb) = (self.mag(), o.mag());
+        Tr { v: self.v * o.v, e: ma * o.e + mb * self.e + self.e * o.e + C_MUL * ma * mb }
+    }
+
+    /// `self * b` for an exact f64 `b`.
+    fn mul_f64(self, b: f64) -> Tr {
+        let ab = b.abs();
+        Tr { v: self.v.mul_f64(b), e: ab * self.e + C_MUL * self.mag() * ab }
+    }
+
+    fn div(self, o: Tr) -> Option<Tr> {
+        let den = o.mag() - o.e;
+        if !(den > 0.0) {
+            return None;
+        }
+        let v = self.v / o.v;
+        let q = Tr { v, e: 0.0 }.mag();
+        Some(Tr { v, e: (self.e + q * o.e) / den + C_DIV * q })
+    }
+
+    fn sqrt(self) -> Option<Tr> {
+        if self.v.hi == 0.0 && self.v.lo == 0.0 && self.e == 0.0 {
+            return Some(Tr::ZERO);
+        }
+        let low = self.mag() - self.e;
+        if !(self.v.hi > 0.0 && low > 0.0) {
+            return None;
+        }
+        let v = self.v.sqrt();
+        Some(Tr { v, e: self.e / low.sqrt() + C_SQRT * Tr { v, e: 0.0 }.mag() })
+    }
+
+    /// The f64 value and its proven bound (final rounding and bound inflation included).
+    fn finish(self) -> Option<Bounded> {
+        let value = self.v.to_f64();
+        let err = ((self.e + U * value.abs()) * BOUND_INFLATION).next_up();
+        (value.is_finite() && err.is_finite()).then_some(Bounded { value, err })
+    }
+}
+
+/// A certified ball as a double-double with its conversion error.
+fn tr_from_ball(b: &Ball) -> Tr {
+    let mid = b.mid();
+    let hi = mid.to_f64();
+    let rest = exact_sub(mid, &Float::with_val(53, hi));
+    let lo = rest.to_f64();
+    let rem = exact_sub(&rest, &Float::with_val(53, lo)).abs().to_f64_round(Round::Up);
+    let e = (rem + b.rad_mag().to_f64_up()).next_up();
+    Tr { v: Dd { hi, lo }, e }
+}
+
+/// `2 atanh(t) = acosh(r)` for `0 <= t <= T_MAX`: `t + t^3/3` in double-double,
+/// `t^5 P(t^2)` with `P` by Horner in f64 (module docs).
+fn two_atanh(t: Tr) -> Option<Tr> {
+    if !(t.mag() + t.e <= T_MAX) {
+        return None;
+    }
+    let t2 = t.mul(t);
+    let t3 = t2.mul(t);
+    let lead = t.add(t3.div(Tr::exact(3.0))?);
+    let s = t2.v.to_f64();
+    let s_up = t2.mag() + t2.e + U; // upper bound of t^2 (covers the rounding of s)
+    if !(s_up < 1.0) {
+        return None;
+    }
+    // Terms until s^J/((2J+5)(1-s)) <= 2^-64 (relative to P(0) = 1/5).
+    let mut j_terms = 1usize;
+    let mut sp = s_up;
+    while sp / ((2 * j_terms + 5) as f64 * (1.0 - s_up)) > 1.0 / (1u64 << 63) as f64 / 8.0 {
+        sp *= s_up;
+        j_terms += 1;
+        if j_terms > 4000 {
+            return None;
+        }
+    }
+    // Horner with Higham's running error bound (Algorithm 5.1): u (2 mu - |p|).
+    let mut p = 1.0 / (2 * (j_terms - 1) + 5) as f64;
+    let mut mu = p / 2.0;
+    for j in (0..j_terms - 1).rev() {
+        p = p * s + 1.0 / (2 * j + 5) as f64;
+        mu = s * mu + p.abs();
+    }
+    let p_abs = 1.0 / (5.0 * (1.0 - s_up)) * 1.25; // >= P(|s|) (P(s) <= 1/(5(1-s)))
+    let trunc = sp / ((2 * j_terms + 5) as f64 * (1.0 - s_up));
+    // running bound (with 1% for its own second-order terms) plus the
+    // rounding of the coefficients 1/(2j+5) (at most u P(|s|))
+    let horner = U * (2.0 * mu - p.abs()) * 1.01 + U * p_abs;
+    let input = (t2.e + U * s_up) / ((1.0 - s_up) * (1.0 - s_up)) * 0.2;
+    let p_tr = Tr { v: Dd::from_f64(p), e: horner + trunc + input };
+    let t5 = t3.mul(t2);
+    Some(lead.add(t5.mul(p_tr)).mul_f64(2.0))
+}
+
+/// The certified per-contact data of the Bessel form.
+#[derive(Debug, Clone)]
+pub(crate) struct CertifiedBessel {
+    d: Tr,
+    /// `J_0(D), ..., J_{2N+1}(D)`.
+    j: Vec<Tr>,
+    n_terms: usize,
+    /// `sum_{n>N} (D/2)^{2n}/(2n)!`, rounded up.
+    tail0: f64,
+    /// `sum_{n>N} n^2 (D/2)^{2n}/(2n)!`, rounded up.
+    tail2: f64,
+}
+
+impl CertifiedBessel {
+    /// Certified `D` and `J_n(D)` for `a > 0`, `zeta > 0` (validated by the caller).
+    pub(crate) fn new(a: f64, zeta: f64) -> Result<CertifiedBessel> {
+        let wp = CERT_PREC;
+        let d = Ball::pi(wp).mul_pow2(1).mul(&Ball::from_f64(a, wp)?).div(&Ball::from_f64(zeta, wp)?)?;
+        // N with both tails below 2^-110 (the double-double level).
+        let (n_terms, tail0, tail2) = super::displacement::bessel_terms(&d.upper(), 110)?;
+        let nmax = 2 * n_terms + 1;
+        let mid = d.mid().clone();
+        let mut j = bessel_j_sequence_mp(nmax, &mid, wp)?;
+        for v in j.iter_mut() {
+            v.add_error_mag(d.rad_mag());
+        }
+        Ok(CertifiedBessel {
+            d: tr_from_ball(&d),
+            j: j.iter().map(tr_from_ball).collect(),
+            n_terms: n_terms as usize,
+            tail0: tail0.to_f64_round(Round::Up),
+            tail2: tail2.to_f64_round(Round::Up),
+        })
+    }
+
+    /// `(u_w(x), du_w/dx)` with proven bounds, or `None` where the native path
+    /// does not certify (`x/a > 25/7`). `a <= x` and finiteness are the caller's.
+    pub(crate) fn eval_bounded(&self, a: f64, amp: f64, x: f64) -> Option<(Bounded, Bounded)> {
+        let ad = Tr::exact(a);
+        let rm1 = Tr { v: Dd::diff(x, a), e: 0.0 }.div(ad)?; // x/a - 1 (x - a exact)
+        let rp1 = Tr { v: Dd::diff(x, -a), e: 0.0 }.div(ad)?; // x/a + 1 (x + a exact)
+        let t = rm1.div(rp1)?.sqrt()?;
+        let acosh_r = two_atanh(t)?;
+        let q = Tr::ONE.sub(t).div(Tr::ONE.add(t))?;
+        let one_minus_t = Tr::ONE.sub(t);
+        let q2 = q.mul(q);
+        let (mut q_pow, mut q_odd, mut geo) = (Tr::ONE, q, Tr::ZERO);
+        let (mut su, mut sdu) = (Tr::ZERO, Tr::ZERO);
+        for n in 1..=self.n_terms {
+            geo = geo.add(q_pow).add(q_odd);
+            q_pow = q_pow.mul(q2);
+            q_odd = q_odd.mul(q2);
+            let jn = self.j[2 * n];
+            let tu = jn.mul(q_pow);
+            let tdu = jn.mul(geo).mul_f64(n as f64);
+            if n % 2 == 1 {
+                su = su.add(tu);
+                sdu = sdu.add(tdu);
+            } else {
+                su = su.sub(tu);
+                sdu = sdu.sub(tdu);
+            }
+        }
+        su.e += self.tail0;
+        sdu.e += 2.0 * self.tail2;
+        let inner = Tr::ONE.sub(self.j[0]).add(self.d.mul(self.j[1]).mul(acosh_r)).add(su.mul_f64(2.0));
+        let u = inner.mul_f64(amp);
+        let du = one_minus_t.mul(sdu).mul_f64(4.0 * amp).div(ad)?;
+        Some((u.finish()?, du.finish()?))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn two_atanh_encloses_acosh() {
+        for &r in &[1.0, 1.0 + 1e-12, 1.001, 1.35, 2.0, 3.0, 3.5] {
+            let rm1 = Tr { v: Dd::diff(r, 1.0), e: 0.0 };
+            let rp1 = Tr { v: Dd::diff(r, -1.0), e: 0.0 };
+            let t = rm1.div(rp1).unwrap().sqrt().unwrap();
+            let v = two_atanh(t).unwrap().finish().unwrap();
+            let exact = Float::with_val(200, r).acosh();
+            let diff = Float::with_val(200, &exact - v.value).abs().to_f64();
+            assert!(diff <= v.err, "r={r}: {v} vs {exact}");
+            assert!(v.err <= 4e-16 * v.value.abs().max(1e-300) || v.value == 0.0, "r={r}: {v}");
+        }
+    }
+
+    #[test]
+    fn refuses_beyond_t_max() {
+        let t = Tr::exact(0.8);
+        assert!(two_atanh(t).is_none());
+    }
+}

@@ -1,0 +1,108 @@
+//! The f64 wave displacement with a proven bound (`u_wave_bounded`,
+//! `du_wave_bounded`, `WaveBessel::eval_bounded`): the bound must contain the
+//! certified MP value (Bessel form in balls at 200 bits) at every point, and the
+//! value must be within the issue-8 accuracy (u_w: 1e-15 of max(|u|, A); du_w:
+//! 1e-15 of max(|du|, 2 pi A/zeta)).
+//!
+//! Points: a grid over a in [0.5, 6], zeta = 9/8 (the model's domain) and other
+//! wavelengths, x/a in [1, 3] with the region edges (x = a, x/a = 1 + 2^-40,
+//! x/a = 3, the native limit 25/7 and beyond, where the MP fallback answers),
+//! and a proptest over random points.
+
+use maugis::contact::displacement::{du_wave_bounded, du_wave_mp, u_wave, u_wave_bounded, u_wave_mp, WaveBessel};
+use maugis::contact::wave_bounded::wave_bounded_fallbacks;
+use maugis::special::exact;
+use maugis::Bounded;
+use proptest::prelude::*;
+use rug::Float;
+
+const REF_PREC: u32 = 200;
+
+/// `|exact - value| <= err` against the certified ball (its radius is ~2^-200).
+fn check(name: &str, b: Bounded, reference: &maugis::Ball, scale: f64, what: &str) {
+    let diff = Float::with_val(REF_PREC + 64, reference.mid() - b.value).abs();
+    let mut slack = reference.rad();
+    slack += b.err;
+    assert!(diff <= slack, "{name} {what}: {b} misses {:?}", reference);
+    let rel = diff.to_f64() / scale;
+    assert!(rel <= 1e-15, "{name} {what}: error {rel:e} of the scale exceeds 1e-15 ({b} vs {reference:?})");
+    // the bound is honest but not loose beyond reason
+    assert!(b.err <= 1e-13 * scale, "{name} {what}: bound {:e} is too loose (scale {scale:e})", b.err);
+}
+
+fn check_point(a: f64, zeta: f64, amp: f64, x: f64) {
+    let (ae, ze, me, xe) = (exact(a), exact(zeta), exact(amp), exact(x));
+    let u_ref = u_wave_mp(&ae, &ze, &me, &xe, REF_PREC).unwrap();
+    let du_ref = du_wave_mp(&ae, &ze, &me, &xe, REF_PREC).unwrap();
+    let what = format!("a={a} zeta={zeta} A={amp} x={x}");
+    let u = u_wave_bounded(a, zeta, amp, x).unwrap();
+    let du = du_wave_bounded(a, zeta, amp, x).unwrap();
+    let u_scale = u_ref.to_f64().abs().max(amp.abs());
+    let du_scale = du_ref.to_f64().abs().max(2.0 * std::f64::consts::PI * amp.abs() / zeta);
+    check("u_wave_bounded", u, &u_ref, u_scale, &what);
+    check("du_wave_bounded", du, &du_ref, du_scale, &what);
+    let wb = WaveBessel::new(a, zeta, amp).unwrap();
+    let (ub, dub) = wb.eval_bounded(x).unwrap();
+    check("eval_bounded u", ub, &u_ref, u_scale, &what);
+    check("eval_bounded du", dub, &du_ref, du_scale, &what);
+}
+
+#[test]
+fn bound_holds_on_the_model_grid_and_region_edges() {
+    let ratios = [1.0, 1.0 + 2f64.powi(-40), 1.0 + 2f64.powi(-20), 1.0005, 1.01, 1.2, 1.35, 1.5, 2.0, 2.5, 3.0, 3.5];
+    for &a in &[0.5, 1.0, 1.75, 3.0, 4.25, 6.0] {
+        for &r in &ratios {
+            check_point(a, 1.125, 1.0, a * r);
+        }
+    }
+    // other wavelengths and amplitudes (D from 0.6 to 75)
+    for &(a, zeta, amp) in &[(0.5, 5.0, 0.25), (2.0, 0.5, 3.0), (6.0, 0.5, 1.0), (3.0, 2.0, -2.0)] {
+        for &r in &[1.0, 1.1, 2.0, 3.0] {
+            check_point(a, zeta, amp, a * r);
+        }
+    }
+}
+
+#[test]
+fn beyond_the_native_region_the_mp_fallback_answers_and_is_counted() {
+    let before = wave_bounded_fallbacks();
+    check_point(2.0, 1.125, 1.0, 2.0 * 4.0);
+    assert!(wave_bounded_fallbacks() >= before + 1);
+}
+
+#[test]
+fn wave_bessel_rejects_bad_x_with_a_typed_error() {
+    let wb = WaveBessel::new(2.0, 1.125, 1.0).unwrap();
+    for &x in &[f64::NAN, f64::INFINITY, f64::NEG_INFINITY, 1.999999, -3.0] {
+        assert!(wb.eval(x).is_err(), "eval({x})");
+        assert!(wb.eval_bounded(x).is_err(), "eval_bounded({x})");
+    }
+    assert!(wb.eval_many(&[2.5, f64::NAN]).is_err());
+    assert!(wb.eval_bounded_many(&[2.5, 1.0]).is_err());
+    let msg = wb.eval(1.5).unwrap_err().to_string();
+    assert!(msg.contains("x >= a"), "{msg}");
+}
+
+#[test]
+fn batch_equals_one_by_one() {
+    let wb = WaveBessel::new(3.0, 1.125, 1.0).unwrap();
+    let xs: Vec<f64> = (0..40).map(|i| 3.0 * (1.0 + i as f64 / 20.0)).collect();
+    let many = wb.eval_many(&xs).unwrap();
+    let many_b = wb.eval_bounded_many(&xs).unwrap();
+    for (i, &x) in xs.iter().enumerate() {
+        assert_eq!(many[i], wb.eval(x).unwrap());
+        assert_eq!(many_b[i], wb.eval_bounded(x).unwrap());
+        assert_eq!(many[i].0, u_wave(3.0, 1.125, 1.0, x).unwrap());
+        // the estimate path and the bounded path agree within the bound
+        assert!(many_b[i].0.contains(many[i].0) || (many_b[i].0.value - many[i].0).abs() <= 4e-16 * 8.0);
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    #[test]
+    fn bound_holds_at_random_points(a in 0.5f64..6.0, r in 1.0f64..3.0, amp in -3.0f64..3.0) {
+        check_point(a, 1.125, amp, a * r);
+    }
+}
