@@ -374,6 +374,26 @@ pub struct WaveBessel {
     conv: Vec<Dd>,
     /// `J_{2n}(D)` rounded to f64, for [`WaveBessel::u_fast`].
     j_even_f64: Vec<f64>,
+    /// Horner coefficients in `q^2` of the two sums (`horner_coefficients`).
+    u_coef: Vec<Dd>,
+    du_coef: Vec<Dd>,
+}
+
+/// The Bessel-form sums as polynomials in `q^2`:
+/// `sum_{n=1}^N (-1)^{n+1} J_{2n} q^{2n} = sum_m u_m q^{2m}`, `u_m = (-1)^{m+1} J_{2m}`, and
+/// `sum_n (-1)^{n+1} n J_{2n} geo_n = (1 + q) sum_{m<N} T_m q^{2m}`,
+/// `T_m = sum_{n=m+1}^{N} (-1)^{n+1} n J_{2n}` (the powers `q^{2m}`, `q^{2m+1}` of
+/// `geo_n = sum_{j<2n} q^j` both occur for every `n > m`). Two Horner passes per `x`.
+fn horner_coefficients(j: &[Dd], n_terms: usize) -> (Vec<Dd>, Vec<Dd>) {
+    let sign = |n: usize| if n % 2 == 1 { 1.0 } else { -1.0 };
+    let u_coef: Vec<Dd> = (0..=n_terms).map(|m| j[2 * m].mul_f64(sign(m))).collect();
+    let mut du_coef = vec![Dd::ZERO; n_terms];
+    let mut acc = Dd::ZERO;
+    for m in (0..n_terms).rev() {
+        acc = acc + j[2 * (m + 1)].mul_f64(sign(m + 1) * (m + 1) as f64);
+        du_coef[m] = acc;
+    }
+    (u_coef, du_coef)
 }
 
 impl WaveBessel {
@@ -403,7 +423,8 @@ impl WaveBessel {
             k -= 2;
         }
         let j_even_f64 = (0..=n_terms).map(|n| j[2 * n].to_f64()).collect();
-        Ok(WaveBessel { a, zeta, amp, cert: OnceLock::new(), d, n_terms, j, conv, j_even_f64 })
+        let (u_coef, du_coef) = horner_coefficients(&j, n_terms);
+        Ok(WaveBessel { a, zeta, amp, cert: OnceLock::new(), d, n_terms, j, conv, j_even_f64, u_coef, du_coef })
     }
 
     /// `D = 2 pi a / zeta`.
@@ -468,23 +489,16 @@ impl WaveBessel {
         let acosh_r = (rm1 + sq).to_f64().ln_1p();
         let one_minus_q_over_s = Dd::ONE - (rm1 / rp1).sqrt();
         let q2 = q * q;
-        let (mut q_pow, mut q_odd, mut geo) = (Dd::ONE, q, Dd::ZERO);
-        let (mut su, mut sdu) = (Dd::ZERO, Dd::ZERO);
-        for n in 1..=self.n_terms {
-            geo = geo + q_pow + q_odd;
-            q_pow = q_pow * q2;
-            q_odd = q_odd * q2;
-            let jn = j[2 * n];
-            let tu = jn * q_pow;
-            let tdu = (jn * geo).mul_f64(n as f64);
-            if n % 2 == 1 {
-                su = su + tu;
-                sdu = sdu + tdu;
-            } else {
-                su = su - tu;
-                sdu = sdu - tdu;
-            }
+        // Horner in q^2 (see `horner_coefficients`).
+        // One loop, two independent chains (they overlap in the pipeline).
+        let n = self.n_terms;
+        let (mut su, mut sdu) = (self.u_coef[n], self.du_coef[n - 1]);
+        for m in (0..n - 1).rev() {
+            su = su * q2 + self.u_coef[m + 1];
+            sdu = sdu * q2 + self.du_coef[m];
         }
+        let su = su * q2;
+        let sdu = sdu * (Dd::ONE + q);
         let inner = (Dd::ONE - j[0]) + (d * j[1]).mul_f64(acosh_r) + su.mul_f64(2.0);
         let u = inner.mul_f64(amp).to_f64();
         let du = (one_minus_q_over_s * sdu).mul_f64(4.0 * amp / a).to_f64();

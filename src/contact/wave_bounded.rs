@@ -230,8 +230,14 @@ fn two_atanh(t: Tr) -> Option<Tr> {
 #[derive(Debug, Clone)]
 pub(crate) struct CertifiedBessel {
     d: Tr,
-    /// `J_0(D), ..., J_{2N+1}(D)`.
-    j: Vec<Tr>,
+    /// `J_0(D), J_1(D)`.
+    j01: [Tr; 2],
+    /// `(-1)^{m+1} J_{2m}(D)`, `m = 0..=N` (index 0 unused): the `u` sum in `q^2`.
+    u_coef: Vec<Tr>,
+    /// `T_m = sum_{n=m+1}^{N} (-1)^{n+1} n J_{2n}(D)`, `m = 0..N`: the gradient sum
+    /// `sum_n (-1)^{n+1} n J_{2n} geo_n = (1 + q) sum_m T_m q^{2m}` (collecting the
+    /// powers `q^{2m}` and `q^{2m+1}` of `geo_n = sum_{j<2n} q^j`).
+    du_coef: Vec<Tr>,
     n_terms: usize,
     /// `sum_{n>N} (D/2)^{2n}/(2n)!`, rounded up.
     tail0: f64,
@@ -252,10 +258,22 @@ impl CertifiedBessel {
         for v in j.iter_mut() {
             v.add_error_mag(d.rad_mag());
         }
+        let n_terms = n_terms as usize;
+        let jt: Vec<Tr> = j.iter().map(tr_from_ball).collect();
+        let sign = |n: usize| if n % 2 == 1 { 1.0 } else { -1.0 };
+        let u_coef: Vec<Tr> = (0..=n_terms).map(|m| jt[2 * m].mul_f64(sign(m))).collect();
+        let mut du_coef = vec![Tr::ZERO; n_terms];
+        let mut acc = Tr::ZERO;
+        for m in (0..n_terms).rev() {
+            acc = acc.add(jt[2 * (m + 1)].mul_f64(sign(m + 1) * (m + 1) as f64));
+            du_coef[m] = acc;
+        }
         Ok(CertifiedBessel {
             d: tr_from_ball(&d),
-            j: j.iter().map(tr_from_ball).collect(),
-            n_terms: n_terms as usize,
+            j01: [jt[0], jt[1]],
+            u_coef,
+            du_coef,
+            n_terms,
             tail0: tail0.to_f64_round(Round::Up),
             tail2: tail2.to_f64_round(Round::Up),
         })
@@ -272,26 +290,18 @@ impl CertifiedBessel {
         let q = Tr::ONE.sub(t).div(Tr::ONE.add(t))?;
         let one_minus_t = Tr::ONE.sub(t);
         let q2 = q.mul(q);
-        let (mut q_pow, mut q_odd, mut geo) = (Tr::ONE, q, Tr::ZERO);
-        let (mut su, mut sdu) = (Tr::ZERO, Tr::ZERO);
-        for n in 1..=self.n_terms {
-            geo = geo.add(q_pow).add(q_odd);
-            q_pow = q_pow.mul(q2);
-            q_odd = q_odd.mul(q2);
-            let jn = self.j[2 * n];
-            let tu = jn.mul(q_pow);
-            let tdu = jn.mul(geo).mul_f64(n as f64);
-            if n % 2 == 1 {
-                su = su.add(tu);
-                sdu = sdu.add(tdu);
-            } else {
-                su = su.sub(tu);
-                sdu = sdu.sub(tdu);
-            }
+        // Horner in q^2 for both sums (coefficients precomputed per contact).
+        let n = self.n_terms;
+        let (mut su, mut sdu) = (self.u_coef[n], self.du_coef[n - 1]);
+        for m in (0..n - 1).rev() {
+            su = su.mul(q2).add(self.u_coef[m + 1]);
+            sdu = sdu.mul(q2).add(self.du_coef[m]);
         }
+        let mut su = su.mul(q2);
+        let mut sdu = sdu.mul(Tr::ONE.add(q));
         su.e += self.tail0;
         sdu.e += 2.0 * self.tail2;
-        let inner = Tr::ONE.sub(self.j[0]).add(self.d.mul(self.j[1]).mul(acosh_r)).add(su.mul_f64(2.0));
+        let inner = Tr::ONE.sub(self.j01[0]).add(self.d.mul(self.j01[1]).mul(acosh_r)).add(su.mul_f64(2.0));
         let u = inner.mul_f64(amp);
         let du = one_minus_t.mul(sdu).mul_f64(4.0 * amp).div(ad)?;
         Some((u.finish()?, du.finish()?))
