@@ -18,8 +18,10 @@
 //!
 //! `|R_l| <= 2 |a_l(n) x^{-l}| exp(|n^2 - 1/4| / x)` for every `l >= 0`.
 //!
-//! (The same bound follows from DLMF 13.7.4 for `U(n+1/2, 2n+1, -2ix)` in
-//! region R1 with `sigma = 0`, `rho = |n^2 - 1/4|`.) Unlike the real-axis bound
+//! (The same bound follows from DLMF 10.40.10-11 for `K_n(-ix)`, `|ph| = pi/2`,
+//! through `H^(1)_n(x) = (2/(pi i)) e^{-n pi i/2} K_n(-ix)` [DLMF 10.27.8], and
+//! from DLMF 13.7.4 for `U(n+1/2, 2n+1, -2ix)` in region R1 with `sigma = 0`,
+//! `rho = |n^2 - 1/4|`.) Unlike the real-axis bound
 //! of 10.17(iii) it needs no `l >= n/2`, so the sum can stop as soon as the
 //! term is small: at `x ~ n^2/10` that is a few hundred terms instead of `n`.
 //! The price is the factor `exp(n^2/x)`, paid in guard bits.
@@ -57,7 +59,10 @@ fn remainder_log2(n: u64, x: f64) -> f64 {
     v * (1.0 + 1e-12) + 1e-300
 }
 
-/// The f64 plan: first `l` with `log2|a_l x^-l| + 1 + remainder_bits <= -wp`, or
+/// The f64 plan: only for `x >= n` (below, the remainder factor `exp(n^2/x)`
+/// costs more than `1.44 n` bits and the power series is cheaper; without this
+/// cut the f64 walk would follow up to `n` terms to find them diverging):
+/// first `l` with `log2|a_l x^-l| + 1 + remainder_bits <= -wp`, or
 /// `None` when the terms diverge first (or the count passes [`MAX_HANKEL_TERMS`]).
 pub(crate) fn plan(n: u64, x: f64, wp: u32) -> Option<HankelPlan> {
     if !(x > 0.0) {
@@ -65,6 +70,9 @@ pub(crate) fn plan(n: u64, x: f64, wp: u32) -> Option<HankelPlan> {
     }
     let four_n2 = 4.0 * (n as f64) * (n as f64);
     let remainder_bits = remainder_log2(n, x);
+    if x < n as f64 {
+        return None;
+    }
     let target = -(wp as f64) - 1.0 - remainder_bits - 2.0; // 2 bits of f64 slack
     let mut log_term = 0.0f64;
     let mut peak = 0.0f64;

@@ -44,7 +44,7 @@ mod series;
 
 pub use hankel::bessel_j_hankel;
 pub use recurrence::{bessel_j_sequence, bessel_j_sequence_dd, bessel_j_sequence_mp};
-pub use series::bessel_j_series;
+pub use series::{bessel_j_series, bessel_j_series_pfq};
 
 use rug::Float;
 
@@ -74,11 +74,24 @@ pub(crate) struct Choice {
     pub cost: f64,
 }
 
-/// Bits the power series loses to cancellation, `log2(I_n(x) / |J_n(x)|)`,
-/// estimated as `1.4427 min(x, x^2/(n+1))` (the sum of |terms| is `I_n(x)`
-/// up to the prefactor; `I_n(x) ~ e^x` for `x >> n`).
+/// Bits the power series loses to cancellation, `log2(I_n(x) / |J_n(x)|)`
+/// (the sum of |terms| is `I_n(x)` up to the common prefactor), from the
+/// exponential factors of Debye's expansions [DLMF 10.41.3, 10.19.3]:
+/// `ln I_n(x) ~ sqrt(n^2+x^2) + n ln(x/(n + sqrt(n^2+x^2)))`, and for `x < n`
+/// `ln J_n(x) ~ sqrt(n^2-x^2) + n ln(x/(n + sqrt(n^2-x^2)))` (for `x >= n`, `J_n`
+/// is `O(1)` up to algebraic factors). An estimate for the initial guard only:
+/// the Ziv loop corrects it.
 fn series_loss_bits(n: u64, x: f64) -> f64 {
-    1.4427 * x.min(x * x / (n as f64 + 1.0))
+    let nf = n as f64;
+    let r_i = (nf * nf + x * x).sqrt();
+    let ln_i = r_i + if n == 0 { 0.0 } else { nf * (x / (nf + r_i)).ln() };
+    let ln_j = if x < nf {
+        let r_j = (nf * nf - x * x).sqrt();
+        r_j + nf * (x / (nf + r_j)).ln()
+    } else {
+        0.0
+    };
+    ((ln_i - ln_j) * std::f64::consts::LOG2_E).max(0.0) * 1.02
 }
 
 /// The power series' choice: about `2 k_peak + wp/8` terms, `k_peak` the largest
