@@ -49,6 +49,41 @@ fn bench_hyp1f2(c: &mut Criterion) {
     });
 }
 
+/// `hyp1f2_bounded(1/2; k+1, k+3/2; -s^2)` over the issue-8 domain k <= 1000,
+/// s <= 35 (64 fixed low-discrepancy points; elements per second), with the number
+/// of MP fallbacks printed (large negative z against small k cancels: those fall back).
+fn bench_hyp1f2_domain(c: &mut Criterion) {
+    let pts: Vec<(f64, f64)> = (0..64)
+        .map(|i| {
+            let u = (i as f64 * 0.618_033_988_749_895).fract();
+            let v = (i as f64 * 0.754_877_666_246_693).fract();
+            ((1000.0 * u).floor(), 35.0 * v)
+        })
+        .collect();
+    let before = hyp1f2::hyp1f2_fallbacks();
+    let mut g = c.benchmark_group("hyp1f2_f64_domain");
+    g.throughput(criterion::Throughput::Elements(pts.len() as u64));
+    g.bench_function("hyp1f2_bounded", |b| {
+        b.iter(|| pts.iter().map(|&(k, s)| hyp1f2::hyp1f2_bounded(0.5, k + 1.0, k + 1.5, black_box(-s * s)).unwrap().value).sum::<f64>())
+    });
+    let native: Vec<(f64, f64)> = pts
+        .iter()
+        .copied()
+        .filter(|&(k, s)| hyp1f2::hyp1f2_native_bounded(0.5, k + 1.0, k + 1.5, -s * s).is_some_and(|b| b.err <= 1e-14 * b.value.abs()))
+        .collect();
+    g.throughput(criterion::Throughput::Elements(native.len().max(1) as u64));
+    g.bench_function("hyp1f2_native_bounded/accepted_points", |b| {
+        b.iter(|| native.iter().map(|&(k, s)| hyp1f2::hyp1f2_native_bounded(0.5, k + 1.0, k + 1.5, black_box(-s * s)).unwrap().value).sum::<f64>())
+    });
+    g.finish();
+    eprintln!(
+        "hyp1f2_f64_domain: {} of {} points native; MP fallbacks counted during the run: {}",
+        native.len(),
+        pts.len(),
+        hyp1f2::hyp1f2_fallbacks() - before
+    );
+}
+
 fn bench_hyp2f1(c: &mut Criterion) {
     let mut g = c.benchmark_group("hyp2f1_model_128bit");
     let one = exact(1.0);
@@ -126,6 +161,6 @@ fn bench_bessel(c: &mut Criterion) {
 criterion_group! {
     name = benches;
     config = Criterion::default().sample_size(20).warm_up_time(std::time::Duration::from_millis(300)).measurement_time(std::time::Duration::from_secs(1));
-    targets = bench_meijer, bench_hyp1f2, bench_hyp2f1, bench_hyp2f1_f64, bench_bessel
+    targets = bench_meijer, bench_hyp1f2, bench_hyp1f2_domain, bench_hyp2f1, bench_hyp2f1_f64, bench_bessel
 }
 criterion_main!(benches);

@@ -199,13 +199,104 @@ pub fn hyp1f2_mp(a: &Float, b1: &Float, b2: &Float, z: &Float, prec: u32) -> Res
     hyp_pfq_mp(std::slice::from_ref(a), &[b1.clone(), b2.clone()], z, prec)
 }
 
-/// `1F2(a; b1, b2; z)` in f64, within `1e-14` relative.
+/// Largest relative bound the native f64 series may return (beyond it: MP).
+pub const NATIVE_REL_TOL: f64 = 1e-14;
+
+/// Cap on the terms of the native f64 series.
+const NATIVE_MAX_TERMS: u64 = 20_000;
+
+static NATIVE_FALLBACKS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+
+/// How many [`hyp1f2_bounded`] / [`hyp1f2`] calls fell back to MP since the process started.
+pub fn hyp1f2_fallbacks() -> u64 {
+    NATIVE_FALLBACKS.load(std::sync::atomic::Ordering::Relaxed)
+}
+
+/// The series of `1F2(a; b1, b2; z)` summed in f64 with a running error analysis:
+/// `Some((value, err))` with `|1F2 - value| <= err` (proven), `None` where it
+/// cannot be applied (`b1, b2 <= 0`, no convergence within the cap, overflow).
+///
+/// **Argument.** With `u = 2^-53`, the computed term ratio
+/// `fl(z (a+n) / ((n+1)(b1+n)(b2+n)))` has at most 6 roundings (three shifted
+/// parameters, two products, one quotient) and the update `t <- t r` one more, so
+/// the computed `t~_n = t_n (1 + theta_n)`, `|theta_n| <= gamma_{7n}`
+/// [Higham, *Accuracy and Stability*, Lemma 3.1]. Each addition `s <- s + t~` adds
+/// at most `u |s_new|`. Hence `|sum_{n<N} t_n - s~| <= sum gamma_{7n} |t~_n|/(1-gamma_{7n}) + u sum |s~_k|`.
+/// **Tail**: once `a+N, b1+N, b2+N > 0`, `|t_{n+1}/t_n| <= rho_N = |z| max(1, (a+N)/(b1+N)) / ((b2+N)(N+1))`
+/// for all `n >= N` (each factor is monotone in `n`), so `sum_{n>=N} |t_n| <= |t_N|/(1 - rho_N)`
+/// when `rho_N < 1`. The bound is evaluated in f64 and inflated by `1 + 2^-30`
+/// for its own roundings (fewer than `2^20` operations).
+pub fn hyp1f2_native_bounded(a: f64, b1: f64, b2: f64, z: f64) -> Option<Bounded> {
+    if !(b1 > 0.0 && b2 > 0.0 && a.is_finite() && z.is_finite()) {
+        return None;
+    }
+    let u = f64::EPSILON / 2.0;
+    // first index with a + n > 0 (the tail bound needs it), unless the series terminates
+    let n_pos = if a > 0.0 { 0.0 } else { (-a).floor() + 1.0 };
+    let mut t = 1.0f64;
+    let mut s = 1.0f64;
+    let mut err = 0.0f64; // accumulated rounding bound
+    let mut n: u64 = 0;
+    loop {
+        let nf = n as f64;
+        let r = z * (a + nf) / ((nf + 1.0) * (b1 + nf) * (b2 + nf));
+        t *= r;
+        n += 1;
+        let g = 7.0 * n as f64 * u;
+        if !(g < 0.5) || !t.is_finite() || n > NATIVE_MAX_TERMS {
+            return None;
+        }
+        let gamma = g / (1.0 - g);
+        if t == 0.0 {
+            if !(a <= 0.0 && a == a.floor() && nf + 1.0 > -a) {
+                return None; // underflow, not termination
+            }
+            // terminating series (a a non-positive integer): exact beyond this term
+            let b = Bounded { value: s, err: (err * (1.0 + 1.0 / (1u64 << 30) as f64)).next_up() };
+            return Some(b);
+        }
+        let nf = n as f64;
+        if nf >= n_pos {
+            let rho = z.abs() * ((a + nf) / (b1 + nf)).max(1.0) / ((b2 + nf) * (nf + 1.0)) * (1.0 + 8.0 * u);
+            if rho < 0.5 {
+                let t_up = t.abs() * (1.0 + gamma) / (1.0 - gamma);
+                let tail = t_up / (1.0 - rho);
+                if tail <= 1e-3 * u * s.abs() {
+                    let total = (err + tail) * (1.0 + 1.0 / (1u64 << 30) as f64);
+                    return Some(Bounded { value: s, err: total.next_up() });
+                }
+            }
+        }
+        s += t;
+        err += gamma / (1.0 - gamma) * t.abs() + u * s.abs();
+    }
+}
+
+/// `1F2(a; b1, b2; z)` in f64, within `1e-14` relative: the native series where its
+/// proven bound is at most [`NATIVE_REL_TOL`] relative, else the pFq path.
 pub fn hyp1f2(a: f64, b1: f64, b2: f64, z: f64) -> Result<f64> {
+    if let Some(b) = hyp1f2_native_bounded(a, b1, b2, z) {
+        if b.err <= NATIVE_REL_TOL * b.value.abs() {
+            return Ok(b.value);
+        }
+    }
     hyp_pfq(&[a], &[b1, b2], z)
 }
 
-/// `1F2(a; b1, b2; z)` in f64 with a proven error bound for the f64 inputs as given.
+/// `1F2(a; b1, b2; z)` in f64 with a proven error bound for the f64 inputs as given:
+/// the native series ([`hyp1f2_native_bounded`]) when its bound is at most
+/// [`NATIVE_REL_TOL`] relative; otherwise (cancellation: large negative `z` against
+/// the parameters) the certified MP value at 64 bits, counted by [`hyp1f2_fallbacks`].
 pub fn hyp1f2_bounded(a: f64, b1: f64, b2: f64, z: f64) -> Result<Bounded> {
+    for (v, what) in [(a, "a"), (b1, "b1"), (b2, "b2"), (z, "z")] {
+        crate::error::finite(v, what)?;
+    }
+    if let Some(b) = hyp1f2_native_bounded(a, b1, b2, z) {
+        if b.err <= NATIVE_REL_TOL * b.value.abs() {
+            return Ok(b);
+        }
+    }
+    NATIVE_FALLBACKS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     crate::special::bounded_from_ball("hyp1f2", &hyp1f2_mp_f64(a, b1, b2, z, crate::special::F64_FALLBACK_PREC)?)
 }
 
@@ -283,6 +374,34 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn native_bound_holds_and_is_tight_where_accepted() {
+        let mut accepted = 0;
+        for &(a, b1, b2, z) in &[
+            (0.5, 1.0, 1.5, -3.0),
+            (0.5, 11.0, 11.5, -300.0),
+            (0.5, 101.0, 101.5, -1225.0),
+            (0.5, 1001.0, 1001.5, -1225.0),
+            (1.25, 2.5, 3.75, 40.0),
+            (-3.0, 2.5, 0.75, 7.5),
+            (0.5, 1.0, 1.5, -1e-9),
+            (2.0, 0.25, 0.125, -0.5),
+        ] {
+            let exact = hyp1f2_mp_f64(a, b1, b2, z, 200).unwrap();
+            if let Some(b) = hyp1f2_native_bounded(a, b1, b2, z) {
+                let diff = Float::with_val(264, exact.mid() - b.value).abs();
+                assert!(diff <= b.err, "{a} {b1} {b2} {z}: {b} vs {exact:?}");
+                if b.err <= NATIVE_REL_TOL * b.value.abs() {
+                    accepted += 1;
+                }
+            }
+            let fb = hyp1f2_bounded(a, b1, b2, z).unwrap();
+            let diff = Float::with_val(264, exact.mid() - fb.value).abs();
+            assert!(diff <= fb.err && fb.err <= 1e-14 * fb.value.abs(), "{a} {b1} {b2} {z}: {fb}");
+        }
+        assert!(accepted >= 6, "{accepted}");
     }
 
     #[test]
