@@ -132,7 +132,7 @@ fn curve_csv(c: &Curve) -> Result<String, String> {
 // ---------------------------------------------------------------- computing
 
 /// A progress bar on stderr, hidden when stderr is not a terminal.
-fn progress(len: u64, what: &str) -> ProgressBar {
+pub fn progress(len: u64, what: &str) -> ProgressBar {
     if !std::io::stderr().is_terminal() {
         return ProgressBar::hidden();
     }

@@ -8,6 +8,7 @@
 //!   output (see `curve.rs`).
 //! * `maugis profile`: traction, displacement and gap of one state (`profile.rs`).
 //! * `maugis limits`: the Appendix E limits and the Eq. 17 envelope (`limits.rs`).
+//! * `maugis sweep` / `maugis merge`: regime maps, sharded for array jobs (`sweep.rs`).
 //!
 //! Usage errors and runtime errors exit with code 2 and a one-line message on
 //! stderr (`maugis: ...`); no output file is written then.
@@ -19,6 +20,7 @@ mod limits;
 mod output;
 mod plot;
 mod profile;
+mod sweep;
 
 use clap::{Parser, Subcommand};
 
@@ -42,6 +44,11 @@ enum Command {
     Profile(profile::ProfileArgs),
     /// The Appendix E limits (JKR, M-DMT, smooth M-DMT) and the Eq. 17 local envelope.
     Limits(limits::LimitsArgs),
+    /// Regime map over lambda (log) and alpha, beta or the Johnson parameter: instabilities,
+    /// dissipation, pull-off, valid fraction, regime; CSV, JSON, SVG. Shardable (--shard s/n).
+    Sweep(sweep::SweepArgs),
+    /// Merge the output directories of `maugis sweep --shard s/n` runs into the whole sweep.
+    Merge(sweep::MergeArgs),
 }
 
 /// Requests of the demo: the Eq. 12 factors at abar = 6, beta = 9/8, and the edge x = a.
@@ -85,6 +92,8 @@ fn main() {
         Command::Curve(a) => report(guarded(move || curve::run(a))),
         Command::Profile(a) => report(guarded(move || profile::run(a))),
         Command::Limits(a) => report(guarded(move || limits::run(a))),
+        Command::Sweep(a) => report(guarded(move || sweep::run(a))),
+        Command::Merge(a) => report(guarded(move || sweep::run_merge(a))),
     };
     std::process::exit(code);
 }
@@ -140,7 +149,7 @@ fn report(r: Result<(), String>) -> i32 {
 fn one_line(e: &clap::Error) -> String {
     use clap::error::ErrorKind;
     if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand || e.kind() == ErrorKind::MissingSubcommand {
-        return "a subcommand is required (eval, demo, curve, profile, limits); try 'maugis --help'".into();
+        return "a subcommand is required (eval, demo, curve, profile, limits, sweep, merge); try 'maugis --help'".into();
     }
     let text = e.render().to_string();
     let parts: Vec<&str> = text

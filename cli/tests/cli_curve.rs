@@ -1,4 +1,4 @@
-//! `maugis curve`, `maugis profile` and `maugis limits` end to end: the JSON
+//! `maugis curve`, `maugis profile`, `maugis limits`, `maugis sweep` and `maugis merge` end to end: the JSON
 //! schema, the files written, atomic output, and one-line usage errors (exit
 //! code 2, nothing written). Small grids keep it fast.
 
@@ -248,6 +248,19 @@ fn bad_parameters_exit_2_with_one_line_and_no_files() {
         &["profile", "--abar", "2", "--beta", "-3"],
         &["limits", "--amax", "-1"],
         &["limits", "--points", "1"],
+        &["sweep", "--lambda-min", "0"],
+        &["sweep", "--lambda-min", "2", "--lambda-max", "1"],
+        &["sweep", "--lambda-n", "0"],
+        &["sweep", "--n", "20000"],
+        &["sweep", "--axis", "gamma"],
+        &["sweep", "--min", "-1"],
+        &["sweep", "--min", "0.5", "--max", "0.1"],
+        &["sweep", "--axis", "beta", "--min", "0"],
+        &["sweep", "--shard", "0/2"],
+        &["sweep", "--shard", "3/2"],
+        &["sweep", "--shard", "x"],
+        &["sweep", "--points", "1"],
+        &["merge"],
         &["frobnicate"],
     ];
     for args in cases {
@@ -267,7 +280,50 @@ fn bad_parameters_exit_2_with_one_line_and_no_files() {
         assert!(stdout(&o).is_empty(), "{args:?}: stdout {}", stdout(&o));
         assert!(!dir.path().exists(), "{args:?}: created the output directory");
         assert!(dir.tmp_siblings().is_empty(), "{args:?}: left a temporary directory");
+        if args[0] == "sweep" {
+            let flag = args.iter().rev().find(|a| a.starts_with("--")).unwrap();
+            assert!(err.contains(flag), "{args:?}: the message does not name {flag}: {err}");
+        }
     }
+}
+
+/// A small regime map; two shards merged equal the unsharded run.
+#[test]
+fn sweep_writes_a_map_and_shards_merge_to_the_whole() {
+    let grid = ["--lambda-min", "0.5", "--lambda-max", "6", "--lambda-n", "3", "--n", "3", "--points", "60"];
+    let whole = TempPath::new("sweep");
+    let o = maugis(&[&["sweep"][..], &grid, &["--out", whole.str()]].concat());
+    assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(&o));
+    let mut r = csv::Reader::from_path(whole.path().join("sweep.csv")).unwrap();
+    let header: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
+    assert_eq!(header[..3], ["index", "lambda", "value"]);
+    let rows: Vec<csv::StringRecord> = r.records().map(|x| x.unwrap()).collect();
+    assert_eq!(rows.len(), 9);
+    for row in &rows {
+        let regime = &row[13];
+        assert!(["dissipative", "cavitating", "smooth_like"].contains(&regime), "{regime}");
+    }
+    let svg = std::fs::read_to_string(whole.path().join("sweep.svg")).unwrap();
+    assert!(svg.contains("<svg") && svg.contains("dissipative"));
+
+    let (s1, s2, merged) = (TempPath::new("shard1"), TempPath::new("shard2"), TempPath::new("merged"));
+    for (sh, dir) in [("1/2", &s1), ("2/2", &s2)] {
+        let o = maugis(&[&["sweep"][..], &grid, &["--shard", sh, "--out", dir.str()]].concat());
+        assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(&o));
+        assert!(!dir.path().join("sweep.svg").exists(), "a shard draws no map");
+    }
+    // one shard alone does not merge
+    let o = maugis(&["merge", s1.str(), "--out", merged.str()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("missing") && !merged.path().exists());
+    let o = maugis(&["merge", s2.str(), s1.str(), "--out", merged.str()]);
+    assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(&o));
+    let read = |d: &TempPath| -> Value { serde_json::from_str(&std::fs::read_to_string(d.path().join("sweep.json")).unwrap()).unwrap() };
+    assert_eq!(read(&merged), read(&whole));
+    assert_eq!(
+        std::fs::read_to_string(merged.path().join("sweep.csv")).unwrap(),
+        std::fs::read_to_string(whole.path().join("sweep.csv")).unwrap()
+    );
 }
 
 #[test]

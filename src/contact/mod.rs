@@ -15,6 +15,7 @@
 //! * [`paths`]: load- and displacement-controlled paths, the jumps they meet,
 //!   hysteresis loops and the dissipated energy.
 //! * [`summary`]: the output schema of a run (summary.json, `--format json`).
+//! * [`sweep`]: regime maps over grids of lambda and alpha, beta or the Johnson parameter, sharded.
 //! * [`limits`]: Appendix E (JKR, M-DMT) and the Eq. 17 envelope.
 //!
 //! Sign convention (notes/model.md, sec. 1): compressive traction is negative,
@@ -32,3 +33,4 @@ pub mod limits;
 pub mod model_mp;
 pub mod paths;
 pub mod summary;
+pub mod sweep;

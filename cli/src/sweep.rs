@@ -1,0 +1,327 @@
+//! `maugis sweep` and `maugis merge`: regime maps over a grid of lambda (log)
+//! and alpha, beta or the Johnson parameter (library: `maugis::contact::sweep`).
+//!
+//! `maugis sweep` writes into `--out`:
+//!
+//! * `sweep.csv`: one row per grid point (`index, lambda, value, alpha, beta,
+//!   instabilities, unloading_jumps, dissipation, dissipation_valid,
+//!   dissipation_invalid, pull_off, pull_off_valid, valid_fraction, regime`);
+//! * `sweep.json`: the grid, the shard and the points (the library's `Sweep`);
+//! * `sweep.svg`: the regime map (colour: regime; shade: dissipation) — only
+//!   for a whole sweep, not for a shard.
+//!
+//! With `--shard s/n` it computes every n-th grid point (`k % n == s - 1`);
+//! `maugis merge DIR... --out DIR` reads the shards' `sweep.json`, checks that
+//! they cover the grid exactly once, and writes the whole sweep's files. The
+//! grid points run in parallel (rayon) with a progress bar on a terminal.
+
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use std::time::Instant;
+
+use clap::{Args, ValueEnum};
+use plotters::prelude::*;
+
+use maugis::contact::sweep::{merge, run_sweep, Regime, Sweep, SweepAxis, SweepGrid};
+
+use crate::args::{self, num, short, FIG4C_ALPHA, FIG4C_BETA};
+use crate::curve::progress;
+use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
+use crate::plot::plot_err;
+
+/// The second axis on the command line.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Axis {
+    /// Wave amplitude alpha (beta fixed by --beta).
+    Alpha,
+    /// Wavelength beta (alpha fixed by --alpha).
+    Beta,
+    /// Johnson parameter sqrt(beta/alpha^2) (beta fixed by --beta).
+    Johnson,
+}
+
+/// Flags of `maugis sweep`.
+#[derive(Args, Debug)]
+pub struct SweepArgs {
+    /// Smallest lambda.
+    #[arg(long, value_name = "L", default_value = "0.1", value_parser = args::positive, allow_negative_numbers = true)]
+    pub lambda_min: f64,
+    /// Largest lambda.
+    #[arg(long, value_name = "L", default_value = "10", value_parser = args::positive, allow_negative_numbers = true)]
+    pub lambda_max: f64,
+    /// Number of lambda values (log-spaced).
+    #[arg(long, value_name = "N", default_value = "40", value_parser = axis_points)]
+    pub lambda_n: usize,
+    /// The second axis: alpha, beta or johnson.
+    #[arg(long, value_name = "AXIS", default_value = "alpha")]
+    pub axis: Axis,
+    /// Smallest value of the second axis.
+    #[arg(long, value_name = "V", default_value = "0", value_parser = args::non_negative, allow_negative_numbers = true)]
+    pub min: f64,
+    /// Largest value of the second axis.
+    #[arg(long, value_name = "V", default_value = "0.7", value_parser = args::positive, allow_negative_numbers = true)]
+    pub max: f64,
+    /// Number of values of the second axis (linear).
+    #[arg(long, value_name = "N", default_value = "40", value_parser = axis_points)]
+    pub n: usize,
+    /// Fixed alpha (for --axis beta) [default: 2 sqrt(2)/8].
+    #[arg(long, value_name = "A", value_parser = args::non_negative, allow_negative_numbers = true)]
+    pub alpha: Option<f64>,
+    /// Fixed beta (for --axis alpha or johnson) [default: 9/8].
+    #[arg(long, value_name = "B", value_parser = args::positive, allow_negative_numbers = true)]
+    pub beta: Option<f64>,
+    /// Largest contact half-width of every curve.
+    #[arg(long, value_name = "AMAX", default_value = "6", value_parser = args::positive, allow_negative_numbers = true)]
+    pub amax: f64,
+    /// Grid points per curve.
+    #[arg(long, value_name = "N", default_value = "150", value_parser = args::grid_points)]
+    pub points: usize,
+    /// Compute only shard s of n (1-based), e.g. --shard 3/8 in an array job.
+    #[arg(long, value_name = "S/N", value_parser = shard)]
+    pub shard: Option<(usize, usize)>,
+    /// Output directory (written atomically).
+    #[arg(long, value_name = "DIR", default_value = "maugis-sweep")]
+    pub out: PathBuf,
+}
+
+/// Flags of `maugis merge`.
+#[derive(Args, Debug)]
+pub struct MergeArgs {
+    /// The shards' output directories (each holds a sweep.json).
+    #[arg(value_name = "SHARD_DIR", required = true)]
+    pub shards: Vec<PathBuf>,
+    /// Output directory of the merged sweep.
+    #[arg(long, value_name = "DIR", default_value = "maugis-sweep")]
+    pub out: PathBuf,
+}
+
+/// Points per axis: 1 ..= 10000.
+fn axis_points(s: &str) -> Result<usize, String> {
+    let n: usize = s.trim().parse().map_err(|_| format!("'{s}' is not a whole number"))?;
+    if !(1..=10_000).contains(&n) {
+        return Err(format!("must lie in 1..=10000 (got {n})"));
+    }
+    Ok(n)
+}
+
+/// `s/n` with `1 <= s <= n`.
+fn shard(s: &str) -> Result<(usize, usize), String> {
+    let (a, b) = s.split_once('/').ok_or_else(|| format!("'{s}' is not of the form s/n (e.g. 2/8)"))?;
+    let parse = |t: &str| t.trim().parse::<usize>().map_err(|_| format!("'{s}' is not of the form s/n (e.g. 2/8)"));
+    let (a, b) = (parse(a)?, parse(b)?);
+    if b == 0 || a == 0 || a > b {
+        return Err(format!("'{s}': need 1 <= s <= n"));
+    }
+    Ok((a, b))
+}
+
+fn regime_str(r: Regime) -> &'static str {
+    match r {
+        Regime::Dissipative => "dissipative",
+        Regime::Cavitating => "cavitating",
+        Regime::SmoothLike => "smooth_like",
+    }
+}
+
+fn axis_name(a: SweepAxis) -> &'static str {
+    match a {
+        SweepAxis::Alpha => "alpha",
+        SweepAxis::Beta => "beta",
+        SweepAxis::Johnson => "johnson",
+    }
+}
+
+fn sweep_csv(s: &Sweep) -> Result<String, String> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    let err = |e: csv::Error| format!("could not format CSV: {e}");
+    w.write_record([
+        "index", "lambda", "value", "alpha", "beta", "instabilities", "unloading_jumps", "dissipation", "dissipation_valid",
+        "dissipation_invalid", "pull_off", "pull_off_valid", "valid_fraction", "regime",
+    ])
+    .map_err(err)?;
+    for p in &s.points {
+        w.write_record([
+            p.index.to_string(),
+            p.lambda.to_string(),
+            p.value.to_string(),
+            p.alpha.to_string(),
+            p.beta.to_string(),
+            p.instabilities.to_string(),
+            p.unloading_jumps.to_string(),
+            p.dissipation.to_string(),
+            p.dissipation_valid.to_string(),
+            p.dissipation_invalid.to_string(),
+            p.pull_off.map_or(String::new(), |v| v.to_string()),
+            p.pull_off_valid.to_string(),
+            p.valid_fraction.to_string(),
+            regime_str(p.regime).to_string(),
+        ])
+        .map_err(err)?;
+    }
+    let bytes = w.into_inner().map_err(|e| format!("could not format CSV: {e}"))?;
+    String::from_utf8(bytes).map_err(|e| format!("could not format CSV: {e}"))
+}
+
+/// The regime map: one cell per grid point, hue by regime, shade by dissipation.
+fn sweep_svg(s: &Sweep) -> Result<String, String> {
+    let g = &s.grid;
+    let (l0, l1) = (g.lambda_min.log10(), g.lambda_max.log10());
+    let dl = if g.lambda_n > 1 { (l1 - l0) / (g.lambda_n - 1) as f64 } else { 1.0 };
+    let dv = if g.n > 1 { (g.max - g.min) / (g.n - 1) as f64 } else { 1.0 };
+    let wmax = s.points.iter().map(|p| p.dissipation.abs()).filter(|w| w.is_finite()).fold(0.0, f64::max).max(1e-300);
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (1100, 800)).into_drawing_area();
+        root.fill(&WHITE).map_err(plot_err)?;
+        let (plot, legend) = root.split_horizontally(860);
+        let title = format!(
+            "Regime map: {} over log10 λ, {} (amax = {}, {} points per curve)",
+            axis_name(g.axis),
+            match g.axis {
+                SweepAxis::Beta => format!("α = {}", short(g.fixed)),
+                _ => format!("β = {}", short(g.fixed)),
+            },
+            short(g.amax),
+            g.points
+        );
+        let mut chart = ChartBuilder::on(&plot)
+            .caption(title, ("sans-serif", 18))
+            .margin(12)
+            .x_label_area_size(48)
+            .y_label_area_size(64)
+            .build_cartesian_2d((l0 - dl / 2.0)..(l1 + dl / 2.0), (g.min - dv / 2.0)..(g.max + dv / 2.0))
+            .map_err(plot_err)?;
+        chart
+            .configure_mesh()
+            .x_desc("log10 λ (Maugis parameter)")
+            .y_desc(axis_name(g.axis))
+            .disable_mesh()
+            .draw()
+            .map_err(plot_err)?;
+        for p in &s.points {
+            let (x, y) = (p.lambda.log10(), p.value);
+            let t = (p.dissipation.abs() / wmax).clamp(0.0, 1.0);
+            let shade = |c: (f64, f64, f64)| {
+                let mix = |v: f64| (255.0 - (255.0 - v) * (0.25 + 0.75 * t)).round() as u8;
+                RGBColor(mix(c.0), mix(c.1), mix(c.2))
+            };
+            let col = match p.regime {
+                Regime::Dissipative => shade((31.0, 91.0, 180.0)),
+                Regime::Cavitating => shade((214.0, 96.0, 24.0)),
+                Regime::SmoothLike => RGBColor(225, 225, 225),
+            };
+            chart
+                .draw_series(std::iter::once(Rectangle::new(
+                    [(x - dl / 2.0, y - dv / 2.0), (x + dl / 2.0, y + dv / 2.0)],
+                    col.filled(),
+                )))
+                .map_err(plot_err)?;
+        }
+        // legend outside the data
+        let entries = [
+            (RGBColor(31, 91, 180), "dissipative: valid loops".to_string()),
+            (RGBColor(214, 96, 24), "cavitating: loops through invalid states".to_string()),
+            (RGBColor(225, 225, 225), "smooth-like: no roughness-induced loop".to_string()),
+            (RGBColor(255, 255, 255), format!("shade: dissipation W / {}", short(wmax))),
+        ];
+        for (i, (c, label)) in entries.iter().enumerate() {
+            let y = 80 + 34 * i as i32;
+            legend.draw(&Rectangle::new([(10, y), (34, y + 20)], c.filled())).map_err(plot_err)?;
+            legend.draw(&Rectangle::new([(10, y), (34, y + 20)], BLACK.stroke_width(1))).map_err(plot_err)?;
+            legend.draw(&Text::new(label.clone(), (40, y + 3), ("sans-serif", 13))).map_err(plot_err)?;
+        }
+        root.present().map_err(plot_err)?;
+    }
+    Ok(svg)
+}
+
+fn files_of(s: &Sweep) -> Result<Vec<OutFile>, String> {
+    let mut files = vec![OutFile::text("sweep.csv", sweep_csv(s)?)];
+    let mut json = serde_json::to_string_pretty(s).map_err(|e| format!("could not format JSON: {e}"))?;
+    json.push('\n');
+    files.push(OutFile::text("sweep.json", json));
+    if s.shard.is_none() {
+        files.push(OutFile::text("sweep.svg", sweep_svg(s)?));
+    }
+    Ok(files)
+}
+
+fn report(s: &Sweep, written: &[PathBuf], out: &std::path::Path, secs: Option<f64>) -> String {
+    let mut r = String::new();
+    let count = |reg: Regime| s.points.iter().filter(|p| p.regime == reg).count();
+    let _ = writeln!(
+        r,
+        "maugis sweep: {} point(s){}{}: {} dissipative, {} cavitating, {} smooth-like",
+        s.points.len(),
+        s.shard.map_or(String::new(), |(a, b)| format!(" (shard {a}/{b})")),
+        secs.map_or(String::new(), |t| format!(" in {t:.1} s")),
+        count(Regime::Dissipative),
+        count(Regime::Cavitating),
+        count(Regime::SmoothLike)
+    );
+    let _ = writeln!(r, "wrote {} file(s) to {}:", written.len(), out.display());
+    for p in written {
+        let _ = writeln!(r, "  {}", p.display());
+    }
+    r
+}
+
+/// Runs `maugis sweep`.
+pub fn run(a: SweepArgs) -> Result<(), String> {
+    let (axis, fixed) = match a.axis {
+        Axis::Alpha => (SweepAxis::Alpha, a.beta.unwrap_or(FIG4C_BETA)),
+        Axis::Beta => (SweepAxis::Beta, a.alpha.unwrap_or(FIG4C_ALPHA)),
+        Axis::Johnson => (SweepAxis::Johnson, a.beta.unwrap_or(FIG4C_BETA)),
+    };
+    if a.lambda_max < a.lambda_min {
+        return Err(format!("--lambda-max ({}) must be >= --lambda-min ({})", num(a.lambda_max), num(a.lambda_min)));
+    }
+    if a.max < a.min {
+        return Err(format!("--max ({}) must be >= --min ({})", num(a.max), num(a.min)));
+    }
+    if axis != SweepAxis::Alpha && a.min <= 0.0 {
+        return Err(format!("--min must be > 0 for --axis {} (got {})", axis_name(axis), num(a.min)));
+    }
+    let grid = SweepGrid {
+        lambda_min: a.lambda_min,
+        lambda_max: a.lambda_max,
+        lambda_n: a.lambda_n,
+        axis,
+        min: a.min,
+        max: a.max,
+        n: a.n,
+        fixed,
+        amax: a.amax,
+        points: a.points,
+    };
+    grid.check().map_err(|e| e.to_string())?;
+    let smallest_beta = match axis {
+        SweepAxis::Beta => a.min,
+        _ => fixed,
+    };
+    args::check_size("--amax", a.amax, 1.0, smallest_beta)?;
+    check_out_dir(&a.out)?;
+    let total = a.shard.map_or(grid.len(), |(s, n)| (0..grid.len()).filter(|k| k % n == s - 1).count());
+    let pb = progress(total as u64, "sweep");
+    let t0 = Instant::now();
+    let sweep = run_sweep(grid, a.shard, || pb.inc(1)).map_err(|e| e.to_string())?;
+    pb.finish_and_clear();
+    let secs = t0.elapsed().as_secs_f64();
+    let written = write_atomically(&a.out, &files_of(&sweep)?)?;
+    print_stdout(&report(&sweep, &written, &a.out, Some(secs)))
+}
+
+/// Runs `maugis merge`.
+pub fn run_merge(a: MergeArgs) -> Result<(), String> {
+    check_out_dir(&a.out)?;
+    let mut parts = Vec::new();
+    for d in &a.shards {
+        let path = d.join("sweep.json");
+        let text = std::fs::read_to_string(&path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+        let s: Sweep = serde_json::from_str(&text).map_err(|e| format!("{}: not a sweep.json ({e})", path.display()))?;
+        parts.push(s);
+    }
+    let sweep = merge(&parts).map_err(|e| e.to_string())?;
+    let written = write_atomically(&a.out, &files_of(&sweep)?)?;
+    print_stdout(&report(&sweep, &written, &a.out, None))
+}
