@@ -2,8 +2,9 @@
 //!
 //! Every numeric flag is checked while the command line is parsed, so a bad value
 //! is a clap usage error (exit code 2, one line on stderr) raised before anything
-//! is computed or written. Numbers may be written as decimals (`0.125`, `1e-1`)
-//! or as simple fractions (`1/10`, `9/8`).
+//! is computed or written. Numbers are arithmetic expressions, parsed by the
+//! `meval` crate: decimals (`0.125`, `1e-1`), fractions (`1/10`, `9/8`), `pi`,
+//! `e`, `sqrt(2)/3`, `2*sqrt(2)/8`, powers (`2^-3`) and the usual functions.
 
 /// The paper's Fig. 4c amplitude `alpha = 2 sqrt(2)/8`.
 pub const FIG4C_ALPHA: f64 = std::f64::consts::SQRT_2 / 4.0;
@@ -46,22 +47,15 @@ pub fn num(x: f64) -> String {
     }
 }
 
-/// A number or a fraction `p/q`.
-fn number(s: &str) -> Result<f64, String> {
+/// A finite number given as an arithmetic expression (`sqrt(2)/3`, `9/8`, `pi/4`).
+pub fn number(s: &str) -> Result<f64, String> {
     let t = s.trim();
-    let parse = |u: &str| u.trim().parse::<f64>().map_err(|_| format!("'{s}' is not a number"));
-    let v = match t.split_once('/') {
-        Some((p, q)) => {
-            let (p, q) = (parse(p)?, parse(q)?);
-            if q == 0.0 {
-                return Err(format!("'{s}': division by zero"));
-            }
-            p / q
-        }
-        None => parse(t)?,
-    };
+    if t.is_empty() {
+        return Err("empty value: give a number or an expression like sqrt(2)/3".into());
+    }
+    let v = meval::eval_str(t).map_err(|e| format!("'{s}' is not a number or an arithmetic expression ({e})"))?;
     if !v.is_finite() {
-        return Err("must be a finite number (not NaN or infinity)".into());
+        return Err(format!("'{s}' must be a finite number (not NaN or infinity)"));
     }
     Ok(v)
 }
@@ -121,6 +115,13 @@ mod tests {
         assert!(positive("NaN").is_err());
         assert!(positive("inf").is_err());
         assert!(positive("1/0").is_err());
+        assert!((positive("sqrt(2)/3").unwrap() - 2f64.sqrt() / 3.0).abs() < 1e-16);
+        assert_eq!(positive("2*sqrt(2)/8"), Ok(FIG4C_ALPHA));
+        assert_eq!(positive("pi/4"), Ok(std::f64::consts::FRAC_PI_4));
+        assert_eq!(positive("1e-1"), Ok(0.1));
+        assert!(positive("sqrt(-1)").is_err());
+        assert!(positive("2 +").is_err());
+        assert!(positive("").is_err());
         assert!(non_negative("-1").is_err());
         assert_eq!(non_negative("0"), Ok(0.0));
         assert!(grid_points("1").is_err());

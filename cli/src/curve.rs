@@ -52,10 +52,10 @@ pub enum CurveFormat {
 #[derive(Args, Debug)]
 pub struct CurveArgs {
     /// Maugis parameter lambda > 0; repeat for several curves
-    /// [default: 1/10 1/4 1/2 1 3/2 3 6]. Fractions like 1/10 are accepted.
+    /// [default: 1/10 1/4 1/2 1 3/2 3 6]. Expressions like 1/10 or sqrt(2)/3 are accepted.
     #[arg(long = "lambda", value_name = "L", value_parser = args::positive, allow_negative_numbers = true)]
     pub lambda: Vec<f64>,
-    /// Normalised wave amplitude alpha >= 0 [default: 2 sqrt(2)/8].
+    /// Normalised wave amplitude alpha >= 0, e.g. 2*sqrt(2)/8 [default: 2 sqrt(2)/8].
     #[arg(long, value_name = "A", value_parser = args::non_negative, allow_negative_numbers = true)]
     pub alpha: Option<f64>,
     /// Normalised wavelength beta > 0 [default: 9/8].

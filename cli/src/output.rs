@@ -3,11 +3,13 @@
 //! The subcommands compute everything in memory first, then hand the finished
 //! files to [`write_atomically`]: they are written into a fresh temporary
 //! directory next to the target (`<out>.tmp-<pid>`), and moved into place only
-//! after every write succeeded. If the target directory does not exist yet, the
-//! whole temporary directory is renamed to it in one step; otherwise each file is
-//! renamed into the existing directory (same file system, so each rename is
-//! atomic). On any error the temporary directory is removed and the target is
-//! left as it was.
+//! after every write succeeded. Each run owns its whole folder: if the target
+//! does not exist, the temporary directory is renamed to it in one step; if it
+//! holds an earlier maugis run (marked by the file [`MARKER`]) or is empty, it is
+//! moved aside, the new folder renamed into place and the old one removed, so
+//! no stale file of an earlier run remains. A non-empty directory without the
+//! marker is refused before anything is computed. On any error the temporary
+//! directory is removed and the target is left as it was.
 
 use std::fs;
 use std::io::Write;
@@ -39,14 +41,26 @@ impl OutFile {
     }
 }
 
+/// The file that marks a folder as a maugis output folder (safe to replace).
+pub const MARKER: &str = ".maugis-output";
+
 /// Checks, before any computation, that `out` can be used as an output
-/// directory: it is either missing or an existing directory.
+/// directory: missing, empty, or the folder of an earlier maugis run.
 pub fn check_out_dir(out: &Path) -> Result<(), String> {
     if out.as_os_str().is_empty() {
         return Err("--out must not be empty".into());
     }
-    if out.exists() && !out.is_dir() {
-        return Err(format!("--out {}: exists and is not a directory", out.display()));
+    if out.exists() {
+        if !out.is_dir() {
+            return Err(format!("--out {}: exists and is not a directory", out.display()));
+        }
+        let empty = fs::read_dir(out).map_err(|e| format!("--out {}: cannot read it: {e}", out.display()))?.next().is_none();
+        if !empty && !out.join(MARKER).is_file() {
+            return Err(format!(
+                "--out {}: a non-empty directory that maugis did not write (no {MARKER}); choose a new or empty directory",
+                out.display()
+            ));
+        }
     }
     Ok(())
 }
@@ -92,7 +106,8 @@ pub fn write_atomically(out: &Path, files: &[OutFile]) -> Result<Vec<PathBuf>, S
     fs::create_dir(&tmp).map_err(|e| format!("cannot create {}: {e}", tmp.display()))?;
     let mut guard = TempDirGuard { path: tmp.clone(), armed: true };
 
-    for f in files {
+    let marker = OutFile::text(MARKER, "This folder is written by maugis; each run replaces it whole.\n".to_string());
+    for f in files.iter().chain(std::iter::once(&marker)) {
         if f.name.contains('/') || f.name.contains('\\') || f.name.is_empty() {
             return Err(format!("internal error: bad output file name {:?}", f.name));
         }
@@ -108,11 +123,18 @@ pub fn write_atomically(out: &Path, files: &[OutFile]) -> Result<Vec<PathBuf>, S
         fs::rename(&tmp, &out).map_err(|e| format!("cannot move {} to {}: {e}", tmp.display(), out.display()))?;
         guard.armed = false;
     } else {
-        for f in files {
-            let (from, to) = (tmp.join(&f.name), out.join(&f.name));
-            fs::rename(&from, &to).map_err(|e| format!("cannot move {} to {}: {e}", from.display(), to.display()))?;
+        // Replace the earlier run's folder whole: move it aside, move the new one in.
+        let old = parent.join(format!("{name}.old-{}", std::process::id()));
+        if old.exists() {
+            fs::remove_dir_all(&old).map_err(|e| format!("cannot remove stale {}: {e}", old.display()))?;
         }
-        // `guard` removes the (now empty) temporary directory.
+        fs::rename(&out, &old).map_err(|e| format!("cannot move {} aside: {e}", out.display()))?;
+        if let Err(e) = fs::rename(&tmp, &out) {
+            let _ = fs::rename(&old, &out);
+            return Err(format!("cannot move {} to {}: {e}", tmp.display(), out.display()));
+        }
+        guard.armed = false;
+        fs::remove_dir_all(&old).map_err(|e| format!("cannot remove the earlier run {}: {e}", old.display()))?;
     }
     Ok(finals)
 }

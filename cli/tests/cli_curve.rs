@@ -150,6 +150,19 @@ fn curve_json_follows_the_schema() {
     assert!(n_turning > 0 && n_jumps > 0);
 }
 
+/// Parameters are arithmetic expressions.
+#[test]
+fn parameters_accept_expressions() {
+    let o = maugis(&["curve", "--lambda", "sqrt(9)", "--alpha", "2*sqrt(2)/8", "--beta", "9/8", "--points", "10", "--format", "json"]);
+    assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(&o));
+    let v: Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(v["params"]["alpha"].as_f64(), Some(2f64.sqrt() / 4.0));
+    assert_eq!(v["curves"][0]["lambda"].as_f64(), Some(3.0));
+    let o = maugis(&["curve", "--alpha", "sqrt(", "--format", "json"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--alpha"), "{}", stderr(&o));
+}
+
 /// summary.json and --format json are the same object (up to the CSV names).
 #[test]
 fn summary_json_equals_format_json() {
@@ -220,12 +233,21 @@ fn curve_writes_csv_summary_and_svg() {
     assert!(svg.len() > 1000 && svg.contains("<svg"));
     assert!(svg.contains("contact half-width abar") && svg.contains("load Lbar"));
 
-    // A second run into the existing directory replaces the files.
+    // A second run into the existing directory replaces the folder: no stale files.
     let o = maugis(&["curve", "--lambda", "3", "--points", "20", "--out", dir.str()]);
     assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(&o));
     let r = csv::Reader::from_path(dir.path().join("curve_lambda_3.csv")).unwrap();
     assert_eq!(r.into_records().count(), 20);
+    assert!(!dir.path().join("curve_lambda_0.5.csv").exists(), "stale CSV of the first run");
     assert!(dir.tmp_siblings().is_empty());
+    // a non-empty folder maugis did not write is refused, untouched
+    let foreign = TempPath::new("foreign");
+    std::fs::create_dir(foreign.path()).unwrap();
+    std::fs::write(foreign.path().join("notes.txt"), "mine").unwrap();
+    let o = maugis(&["curve", "--lambda", "3", "--points", "20", "--out", foreign.str()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--out"), "{}", stderr(&o));
+    assert_eq!(std::fs::read_dir(foreign.path()).unwrap().count(), 1);
 }
 
 #[test]
@@ -248,6 +270,9 @@ fn bad_parameters_exit_2_with_one_line_and_no_files() {
         &["profile", "--abar", "2", "--beta", "-3"],
         &["limits", "--amax", "-1"],
         &["limits", "--points", "1"],
+        &["curve", "--alpha", "sqrt("],
+        &["curve", "--beta", "sqrt(-1)"],
+        &["curve", "--lambda", "2 +"],
         &["sweep", "--lambda-min", "0"],
         &["sweep", "--lambda-min", "2", "--lambda-max", "1"],
         &["sweep", "--lambda-n", "0"],
