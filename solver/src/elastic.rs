@@ -1,0 +1,220 @@
+//! The elastic operator: surface displacement of a half-plane in plane strain
+//! under a piecewise-constant normal traction, by zero-padded FFT convolution.
+//!
+//! # Method
+//!
+//! In the normalised units of the semi-analytical model (`E* = 1`, horizontal
+//! lengths in `l_h`, vertical in `l_v`, traction in `(E*^2 dgamma/R)^(1/3)`)
+//! the Flamant/Boussinesq line-load solution (Johnson, *Contact Mechanics*,
+//! 1985, Eq. 2.25b) gives the surface displacement into the body, for a
+//! compressive traction `p` (positive),
+//!
+//! ```text
+//! u(x) = -(2/pi) int p(s) ln(|x - s| / L_d) ds .
+//! ```
+//!
+//! A free half-plane has no absolute displacement in 2D: `u` is measured from
+//! the **datum** `L_d`, i.e. relative to a surface point at distance `L_d` from
+//! the load (for a single line load `u(x0 +- L_d) = 0`). The approach `Delta`
+//! reported by the solver is relative to that datum; changing it to `L_d'`
+//! changes `Delta` by `(2/pi) Lbar ln(L_d'/L_d)` and nothing else.
+//!
+//! For traction constant on cells of width `dx` the influence of cell `j` on the
+//! centre of cell `i` is exact:
+//!
+//! ```text
+//! K_k = -(2/pi) [F(k dx + dx/2) - F(k dx - dx/2)] + (2/pi) dx ln L_d,
+//! F(t) = t ln|t| - t,  F(0) = 0,  k = i - j .
+//! ```
+//!
+//! The Toeplitz product `u_i = sum_j K_{i-j} p_j` is a linear (not circular)
+//! convolution: `p` is zero-padded to `2n` points and the circulant embedding of
+//! `K` is applied with one real forward and one real inverse FFT (realfft /
+//! rustfft). The plans, the kernel spectrum (real, as `K` is even) and the
+//! scratch buffers are made once per operator and reused by every product, so
+//! one product costs two real FFTs of length `2n`.
+//!
+//! # Positive definiteness
+//!
+//! The logarithmic kernel is positive definite on an interval of length `W`
+//! only if `L_d > W/4` (the logarithmic capacity of the interval). The solver's
+//! conjugate-gradient method needs it, so [`HalfPlane::new`] requires
+//! `L_d >= W/2` (default `L_d = W`, the domain width).
+//!
+//! # Errors
+//!
+//! The product is exact for piecewise-constant traction up to FFT rounding
+//! (about `1e-15 * log2(2n)` relative to `max |K| sum |p|`). The discretisation
+//! error of the contact problem (traction that is not piecewise constant, edges
+//! pinned to cell centres) is measured in the tests and in `docs/solver.md`.
+
+use std::f64::consts::PI;
+use std::sync::Arc;
+
+use realfft::num_complex::Complex;
+use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
+
+use crate::error::{finite, Result, SolverError};
+use crate::grid::Grid;
+
+/// The half-plane influence operator on a grid, FFT plans and buffers included.
+pub struct HalfPlane {
+    grid: Grid,
+    datum: f64,
+    /// Influence coefficients `K_k`, `k = 0..n` (the kernel is even).
+    coeffs: Vec<f64>,
+    /// Spectrum of the circulant embedding, divided by `2n` (the FFT normalisation).
+    spectrum: Vec<f64>,
+    forward: Arc<dyn RealToComplex<f64>>,
+    inverse: Arc<dyn ComplexToReal<f64>>,
+    padded: Vec<f64>,
+    freq: Vec<Complex<f64>>,
+    scratch_fwd: Vec<Complex<f64>>,
+    scratch_inv: Vec<Complex<f64>>,
+}
+
+/// `F(t) = t ln|t| - t`, the antiderivative of `ln|t|`, with `F(0) = 0`.
+fn log_antiderivative(t: f64) -> f64 {
+    if t == 0.0 {
+        0.0
+    } else {
+        t * t.abs().ln() - t
+    }
+}
+
+impl HalfPlane {
+    /// The operator on `grid` with datum distance `datum` (`None`: the domain
+    /// width `2X`). `datum` must be at least half the domain width.
+    pub fn new(grid: Grid, datum: Option<f64>) -> Result<HalfPlane> {
+        let width = 2.0 * grid.half_width();
+        let datum = datum.unwrap_or(width);
+        finite(datum, "the datum distance")?;
+        if !(datum >= 0.5 * width && datum <= 1e12) {
+            return Err(SolverError::Domain {
+                what: format!(
+                    "the datum distance must be at least half the domain width {width} \
+                     (the log kernel is then positive definite) and at most 1e12 (got {datum})"
+                ),
+            });
+        }
+        let n = grid.cells();
+        let dx = grid.dx();
+        let shift = 2.0 / PI * dx * datum.ln();
+        let coeffs: Vec<f64> = (0..n)
+            .map(|k| {
+                let t = k as f64 * dx;
+                -2.0 / PI * (log_antiderivative(t + 0.5 * dx) - log_antiderivative(t - 0.5 * dx)) + shift
+            })
+            .collect();
+        let mut planner = RealFftPlanner::<f64>::new();
+        let forward = planner.plan_fft_forward(2 * n);
+        let inverse = planner.plan_fft_inverse(2 * n);
+        // Circulant embedding: c[k] = K_k, c[2n-k] = K_k (k = 1..n-1), c[n] = 0.
+        let mut circ = vec![0.0; 2 * n];
+        circ[0] = coeffs[0];
+        for k in 1..n {
+            circ[k] = coeffs[k];
+            circ[2 * n - k] = coeffs[k];
+        }
+        let mut freq = forward.make_output_vec();
+        let mut scratch_fwd = forward.make_scratch_vec();
+        forward
+            .process_with_scratch(&mut circ, &mut freq, &mut scratch_fwd)
+            .map_err(|e| SolverError::Domain { what: format!("internal FFT error: {e}") })?;
+        let scale = 1.0 / (2 * n) as f64;
+        let spectrum = freq.iter().map(|z| z.re * scale).collect();
+        let scratch_inv = inverse.make_scratch_vec();
+        Ok(HalfPlane {
+            grid,
+            datum,
+            coeffs,
+            spectrum,
+            forward,
+            inverse,
+            padded: vec![0.0; 2 * n],
+            freq,
+            scratch_fwd,
+            scratch_inv,
+        })
+    }
+
+    /// The grid.
+    pub fn grid(&self) -> Grid {
+        self.grid
+    }
+
+    /// The datum distance `L_d`.
+    pub fn datum(&self) -> f64 {
+        self.datum
+    }
+
+    /// Influence coefficient `K_k` (displacement at distance `k` cells from a
+    /// unit traction on one cell), `k < n`.
+    pub fn coefficient(&self, k: usize) -> f64 {
+        self.coeffs[k]
+    }
+
+    /// `u = K p` (surface displacement into the body for compressive traction
+    /// `p`, both of length `n`). Two real FFTs of length `2n`.
+    pub fn apply(&mut self, p: &[f64], u: &mut [f64]) {
+        let n = self.grid.cells();
+        debug_assert!(p.len() == n && u.len() == n);
+        self.padded[..n].copy_from_slice(p);
+        self.padded[n..].iter_mut().for_each(|v| *v = 0.0);
+        // Lengths match the plans by construction, so these cannot fail.
+        let _ = self.forward.process_with_scratch(&mut self.padded, &mut self.freq, &mut self.scratch_fwd);
+        for (z, k) in self.freq.iter_mut().zip(&self.spectrum) {
+            *z *= *k;
+        }
+        // realfft requires exactly real DC and Nyquist bins.
+        self.freq[0].im = 0.0;
+        if let Some(last) = self.freq.last_mut() {
+            last.im = 0.0;
+        }
+        let _ = self.inverse.process_with_scratch(&mut self.freq, &mut self.padded, &mut self.scratch_inv);
+        u.copy_from_slice(&self.padded[..n]);
+    }
+
+    /// The same product by the direct `O(n^2)` sum: the slow, obviously
+    /// correct reference the FFT route is tested against.
+    pub fn apply_direct(&self, p: &[f64], u: &mut [f64]) {
+        let n = self.grid.cells();
+        for i in 0..n {
+            u[i] = (0..n).map(|j| self.coeffs[i.abs_diff(j)] * p[j]).sum();
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fft_product_matches_direct_sum() {
+        let grid = Grid::new(256, 3.0).unwrap();
+        let mut op = HalfPlane::new(grid, None).unwrap();
+        // A fixed pseudo-random traction (LCG, seed 7).
+        let mut s: u64 = 7;
+        let p: Vec<f64> = (0..256)
+            .map(|_| {
+                s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+                (s >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+            })
+            .collect();
+        let (mut u1, mut u2) = (vec![0.0; 256], vec![0.0; 256]);
+        op.apply(&p, &mut u1);
+        op.apply_direct(&p, &mut u2);
+        let scale = u2.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        for (a, b) in u1.iter().zip(&u2) {
+            assert!((a - b).abs() <= 1e-12 * scale, "{a} vs {b}");
+        }
+    }
+
+    #[test]
+    fn datum_below_capacity_is_rejected() {
+        let grid = Grid::new(64, 1.0).unwrap();
+        assert!(HalfPlane::new(grid, Some(0.9)).is_err());
+        assert!(HalfPlane::new(grid, Some(f64::NAN)).is_err());
+        assert!(HalfPlane::new(grid, Some(1.0)).is_ok());
+    }
+}

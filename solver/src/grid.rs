@@ -1,0 +1,59 @@
+//! The uniform grid of boundary elements on `[-X, X]` (normalised horizontal
+//! units `l_h`): `n` cells of width `dx = 2X/n`, cell `i` centred at
+//! `x_i = -X + (i + 1/2) dx`. The traction is constant on each cell; gaps and
+//! displacements are collocated at the centres.
+
+use crate::error::{finite, Result, SolverError};
+
+/// Fewest cells accepted.
+pub const MIN_CELLS: usize = 64;
+/// Most cells accepted (2^24: the zero-padded FFT then has 2^25 points).
+pub const MAX_CELLS: usize = 1 << 24;
+
+/// A uniform grid of `n` cells (a power of two) on `[-half_width, half_width]`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Grid {
+    cells: usize,
+    half_width: f64,
+}
+
+impl Grid {
+    /// `cells` a power of two in `[MIN_CELLS, MAX_CELLS]`, `half_width > 0` finite.
+    pub fn new(cells: usize, half_width: f64) -> Result<Grid> {
+        if !cells.is_power_of_two() || !(MIN_CELLS..=MAX_CELLS).contains(&cells) {
+            return Err(SolverError::Grid { cells });
+        }
+        finite(half_width, "the domain half-width")?;
+        if !(half_width > 0.0 && half_width <= 1e6) {
+            return Err(SolverError::Domain {
+                what: format!("the domain half-width must lie in (0, 1e6] (got {half_width})"),
+            });
+        }
+        Ok(Grid { cells, half_width })
+    }
+
+    /// Number of cells.
+    pub fn cells(&self) -> usize {
+        self.cells
+    }
+
+    /// Half-width `X` of the domain.
+    pub fn half_width(&self) -> f64 {
+        self.half_width
+    }
+
+    /// Cell width `dx = 2X/n`.
+    pub fn dx(&self) -> f64 {
+        2.0 * self.half_width / self.cells as f64
+    }
+
+    /// Centre of cell `i`.
+    pub fn x(&self, i: usize) -> f64 {
+        -self.half_width + (i as f64 + 0.5) * self.dx()
+    }
+
+    /// All cell centres.
+    pub fn centres(&self) -> Vec<f64> {
+        (0..self.cells).map(|i| self.x(i)).collect()
+    }
+}

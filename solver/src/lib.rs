@@ -1,0 +1,44 @@
+//! # maugis-solver: a numerical Dugdale-Maugis line-contact solver
+//!
+//! A rigid profile `h(x)` (by default the paper's wavy cylinder) presses on an
+//! elastic half-plane in plane strain; the interface follows the Dugdale-Maugis
+//! law (tensile traction `sigma0` where the gap is below `delta_c`). The solver
+//! reaches the states the semi-analytical model of the `maugis` crate cannot
+//! describe (cavitated contacts, several contact intervals) and checks the model
+//! where it holds. It uses `maugis` as an ordinary dependency
+//! (`default-features = false`).
+//!
+//! Units are those of the semi-analytical model: horizontal lengths by `l_h`,
+//! vertical by `l_v`, load by `(E* dgamma^2 R)^(1/3)`, `E* = 1`,
+//! `sigma0 = lambda`, `delta_c = 1/lambda`.
+//!
+//! The parts, each usable on its own:
+//!
+//! * [`grid::Grid`]: the uniform cell grid on `[-X, X]`;
+//! * [`elastic::HalfPlane`]: the free-space (zero-padded FFT) half-plane
+//!   operator, with the datum of the approach;
+//! * [`profile::Profile`], [`profile::Adhesion`]: the geometry and the law;
+//! * [`contact::ContactSolver`]: one equilibrium at a given approach
+//!   (Polonsky-Keer CG inside a Dugdale-zone fixed point), warm-started;
+//! * [`path`]: displacement-controlled loading and unloading, the cycle's
+//!   dissipated work, and the comparison with the semi-analytical curve.
+//!
+//! ```
+//! use maugis_solver::{grid::Grid, profile::{Adhesion, Profile}, contact::{ContactSolver, SolveOptions}};
+//! let grid = Grid::new(1024, 4.0)?;
+//! let mut s = ContactSolver::new(grid, None, &Profile::wavy_cylinder(0.0, 1.0)?, Adhesion::None, SolveOptions::default())?;
+//! let state = s.solve(2.0)?;
+//! assert_eq!(state.contact_intervals(), 1);
+//! # Ok::<(), maugis_solver::SolverError>(())
+//! ```
+//!
+//! Method, validation and the mesh-convergence study: `docs/solver.md`.
+
+pub mod contact;
+pub mod elastic;
+pub mod error;
+pub mod grid;
+pub mod path;
+pub mod profile;
+
+pub use error::{Result, SolverError};

@@ -1,0 +1,94 @@
+//! The rigid profile `h(x)` (depth below its lowest point, normalised by `l_v`)
+//! and the adhesion law.
+
+use std::f64::consts::PI;
+
+use crate::error::{finite, Result, SolverError};
+use crate::grid::Grid;
+
+/// The indenter's profile.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum Profile {
+    /// The paper's wavy cylinder (Eq. 1, normalised):
+    /// `h(x) = x^2/2 + alpha (1 - cos(2 pi x/beta))`; `alpha = 0` is the smooth cylinder.
+    WavyCylinder {
+        /// Wave amplitude `alpha = A/l_v >= 0`.
+        alpha: f64,
+        /// Wavelength `beta = zeta/l_h > 0`.
+        beta: f64,
+    },
+    /// Any profile, sampled at the cell centres of the grid it is used with.
+    Sampled(Vec<f64>),
+}
+
+impl Profile {
+    /// The wavy cylinder, checked.
+    pub fn wavy_cylinder(alpha: f64, beta: f64) -> Result<Profile> {
+        finite(alpha, "alpha")?;
+        finite(beta, "beta")?;
+        if alpha < 0.0 || alpha > 1e6 {
+            return Err(SolverError::Domain { what: format!("alpha must lie in [0, 1e6] (got {alpha})") });
+        }
+        if !(beta > 0.0 && beta <= 1e6) {
+            return Err(SolverError::Domain { what: format!("beta must lie in (0, 1e6] (got {beta})") });
+        }
+        Ok(Profile::WavyCylinder { alpha, beta })
+    }
+
+    /// The depth at every cell centre of `grid`.
+    pub fn sample(&self, grid: &Grid) -> Result<Vec<f64>> {
+        match self {
+            Profile::WavyCylinder { alpha, beta } => Ok(grid
+                .centres()
+                .into_iter()
+                .map(|x| 0.5 * x * x + alpha * (1.0 - (2.0 * PI * x / beta).cos()))
+                .collect()),
+            Profile::Sampled(h) => {
+                if h.len() != grid.cells() {
+                    return Err(SolverError::Domain {
+                        what: format!("the sampled profile has {} values, the grid {} cells", h.len(), grid.cells()),
+                    });
+                }
+                for &v in h {
+                    finite(v, "every profile value")?;
+                }
+                Ok(h.clone())
+            }
+        }
+    }
+}
+
+/// The interface law.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum Adhesion {
+    /// Frictionless, non-adhesive contact (Hertz).
+    None,
+    /// Dugdale-Maugis: tensile traction `sigma0 = lambda` (units
+    /// `(E*^2 dgamma/R)^(1/3)`) where `0 < g < delta_c = 1/lambda` (units `l_v`),
+    /// zero beyond; work of adhesion `sigma0 delta_c = 1` (units `dgamma`).
+    Dugdale {
+        /// Maugis parameter `lambda > 0`.
+        lambda: f64,
+    },
+}
+
+impl Adhesion {
+    /// Dugdale-Maugis with Maugis parameter `lambda`, checked.
+    pub fn dugdale(lambda: f64) -> Result<Adhesion> {
+        finite(lambda, "lambda")?;
+        if !(1e-4..=1e4).contains(&lambda) {
+            return Err(SolverError::Domain { what: format!("lambda must lie in [1e-4, 1e4] (got {lambda})") });
+        }
+        Ok(Adhesion::Dugdale { lambda })
+    }
+
+    /// `(sigma0, delta_c)`; `(0, 0)` without adhesion.
+    pub fn strength_and_range(&self) -> (f64, f64) {
+        match *self {
+            Adhesion::None => (0.0, 0.0),
+            Adhesion::Dugdale { lambda } => (lambda, 1.0 / lambda),
+        }
+    }
+}
