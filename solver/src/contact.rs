@@ -63,6 +63,9 @@ impl Default for SolveOptions {
     }
 }
 
+/// Inner tolerance while the Dugdale zone is still changing.
+const LOOSE_TOL: f64 = 1e-5;
+
 /// Summary of one converged state, in the normalised units of the
 /// semi-analytical model.
 #[derive(Debug, Clone, PartialEq)]
@@ -217,6 +220,9 @@ impl ContactSolver {
         let mut cg_total = 0;
         let mut updates = 0;
         let mut residual;
+        // Inner solves are loose while the zone still moves, strict once it is settled.
+        let loose = self.opts.tol.max(LOOSE_TOL);
+        let mut strict = false;
         loop {
             // b = h - Delta - sigma0 K 1_S
             for i in 0..n {
@@ -230,7 +236,7 @@ impl ContactSolver {
                 self.b[i] = self.h[i] - approach - ku[i];
             }
             self.kdir = ku;
-            let (iters, res) = self.contact_cg()?;
+            let (iters, res) = self.contact_cg(if strict { self.opts.tol } else { loose })?;
             cg_total += iters;
             residual = res;
             // New zone from the converged gap.
@@ -243,8 +249,13 @@ impl ContactSolver {
                 }
             }
             if !changed {
-                break;
+                if strict {
+                    break;
+                }
+                strict = true;
+                continue;
             }
+            strict = false;
             updates += 1;
             if updates >= self.opts.max_zone_updates {
                 return Err(SolverError::NoConvergence {
@@ -258,7 +269,7 @@ impl ContactSolver {
     }
 
     /// Polonsky-Keer CG on `q >= 0` for `g = K q + b`; leaves `g` in `self.gap`.
-    fn contact_cg(&mut self) -> Result<(usize, f64)> {
+    fn contact_cg(&mut self, tol: f64) -> Result<(usize, f64)> {
         let n = self.q.len();
         let k0 = self.op.coefficient(0);
         let (sigma0, _) = self.adhesion.strength_and_range();
@@ -282,7 +293,7 @@ impl ContactSolver {
             if !res.is_finite() {
                 return Err(SolverError::NoConvergence { what: "contact CG", iterations: it, residual: res });
             }
-            if res <= self.opts.tol * scale {
+            if res <= tol * scale {
                 return Ok((it, res / scale));
             }
             if it == self.opts.max_cg {
@@ -355,10 +366,23 @@ impl ContactSolver {
             }
         }
         let edge = |(a, b): (usize, usize)| (grid.x(a) - 0.5 * dx, grid.x(b) + 0.5 * dx);
+        let q = &self.q;
+        // Contact edges: q = p + sigma0 vanishes like sqrt(distance) at a
+        // Dugdale-Maugis (and Hertz) edge, so q^2 is extrapolated linearly from
+        // the two outermost contact cells to its zero (clamped to one cell).
+        let contact_edge = |(a, b): (usize, usize)| {
+            let sub = |inner: usize, outer: usize| {
+                let (qo, qi) = (q[outer] * q[outer], q[inner] * q[inner]);
+                if qi > qo { (qo / (qi - qo)).min(1.0) * dx } else { 0.5 * dx }
+            };
+            let left = if b > a { grid.x(a) - sub(a + 1, a) } else { grid.x(a) - 0.5 * dx };
+            let right = if b > a { grid.x(b) + sub(b - 1, b) } else { grid.x(b) + 0.5 * dx };
+            (left, right)
+        };
         let contact_runs = runs(self.q.iter().map(|&v| v > 0.0));
         let zone_runs = runs(self.zone.iter().copied());
         let abar = match (contact_runs.first(), contact_runs.last()) {
-            (Some(&(l, _)), Some(&(_, r))) => 0.5 * (edge((l, r)).1 - edge((l, r)).0),
+            (Some(&(l, lb)), Some(&(ra, r))) => 0.5 * (contact_edge((ra, r)).1 - contact_edge((l, lb)).0),
             _ => 0.0,
         };
         let zone_cells = match (contact_runs.last(), zone_runs.last()) {
@@ -370,7 +394,7 @@ impl ContactSolver {
             approach,
             load,
             abar,
-            contact: contact_runs.into_iter().map(edge).collect(),
+            contact: contact_runs.into_iter().map(contact_edge).collect(),
             zone: zone_runs.into_iter().map(edge).collect(),
             zone_cells,
             elastic_energy: elastic,

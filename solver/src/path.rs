@@ -1,1 +1,187 @@
+//! Displacement-controlled continuation: loading, then unloading, warm-started
+//! state to state, and the comparison with the semi-analytical model.
+//!
+//! # Stepping
+//!
+//! The approach starts where the profile's lowest point is `delta_c` away
+//! from the surface (no interaction) and grows in equal steps
+//! `dDelta = (Delta_H(amax) - Delta_0) / (steps/2)`, `Delta_H` the Hertz
+//! approach at `amax` ([`hertz_approach`]), until the outermost contact
+//! half-width reaches `amax`. Unloading goes back down in the same steps until
+//! the contact and the Dugdale zone are gone. Each state starts from the
+//! previous one, so the path follows a branch as a stiff testing machine would:
+//! snap-in and pull-off appear as jumps between neighbouring states.
+//!
+//! # Dissipated work
+//!
+//! [`Cycle::dissipated`] is the work of the displacement-controlled cycle,
+//! `oint Lbar dDelta` (trapezoidal rule over both legs). It is datum-free: the
+//! datum shifts `Delta` by a multiple of `Lbar`, which integrates to zero around
+//! a closed loop. It is the work lost in the jumps under a stiff machine, not the
+//! load-controlled hysteresis `W` of the semi-analytical curve, which has
+//! different jumps.
 
+use maugis::contact::curve::state as model_state;
+use maugis::contact::model::{ContactSize, Params};
+
+use crate::contact::{ContactSolver, State};
+use crate::error::{finite, Result, SolverError};
+
+/// Exact Hertz approach at half-width `a`, relative to datum `datum`:
+/// `(a^2/2) (ln(2 datum/a) + 1/2)` (the smooth non-adhesive cylinder).
+pub fn hertz_approach(a: f64, datum: f64) -> f64 {
+    0.5 * a * a * ((2.0 * datum / a).ln() + 0.5)
+}
+
+/// Tunables of a cycle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CycleOptions {
+    /// Loading stops once the contact half-width reaches `amax`.
+    pub amax: f64,
+    /// Approach steps per leg.
+    pub steps_per_leg: usize,
+}
+
+/// A loading-unloading cycle.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Cycle {
+    /// States in loading order.
+    pub loading: Vec<State>,
+    /// States in unloading order.
+    pub unloading: Vec<State>,
+    /// Approach step.
+    pub step: f64,
+    /// `oint Lbar dDelta` over the cycle (see the module docs).
+    pub dissipated: f64,
+}
+
+/// Most steps a leg may take, as a multiple of `steps_per_leg` (the Hertz
+/// estimate of the approach range can be short with strong adhesion or waves).
+const LEG_STEP_FACTOR: usize = 6;
+
+/// Runs a loading-unloading cycle. `progress(done, estimated_total)` is called
+/// after every state.
+pub fn cycle(solver: &mut ContactSolver, opts: CycleOptions, progress: &mut dyn FnMut(usize, usize)) -> Result<Cycle> {
+    finite(opts.amax, "amax")?;
+    let grid = solver.grid();
+    if !(opts.amax > 0.0 && opts.amax < 0.9 * grid.half_width()) {
+        return Err(SolverError::Domain {
+            what: format!("amax must lie in (0, 0.9 X) with X = {} the domain half-width (got {})", grid.half_width(), opts.amax),
+        });
+    }
+    if opts.steps_per_leg < 2 || opts.steps_per_leg > 1_000_000 {
+        return Err(SolverError::Domain { what: format!("steps per leg must lie in [2, 1e6] (got {})", opts.steps_per_leg) });
+    }
+    let (_, delta_c) = solver.adhesion().strength_and_range();
+    let hmin = solver.profile().iter().copied().fold(f64::INFINITY, f64::min);
+    let start = hmin - delta_c;
+    let step = (hmin + hertz_approach(opts.amax, solver.datum()) - start) / opts.steps_per_leg as f64;
+    let total = 2 * opts.steps_per_leg;
+    solver.reset();
+    let mut loading = Vec::new();
+    let mut k = 0;
+    loop {
+        let s = checked(solver, start + k as f64 * step, grid.cells())?;
+        let done = s.abar >= opts.amax;
+        loading.push(s);
+        k += 1;
+        progress(k, total.max(k + 1));
+        if done {
+            break;
+        }
+        if k > LEG_STEP_FACTOR * opts.steps_per_leg {
+            return Err(SolverError::NeverTouches);
+        }
+    }
+    let mut unloading = Vec::new();
+    let top = loading.len() - 1;
+    for j in 1.. {
+        let s = checked(solver, start + (top as f64 - j as f64) * step, grid.cells())?;
+        let done = s.contact.is_empty() && s.zone.is_empty();
+        unloading.push(s);
+        progress(k + j, total.max(k + j + 1));
+        if done || j > LEG_STEP_FACTOR * opts.steps_per_leg {
+            break;
+        }
+    }
+    let work = |states: &[State]| -> f64 {
+        states.windows(2).map(|w| 0.5 * (w[0].load + w[1].load) * (w[1].approach - w[0].approach)).sum()
+    };
+    // Close the loop: unloading starts at the last loading state.
+    let mut back = vec![loading[top].clone()];
+    back.extend(unloading.iter().cloned());
+    let mut dissipated = work(&loading) + work(&back);
+    // Both legs end without load; if unloading stopped below the start, the
+    // unloaded stretch carries no load and adds nothing.
+    if !dissipated.is_finite() {
+        dissipated = f64::NAN;
+    }
+    Ok(Cycle { loading, unloading, step, dissipated })
+}
+
+/// One solve, then the check that nothing reached the end of the domain.
+fn checked(solver: &mut ContactSolver, approach: f64, cells: usize) -> Result<State> {
+    let s = solver.solve(approach)?;
+    let g = solver.grid();
+    let touches_end = |v: &[(f64, f64)]| {
+        v.first().is_some_and(|&(l, _)| l <= -g.half_width() + 0.5 * g.dx())
+            || v.last().is_some_and(|&(_, r)| r >= g.half_width() - 0.5 * g.dx())
+    };
+    if touches_end(&s.zone) || touches_end(&s.contact) || cells == 0 {
+        return Err(SolverError::DomainTooSmall { half_width: g.half_width() });
+    }
+    Ok(s)
+}
+
+/// A simulated state next to the semi-analytical model at the same `abar`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ModelComparison {
+    /// Simulated outermost half-width.
+    pub abar: f64,
+    /// Simulated load.
+    pub load: f64,
+    /// Semi-analytical load at `abar` (Eq. 14).
+    pub model_load: f64,
+    /// Whether the semi-analytical state is valid (no interpenetration, no cavitation).
+    pub model_valid: bool,
+    /// Simulated contact intervals.
+    pub contact_intervals: usize,
+}
+
+/// The semi-analytical load and validity at each simulated contact state
+/// (`abar > 0`). States the model cannot solve are skipped.
+pub fn compare_with_model(params: Params, states: &[State]) -> Vec<ModelComparison> {
+    states
+        .iter()
+        .filter(|s| s.abar > 0.0)
+        .filter_map(|s| {
+            let m = model_state(params, s.abar).ok()?;
+            Some(ModelComparison {
+                abar: s.abar,
+                load: s.load,
+                model_load: m.load,
+                model_valid: m.validity.valid,
+                contact_intervals: s.contact_intervals(),
+            })
+        })
+        .collect()
+}
+
+/// A domain half-width that holds the contact and the Dugdale zone up to
+/// `amax`: 1.25 times the largest strip end `c = m abar` of the model on 64
+/// contact sizes in `(0, amax]`, and at least the zone at first touch,
+/// `sqrt(2 delta_c)`, and `1.25 amax`.
+pub fn suggested_half_width(params: Params, amax: f64) -> Result<f64> {
+    finite(amax, "amax")?;
+    if !(amax > 0.0 && amax <= 1e4) {
+        return Err(SolverError::Domain { what: format!("amax must lie in (0, 1e4] (got {amax})") });
+    }
+    let mut c_max: f64 = amax.max((2.0 / params.lambda).sqrt());
+    for i in 1..=64 {
+        let abar = amax * i as f64 / 64.0;
+        if let Ok(m) = ContactSize::new(params, abar).and_then(|cs| cs.solve_m()) {
+            c_max = c_max.max(m * abar);
+        }
+    }
+    Ok(1.25 * c_max)
+}
