@@ -1,0 +1,68 @@
+"""maugis: certified special functions and the wavy Maugis line-contact model.
+
+Special functions (broadcast like NumPy ufuncs; ``bounded=True`` adds a proven
+error bound, ``prec=`` returns certified arbitrary-precision balls)::
+
+    bessel_j(n, x)            J_n(x), integer n
+    hyp1f2(a, b1, b2, z)      1F2(a; b1, b2; z)
+    hyp2f1(a, b, c, z)        2F1(a, b; c; z), z <= 1
+    meijer_g_k(k, y)          the Eq. 12 Meijer-G factor, 0 < y <= 1
+    u_wave(a, zeta, amp, x)   wave displacement u_w (Eq. 12)
+    du_wave(a, zeta, amp, x)  its gradient (Eq. 11b)
+
+The model (results carry the fields of the ``maugis`` command's JSON)::
+
+    curve(lam, alpha, beta)         load-area response, jumps, pull-off, loops
+    state(lam, alpha, beta, abar)   solved states (broadcasting)
+    profile(lam, alpha, beta, abar) traction, displacement and gap at one state
+
+Bad input raises ``ValueError`` with the library's message. See docs/python.md.
+"""
+
+from ._maugis import MAX_PREC, PARALLEL_MIN_LEN
+from ._model import (
+    FIG4C_ALPHA,
+    FIG4C_BETA,
+    Curve,
+    CurveParams,
+    CurvePoints,
+    HysteresisLoops,
+    Jumps,
+    Profile,
+    ProfileSamples,
+    PullOff,
+    State,
+    TurningPoints,
+    curve,
+    profile,
+    state,
+)
+from ._special import bessel_j, du_wave, hyp1f2, hyp2f1, meijer_g_k, u_wave
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "MAX_PREC",
+    "PARALLEL_MIN_LEN",
+    "FIG4C_ALPHA",
+    "FIG4C_BETA",
+    "Curve",
+    "CurveParams",
+    "CurvePoints",
+    "HysteresisLoops",
+    "Jumps",
+    "Profile",
+    "ProfileSamples",
+    "PullOff",
+    "State",
+    "TurningPoints",
+    "bessel_j",
+    "hyp1f2",
+    "hyp2f1",
+    "meijer_g_k",
+    "u_wave",
+    "du_wave",
+    "curve",
+    "state",
+    "profile",
+]

@@ -1,0 +1,199 @@
+"""Special functions as NumPy ufunc-like calls.
+
+Each function broadcasts its arguments like a ufunc and runs the Rust library
+over the flat result with the GIL released (in parallel on rayon's pool from
+``PARALLEL_MIN_LEN`` elements on). Three kinds of answer:
+
+* default: a float64 array (a NumPy scalar for scalar arguments), within the
+  library's documented tolerance (``docs/special-functions.md``);
+* ``bounded=True``: ``(value, err)`` float64 arrays with
+  ``|exact - value| <= err`` proven for the float64 arguments as given;
+* ``prec=P`` (bits): certified balls ``(mid, rad)`` -- the exact value lies
+  within ``rad`` of ``mid`` and ``rad <= 2**-P |mid|`` -- as ``mpmath.mpf``
+  (``output="mpf"``, exact binary values) or decimal strings
+  (``output="str"``; the decimal radius also covers the decimal rounding of
+  ``mid``). Arguments may then be floats and ints (taken exactly),
+  ``mpmath.mpf`` (exactly) or decimal strings (rounded to ``prec + 64`` bits,
+  as ``maugis eval`` does).
+
+Bad input -- NaN, infinity, an argument out of the function's domain -- raises
+``ValueError`` with the library's message and the arguments of the first
+element that failed; no partial result is returned.
+"""
+
+from __future__ import annotations
+
+import math
+
+import mpmath
+import numpy as np
+
+from . import _maugis as _ext
+
+__all__ = ["bessel_j", "hyp1f2", "hyp2f1", "meijer_g_k", "u_wave", "du_wave"]
+
+_INT64_MAX = np.iinfo(np.int64).max
+_LOG10_2 = math.log10(2.0)
+
+
+# ---------------------------------------------------------------- argument conversion
+
+
+def _as_real(name, value):
+    """A float64 array of `value` (bool, int and float dtypes accepted)."""
+    a = np.asarray(value)
+    if a.dtype.kind not in "biuf":
+        raise TypeError(f"{name} must be real numbers (got an array of dtype {a.dtype})")
+    return a.astype(np.float64, copy=False)
+
+
+def _as_int(name, value):
+    """An int64 array of `value`: integer dtypes, or floats that are whole numbers."""
+    a = np.asarray(value)
+    kind = a.dtype.kind
+    if kind in "bi":
+        return a.astype(np.int64, copy=False)
+    if kind == "u":
+        if a.size and a.max() > _INT64_MAX:
+            raise ValueError(f"{name} = {a.max()} is too large for an integer order")
+        return a.astype(np.int64)
+    if kind == "f":
+        whole = np.isfinite(a) & (np.floor(a) == a) & (np.abs(a) < 2.0**63)
+        if not whole.all():
+            bad = float(a[~whole].flat[0])
+            raise ValueError(f"{name} must be an integer (got {bad!r})")
+        return a.astype(np.int64)
+    raise TypeError(f"{name} must be integers (got an array of dtype {a.dtype})")
+
+
+def _flat(args):
+    """Broadcasts converted arrays; returns the flat contiguous copies and the shape."""
+    shape = np.broadcast_shapes(*(a.shape for a in args))
+    flat = [np.ascontiguousarray(np.broadcast_to(a, shape)).reshape(-1) for a in args]
+    return flat, shape
+
+
+def _shaped(out, shape):
+    """Reshapes a flat result (or a (value, err) pair); 0-d becomes a NumPy scalar."""
+    if isinstance(out, tuple):
+        return tuple(_shaped(o, shape) for o in out)
+    out = out.reshape(shape)
+    return out[()] if shape == () else out
+
+
+def _mp_arg(name, v):
+    """One MP argument: ``(mantissa text, exponent)`` for exact values, else a decimal string."""
+    if isinstance(v, np.ndarray) and v.shape == ():
+        v = v[()]
+    if isinstance(v, str):
+        return v.strip()
+    if isinstance(v, mpmath.mpf):
+        if not mpmath.isfinite(v):
+            raise ValueError(f"{name} must be a finite number (got NaN or infinity)")
+        man, exp = v.man_exp
+        return (str(man), int(exp))
+    if isinstance(v, (bool, int, np.integer)):
+        return (str(int(v)), 0)
+    if isinstance(v, (float, np.floating)):
+        f = float(v)
+        if not math.isfinite(f):
+            raise ValueError(f"{name} must be a finite number (got NaN or infinity)")
+        num, den = f.as_integer_ratio()
+        return (str(num), -(den.bit_length() - 1))
+    raise TypeError(f"{name} must be a real number, mpmath.mpf or decimal string (got {type(v).__name__})")
+
+
+def _to_mpf(pair):
+    """An exact ``mpmath.mpf`` from ``(mantissa text, exponent)`` (no rounding)."""
+    man, exp = pair
+    return mpmath.mp.make_mpf(mpmath.libmp.from_man_exp(int(man), exp))
+
+
+def _eval_mp(function, names, values, prec, output, digits):
+    if output not in ("mpf", "str"):
+        raise ValueError(f'output must be "mpf" or "str" (got {output!r})')
+    if isinstance(prec, bool) or not isinstance(prec, (int, np.integer)):
+        raise TypeError(f"prec must be an integer number of bits (got {prec!r})")
+    prec = int(prec)
+    if not 2 <= prec <= _ext.MAX_PREC:
+        raise ValueError(f"precision {prec} bits is out of range: use 2 ..= {_ext.MAX_PREC} bits")
+    arrays = [np.asarray(v, dtype=object) for v in values]
+    b = np.broadcast(*arrays)
+    shape = b.shape
+    rows = list(b)
+    columns = [[_mp_arg(n, r[j]) for r in rows] for j, n in enumerate(names)]
+    if output == "str":
+        if digits is None:
+            digits = int(prec * _LOG10_2) + 2
+        balls = _ext.eval_mp(function, columns, prec, int(digits))
+        mids = [m for m, _ in balls]
+        rads = [r for _, r in balls]
+    else:
+        balls = _ext.eval_mp(function, columns, prec, None)
+        mids = [_to_mpf(m) for m, _ in balls]
+        rads = [_to_mpf(r) for _, r in balls]
+    if shape == ():
+        return mids[0], rads[0]
+    mid = np.empty(len(mids), dtype=object)
+    rad = np.empty(len(rads), dtype=object)
+    mid[:] = mids
+    rad[:] = rads
+    return mid.reshape(shape), rad.reshape(shape)
+
+
+def _call(function, names, kinds, values, bounded, prec, output, digits, fast):
+    if prec is not None:
+        if bounded:
+            raise ValueError("choose one of bounded=True (float64 with an error bound) and prec= (certified balls)")
+        return _eval_mp(function, names, values, prec, output, digits)
+    conv = [(_as_int if k == "int" else _as_real)(n, v) for n, k, v in zip(names, kinds, values)]
+    flat, shape = _flat(conv)
+    return _shaped(fast(*flat, bool(bounded)), shape)
+
+
+def _call_real4(function, names, values, bounded, prec, output, digits):
+    """A function of four real arguments (the Rust side dispatches on its name)."""
+    fast = lambda a, b, c, d, bnd: _ext.real4_f64(function, a, b, c, d, bnd)  # noqa: E731
+    return _call(function, names, ("real",) * 4, values, bounded, prec, output, digits, fast)
+
+
+_WAVE_ARGS = ("a", "zeta", "amp", "x")
+
+
+# ---------------------------------------------------------------- the functions
+
+
+def bessel_j(n, x, *, bounded=False, prec=None, output="mpf", digits=None):
+    """Bessel function of the first kind ``J_n(x)``, integer order ``n``, real ``x``.
+
+    float64: within 2 ulp. Domain: ``|n| <= 1e6``; see ``docs/special-functions.md``.
+    """
+    return _call("bessel_j", ("n", "x"), ("int", "real"), (n, x), bounded, prec, output, digits, _ext.bessel_j_f64)
+
+
+def hyp1f2(a, b1, b2, z, *, bounded=False, prec=None, output="mpf", digits=None):
+    """Hypergeometric function ``1F2(a; b1, b2; z)``, real parameters and argument (entire in z)."""
+    return _call_real4("hyp1f2", ("a", "b1", "b2", "z"), (a, b1, b2, z), bounded, prec, output, digits)
+
+
+def hyp2f1(a, b, c, z, *, bounded=False, prec=None, output="mpf", digits=None):
+    """Gauss hypergeometric function ``2F1(a, b; c; z)``, real, ``z <= 1`` (principal branch)."""
+    return _call_real4("hyp2f1", ("a", "b", "c", "z"), (a, b, c, z), bounded, prec, output, digits)
+
+
+def meijer_g_k(k, y, *, bounded=False, prec=None, output="mpf", digits=None):
+    """The Eq. 12 Meijer-G factor ``Re G^{2,2}_{3,3}(-y | 0, 1/2-k, 1; 0, 0, -k-1)``, ``0 < y <= 1``."""
+    return _call("meijer_g_k", ("k", "y"), ("int", "real"), (k, y), bounded, prec, output, digits, _ext.meijer_g_k_f64)
+
+
+def u_wave(a, zeta, amp, x, *, bounded=False, prec=None, output="mpf", digits=None):
+    """Wave displacement ``u_w(x)`` of the seed paper's Eq. 12 (Bessel form), ``x >= a``.
+
+    ``a``: contact half-width, ``zeta``: wavelength, ``amp``: wave amplitude, ``x``: position.
+    """
+    return _call_real4("u_wave", _WAVE_ARGS, (a, zeta, amp, x), bounded, prec, output, digits)
+
+
+def du_wave(a, zeta, amp, x, *, bounded=False, prec=None, output="mpf", digits=None):
+    """Gradient ``du_w/dx`` of the wave displacement (the seed paper's Eq. 11b), ``x >= a``."""
+    return _call_real4("du_wave", _WAVE_ARGS, (a, zeta, amp, x), bounded, prec, output, digits)

@@ -1,0 +1,508 @@
+//! `maugis._maugis`: the compiled half of the `maugis` Python package.
+//!
+//! A thin layer: no numerics live here. The Python half (`python/maugis/`)
+//! broadcasts and converts the arguments to flat, contiguous `int64`/`float64`
+//! arrays of one length; the functions here run the library over them element
+//! by element and hand back flat arrays, which Python reshapes.
+//!
+//! * f64 loops release the GIL ([`Python::detach`]) and run on rayon's pool
+//!   once an array has [`PARALLEL_MIN_LEN`] elements.
+//! * Arbitrary precision ([`eval_mp`]) takes exact binary inputs (`man * 2^exp`)
+//!   or decimal strings, and returns each certified ball either as exact binary
+//!   pairs (for `mpmath.mpf`) or as decimal strings whose radius still encloses.
+//! * Every library [`maugis::Error`] becomes a Python `ValueError` carrying the
+//!   library's message and the arguments of the element that failed.
+
+use numpy::{PyArray1, PyReadonlyArray1};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList, PyTuple};
+use rayon::prelude::*;
+
+use maugis::contact::curve::{self, load_area_curve, CurveOptions, CurvePoint, JumpDirection, TurningKind};
+use maugis::contact::displacement::{
+    du_wave, du_wave_bounded, du_wave_mp, profile_depth, u_wave, u_wave_bounded, u_wave_mp,
+};
+use maugis::contact::model::{ContactSize, Params};
+use maugis::rug::{Float, Integer};
+use maugis::special::bessel_j::{bessel_j, bessel_j_bounded, bessel_j_mp};
+use maugis::special::hyp1f2::{hyp1f2, hyp1f2_bounded, hyp1f2_mp};
+use maugis::special::hyp2f1::{hyp2f1, hyp2f1_bounded, hyp2f1_mp};
+use maugis::special::meijer_g::{meijer_g_k, meijer_g_k_bounded, meijer_g_k_mp};
+use maugis::{Ball, Bounded, Error};
+
+/// Arrays shorter than this are evaluated on the calling thread: below it,
+/// handing chunks to rayon costs more than it saves for the cheapest
+/// functions (a few hundred ns per element).
+const PARALLEL_MIN_LEN: usize = 2048;
+
+/// Smallest chunk rayon hands to one worker (amortises the task overhead).
+const PARALLEL_MIN_CHUNK: usize = 256;
+
+/// A failed element: its flat index and the library's error.
+struct ElementError {
+    index: usize,
+    error: Error,
+}
+
+/// Runs `f` over `0..len`, in parallel for long inputs. The first error (in
+/// the order rayon meets them) stops the loop.
+fn map_elements<T, F>(len: usize, f: F) -> Result<Vec<T>, ElementError>
+where
+    T: Send,
+    F: Fn(usize) -> maugis::Result<T> + Sync + Send,
+{
+    let one = |i: usize| f(i).map_err(|error| ElementError { index: i, error });
+    if len < PARALLEL_MIN_LEN {
+        (0..len).map(one).collect()
+    } else {
+        (0..len).into_par_iter().with_min_len(PARALLEL_MIN_CHUNK).map(one).collect()
+    }
+}
+
+/// Turns a failed element into a `ValueError`: `"bessel_j(n=3, x=nan): <library message>"`.
+fn element_error(e: ElementError, describe: impl Fn(usize) -> String) -> PyErr {
+    PyValueError::new_err(format!("{}: {}", describe(e.index), e.error))
+}
+
+fn lib_error(e: Error) -> PyErr {
+    PyValueError::new_err(e.to_string())
+}
+
+/// Flat input slices; Python guarantees contiguity and equal lengths.
+fn slice<'a, T: numpy::Element>(a: &'a PyReadonlyArray1<'_, T>, name: &str) -> PyResult<&'a [T]> {
+    a.as_slice().map_err(|_| PyValueError::new_err(format!("internal: argument {name} is not contiguous")))
+}
+
+fn same_len(lens: &[usize]) -> PyResult<usize> {
+    let n = lens.first().copied().unwrap_or(0);
+    if lens.iter().any(|&l| l != n) {
+        return Err(PyValueError::new_err("internal: arguments of different lengths after broadcasting"));
+    }
+    Ok(n)
+}
+
+/// `k` for the Meijer-G family: a non-negative integer that fits `u32`.
+fn order_u32(k: i64) -> maugis::Result<u32> {
+    u32::try_from(k).map_err(|_| Error::Domain { what: format!("k must be a non-negative integer (got {k})") })
+}
+
+/// Evaluates `value` (or `bounded`) over `len` elements with the GIL released
+/// and returns one float64 array, or the `(value, err)` pair of arrays.
+fn run_f64<'py, V, B, D>(py: Python<'py>, len: usize, want_bound: bool, value: V, bounded: B, describe: D) -> PyResult<Bound<'py, PyAny>>
+where
+    V: Fn(usize) -> maugis::Result<f64> + Sync + Send,
+    B: Fn(usize) -> maugis::Result<Bounded> + Sync + Send,
+    D: Fn(usize) -> String,
+{
+    if want_bound {
+        let out = py.detach(|| map_elements(len, &bounded)).map_err(|e| element_error(e, &describe))?;
+        let (v, err): (Vec<f64>, Vec<f64>) = out.into_iter().map(|b| (b.value, b.err)).unzip();
+        let pair = PyTuple::new(py, [PyArray1::from_vec(py, v).into_any(), PyArray1::from_vec(py, err).into_any()])?;
+        Ok(pair.into_any())
+    } else {
+        let out = py.detach(|| map_elements(len, &value)).map_err(|e| element_error(e, &describe))?;
+        Ok(PyArray1::from_vec(py, out).into_any())
+    }
+}
+
+/// `J_n(x)` over flat arrays.
+#[pyfunction]
+fn bessel_j_f64<'py>(py: Python<'py>, n: PyReadonlyArray1<'py, i64>, x: PyReadonlyArray1<'py, f64>, bounded: bool) -> PyResult<Bound<'py, PyAny>> {
+    let (n, x) = (slice(&n, "n")?, slice(&x, "x")?);
+    let len = same_len(&[n.len(), x.len()])?;
+    run_f64(
+        py,
+        len,
+        bounded,
+        |i| bessel_j(n[i], x[i]),
+        |i| bessel_j_bounded(n[i], x[i]),
+        |i| format!("bessel_j(n={}, x={:?})", n[i], x[i]),
+    )
+}
+
+/// A function of four real arguments: its argument names, f64 value and bounded value.
+type Real4 = (&'static [&'static str; 4], fn(f64, f64, f64, f64) -> maugis::Result<f64>, fn(f64, f64, f64, f64) -> maugis::Result<Bounded>);
+
+/// Arguments of the wave displacement and its gradient.
+const WAVE_ARGS: [&str; 4] = ["a", "zeta", "amp", "x"];
+
+/// The four-real-argument functions by name.
+fn real4(function: &str) -> Option<Real4> {
+    Some(match function {
+        "hyp1f2" => (&["a", "b1", "b2", "z"], hyp1f2, hyp1f2_bounded),
+        "hyp2f1" => (&["a", "b", "c", "z"], hyp2f1, hyp2f1_bounded),
+        "u_wave" => (&WAVE_ARGS, u_wave, u_wave_bounded),
+        "du_wave" => (&WAVE_ARGS, du_wave, du_wave_bounded),
+        _ => return None,
+    })
+}
+
+/// `1F2(a; b1, b2; z)`, `2F1(a, b; c; z)`, `u_w` or `du_w/dx` (by `function`) over flat arrays.
+#[pyfunction]
+fn real4_f64<'py>(
+    py: Python<'py>,
+    function: &str,
+    a: PyReadonlyArray1<'py, f64>,
+    b: PyReadonlyArray1<'py, f64>,
+    c: PyReadonlyArray1<'py, f64>,
+    d: PyReadonlyArray1<'py, f64>,
+    bounded: bool,
+) -> PyResult<Bound<'py, PyAny>> {
+    let (names, value, bound) = real4(function).ok_or_else(|| PyValueError::new_err(format!("unknown function {function:?}")))?;
+    let (a, b, c, d) = (slice(&a, names[0])?, slice(&b, names[1])?, slice(&c, names[2])?, slice(&d, names[3])?);
+    let len = same_len(&[a.len(), b.len(), c.len(), d.len()])?;
+    run_f64(
+        py,
+        len,
+        bounded,
+        |i| value(a[i], b[i], c[i], d[i]),
+        |i| bound(a[i], b[i], c[i], d[i]),
+        |i| format!("{function}({}={:?}, {}={:?}, {}={:?}, {}={:?})", names[0], a[i], names[1], b[i], names[2], c[i], names[3], d[i]),
+    )
+}
+
+/// The Eq. 12 Meijer-G factor over flat arrays.
+#[pyfunction]
+fn meijer_g_k_f64<'py>(py: Python<'py>, k: PyReadonlyArray1<'py, i64>, y: PyReadonlyArray1<'py, f64>, bounded: bool) -> PyResult<Bound<'py, PyAny>> {
+    let (k, y) = (slice(&k, "k")?, slice(&y, "y")?);
+    let len = same_len(&[k.len(), y.len()])?;
+    run_f64(
+        py,
+        len,
+        bounded,
+        |i| meijer_g_k(order_u32(k[i])?, y[i]),
+        |i| meijer_g_k_bounded(order_u32(k[i])?, y[i]),
+        |i| format!("meijer_g_k(k={}, y={:?})", k[i], y[i]),
+    )
+}
+
+// ---------------------------------------------------------------- arbitrary precision
+
+/// One MP argument as Python sends it: exact `man * 2^exp`, or a decimal string
+/// (rounded to `prec + 64` bits, as `maugis eval` does).
+#[derive(Clone, Debug)]
+enum MpArg {
+    Exact { man: String, exp: i64 },
+    Decimal(String),
+}
+
+impl<'a, 'py> FromPyObject<'a, 'py> for MpArg {
+    type Error = PyErr;
+
+    fn extract(ob: Borrowed<'a, 'py, PyAny>) -> PyResult<Self> {
+        if let Ok((man, exp)) = ob.extract::<(String, i64)>() {
+            return Ok(MpArg::Exact { man, exp });
+        }
+        Ok(MpArg::Decimal(ob.extract::<String>()?))
+    }
+}
+
+impl MpArg {
+    fn to_float(&self, what: &'static str, prec: u32) -> maugis::Result<Float> {
+        let bad = || Error::Domain { what: format!("{what} = {self} is not a number") };
+        let v = match self {
+            MpArg::Exact { man, exp } => {
+                let m: Integer = man.parse().map_err(|_| bad())?;
+                let bits = m.significant_bits().max(2);
+                let e = i32::try_from(*exp).map_err(|_| Error::Overflow { what: format!("the exponent of {what}") })?;
+                Float::with_val(bits, m) << e
+            }
+            MpArg::Decimal(s) => Float::with_val(prec.max(53) + 64, Float::parse(s).map_err(|_| bad())?),
+        };
+        if !v.is_finite() {
+            return Err(Error::NonFinite { what });
+        }
+        Ok(v)
+    }
+
+    fn to_i64(&self, what: &'static str) -> maugis::Result<i64> {
+        let v = self.to_float(what, 64)?;
+        v.to_integer()
+            .filter(|_| v.is_integer())
+            .and_then(|i| i.to_i64())
+            .ok_or_else(|| Error::Domain { what: format!("{what} must be an integer (got {self})") })
+    }
+}
+
+impl std::fmt::Display for MpArg {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            MpArg::Exact { man, exp } if *exp == 0 => write!(f, "{man}"),
+            MpArg::Exact { man, exp } => write!(f, "{man}*2^{exp}"),
+            MpArg::Decimal(s) => write!(f, "{s:?}"),
+        }
+    }
+}
+
+/// Argument names of each MP function, in call order.
+fn mp_signature(function: &str) -> Option<&'static [&'static str]> {
+    Some(match function {
+        "bessel_j" => &["n", "x"],
+        "meijer_g_k" => &["k", "y"],
+        _ => return real4(function).map(|(names, _, _)| &names[..]),
+    })
+}
+
+/// One certified ball of `function` at the arguments `args`.
+fn mp_one(function: &str, args: &[MpArg], prec: u32) -> maugis::Result<Ball> {
+    let names = mp_signature(function).unwrap_or(&[]);
+    let f = |i: usize| args[i].to_float(names[i], prec);
+    match function {
+        "bessel_j" => bessel_j_mp(args[0].to_i64("n")?, &f(1)?, prec),
+        "hyp1f2" => hyp1f2_mp(&f(0)?, &f(1)?, &f(2)?, &f(3)?, prec),
+        "hyp2f1" => hyp2f1_mp(&f(0)?, &f(1)?, &f(2)?, &f(3)?, prec),
+        "meijer_g_k" => meijer_g_k_mp(order_u32(args[0].to_i64("k")?)?, &f(1)?, prec),
+        "u_wave" => u_wave_mp(&f(0)?, &f(1)?, &f(2)?, &f(3)?, prec),
+        "du_wave" => du_wave_mp(&f(0)?, &f(1)?, &f(2)?, &f(3)?, prec),
+        _ => Err(Error::Internal { what: format!("no MP function {function}") }),
+    }
+}
+
+/// An exact binary float as `(mantissa as decimal text, exponent)`; zero is `("0", 0)`.
+fn exact_pair(x: &Float) -> (String, i64) {
+    match x.to_integer_exp() {
+        Some((m, e)) => (m.to_string(), e as i64),
+        None => ("0".to_string(), 0),
+    }
+}
+
+/// A ball as Python receives it.
+enum MpOut {
+    /// `((mid_man, mid_exp), (rad_man, rad_exp))`, exact.
+    Exact((String, i64), (String, i64)),
+    /// `(mid, rad)` decimal strings; the decimal ball encloses the binary one.
+    Decimal(String, String),
+}
+
+/// Certified balls of `function` over argument columns (one list per argument,
+/// all of one length), at `prec` bits. `digits = None` returns exact binary
+/// pairs, `Some(d)` decimal strings with `d` significant digits.
+#[pyfunction]
+#[pyo3(signature = (function, columns, prec, digits=None))]
+fn eval_mp<'py>(py: Python<'py>, function: &str, columns: Vec<Vec<MpArg>>, prec: u32, digits: Option<usize>) -> PyResult<Bound<'py, PyList>> {
+    let names = mp_signature(function).ok_or_else(|| PyValueError::new_err(format!("unknown function {function:?}")))?;
+    if columns.len() != names.len() {
+        return Err(PyValueError::new_err(format!("{function} takes {} arguments, got {}", names.len(), columns.len())));
+    }
+    maugis::error::check_prec(prec).map_err(lib_error)?;
+    let len = same_len(&columns.iter().map(Vec::len).collect::<Vec<_>>())?;
+    let row = |i: usize| columns.iter().map(|c| c[i].clone()).collect::<Vec<_>>();
+    let out = py
+        .detach(|| {
+            // MP evaluations are expensive: parallel from two elements on.
+            (0..len)
+                .into_par_iter()
+                .map(|i| {
+                    let ball = mp_one(function, &row(i), prec).map_err(|error| ElementError { index: i, error })?;
+                    Ok(match digits {
+                        None => MpOut::Exact(exact_pair(ball.mid()), exact_pair(&ball.rad())),
+                        Some(d) => {
+                            let (m, r) = ball.to_decimal(d);
+                            MpOut::Decimal(m, r)
+                        }
+                    })
+                })
+                .collect::<Result<Vec<MpOut>, ElementError>>()
+        })
+        .map_err(|e| {
+            element_error(e, |i| {
+                let args: Vec<String> = names.iter().zip(row(i)).map(|(n, a)| format!("{n}={a}")).collect();
+                format!("{function}({}, prec={prec})", args.join(", "))
+            })
+        })?;
+    let list = PyList::empty(py);
+    for o in out {
+        match o {
+            MpOut::Exact(m, r) => list.append((m, r))?,
+            MpOut::Decimal(m, r) => list.append((m, r))?,
+        }
+    }
+    Ok(list)
+}
+
+// ---------------------------------------------------------------- the model
+
+fn params(lam: f64, alpha: f64, beta: f64) -> PyResult<Params> {
+    Params::new(lam, alpha, beta).map_err(lib_error)
+}
+
+fn f64_array<'py>(py: Python<'py>, v: impl IntoIterator<Item = f64>) -> Bound<'py, PyAny> {
+    PyArray1::from_vec(py, v.into_iter().collect()).into_any()
+}
+
+fn bool_array<'py>(py: Python<'py>, v: impl IntoIterator<Item = bool>) -> Bound<'py, PyAny> {
+    PyArray1::from_vec(py, v.into_iter().collect()).into_any()
+}
+
+fn str_list<'py>(py: Python<'py>, v: impl IntoIterator<Item = &'static str>) -> PyResult<Bound<'py, PyAny>> {
+    Ok(PyList::new(py, v)?.into_any())
+}
+
+fn kind_str(k: TurningKind) -> &'static str {
+    match k {
+        TurningKind::Max => "max",
+        TurningKind::Min => "min",
+    }
+}
+
+fn direction_str(d: JumpDirection) -> &'static str {
+    match d {
+        JumpDirection::Loading => "loading",
+        JumpDirection::Unloading => "unloading",
+    }
+}
+
+/// Columns of solved states (the fields of one `points` entry of the CLI's JSON).
+fn states_dict<'py>(py: Python<'py>, pts: &[CurvePoint], with_locations: bool) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("abar", f64_array(py, pts.iter().map(|p| p.abar)))?;
+    d.set_item("m", f64_array(py, pts.iter().map(|p| p.m)))?;
+    d.set_item("load", f64_array(py, pts.iter().map(|p| p.load)))?;
+    d.set_item("valid", bool_array(py, pts.iter().map(|p| p.validity.valid)))?;
+    d.set_item("min_strip_gap", f64_array(py, pts.iter().map(|p| p.validity.min_strip_gap)))?;
+    d.set_item("max_traction", f64_array(py, pts.iter().map(|p| p.validity.max_traction)))?;
+    if with_locations {
+        d.set_item("min_strip_gap_at", f64_array(py, pts.iter().map(|p| p.validity.min_strip_gap_at)))?;
+        d.set_item("max_traction_at", f64_array(py, pts.iter().map(|p| p.validity.max_traction_at)))?;
+    }
+    Ok(d)
+}
+
+/// One load-area curve (`maugis curve`): a dict with `points`, `turning_points`,
+/// `jumps`, `pull_off` and `hysteresis_loops`, each a dict of columns.
+#[pyfunction]
+fn curve_dict<'py>(py: Python<'py>, lam: f64, alpha: f64, beta: f64, amax: f64, points: usize) -> PyResult<Bound<'py, PyDict>> {
+    let p = params(lam, alpha, beta)?;
+    let c = py.detach(|| load_area_curve(p, CurveOptions { amax, points })).map_err(lib_error)?;
+    let out = PyDict::new(py);
+    out.set_item("points", states_dict(py, &c.points, false)?)?;
+
+    let tp = PyDict::new(py);
+    tp.set_item("abar", f64_array(py, c.turning_points.iter().map(|t| t.abar)))?;
+    tp.set_item("load", f64_array(py, c.turning_points.iter().map(|t| t.load)))?;
+    tp.set_item("kind", str_list(py, c.turning_points.iter().map(|t| kind_str(t.kind)))?)?;
+    out.set_item("turning_points", tp)?;
+
+    let jumps = PyDict::new(py);
+    jumps.set_item("direction", str_list(py, c.jumps.iter().map(|j| direction_str(j.direction)))?)?;
+    jumps.set_item("from_abar", f64_array(py, c.jumps.iter().map(|j| j.from_abar)))?;
+    jumps.set_item("to_abar", f64_array(py, c.jumps.iter().map(|j| j.to_abar)))?;
+    jumps.set_item("load", f64_array(py, c.jumps.iter().map(|j| j.load)))?;
+    out.set_item("jumps", jumps)?;
+
+    out.set_item("pull_off", c.pull_off)?;
+
+    let loops = PyDict::new(py);
+    loops.set_item("loading_from_abar", f64_array(py, c.loops.iter().map(|l| l.loading.from_abar)))?;
+    loops.set_item("loading_to_abar", f64_array(py, c.loops.iter().map(|l| l.loading.to_abar)))?;
+    loops.set_item("loading_load", f64_array(py, c.loops.iter().map(|l| l.loading.load)))?;
+    loops.set_item("unloading_from_abar", f64_array(py, c.loops.iter().map(|l| l.unloading.from_abar)))?;
+    loops.set_item("unloading_to_abar", f64_array(py, c.loops.iter().map(|l| l.unloading.to_abar)))?;
+    loops.set_item("unloading_load", f64_array(py, c.loops.iter().map(|l| l.unloading.load)))?;
+    loops.set_item("area", f64_array(py, c.loops.iter().map(|l| l.area)))?;
+    out.set_item("hysteresis_loops", loops)?;
+    Ok(out)
+}
+
+/// Solved states over flat `(lam, alpha, beta, abar)` arrays, as columns.
+#[pyfunction]
+fn state_dict<'py>(
+    py: Python<'py>,
+    lam: PyReadonlyArray1<'py, f64>,
+    alpha: PyReadonlyArray1<'py, f64>,
+    beta: PyReadonlyArray1<'py, f64>,
+    abar: PyReadonlyArray1<'py, f64>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let (l, al, be, ab) = (slice(&lam, "lam")?, slice(&alpha, "alpha")?, slice(&beta, "beta")?, slice(&abar, "abar")?);
+    let len = same_len(&[l.len(), al.len(), be.len(), ab.len()])?;
+    // Each state is a root solve plus two extremum searches: parallel from two on.
+    let pts = py
+        .detach(|| {
+            (0..len)
+                .into_par_iter()
+                .map(|i| Params::new(l[i], al[i], be[i]).and_then(|p| curve::state(p, ab[i])).map_err(|error| ElementError { index: i, error }))
+                .collect::<Result<Vec<_>, _>>()
+        })
+        .map_err(|e| element_error(e, |i| format!("state(lam={:?}, alpha={:?}, beta={:?}, abar={:?})", l[i], al[i], be[i], ab[i])))?;
+    states_dict(py, &pts, true)
+}
+
+/// One state and its traction, displacement, gap and surface profile at `x`
+/// (`maugis profile`).
+#[pyfunction]
+fn profile_dict<'py>(py: Python<'py>, lam: f64, alpha: f64, beta: f64, abar: f64, x: PyReadonlyArray1<'py, f64>) -> PyResult<Bound<'py, PyDict>> {
+    let p = params(lam, alpha, beta)?;
+    let xs = slice(&x, "x")?;
+    type Samples = (Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>);
+    let (pt, (pbar, ubar, gbar, hbar)) = py
+        .detach(|| -> Result<(CurvePoint, Samples), PyErr> {
+            let cs = ContactSize::new(p, abar).map_err(lib_error)?;
+            let m = cs.solve_m().map_err(lib_error)?;
+            let pt = CurvePoint { abar, m, load: cs.load(m), validity: cs.validity(m).map_err(lib_error)? };
+            let rows = map_elements(xs.len(), |i| {
+                let x = xs[i];
+                Ok((cs.traction(m, x), cs.displacement(m, x)?, cs.gap(m, x)?, profile_depth(1.0, alpha, beta, x)?))
+            })
+            .map_err(|e| element_error(e, |i| format!("profile at xbar={:?}", xs[i])))?;
+            let mut s: Samples = Default::default();
+            for (a, b, c, d) in rows {
+                s.0.push(a);
+                s.1.push(b);
+                s.2.push(c);
+                s.3.push(d);
+            }
+            Ok((pt, s))
+        })?;
+    let out = states_dict(py, std::slice::from_ref(&pt), true)?;
+    let samples = PyDict::new(py);
+    samples.set_item("xbar", f64_array(py, xs.iter().copied()))?;
+    samples.set_item("pbar", f64_array(py, pbar))?;
+    samples.set_item("ubar", f64_array(py, ubar))?;
+    samples.set_item("gbar", f64_array(py, gbar))?;
+    samples.set_item("hbar", f64_array(py, hbar))?;
+    out.set_item("samples", samples)?;
+    Ok(out)
+}
+
+// ---------------------------------------------------------------- timing aid
+
+/// Seconds taken by a plain serial Rust loop of `function` over the given flat
+/// arrays (no NumPy, no GIL, no rayon): the baseline of
+/// `python/benchmarks/timing.py`. Not part of the public API.
+#[pyfunction]
+fn _native_loop_seconds(py: Python<'_>, function: &str, n: PyReadonlyArray1<'_, i64>, x: PyReadonlyArray1<'_, f64>) -> PyResult<f64> {
+    let (n, x) = (slice(&n, "n")?, slice(&x, "x")?);
+    same_len(&[n.len(), x.len()])?;
+    let f: fn(i64, f64) -> maugis::Result<f64> = match function {
+        "bessel_j" => bessel_j,
+        "meijer_g_k" => |k, y| meijer_g_k(order_u32(k)?, y),
+        _ => return Err(PyValueError::new_err(format!("no native loop for {function:?}"))),
+    };
+    py.detach(|| {
+        let t = std::time::Instant::now();
+        let mut acc = 0.0;
+        for (&k, &v) in n.iter().zip(x) {
+            acc += f(k, v)?;
+        }
+        std::hint::black_box(acc);
+        Ok::<f64, Error>(t.elapsed().as_secs_f64())
+    })
+    .map_err(lib_error)
+}
+
+/// The compiled module.
+#[pymodule]
+fn _maugis(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(bessel_j_f64, m)?)?;
+    m.add_function(wrap_pyfunction!(real4_f64, m)?)?;
+    m.add_function(wrap_pyfunction!(meijer_g_k_f64, m)?)?;
+    m.add_function(wrap_pyfunction!(eval_mp, m)?)?;
+    m.add_function(wrap_pyfunction!(curve_dict, m)?)?;
+    m.add_function(wrap_pyfunction!(state_dict, m)?)?;
+    m.add_function(wrap_pyfunction!(profile_dict, m)?)?;
+    m.add_function(wrap_pyfunction!(_native_loop_seconds, m)?)?;
+    m.add("PARALLEL_MIN_LEN", PARALLEL_MIN_LEN)?;
+    m.add("MAX_PREC", maugis::MAX_PREC)?;
+    Ok(())
+}
