@@ -12,7 +12,8 @@ error bound, ``prec=`` returns certified arbitrary-precision balls)::
 
 The model (results carry the fields of the ``maugis`` command's JSON)::
 
-    curve(lam, alpha, beta)         load-area response, jumps, pull-off, loops
+    curve(lam, alpha, beta)         load-area response, jumps, loops, dissipation, pull-off
+    run_summary(lam, alpha, beta)   the JSON object of `maugis curve --format json`
     state(lam, alpha, beta, abar)   solved states (broadcasting)
     profile(lam, alpha, beta, abar) traction, displacement and gap at one state
 
@@ -21,20 +22,14 @@ Bad input raises ``ValueError`` with the library's message. See docs/python.md.
 
 from ._maugis import MAX_PREC, PARALLEL_MIN_LEN
 from ._model import (
+    DEFAULT_DATUM,
     FIG4C_ALPHA,
     FIG4C_BETA,
-    Curve,
-    CurveParams,
-    CurvePoints,
-    HysteresisLoops,
-    Jumps,
-    Profile,
-    ProfileSamples,
-    PullOff,
-    State,
-    TurningPoints,
+    Record,
+    Table,
     curve,
     profile,
+    run_summary,
     state,
 )
 from ._special import bessel_j, du_wave, hyp1f2, hyp2f1, meijer_g_k, u_wave
@@ -44,24 +39,18 @@ __version__ = "0.1.0"
 __all__ = [
     "MAX_PREC",
     "PARALLEL_MIN_LEN",
+    "DEFAULT_DATUM",
     "FIG4C_ALPHA",
     "FIG4C_BETA",
-    "Curve",
-    "CurveParams",
-    "CurvePoints",
-    "HysteresisLoops",
-    "Jumps",
-    "Profile",
-    "ProfileSamples",
-    "PullOff",
-    "State",
-    "TurningPoints",
+    "Record",
+    "Table",
     "bessel_j",
     "hyp1f2",
     "hyp2f1",
     "meijer_g_k",
     "u_wave",
     "du_wave",
+    "run_summary",
     "curve",
     "state",
     "profile",

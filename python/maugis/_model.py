@@ -1,16 +1,19 @@
 """The wavy Maugis model: load-area curves, single states and profiles.
 
-The results are frozen dataclasses of NumPy arrays whose fields carry the names
-of the ``maugis`` command's JSON (``maugis curve --format json``,
-``maugis profile --format json``); ``as_json()`` returns exactly that JSON
-object. The JSON key ``lambda`` is a Python keyword: it is ``lam`` here.
+Results follow the library's JSON schema, the one ``maugis curve --format
+json`` and ``summary.json`` print (``maugis::contact::summary``): the same
+keys, nested the same way. A JSON object becomes a :class:`Record` (a dict
+whose keys are also attributes); a list of objects becomes a :class:`Table`,
+whose keys are the objects' fields and whose values are NumPy arrays with one
+entry per object (nested objects become nested tables). So the JSON path
+``curves[0].jumps[2].from.abar`` reads ``curve(...).jumps["from"]["abar"][2]``.
+:func:`run_summary` returns the JSON object itself.
 """
 
 from __future__ import annotations
 
+import json
 import math
-from dataclasses import dataclass, fields
-from typing import Optional
 
 import numpy as np
 
@@ -20,16 +23,10 @@ from ._special import _as_real, _flat
 __all__ = [
     "FIG4C_ALPHA",
     "FIG4C_BETA",
-    "Curve",
-    "CurveParams",
-    "CurvePoints",
-    "TurningPoints",
-    "Jumps",
-    "PullOff",
-    "HysteresisLoops",
-    "State",
-    "Profile",
-    "ProfileSamples",
+    "DEFAULT_DATUM",
+    "Record",
+    "Table",
+    "run_summary",
     "curve",
     "state",
     "profile",
@@ -39,169 +36,78 @@ __all__ = [
 FIG4C_ALPHA = math.sqrt(2.0) / 4.0
 #: Normalised wavelength of the paper's Fig. 4c.
 FIG4C_BETA = 9.0 / 8.0
+#: Default datum of displacement control (units of ``l_h``).
+DEFAULT_DATUM = _ext.DEFAULT_DATUM
 
 
-def _rows(obj):
-    """Column dataclass -> list of JSON row objects (one per index)."""
-    cols = {f.name: getattr(obj, f.name) for f in fields(obj)}
-    n = len(next(iter(cols.values()))) if cols else 0
-    return [{k: _plain(v[i]) for k, v in cols.items()} for i in range(n)]
+class Record(dict):
+    """A JSON object: a dict whose keys are also attributes (where they are identifiers)."""
+
+    __slots__ = ()
+
+    def __getattr__(self, name):
+        try:
+            return self[name]
+        except KeyError:
+            raise AttributeError(name) from None
+
+    def __dir__(self):
+        return list(super().__dir__()) + [k for k in self if isinstance(k, str) and k.isidentifier()]
 
 
-def _plain(v):
-    """A NumPy scalar as the Python value ``json`` would write."""
-    return v.item() if isinstance(v, np.generic) else v
+class Table(Record):
+    """A list of JSON objects as columns: ``table[field][i]`` is ``list[i].field``.
+
+    ``nrows`` is the length of the list. An empty list has no columns: any
+    field asked of it is an empty array.
+    """
+
+    __slots__ = ("nrows",)
+
+    def __init__(self, columns=(), nrows=0):
+        super().__init__(columns)
+        self.nrows = nrows
+
+    def __missing__(self, key):
+        if self.nrows == 0:
+            return np.empty(0)
+        raise KeyError(key)
+
+    def __repr__(self):
+        return f"Table(nrows={self.nrows}, columns={list(self.keys())})"
 
 
-def _columns(cls, d):
-    return cls(**{f.name: np.asarray(d[f.name]) for f in fields(cls)})
+def _column(values):
+    """One column of a table: numbers, booleans and strings as NumPy arrays."""
+    if all(isinstance(v, dict) for v in values):
+        return _table(values)
+    if all(isinstance(v, bool) for v in values):
+        return np.array(values, dtype=bool)
+    if all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in values):
+        return np.array(values, dtype=np.float64 if any(isinstance(v, float) for v in values) else np.int64)
+    if all(isinstance(v, str) for v in values):
+        return np.array(values, dtype=str)
+    out = np.empty(len(values), dtype=object)
+    out[:] = [_convert(v) for v in values]
+    return out
 
 
-@dataclass(frozen=True)
-class CurvePoints:
-    """The grid states of a curve, one entry per ``abar_i = amax i / points``."""
-
-    abar: np.ndarray
-    m: np.ndarray
-    """Strip ratio ``c/a``."""
-    load: np.ndarray
-    """Normalised load ``Lbar`` (Eq. 14)."""
-    valid: np.ndarray
-    """No cavitation (``max_traction <= 1``) and no negative strip gap."""
-    min_strip_gap: np.ndarray
-    max_traction: np.ndarray
+def _table(rows):
+    keys = list(dict.fromkeys(k for r in rows for k in r))
+    return Table({k: _column([r.get(k) for r in rows]) for k in keys}, nrows=len(rows))
 
 
-@dataclass(frozen=True)
-class TurningPoints:
-    """Refined turning points ``dLbar/dabar = 0``, by increasing ``abar``."""
-
-    abar: np.ndarray
-    load: np.ndarray
-    kind: np.ndarray
-    """``"max"`` or ``"min"``."""
-
-
-@dataclass(frozen=True)
-class Jumps:
-    """Jumps at constant load under load control."""
-
-    direction: np.ndarray
-    """``"loading"`` (from a maximum to a larger contact) or ``"unloading"``."""
-    from_abar: np.ndarray
-    to_abar: np.ndarray
-    load: np.ndarray
-
-
-@dataclass(frozen=True)
-class PullOff:
-    """The pull-off state."""
-
-    abar: float
-    load: float
-
-
-@dataclass(frozen=True)
-class HysteresisLoops:
-    """Loops formed by a loading jump and the unloading jump that returns past it."""
-
-    loading_from_abar: np.ndarray
-    loading_to_abar: np.ndarray
-    loading_load: np.ndarray
-    unloading_from_abar: np.ndarray
-    unloading_to_abar: np.ndarray
-    unloading_load: np.ndarray
-    area: np.ndarray
-    """Area enclosed in the ``(abar, Lbar)`` plane."""
-
-
-@dataclass(frozen=True)
-class CurveParams:
-    """The JSON ``params`` object."""
-
-    alpha: float
-    beta: float
-    amax: float
-    points: int
-
-
-@dataclass(frozen=True)
-class Curve:
-    """One load-area response (one entry of the JSON ``curves`` list)."""
-
-    lam: float
-    params: CurveParams
-    points: CurvePoints
-    turning_points: TurningPoints
-    jumps: Jumps
-    pull_off: Optional[PullOff]
-    hysteresis_loops: HysteresisLoops
-
-    def as_json(self):
-        """The object ``maugis curve --format json`` prints for this one curve."""
-        return {
-            "params": {f.name: getattr(self.params, f.name) for f in fields(self.params)},
-            "curves": [
-                {
-                    "lambda": self.lam,
-                    "points": _rows(self.points),
-                    "turning_points": _rows(self.turning_points),
-                    "jumps": _rows(self.jumps),
-                    "pull_off": None
-                    if self.pull_off is None
-                    else {"abar": self.pull_off.abar, "load": self.pull_off.load},
-                }
-            ],
-        }
-
-
-@dataclass(frozen=True)
-class State:
-    """Solved states (arrays of the broadcast shape of the arguments, or scalars)."""
-
-    abar: np.ndarray
-    m: np.ndarray
-    load: np.ndarray
-    valid: np.ndarray
-    min_strip_gap: np.ndarray
-    min_strip_gap_at: np.ndarray
-    max_traction: np.ndarray
-    max_traction_at: np.ndarray
-
-
-@dataclass(frozen=True)
-class ProfileSamples:
-    """Traction, displacement, gap and surface depth against ``xbar``."""
-
-    xbar: np.ndarray
-    pbar: np.ndarray
-    ubar: np.ndarray
-    gbar: np.ndarray
-    hbar: np.ndarray
-
-
-@dataclass(frozen=True)
-class Profile:
-    """One state and its profile (``maugis profile --format json``)."""
-
-    lam: float
-    alpha: float
-    beta: float
-    abar: float
-    m: float
-    load: float
-    valid: bool
-    min_strip_gap: float
-    min_strip_gap_at: float
-    max_traction: float
-    max_traction_at: float
-    samples: ProfileSamples
-
-    def as_json(self):
-        """The object ``maugis profile --format json`` prints."""
-        out = {("lambda" if f.name == "lam" else f.name): _plain(getattr(self, f.name)) for f in fields(self)}
-        out["samples"] = _rows(self.samples)
-        return out
+def _convert(obj):
+    """JSON value -> Record / Table / NumPy array / scalar."""
+    if isinstance(obj, dict):
+        return Record({k: _convert(v) for k, v in obj.items()})
+    if isinstance(obj, list):
+        if not obj:
+            return Table()
+        if all(isinstance(r, dict) for r in obj):
+            return _table(obj)
+        return _column(obj)
+    return obj
 
 
 def _real_scalar(name, v):
@@ -209,27 +115,6 @@ def _real_scalar(name, v):
     if a.shape != ():
         raise ValueError(f"{name} must be a single number here (got an array of shape {a.shape})")
     return float(a)
-
-
-def _one_curve(lam, alpha, beta, amax, points):
-    d = _ext.curve_dict(lam, alpha, beta, amax, points)
-    po = d["pull_off"]
-    tp = d["turning_points"]
-    jumps = d["jumps"]
-    return Curve(
-        lam=lam,
-        params=CurveParams(alpha=alpha, beta=beta, amax=amax, points=points),
-        points=_columns(CurvePoints, d["points"]),
-        turning_points=TurningPoints(abar=tp["abar"], load=tp["load"], kind=np.array(tp["kind"], dtype=str)),
-        jumps=Jumps(
-            direction=np.array(jumps["direction"], dtype=str),
-            from_abar=jumps["from_abar"],
-            to_abar=jumps["to_abar"],
-            load=jumps["load"],
-        ),
-        pull_off=None if po is None else PullOff(abar=po[0], load=po[1]),
-        hysteresis_loops=_columns(HysteresisLoops, d["hysteresis_loops"]),
-    )
 
 
 def _count(name, v):
@@ -240,55 +125,81 @@ def _count(name, v):
     return int(v)
 
 
-def curve(lam, alpha=FIG4C_ALPHA, beta=FIG4C_BETA, *, amax=6.0, points=600):
-    """Load-area response ``Lbar(abar)`` on ``abar_i = amax i / points``, ``i = 1..points``.
+def _summary(lams, alpha, beta, amax, points, datum):
+    alpha, beta, amax, datum = (
+        _real_scalar(n, v) for n, v in (("alpha", alpha), ("beta", beta), ("amax", amax), ("datum", datum))
+    )
+    text = _ext.curve_summary_json([float(v) for v in lams], alpha, beta, amax, _count("points", points), datum)
+    return json.loads(text)
 
-    ``lam`` (the Maugis parameter) may be one number, giving a :class:`Curve`,
-    or a sequence, giving a list of them. Turning points, jumps under load
-    control, pull-off and hysteresis loops are those of ``maugis curve``.
+
+def run_summary(lam, alpha=FIG4C_ALPHA, beta=FIG4C_BETA, *, amax=6.0, points=600, datum=DEFAULT_DATUM):
+    """The JSON object ``maugis curve --format json`` prints, as plain Python values.
+
+    ``lam`` is one Maugis parameter or several (sorted and deduplicated, as the
+    command does; the smallest is ``mdmt_limit_lambda``).
     """
-    alpha = _real_scalar("alpha", alpha)
-    beta = _real_scalar("beta", beta)
-    amax = _real_scalar("amax", amax)
-    points = _count("points", points)
+    lams = sorted(set(_as_real("lam", lam).reshape(-1).tolist()))
+    return _summary(lams, alpha, beta, amax, points, datum)
+
+
+def curve(lam, alpha=FIG4C_ALPHA, beta=FIG4C_BETA, *, amax=6.0, points=600, datum=DEFAULT_DATUM):
+    """Load-area response on ``abar_i = amax i / points``, ``i = 1..points``.
+
+    Returns one entry of the JSON ``curves`` list as a :class:`Record`: the grid
+    ``points``, ``turning_points``, the ``jumps`` and ``loops`` met under load
+    control, ``pull_off``, ``dissipation``, the ``load_control`` and
+    ``displacement_control`` paths, the invalid stretches. ``lam`` may be a
+    sequence: then a list of records, in the given order.
+    """
     lams = _as_real("lam", lam)
-    if lams.ndim == 0:
-        return _one_curve(float(lams), alpha, beta, amax, points)
-    return [_one_curve(float(v), alpha, beta, amax, points) for v in lams.reshape(-1)]
+    out = [_convert(c) for c in _summary(lams.reshape(-1).tolist(), alpha, beta, amax, points, datum)["curves"]]
+    return out[0] if lams.ndim == 0 else out
 
 
 def state(lam, alpha, beta, abar):
-    """Solved states: the strip ratio ``m``, the load and the validity diagnostics.
+    """Solved states (the fields of a curve's grid ``points``), broadcasting like a ufunc.
 
-    The arguments broadcast like a ufunc; states are solved in parallel.
+    Returns a :class:`Record` of arrays of the broadcast shape (NumPy scalars
+    for scalar arguments): ``abar``, ``m``, ``m_minus_1``, ``load``,
+    ``approach`` and the ``validity`` record. States are solved in parallel.
     """
     conv = [_as_real(n, v) for n, v in (("lam", lam), ("alpha", alpha), ("beta", beta), ("abar", abar))]
     flat, shape = _flat(conv)
-    d = _ext.state_dict(*flat)
-    cols = {}
-    for f in fields(State):
-        v = np.asarray(d[f.name]).reshape(shape)
-        cols[f.name] = v[()] if shape == () else v
-    return State(**cols)
+    rows = json.loads(_ext.states_json(*flat))
+    return _reshape(_table(rows), shape) if rows else Table()
+
+
+def _reshape(table, shape):
+    out = Record()
+    for k, v in table.items():
+        if isinstance(v, Table):
+            out[k] = _reshape(v, shape)
+        else:
+            v = v.reshape(shape)
+            out[k] = v[()] if shape == () else v
+    return out
 
 
 def profile(lam, alpha, beta, abar, *, x=None, points=600):
     """Traction ``pbar``, displacement ``ubar``, gap ``gbar`` and surface depth ``hbar`` at one state.
 
-    ``x`` (``xbar`` positions, >= 0) defaults to the grid of ``maugis profile``:
-    ``points`` values over ``[0, 1.5 m abar]`` plus the contact edge and the strip end.
+    Returns the fields of ``maugis profile --format json`` as a :class:`Record`,
+    with ``samples`` as a :class:`Table` of columns. ``x`` (``xbar`` positions)
+    defaults to the command's grid: ``points`` values over ``[0, 1.5 m abar]``
+    plus the contact edge and the strip end.
     """
     lam, alpha, beta, abar = (
         _real_scalar(n, v) for n, v in (("lam", lam), ("alpha", alpha), ("beta", beta), ("abar", abar))
     )
     if x is None:
         points = _count("points", points)
-        m = float(state(lam, alpha, beta, abar).m)
-        c = m * abar
+        c = float(state(lam, alpha, beta, abar).m) * abar
         xs = 1.5 * c * np.arange(points, dtype=np.float64) / (points - 1)
         x = np.unique(np.concatenate([xs, [abar, c]]))
     x = np.ascontiguousarray(_as_real("x", x).reshape(-1))
     d = _ext.profile_dict(lam, alpha, beta, abar, x)
-    scal = {k: _plain(np.asarray(d[k])[0]) for k in ("abar", "m", "load", "valid", "min_strip_gap",
-                                                     "min_strip_gap_at", "max_traction", "max_traction_at")}
-    return Profile(lam=lam, alpha=alpha, beta=beta, samples=_columns(ProfileSamples, d["samples"]), **scal)
+    samples = d.pop("samples")
+    out = Record(d)
+    out["samples"] = Table(samples, nrows=len(x))
+    return out

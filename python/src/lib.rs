@@ -19,11 +19,12 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple};
 use rayon::prelude::*;
 
-use maugis::contact::curve::{self, load_area_curve, CurveOptions, CurvePoint, JumpDirection, TurningKind};
+use maugis::contact::curve::{self, load_area_curve, CurveOptions};
+use maugis::contact::summary::{CurveSummary, RunParams, RunSummary};
 use maugis::contact::displacement::{
     du_wave, du_wave_bounded, du_wave_mp, profile_depth, u_wave, u_wave_bounded, u_wave_mp,
 };
-use maugis::contact::model::{ContactSize, Params};
+use maugis::contact::model::{ContactSize, Params, Validity};
 use maugis::rug::{Float, Integer};
 use maugis::special::bessel_j::{bessel_j, bessel_j_bounded, bessel_j_mp};
 use maugis::special::hyp1f2::{hyp1f2, hyp1f2_bounded, hyp1f2_mp};
@@ -322,98 +323,53 @@ fn eval_mp<'py>(py: Python<'py>, function: &str, columns: Vec<Vec<MpArg>>, prec:
 }
 
 // ---------------------------------------------------------------- the model
+//
+// The model's results cross as JSON text of the library's own serde schema
+// (`maugis::contact::summary`, the object `maugis curve --format json` prints);
+// Python turns its record lists into columns of NumPy arrays. The bindings thus
+// follow the schema as it grows, and the tests compare with the CLI's output.
 
 fn params(lam: f64, alpha: f64, beta: f64) -> PyResult<Params> {
     Params::new(lam, alpha, beta).map_err(lib_error)
 }
 
-fn f64_array<'py>(py: Python<'py>, v: impl IntoIterator<Item = f64>) -> Bound<'py, PyAny> {
-    PyArray1::from_vec(py, v.into_iter().collect()).into_any()
+fn to_json<T: serde::Serialize>(value: &T) -> PyResult<String> {
+    serde_json::to_string(value).map_err(|e| PyValueError::new_err(format!("internal: could not format JSON: {e}")))
 }
 
-fn bool_array<'py>(py: Python<'py>, v: impl IntoIterator<Item = bool>) -> Bound<'py, PyAny> {
-    PyArray1::from_vec(py, v.into_iter().collect()).into_any()
-}
-
-fn str_list<'py>(py: Python<'py>, v: impl IntoIterator<Item = &'static str>) -> PyResult<Bound<'py, PyAny>> {
-    Ok(PyList::new(py, v)?.into_any())
-}
-
-fn kind_str(k: TurningKind) -> &'static str {
-    match k {
-        TurningKind::Max => "max",
-        TurningKind::Min => "min",
-    }
-}
-
-fn direction_str(d: JumpDirection) -> &'static str {
-    match d {
-        JumpDirection::Loading => "loading",
-        JumpDirection::Unloading => "unloading",
-    }
-}
-
-/// Columns of solved states (the fields of one `points` entry of the CLI's JSON).
-fn states_dict<'py>(py: Python<'py>, pts: &[CurvePoint], with_locations: bool) -> PyResult<Bound<'py, PyDict>> {
-    let d = PyDict::new(py);
-    d.set_item("abar", f64_array(py, pts.iter().map(|p| p.abar)))?;
-    d.set_item("m", f64_array(py, pts.iter().map(|p| p.m)))?;
-    d.set_item("load", f64_array(py, pts.iter().map(|p| p.load)))?;
-    d.set_item("valid", bool_array(py, pts.iter().map(|p| p.validity.valid)))?;
-    d.set_item("min_strip_gap", f64_array(py, pts.iter().map(|p| p.validity.min_strip_gap)))?;
-    d.set_item("max_traction", f64_array(py, pts.iter().map(|p| p.validity.max_traction)))?;
-    if with_locations {
-        d.set_item("min_strip_gap_at", f64_array(py, pts.iter().map(|p| p.validity.min_strip_gap_at)))?;
-        d.set_item("max_traction_at", f64_array(py, pts.iter().map(|p| p.validity.max_traction_at)))?;
-    }
-    Ok(d)
-}
-
-/// One load-area curve (`maugis curve`): a dict with `points`, `turning_points`,
-/// `jumps`, `pull_off` and `hysteresis_loops`, each a dict of columns.
+/// The run summary of `maugis curve --format json` for the given Maugis
+/// parameters (in this order; the first is the M-DMT limit's lambda), as JSON text.
 #[pyfunction]
-fn curve_dict<'py>(py: Python<'py>, lam: f64, alpha: f64, beta: f64, amax: f64, points: usize) -> PyResult<Bound<'py, PyDict>> {
-    let p = params(lam, alpha, beta)?;
-    let c = py.detach(|| load_area_curve(p, CurveOptions { amax, points })).map_err(lib_error)?;
-    let out = PyDict::new(py);
-    out.set_item("points", states_dict(py, &c.points, false)?)?;
-
-    let tp = PyDict::new(py);
-    tp.set_item("abar", f64_array(py, c.turning_points.iter().map(|t| t.abar)))?;
-    tp.set_item("load", f64_array(py, c.turning_points.iter().map(|t| t.load)))?;
-    tp.set_item("kind", str_list(py, c.turning_points.iter().map(|t| kind_str(t.kind)))?)?;
-    out.set_item("turning_points", tp)?;
-
-    let jumps = PyDict::new(py);
-    jumps.set_item("direction", str_list(py, c.jumps.iter().map(|j| direction_str(j.direction)))?)?;
-    jumps.set_item("from_abar", f64_array(py, c.jumps.iter().map(|j| j.from_abar)))?;
-    jumps.set_item("to_abar", f64_array(py, c.jumps.iter().map(|j| j.to_abar)))?;
-    jumps.set_item("load", f64_array(py, c.jumps.iter().map(|j| j.load)))?;
-    out.set_item("jumps", jumps)?;
-
-    out.set_item("pull_off", c.pull_off)?;
-
-    let loops = PyDict::new(py);
-    loops.set_item("loading_from_abar", f64_array(py, c.loops.iter().map(|l| l.loading.from_abar)))?;
-    loops.set_item("loading_to_abar", f64_array(py, c.loops.iter().map(|l| l.loading.to_abar)))?;
-    loops.set_item("loading_load", f64_array(py, c.loops.iter().map(|l| l.loading.load)))?;
-    loops.set_item("unloading_from_abar", f64_array(py, c.loops.iter().map(|l| l.unloading.from_abar)))?;
-    loops.set_item("unloading_to_abar", f64_array(py, c.loops.iter().map(|l| l.unloading.to_abar)))?;
-    loops.set_item("unloading_load", f64_array(py, c.loops.iter().map(|l| l.unloading.load)))?;
-    loops.set_item("area", f64_array(py, c.loops.iter().map(|l| l.area)))?;
-    out.set_item("hysteresis_loops", loops)?;
-    Ok(out)
+#[allow(clippy::too_many_arguments)]
+fn curve_summary_json(py: Python<'_>, lams: Vec<f64>, alpha: f64, beta: f64, amax: f64, points: usize, datum: f64) -> PyResult<String> {
+    let params = lams.iter().map(|&l| params(l, alpha, beta)).collect::<PyResult<Vec<_>>>()?;
+    let opts = CurveOptions { amax, points, datum };
+    let curves = py
+        .detach(|| {
+            params
+                .par_iter()
+                .map(|&p| load_area_curve(p, opts).map_err(|error| (p.lambda, error)))
+                .collect::<Result<Vec<_>, _>>()
+        })
+        .map_err(|(l, e)| PyValueError::new_err(format!("lambda = {l:?}: {e}")))?;
+    let summary = RunSummary {
+        params: RunParams::new(alpha, beta, opts),
+        mdmt_limit_lambda: lams.first().copied().unwrap_or(f64::NAN),
+        curves: curves.iter().map(|c| CurveSummary::new(c, None)).collect(),
+    };
+    to_json(&summary)
 }
 
-/// Solved states over flat `(lam, alpha, beta, abar)` arrays, as columns.
+/// Solved states over flat `(lam, alpha, beta, abar)` arrays: JSON text of the
+/// list of the library's `CurvePoint`s.
 #[pyfunction]
-fn state_dict<'py>(
-    py: Python<'py>,
-    lam: PyReadonlyArray1<'py, f64>,
-    alpha: PyReadonlyArray1<'py, f64>,
-    beta: PyReadonlyArray1<'py, f64>,
-    abar: PyReadonlyArray1<'py, f64>,
-) -> PyResult<Bound<'py, PyDict>> {
+fn states_json(
+    py: Python<'_>,
+    lam: PyReadonlyArray1<'_, f64>,
+    alpha: PyReadonlyArray1<'_, f64>,
+    beta: PyReadonlyArray1<'_, f64>,
+    abar: PyReadonlyArray1<'_, f64>,
+) -> PyResult<String> {
     let (l, al, be, ab) = (slice(&lam, "lam")?, slice(&alpha, "alpha")?, slice(&beta, "beta")?, slice(&abar, "abar")?);
     let len = same_len(&[l.len(), al.len(), be.len(), ab.len()])?;
     // Each state is a root solve plus two extremum searches: parallel from two on.
@@ -425,42 +381,47 @@ fn state_dict<'py>(
                 .collect::<Result<Vec<_>, _>>()
         })
         .map_err(|e| element_error(e, |i| format!("state(lam={:?}, alpha={:?}, beta={:?}, abar={:?})", l[i], al[i], be[i], ab[i])))?;
-    states_dict(py, &pts, true)
+    to_json(&pts)
 }
 
-/// One state and its traction, displacement, gap and surface profile at `x`
-/// (`maugis profile`).
+/// One state and its traction, displacement, gap and surface depth at `x`: the
+/// fields of `maugis profile --format json`, samples as columns.
 #[pyfunction]
 fn profile_dict<'py>(py: Python<'py>, lam: f64, alpha: f64, beta: f64, abar: f64, x: PyReadonlyArray1<'py, f64>) -> PyResult<Bound<'py, PyDict>> {
     let p = params(lam, alpha, beta)?;
     let xs = slice(&x, "x")?;
-    type Samples = (Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>);
-    let (pt, (pbar, ubar, gbar, hbar)) = py
-        .detach(|| -> Result<(CurvePoint, Samples), PyErr> {
-            let cs = ContactSize::new(p, abar).map_err(lib_error)?;
-            let m = cs.solve_m().map_err(lib_error)?;
-            let pt = CurvePoint { abar, m, load: cs.load(m), validity: cs.validity(m).map_err(lib_error)? };
-            let rows = map_elements(xs.len(), |i| {
-                let x = xs[i];
-                Ok((cs.traction(m, x), cs.displacement(m, x)?, cs.gap(m, x)?, profile_depth(1.0, alpha, beta, x)?))
-            })
-            .map_err(|e| element_error(e, |i| format!("profile at xbar={:?}", xs[i])))?;
-            let mut s: Samples = Default::default();
-            for (a, b, c, d) in rows {
-                s.0.push(a);
-                s.1.push(b);
-                s.2.push(c);
-                s.3.push(d);
+    type Columns = [Vec<f64>; 4];
+    let (m, load, v, [pbar, ubar, gbar, hbar]) = py.detach(|| -> Result<(f64, f64, Validity, Columns), PyErr> {
+        let cs = ContactSize::new(p, abar).map_err(lib_error)?;
+        let strip = cs.solve_strip().map_err(lib_error)?;
+        let validity = cs.validity_at(strip).map_err(lib_error)?;
+        let rows = map_elements(xs.len(), |i| {
+            let x = xs[i];
+            Ok([cs.traction_at(strip, x), cs.displacement_at(strip, x)?, cs.gap_at(strip, x)?, profile_depth(1.0, alpha, beta, x)?])
+        })
+        .map_err(|e| element_error(e, |i| format!("profile at xbar={:?}", xs[i])))?;
+        let mut cols: Columns = Default::default();
+        for row in rows {
+            for (col, value) in cols.iter_mut().zip(row) {
+                col.push(value);
             }
-            Ok((pt, s))
-        })?;
-    let out = states_dict(py, std::slice::from_ref(&pt), true)?;
+        }
+        Ok((strip.m(), cs.load_at(strip), validity, cols))
+    })?;
+    let out = PyDict::new(py);
+    for (key, value) in [("lambda", lam), ("alpha", alpha), ("beta", beta), ("abar", abar), ("m", m), ("load", load)] {
+        out.set_item(key, value)?;
+    }
+    out.set_item("valid", v.valid)?;
+    out.set_item("min_strip_gap", v.min_strip_gap)?;
+    out.set_item("min_strip_gap_at", v.min_strip_gap_at)?;
+    out.set_item("max_traction", v.max_traction)?;
+    out.set_item("max_traction_at", v.max_traction_at)?;
     let samples = PyDict::new(py);
-    samples.set_item("xbar", f64_array(py, xs.iter().copied()))?;
-    samples.set_item("pbar", f64_array(py, pbar))?;
-    samples.set_item("ubar", f64_array(py, ubar))?;
-    samples.set_item("gbar", f64_array(py, gbar))?;
-    samples.set_item("hbar", f64_array(py, hbar))?;
+    samples.set_item("xbar", PyArray1::from_slice(py, xs))?;
+    for (key, col) in [("pbar", pbar), ("ubar", ubar), ("gbar", gbar), ("hbar", hbar)] {
+        samples.set_item(key, PyArray1::from_vec(py, col))?;
+    }
     out.set_item("samples", samples)?;
     Ok(out)
 }
@@ -498,11 +459,12 @@ fn _maugis(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(real4_f64, m)?)?;
     m.add_function(wrap_pyfunction!(meijer_g_k_f64, m)?)?;
     m.add_function(wrap_pyfunction!(eval_mp, m)?)?;
-    m.add_function(wrap_pyfunction!(curve_dict, m)?)?;
-    m.add_function(wrap_pyfunction!(state_dict, m)?)?;
+    m.add_function(wrap_pyfunction!(curve_summary_json, m)?)?;
+    m.add_function(wrap_pyfunction!(states_json, m)?)?;
     m.add_function(wrap_pyfunction!(profile_dict, m)?)?;
     m.add_function(wrap_pyfunction!(_native_loop_seconds, m)?)?;
     m.add("PARALLEL_MIN_LEN", PARALLEL_MIN_LEN)?;
     m.add("MAX_PREC", maugis::MAX_PREC)?;
+    m.add("DEFAULT_DATUM", curve::DEFAULT_DATUM)?;
     Ok(())
 }
