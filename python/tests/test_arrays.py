@@ -186,3 +186,15 @@ def test_threads_share_the_module():
         t.join()
     for o in out:
         np.testing.assert_array_equal(o, ref)
+
+
+def test_stubs_cover_the_public_names():
+    import ast
+    import pathlib
+
+    stub = pathlib.Path(maugis.__file__).with_name("__init__.pyi")
+    assert stub.exists(), "the wheel ships the .pyi stubs"
+    tree = ast.parse(stub.read_text())
+    names = {n.name for n in tree.body if isinstance(n, (ast.FunctionDef, ast.ClassDef))}
+    names |= {t.id for n in tree.body if isinstance(n, ast.AnnAssign) for t in [n.target]}
+    assert set(maugis.__all__) <= names
