@@ -31,6 +31,7 @@ from ._model import (
     profile,
     run_summary,
     state,
+    sweep,
 )
 from ._special import bessel_j, du_wave, hyp1f2, hyp2f1, meijer_g_k, u_wave
 
@@ -51,6 +52,7 @@ __all__ = [
     "u_wave",
     "du_wave",
     "run_summary",
+    "sweep",
     "curve",
     "state",
     "profile",

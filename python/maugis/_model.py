@@ -27,6 +27,7 @@ __all__ = [
     "Record",
     "Table",
     "run_summary",
+    "sweep",
     "curve",
     "state",
     "profile",
@@ -117,11 +118,11 @@ def _real_scalar(name, v):
     return float(a)
 
 
-def _count(name, v):
+def _count(name, v, least=2):
     if isinstance(v, bool) or not isinstance(v, (int, np.integer)):
         raise TypeError(f"{name} must be an integer (got {v!r})")
-    if v < 2:
-        raise ValueError(f"{name} must be >= 2 (got {v})")
+    if v < least:
+        raise ValueError(f"{name} must be >= {least} (got {v})")
     return int(v)
 
 
@@ -203,3 +204,25 @@ def profile(lam, alpha, beta, abar, *, x=None, points=600):
     out = Record(d)
     out["samples"] = Table(samples, nrows=len(x))
     return out
+
+
+def sweep(lambda_min, lambda_max, lambda_n, axis, min, max, n, fixed, *, amax=6.0, points=600):
+    """A ``maugis sweep``: ``lambda_n`` log-spaced ``lambda`` times ``n`` linearly spaced
+    values of ``axis`` (``"alpha"``, ``"beta"`` or ``"johnson"``), the other roughness
+    parameter held at ``fixed``; each grid point's regime, dissipation and pull-off.
+
+    Returns the library's ``Sweep`` as a :class:`Record` (its point list as a :class:`Table`).
+    """
+    grid = {
+        "lambda_min": _real_scalar("lambda_min", lambda_min),
+        "lambda_max": _real_scalar("lambda_max", lambda_max),
+        "lambda_n": _count("lambda_n", lambda_n, least=1),
+        "axis": str(axis),
+        "min": _real_scalar("min", min),
+        "max": _real_scalar("max", max),
+        "n": _count("n", n, least=1),
+        "fixed": _real_scalar("fixed", fixed),
+        "amax": _real_scalar("amax", amax),
+        "points": _count("points", points),
+    }
+    return _convert(json.loads(_ext.sweep_json(json.dumps(grid))))

@@ -21,6 +21,7 @@ use rayon::prelude::*;
 
 use maugis::contact::curve::{self, load_area_curve, CurveOptions};
 use maugis::contact::summary::{CurveSummary, RunParams, RunSummary};
+use maugis::contact::sweep::{run_sweep, SweepGrid};
 use maugis::contact::displacement::{
     du_wave, du_wave_bounded, du_wave_mp, profile_depth, u_wave, u_wave_bounded, u_wave_mp,
 };
@@ -360,6 +361,15 @@ fn curve_summary_json(py: Python<'_>, lams: Vec<f64>, alpha: f64, beta: f64, ama
     to_json(&summary)
 }
 
+/// A `maugis sweep` over the grid given as JSON text of the library's
+/// `SweepGrid`; returns the JSON text of the `Sweep`.
+#[pyfunction]
+fn sweep_json(py: Python<'_>, grid: &str) -> PyResult<String> {
+    let grid: SweepGrid = serde_json::from_str(grid).map_err(|e| PyValueError::new_err(format!("sweep grid: {e}")))?;
+    let out = py.detach(|| run_sweep(grid, None, || ())).map_err(lib_error)?;
+    to_json(&out)
+}
+
 /// Solved states over flat `(lam, alpha, beta, abar)` arrays: JSON text of the
 /// list of the library's `CurvePoint`s.
 #[pyfunction]
@@ -461,6 +471,7 @@ fn _maugis(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(eval_mp, m)?)?;
     m.add_function(wrap_pyfunction!(curve_summary_json, m)?)?;
     m.add_function(wrap_pyfunction!(states_json, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep_json, m)?)?;
     m.add_function(wrap_pyfunction!(profile_dict, m)?)?;
     m.add_function(wrap_pyfunction!(_native_loop_seconds, m)?)?;
     m.add("PARALLEL_MIN_LEN", PARALLEL_MIN_LEN)?;

@@ -141,3 +141,13 @@ def test_model_errors_are_value_errors():
 def test_empty_tables_give_empty_columns():
     t = maugis.Table()
     assert t.nrows == 0 and t["abar"].shape == (0,)
+
+
+def test_sweep_small_grid():
+    s = maugis.sweep(1.0, 6.0, 2, "alpha", 0.1, 0.35, 2, 9 / 8, amax=2.0, points=30)
+    pts = [v for v in s.values() if isinstance(v, maugis.Table)]
+    assert pts and pts[0].nrows == 4
+    with pytest.raises(ValueError):
+        maugis.sweep(1.0, 6.0, 2, "gamma", 0.1, 0.35, 2, 9 / 8)
+    with pytest.raises(ValueError):
+        maugis.sweep(-1.0, 6.0, 2, "alpha", 0.1, 0.35, 2, 9 / 8)
