@@ -20,6 +20,7 @@ mod limits;
 mod output;
 mod plot;
 mod profile;
+mod simulate;
 mod sweep;
 
 use clap::{Parser, Subcommand};
@@ -47,6 +48,9 @@ enum Command {
     /// Regime map over lambda (log) and alpha, beta or the Johnson parameter: instabilities,
     /// dissipation, pull-off, valid fraction, regime; CSV, JSON, SVG. Shardable (--shard s/n).
     Sweep(sweep::SweepArgs),
+    /// Numerical Dugdale-Maugis simulation (maugis-solver): one loading-unloading cycle under
+    /// displacement control over the semi-analytical curve; CSV and SVG, or JSON.
+    Simulate(simulate::SimulateArgs),
     /// Merge the output directories of `maugis sweep --shard s/n` runs into the whole sweep.
     Merge(sweep::MergeArgs),
 }
@@ -93,6 +97,7 @@ fn main() {
         Command::Profile(a) => report(guarded(move || profile::run(a))),
         Command::Limits(a) => report(guarded(move || limits::run(a))),
         Command::Sweep(a) => report(guarded(move || sweep::run(a))),
+        Command::Simulate(a) => report(guarded(move || simulate::run(a))),
         Command::Merge(a) => report(guarded(move || sweep::run_merge(a))),
     };
     std::process::exit(code);
@@ -149,7 +154,7 @@ fn report(r: Result<(), String>) -> i32 {
 fn one_line(e: &clap::Error) -> String {
     use clap::error::ErrorKind;
     if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand || e.kind() == ErrorKind::MissingSubcommand {
-        return "a subcommand is required (eval, demo, curve, profile, limits, sweep, merge); try 'maugis --help'".into();
+        return "a subcommand is required (eval, demo, curve, profile, limits, sweep, merge, simulate); try 'maugis --help'".into();
     }
     let text = e.render().to_string();
     let parts: Vec<&str> = text

@@ -1,0 +1,224 @@
+//! `maugis simulate`: the numerical Dugdale-Maugis solver (`maugis-solver`) on
+//! one loading-unloading cycle under displacement control, next to the
+//! semi-analytical load-area curve.
+//!
+//! Writes into `--out` (atomically, [`crate::output`]):
+//!
+//! * `simulate.csv`: `leg,approach,abar,load,contact_intervals,zone_cells,model_load,model_valid`;
+//! * `simulate.svg`: the simulated states over the semi-analytical curve (valid
+//!   stretches solid, invalid ones faded).
+//!
+//! `--format json` writes no file and prints one JSON object. Bad input exits
+//! with code 2 before any work.
+
+use std::fmt::Write as _;
+use std::path::PathBuf;
+
+use clap::{Args, ValueEnum};
+use plotters::prelude::*;
+use serde::Serialize;
+
+use maugis::contact::curve::{load_area_curve, CurveOptions};
+use maugis::contact::model::Params;
+use maugis_solver::contact::{ContactSolver, SolveOptions, State};
+use maugis_solver::grid::Grid;
+use maugis_solver::path::{compare_with_model, cycle, suggested_half_width, CycleOptions};
+use maugis_solver::profile::{Adhesion, Profile};
+
+use crate::args::{self, short};
+use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
+use crate::plot::{colour, finish_load_area_chart, load_area_chart, plot_err, LIGHT_GREY};
+
+/// Output format.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum SimFormat {
+    /// simulate.csv and simulate.svg in --out.
+    Files,
+    /// One JSON object on stdout, no files.
+    Json,
+}
+
+/// Flags of `maugis simulate`.
+#[derive(Args, Debug)]
+pub struct SimulateArgs {
+    /// Maugis parameter lambda > 0.
+    #[arg(long, value_name = "L", value_parser = args::positive, allow_negative_numbers = true)]
+    pub lambda: f64,
+    /// Normalised wave amplitude alpha >= 0.
+    #[arg(long, value_name = "A", value_parser = args::non_negative, allow_negative_numbers = true)]
+    pub alpha: f64,
+    /// Normalised wavelength beta > 0.
+    #[arg(long, value_name = "B", value_parser = args::positive, allow_negative_numbers = true)]
+    pub beta: f64,
+    /// Loading stops at this contact half-width.
+    #[arg(long, value_name = "X", default_value = "4", value_parser = args::positive, allow_negative_numbers = true)]
+    pub amax: f64,
+    /// Grid cells, a power of two.
+    #[arg(long, value_name = "N", default_value = "4096")]
+    pub grid: usize,
+    /// Approach steps per leg.
+    #[arg(long, value_name = "S", default_value = "100")]
+    pub steps: usize,
+    /// Output directory (written atomically).
+    #[arg(long, value_name = "DIR", default_value = "maugis-simulate")]
+    pub out: PathBuf,
+    /// `files` (default) or `json`.
+    #[arg(long, value_name = "FORMAT", default_value = "files")]
+    pub format: SimFormat,
+}
+
+#[derive(Serialize)]
+struct Row {
+    leg: &'static str,
+    approach: f64,
+    abar: f64,
+    load: f64,
+    delta: f64,
+    contact_intervals: usize,
+    zone_cells: usize,
+    model_load: Option<f64>,
+    model_valid: Option<bool>,
+}
+
+#[derive(Serialize)]
+struct JsonOut {
+    lambda: f64,
+    alpha: f64,
+    beta: f64,
+    cells: usize,
+    half_width: f64,
+    datum: f64,
+    dissipated: f64,
+    states: Vec<Row>,
+}
+
+fn rows(params: Params, leg: &'static str, states: &[State]) -> Vec<Row> {
+    let cmp = compare_with_model(params, states);
+    states
+        .iter()
+        .map(|s| {
+            let m = cmp.iter().find(|r| r.abar == s.abar && s.abar > 0.0);
+            Row {
+                leg,
+                approach: s.approach,
+                abar: s.abar,
+                load: s.load,
+                delta: s.approach,
+                contact_intervals: s.contact_intervals(),
+                zone_cells: s.zone_cells,
+                model_load: m.map(|r| r.model_load),
+                model_valid: m.map(|r| r.model_valid),
+            }
+        })
+        .collect()
+}
+
+/// Runs the subcommand.
+pub fn run(a: SimulateArgs) -> Result<(), String> {
+    let e = |e: maugis_solver::SolverError| e.to_string();
+    if a.format == SimFormat::Files {
+        check_out_dir(&a.out)?;
+    }
+    if !(2..=100_000).contains(&a.steps) {
+        return Err(format!("--steps must lie in [2, 100000] (got {})", a.steps));
+    }
+    let params = Params::new(a.lambda, a.alpha, a.beta).map_err(|e| e.to_string())?;
+    let x = suggested_half_width(params, a.amax).map_err(e)?;
+    let grid = Grid::new(a.grid, x).map_err(e)?;
+    let profile = Profile::wavy_cylinder(a.alpha, a.beta).map_err(e)?;
+    let mut solver =
+        ContactSolver::new(grid, None, &profile, Adhesion::dugdale(a.lambda).map_err(e)?, SolveOptions::default()).map_err(e)?;
+    let pb = crate::curve::progress(2 * a.steps as u64, "simulating");
+    let c = cycle(&mut solver, CycleOptions { amax: a.amax, steps_per_leg: a.steps }, &mut |k, total| {
+        pb.set_length(total as u64);
+        pb.set_position(k as u64);
+    })
+    .map_err(e)?;
+    pb.finish_and_clear();
+    let mut all = rows(params, "loading", &c.loading);
+    all.extend(rows(params, "unloading", &c.unloading));
+    if a.format == SimFormat::Json {
+        let out = JsonOut {
+            lambda: a.lambda,
+            alpha: a.alpha,
+            beta: a.beta,
+            cells: a.grid,
+            half_width: x,
+            datum: solver.datum(),
+            dissipated: c.dissipated,
+            states: all,
+        };
+        let text = serde_json::to_string(&out).map_err(|e| e.to_string())?;
+        return print_stdout(&(text + "\n"));
+    }
+    let mut csv = String::from("leg,approach,abar,load,contact_intervals,zone_cells,model_load,model_valid\n");
+    for r in &all {
+        let _ = writeln!(
+            csv,
+            "{},{},{},{},{},{},{},{}",
+            r.leg,
+            r.approach,
+            r.abar,
+            r.load,
+            r.contact_intervals,
+            r.zone_cells,
+            r.model_load.map(|v| v.to_string()).unwrap_or_default(),
+            r.model_valid.map(|v| v.to_string()).unwrap_or_default()
+        );
+    }
+    let svg = overlay_svg(params, a.amax, &all)?;
+    let files = [OutFile::text("simulate.csv", csv), OutFile::text("simulate.svg", svg)];
+    let written = write_atomically(&a.out, &files)?;
+    let mut report = format!(
+        "maugis simulate: lambda {}, alpha {}, beta {}, {} cells on [-{}, {}], {} states, dissipated work {}\n",
+        short(a.lambda),
+        short(a.alpha),
+        short(a.beta),
+        a.grid,
+        short(x),
+        short(x),
+        all.len(),
+        short(c.dissipated)
+    );
+    for p in written {
+        let _ = writeln!(report, "  {}", p.display());
+    }
+    print_stdout(&report)
+}
+
+/// Simulated states (loading and unloading markers) over the model curve.
+fn overlay_svg(params: Params, amax: f64, rows: &[Row]) -> Result<String, String> {
+    let curve = load_area_curve(params, CurveOptions { amax, points: 400, ..CurveOptions::default() }).map_err(|e| e.to_string())?;
+    let loads = curve.points.iter().map(|p| p.load).chain(rows.iter().map(|r| r.load));
+    let (lo, hi) = loads.fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), v| (l.min(v), h.max(v)));
+    let pad = 0.05 * (hi - lo).max(1.0);
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (1200, 850)).into_drawing_area();
+        root.fill(&WHITE).map_err(plot_err)?;
+        let title = format!("simulation vs model: λ = {}, α = {}, β = {}", short(params.lambda), short(params.alpha), short(params.beta));
+        let mut chart = load_area_chart(&root, title, amax, lo - pad, hi + pad)?;
+        let mut first = [true, true];
+        for w in curve.points.windows(2) {
+            let valid = w[0].validity.valid && w[1].validity.valid;
+            let style = if valid { colour(0).stroke_width(2) } else { LIGHT_GREY.mix(0.5).stroke_width(1) };
+            let s = chart.draw_series(LineSeries::new([(w[0].abar, w[0].load), (w[1].abar, w[1].load)], style)).map_err(plot_err)?;
+            let k = usize::from(!valid);
+            if first[k] {
+                first[k] = false;
+                let label = if valid { "model, valid" } else { "model, invalid (faded)" };
+                s.label(label).legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], style));
+            }
+        }
+        for (leg, col, name) in [("loading", colour(3), "simulation, loading"), ("unloading", colour(2), "simulation, unloading")] {
+            let pts: Vec<(f64, f64)> = rows.iter().filter(|r| r.leg == leg && r.abar > 0.0).map(|r| (r.abar, r.load)).collect();
+            chart
+                .draw_series(pts.iter().map(|&p| Circle::new(p, 3, col.filled())))
+                .map_err(plot_err)?
+                .label(name)
+                .legend(move |(x, y)| Circle::new((x + 10, y), 4, col.filled()));
+        }
+        finish_load_area_chart(chart, &root)?;
+    }
+    Ok(svg)
+}
