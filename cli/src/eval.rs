@@ -18,7 +18,7 @@
 //! * Without `"prec"` the f64 path runs: each decimal is rounded to the nearest
 //!   double and the answer is for those doubles.
 //! * With `"prec"` the certified path runs. For the functions wired to ball
-//!   inputs (today: `bessel_j`) each decimal becomes a ball that **contains the
+//!   inputs (today: `bessel_j`, `hyp2f1`) each decimal becomes a ball that **contains the
 //!   decimal** ([`maugis::ball::Decimal`], Arb's convention): exact when the
 //!   decimal is a binary fraction (`2.5`, `0.375`), otherwise the decimal rounded
 //!   to nearest with a one-ulp radius. The printed ball contains the function
@@ -206,13 +206,8 @@ fn evaluate(obj: &Map<String, Value>) -> Req<Value> {
             hyp2f1::hyp2f1(arg_f64(obj, "a")?, arg_f64(obj, "b")?, arg_f64(obj, "c")?, arg_f64(obj, "z")?)?,
         ),
         ("hyp2f1", Some(p)) => {
-            let b = hyp2f1::hyp2f1_mp(
-                &arg_float(obj, "a", p)?,
-                &arg_float(obj, "b", p)?,
-                &arg_float(obj, "c", p)?,
-                &arg_float(obj, "z", p)?,
-                p,
-            )?;
+            let args = [arg_decimal(obj, "a")?, arg_decimal(obj, "b")?, arg_decimal(obj, "c")?, arg_decimal(obj, "z")?];
+            let b = eval_at_decimals(&args, p, |x| hyp2f1::hyp2f1_ball_mp(&x[0], &x[1], &x[2], &x[3], p))?;
             mp_response(&id, &b, p)
         }
         ("meijer_g_k", None) => f64_response(&id, meijer_g::meijer_g_k(arg_u32(obj, "k")?, arg_f64(obj, "y")?)?),

@@ -92,6 +92,7 @@
 //! degenerate 1-z formula), `choose` (the cost model and dispatcher).
 //! Gamma, Pochhammer and the magnitude helpers live in `special/gamma.rs`.
 
+mod ball_input;
 mod choose;
 mod connection;
 mod log_case;
@@ -106,6 +107,7 @@ mod tests;
 
 use rug::Float;
 
+pub use ball_input::hyp2f1_ball_mp;
 use choose::{evaluate, plan};
 
 use crate::ball::{Ball, Bounded};
