@@ -171,8 +171,9 @@ pub const MAX_DECIMAL_INPUT_PREC: u32 = 1 << 16;
 /// precision is raised by the bits missing plus a margin (at least doubled) and
 /// `f` runs again, up to [`MAX_DECIMAL_INPUT_PREC`] bits; past that the last
 /// (enclosing but wider) ball is returned. Binary-fraction inputs are exact from
-/// the start, so for them `f` runs once. Errors of `f` (for example an edge
-/// inside the input ball) are returned as they are.
+/// the start, so for them `f` runs once. A domain error of `f` (an edge inside
+/// an input ball) is retried with tighter balls while an input is inexact, and
+/// returned once the balls are exact or at the cap; other errors return at once.
 pub fn eval_at_decimals<F>(args: &[Decimal], prec: u32, mut f: F) -> Result<Ball>
 where
     F: FnMut(&[Ball]) -> Result<Ball>,
@@ -181,7 +182,18 @@ where
     let mut input_prec = prec.max(53) + 64;
     loop {
         let balls: Vec<Ball> = args.iter().map(|d| d.to_ball(input_prec)).collect();
-        let out = f(&balls)?;
+        let out = match f(&balls) {
+            Ok(out) => out,
+            // An edge (pole, branch point, divergence) inside an input ball that
+            // is not exact may leave it when the ball shrinks, as for z typed as
+            // 1 - 10^-40 next to the branch point z = 1: retry tighter. A decimal
+            // that lies on the edge keeps failing and the error is returned at the cap.
+            Err(Error::Domain { .. }) if !all_exact && input_prec < MAX_DECIMAL_INPUT_PREC => {
+                input_prec = input_prec.saturating_mul(2).min(MAX_DECIMAL_INPUT_PREC);
+                continue;
+            }
+            Err(e) => return Err(e),
+        };
         if all_exact || out.meets_rel(prec) || input_prec >= MAX_DECIMAL_INPUT_PREC {
             return Ok(out);
         }
