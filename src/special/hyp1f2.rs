@@ -48,45 +48,15 @@ use crate::special::pfq::{hyp_pfq, hyp_pfq_mp};
 /// The seed's family `1F2(1/2; k+1, k+3/2; -s)` (Eq. 11b, 12, C.39) at working
 /// precision `wp`, for `s >= 0` given as a ball.
 ///
-/// The term ratio is the rational `-s (2n+1)/((k+1+n)(2k+3+2n)(n+1))`, so each
-/// term costs one ball multiplication and two exact-integer scalings instead of
-/// the generic core's parameter arithmetic. **Tail bound**: the ratio's modulus
-/// `s (2n+1)/((k+1+n)(2k+3+2n)(n+1))` decreases in `n`, so once its value
-/// `rho_N < 1`, `sum_{n>=N} |t_n| <= |t_N|/(1 - rho_N)`. Compared with the
-/// generic pFq core in the tests.
+/// It is `Phi(2k+1)` of [`model_phi_series`]: the term ratio is the rational
+/// `-s (2n+1)/((k+1+n)(2k+3+2n)(n+1))`, so each term costs one ball
+/// multiplication and two exact-integer scalings instead of the generic core's
+/// parameter arithmetic. **Tail bound**: the ratio's modulus decreases in `n`,
+/// so once its value `rho_N < 1`, `sum_{n>=N} |t_n| <= |t_N|/(1 - rho_N)`.
+/// Compared with the generic pFq core in the tests.
 pub fn hyp1f2_model_ball(k: u32, s: &Ball, wp: u32) -> Result<Ball> {
-    use crate::ball::Mag;
-    use crate::error::Error;
-    let neg_s = s.neg();
-    let s_up = s.abs_upper_mag();
-    let kk = k as i64;
-    let mut t = Ball::one(wp);
-    let mut sum = Ball::one(wp);
-    let mut n: i64 = 0;
-    loop {
-        let den = (kk + 1 + n)
-            .checked_mul(2 * kk + 3 + 2 * n)
-            .and_then(|v| v.checked_mul(n + 1))
-            .ok_or_else(|| Error::Domain { what: "1F2 model family: k too large".into() })?;
-        t = t.mul(&neg_s).mul_i64(2 * n + 1).div_i64(den)?;
-        n += 1;
-        let t_up = t.abs_upper_mag();
-        // rho_n = s (2n+1)/((k+1+n)(2k+3+2n)(n+1)), an upper bound for every later ratio
-        let next_den = (kk + 1 + n) as f64 * (2 * kk + 3 + 2 * n) as f64 * (n + 1) as f64;
-        let rho = s_up.mul(Mag::from_f64(((2 * n + 1) as f64).next_up())).div(Mag::from_f64(next_den.next_down()));
-        let one_minus = Mag::from_f64(1.0).sub_lower(rho);
-        if !one_minus.is_zero() {
-            let tail = t_up.div(one_minus);
-            if tail.le(&sum.abs_lower_mag().mul_2exp(-(wp as i64) - 2)) {
-                sum.add_error_mag(tail);
-                return Ok(sum);
-            }
-        }
-        sum = sum.add(&t);
-        if n > 100_000_000 {
-            return Err(Error::NoConvergence { function: "1F2 model family", terms: n as u64 });
-        }
-    }
+    // F_k = Phi(2k + 1): the same series, with the same ratio and tail bound.
+    model_phi_series(2 * u64::from(k) + 1, s, wp)
 }
 
 /// Bits of relative accuracy the downward recurrence of [`hyp1f2_model_family`]
