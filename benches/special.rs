@@ -84,6 +84,26 @@ fn bench_hyp1f2_domain(c: &mut Criterion) {
     );
 }
 
+/// `meijer_g_k_bounded(k, y)` over the issue-8 domain k <= 1000, y in (0, 1]
+/// (64 fixed points; elements per second), with the MP fallbacks printed.
+fn bench_meijer_domain(c: &mut Criterion) {
+    let pts: Vec<(u32, f64)> = (0..64)
+        .map(|i| {
+            let u = (i as f64 * 0.618_033_988_749_895).fract();
+            let v = (i as f64 * 0.754_877_666_246_693).fract();
+            ((1000.0 * u).floor() as u32, 1.0 - v)
+        })
+        .collect();
+    let before = meijer_g::meijer_g_k_fallbacks();
+    let mut g = c.benchmark_group("meijer_g_k_f64_domain");
+    g.throughput(criterion::Throughput::Elements(pts.len() as u64));
+    g.bench_function("meijer_g_k_bounded", |b| {
+        b.iter(|| pts.iter().map(|&(k, y)| meijer_g::meijer_g_k_bounded(k, black_box(y)).unwrap().value).sum::<f64>())
+    });
+    g.finish();
+    eprintln!("meijer_g_k_f64_domain: MP fallbacks during the run: {}", meijer_g::meijer_g_k_fallbacks() - before);
+}
+
 fn bench_hyp2f1(c: &mut Criterion) {
     let mut g = c.benchmark_group("hyp2f1_model_128bit");
     let one = exact(1.0);
@@ -161,6 +181,6 @@ fn bench_bessel(c: &mut Criterion) {
 criterion_group! {
     name = benches;
     config = Criterion::default().sample_size(20).warm_up_time(std::time::Duration::from_millis(300)).measurement_time(std::time::Duration::from_secs(1));
-    targets = bench_meijer, bench_hyp1f2, bench_hyp1f2_domain, bench_hyp2f1, bench_hyp2f1_f64, bench_bessel
+    targets = bench_meijer, bench_hyp1f2, bench_hyp1f2_domain, bench_meijer_domain, bench_hyp2f1, bench_hyp2f1_f64, bench_bessel
 }
 criterion_main!(benches);

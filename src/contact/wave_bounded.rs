@@ -43,7 +43,8 @@
 //! * Horner in f64 for `P(s)` over `J` terms: Higham's running error bound
 //!   `u (2 mu - |p|)` [Higham, *Accuracy and Stability*, Alg. 5.1] (times 1.01 for
 //!   its second-order terms), plus `u P(|s|)` for the rounded coefficients, plus the truncation
-//!   `s^J/((2J+5)(1-s))`, plus `e_s / (1 - s)^2` for the input error of `s`;
+//!   `s^J/((2J+5)(1-s))`, plus `e_s / (2 (1 - s)^2)` for the input error of `s`
+//!   (`P'(s) <= 1/(2(1-s)^2)`);
 //! * the truncated Bessel sums: `|J_{2n}(D)| <= (D/2)^{2n}/(2n)!` [DLMF 10.14.4],
 //!   `0 <= q <= 1`, `0 <= geo_n <= 2n`, so the neglected terms are at most
 //!   `tail0 = sum_{n>N} (D/2)^{2n}/(2n)!` and `2 tail2`, `tail2 = sum_{n>N} n^2 (D/2)^{2n}/(2n)!`
@@ -220,7 +221,8 @@ fn two_atanh(t: Tr) -> Option<Tr> {
     // running bound (with 1% for its own second-order terms) plus the
     // rounding of the coefficients 1/(2j+5) (at most u P(|s|))
     let horner = U * (2.0 * mu - p.abs()) * 1.01 + U * p_abs;
-    let input = (t2.e + U * s_up) / ((1.0 - s_up) * (1.0 - s_up)) * 0.2;
+    // P'(s) = sum_j j s^{j-1}/(2j+5) <= 1/(2 (1-s)^2)
+    let input = (t2.e + U * s_up) / ((1.0 - s_up) * (1.0 - s_up)) * 0.5;
     let p_tr = Tr { v: Dd::from_f64(p), e: horner + trunc + input };
     let t5 = t3.mul(t2);
     Some(lead.add(t5.mul(p_tr)).mul_f64(2.0))

@@ -170,6 +170,11 @@ impl MeijerConstants {
     pub fn k(&self) -> u32 {
         self.k
     }
+
+    /// `(C_k, psi(k+2) - psi(k+1/2), B_k(1))`.
+    pub(crate) fn parts(&self) -> (&Ball, &Ball, &Ball) {
+        (&self.c_k, &self.psi_diff, &self.bracket_at_one)
+    }
 }
 
 /// `G(k, y)` by the direct series at working precision `wp`.
@@ -457,19 +462,42 @@ pub fn meijer_g_k_mp(k: u32, y: &Float, prec: u32) -> Result<Ball> {
     ziv("meijer_g_k", prec, guard_bits(k, y.to_f64()), |wp| meijer_g_k_wp(k, y, wp))
 }
 
-/// `G(k, y)` in f64 (the certified 64-bit value, rounded).
+/// Largest relative bound the native f64 path may return (beyond it: MP).
+pub const NATIVE_REL_TOL: f64 = 1e-14;
+
+static NATIVE_FALLBACKS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+
+/// How many [`meijer_g_k`] / [`meijer_g_k_bounded`] calls fell back to MP since
+/// the process started (see [`crate::special::meijer_g_native`] for where).
+pub fn meijer_g_k_fallbacks() -> u64 {
+    NATIVE_FALLBACKS.load(std::sync::atomic::Ordering::Relaxed)
+}
+
+/// `G(k, y)` in f64: the native value where its proven bound is at most
+/// [`NATIVE_REL_TOL`] relative, else the certified 64-bit value, rounded.
 pub fn meijer_g_k(k: u32, y: f64) -> Result<f64> {
     crate::error::finite(y, "y")?;
     let ye = exact(y);
     validate(k, &ye)?;
+    if let Some(b) = crate::special::meijer_g_native::meijer_g_k_native_bounded(k, y, NATIVE_REL_TOL) {
+        return Ok(b.value);
+    }
+    NATIVE_FALLBACKS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     f64_from_mp("meijer_g_k", guard_bits(k, y), |wp| meijer_g_k_wp(k, &ye, wp))
 }
 
-/// `G(k, y)` in f64 with a proven error bound for the f64 `y` as given.
+/// `G(k, y)` in f64 with a proven error bound for the f64 `y` as given: native
+/// ([`crate::special::meijer_g_native`]) for `k <= 1000`, `y <= 0.9` or `y = 1`
+/// away from the zero of `G(k, .)`; else the certified MP value (counted by
+/// [`meijer_g_k_fallbacks`]).
 pub fn meijer_g_k_bounded(k: u32, y: f64) -> Result<Bounded> {
     crate::error::finite(y, "y")?;
     let ye = exact(y);
     validate(k, &ye)?;
+    if let Some(b) = crate::special::meijer_g_native::meijer_g_k_native_bounded(k, y, NATIVE_REL_TOL) {
+        return Ok(b);
+    }
+    NATIVE_FALLBACKS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     crate::special::bounded_from_mp("meijer_g_k", guard_bits(k, y), |wp| meijer_g_k_wp(k, &ye, wp))
 }
 
