@@ -38,6 +38,23 @@ pub fn check_size(flag: &str, abar: f64, alpha: f64, beta: f64) -> Result<(), St
     Ok(())
 }
 
+/// Checks the model parameters against the library's ranges, naming the flag.
+pub fn check_params(lambdas: &[f64], alpha: f64, beta: f64) -> Result<(), String> {
+    use maugis::contact::model::{ALPHA_MAX, BETA_RANGE, LAMBDA_RANGE};
+    for &l in lambdas {
+        if !(LAMBDA_RANGE.0..=LAMBDA_RANGE.1).contains(&l) {
+            return Err(format!("--lambda must lie in [{}, {}] (got {})", num(LAMBDA_RANGE.0), num(LAMBDA_RANGE.1), num(l)));
+        }
+    }
+    if !(0.0..=ALPHA_MAX).contains(&alpha) {
+        return Err(format!("--alpha must lie in [0, {}] (got {})", num(ALPHA_MAX), num(alpha)));
+    }
+    if !(BETA_RANGE.0..=BETA_RANGE.1).contains(&beta) {
+        return Err(format!("--beta must lie in [{}, {}] (got {})", num(BETA_RANGE.0), num(BETA_RANGE.1), num(beta)));
+    }
+    Ok(())
+}
+
 /// `x` for messages: plain for ordinary magnitudes, scientific otherwise.
 pub fn num(x: f64) -> String {
     if x != 0.0 && x.is_finite() && (x.abs() >= 1e6 || x.abs() < 1e-4) {
@@ -58,6 +75,11 @@ pub fn number(s: &str) -> Result<f64, String> {
         return Err(format!("'{s}' must be a finite number (not NaN or infinity)"));
     }
     Ok(v)
+}
+
+/// Any finite number.
+pub fn finite(s: &str) -> Result<f64, String> {
+    number(s)
 }
 
 /// A finite number `> 0`.

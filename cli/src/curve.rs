@@ -9,7 +9,9 @@
 //! * `curve_lambda_<L>.csv`: `abar,m,load,valid,min_strip_gap,max_traction`;
 //! * `summary.json`: parameters and, per lambda, turning points, jumps,
 //!   pull-off, the number of invalid states and the invalid `abar` stretches;
-//! * `load-area.svg`: all curves with the Appendix E limits and envelopes.
+//! * `load-area.svg`: all curves with the Appendix E limits and envelopes
+//!   (`--amin`, `--ymin`, `--ymax` set the window; the legend sits outside the data);
+//! * `load-approach.svg`: `Lbar(Delta-bar)` of every curve, with pull-off.
 //!
 //! `--format json` writes no file and prints one JSON object instead (see
 //! [`JsonOut`]). The curves are computed in parallel (rayon); a progress bar is
@@ -34,7 +36,7 @@ use maugis::contact::model::Params;
 
 use crate::args::{self, num, short, FIG4C_ALPHA, FIG4C_BETA};
 use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
-use crate::plot::{finish_load_area_chart, load_area_chart, arrow_head, clip_y, colour, plot_err, triangle_down, triangle_up, DARK_GREY, LIGHT_GREY};
+use crate::plot::{finish_load_area_chart, xy_chart, arrow_head, clip_y, colour, plot_err, triangle_down, triangle_up, DARK_GREY, LIGHT_GREY};
 
 /// The Maugis parameters of the paper's Figs. 4 and 13 (default run).
 pub const DEFAULT_LAMBDAS: [f64; 7] = [0.1, 0.25, 0.5, 1.0, 1.5, 3.0, 6.0];
@@ -73,6 +75,26 @@ pub struct CurveArgs {
     /// `files` (default) or `json` (print to stdout, write nothing).
     #[arg(long, value_name = "FORMAT", default_value = "files")]
     pub format: CurveFormat,
+    /// Left end of the plots' abar axis (plot only; the grid starts at amax/points).
+    #[arg(long, value_name = "AMIN", value_parser = args::non_negative, allow_negative_numbers = true)]
+    pub amin: Option<f64>,
+    /// Lower end of the plots' load axis [default: the data's range].
+    #[arg(long, value_name = "Y", value_parser = args::finite, allow_negative_numbers = true)]
+    pub ymin: Option<f64>,
+    /// Upper end of the plots' load axis [default: the data's range].
+    #[arg(long, value_name = "Y", value_parser = args::finite, allow_negative_numbers = true)]
+    pub ymax: Option<f64>,
+}
+
+/// The plots' window: abar from `amin`, optional load bounds.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Window {
+    /// Left end of the abar axis.
+    pub amin: f64,
+    /// Lower end of the load axis.
+    pub ymin: Option<f64>,
+    /// Upper end of the load axis.
+    pub ymax: Option<f64>,
 }
 
 /// One computed curve.
@@ -170,10 +192,17 @@ pub fn run(a: CurveArgs) -> Result<(), String> {
     lambdas.dedup();
     // Everything is validated before any work: the parsers checked the ranges,
     // the library checks the combination, and the output directory is usable.
-    for &l in &lambdas {
-        Params::new(l, alpha, beta).map_err(|e| e.to_string())?;
-    }
+    args::check_params(&lambdas, alpha, beta)?;
     args::check_size("--amax", a.amax, alpha, beta)?;
+    let window = Window { amin: a.amin.unwrap_or(0.0), ymin: a.ymin, ymax: a.ymax };
+    if window.amin >= a.amax {
+        return Err(format!("--amin ({}) must be below --amax ({})", num(window.amin), num(a.amax)));
+    }
+    if let (Some(lo), Some(hi)) = (a.ymin, a.ymax) {
+        if lo >= hi {
+            return Err(format!("--ymin ({}) must be below --ymax ({})", num(lo), num(hi)));
+        }
+    }
     if a.format == CurveFormat::Files {
         check_out_dir(&a.out)?;
     }
@@ -199,7 +228,8 @@ pub fn run(a: CurveArgs) -> Result<(), String> {
     let mut text = serde_json::to_string_pretty(&summary).map_err(|e| format!("could not format JSON: {e}"))?;
     text.push('\n');
     files.push(OutFile::text("summary.json", text));
-    files.push(OutFile::text("load-area.svg", load_area_svg(&runs, alpha, beta, a.amax, mdmt_lambda)?));
+    files.push(OutFile::text("load-area.svg", load_area_svg(&runs, alpha, beta, a.amax, mdmt_lambda, window)?));
+    files.push(OutFile::text("load-approach.svg", load_approach_svg(&runs, alpha, beta, window)?));
     let written = write_atomically(&a.out, &files)?;
 
     let mut report = String::new();
@@ -277,7 +307,7 @@ fn validity_runs(c: &Curve) -> Vec<(bool, Vec<(f64, f64)>)> {
 type LimitLine<'a> = (&'a [(f64, f64)], ShapeStyle, u32, u32, Option<String>);
 
 /// The load-area plot (SVG text).
-pub fn load_area_svg(runs: &[Run], alpha: f64, beta: f64, amax: f64, mdmt_lambda: f64) -> Result<String, String> {
+pub fn load_area_svg(runs: &[Run], alpha: f64, beta: f64, amax: f64, mdmt_lambda: f64, window: Window) -> Result<String, String> {
     // Limit curves on a fine grid.
     let n = 800usize;
     let grid: Vec<f64> = (1..=n).map(|i| amax * i as f64 / n as f64).collect();
@@ -315,11 +345,11 @@ pub fn load_area_svg(runs: &[Run], alpha: f64, beta: f64, amax: f64, mdmt_lambda
         ymax = 25.0;
     }
     let span = (ymax - ymin).max(1.0);
-    let (ymin, ymax) = (ymin - 0.06 * span, ymax + 0.06 * span);
+    let (ymin, ymax) = (window.ymin.unwrap_or(ymin - 0.06 * span), window.ymax.unwrap_or(ymax + 0.06 * span));
 
     let mut svg = String::new();
     {
-        let root = SVGBackend::with_string(&mut svg, (1400, 950)).into_drawing_area();
+        let root = SVGBackend::with_string(&mut svg, (1400 + crate::plot::LEGEND_WIDTH, 950)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_err)?;
         let title = format!(
             "Wavy Maugis line contact: load-area response, α = {}, β = {} (Johnson parameter √(β/α²) = {})",
@@ -327,7 +357,7 @@ pub fn load_area_svg(runs: &[Run], alpha: f64, beta: f64, amax: f64, mdmt_lambda
             short(beta),
             if alpha > 0.0 { short((beta / (alpha * alpha)).sqrt()) } else { "∞".into() }
         );
-        let mut chart = load_area_chart(&root, title, amax, ymin, ymax)?;
+        let mut chart = xy_chart(&root, title, (window.amin, amax), (ymin, ymax), ("contact half-width abar", "load Lbar"))?;
 
         // zero-load line
         chart.draw_series(LineSeries::new(vec![(0.0, 0.0), (amax, 0.0)], BLACK.mix(0.5).stroke_width(1))).map_err(plot_err)?;
@@ -516,6 +546,93 @@ pub fn load_area_svg(runs: &[Run], alpha: f64, beta: f64, amax: f64, mdmt_lambda
                 });
         }
 
+        finish_load_area_chart(chart, &root)?;
+    }
+    Ok(svg)
+}
+
+/// The load-approach plot `Lbar(Delta-bar)` (datum at infinity): each curve,
+/// valid stretches solid, invalid ones dashed, and its pull-off.
+pub fn load_approach_svg(runs: &[Run], alpha: f64, beta: f64, window: Window) -> Result<String, String> {
+    let (mut x0, mut x1, mut y0, mut y1) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
+    for r in runs {
+        for p in r.curve.points.iter().filter(|p| p.abar >= window.amin) {
+            x0 = x0.min(p.approach);
+            x1 = x1.max(p.approach);
+            y0 = y0.min(p.load);
+            y1 = y1.max(p.load);
+        }
+    }
+    if !(x0.is_finite() && x1 > x0 && y0.is_finite() && y1 > y0) {
+        (x0, x1, y0, y1) = (-1.0, 1.0, -1.0, 1.0);
+    }
+    let (dx, dy) = (0.05 * (x1 - x0), 0.06 * (y1 - y0));
+    let (ymin, ymax) = (window.ymin.unwrap_or(y0 - dy), window.ymax.unwrap_or(y1 + dy));
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (1400 + crate::plot::LEGEND_WIDTH, 950)).into_drawing_area();
+        root.fill(&WHITE).map_err(plot_err)?;
+        let title = format!("Load-approach response, α = {}, β = {} (approach from a datum at infinity, log term removed)", short(alpha), short(beta));
+        let mut chart = xy_chart(&root, title, (x0 - dx, x1 + dx), (ymin, ymax), ("approach Δ̄", "load Lbar"))?;
+        for (i, r) in runs.iter().enumerate() {
+            let col = colour(i);
+            let solid = col.stroke_width(3);
+            let faded = ShapeStyle { color: col.mix(0.6), filled: false, stroke_width: 2 };
+            let mut labelled = false;
+            let mut piece: Vec<(f64, f64)> = Vec::new();
+            let mut valid = None;
+            let pts: Vec<_> = r.curve.points.iter().filter(|p| p.abar >= window.amin).collect();
+            for (k, p) in pts.iter().enumerate() {
+                let xy = (p.approach, p.load);
+                let v = p.validity.valid;
+                if valid != Some(v) || k + 1 == pts.len() {
+                    if k + 1 == pts.len() {
+                        piece.push(xy);
+                    }
+                    if let Some(was) = valid {
+                        for seg in clip_y(&piece, ymin, ymax) {
+                            if was {
+                                let ann = chart.draw_series(LineSeries::new(seg, solid)).map_err(plot_err)?;
+                                if !labelled {
+                                    ann.label(format!("λ = {}", short(r.lambda)))
+                                        .legend(move |(x, y)| PathElement::new(vec![(x - 4, y), (x + 26, y)], solid));
+                                    labelled = true;
+                                }
+                            } else {
+                                chart.draw_series(DashedLineSeries::new(seg, 3, 5, faded)).map_err(plot_err)?;
+                            }
+                        }
+                    }
+                    piece = piece.last().copied().into_iter().collect();
+                    valid = Some(v);
+                }
+                piece.push(xy);
+            }
+            if !labelled {
+                chart
+                    .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
+                    .map_err(plot_err)?
+                    .label(format!("λ = {} (all states invalid)", short(r.lambda)))
+                    .legend(move |(x, y)| DashedPathElement::new(vec![(x - 4, y), (x + 26, y)], 3, 5, faded));
+            }
+            if let Some(po) = r.curve.pull_off {
+                if po.load >= ymin && po.load <= ymax {
+                    chart
+                        .draw_series(std::iter::once(Circle::new((po.approach, po.load), 6, col.filled())))
+                        .map_err(plot_err)?;
+                }
+            }
+        }
+        chart
+            .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
+            .map_err(plot_err)?
+            .label("invalid state (cavitation or interpenetration)")
+            .legend(|(x, y)| DashedPathElement::new(vec![(x - 4, y), (x + 26, y)], 3, 5, ShapeStyle { color: BLACK.mix(0.6), filled: false, stroke_width: 2 }));
+        chart
+            .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
+            .map_err(plot_err)?
+            .label("pull-off")
+            .legend(|(x, y)| Circle::new((x + 11, y), 6, RGBColor(120, 120, 120).filled()));
         finish_load_area_chart(chart, &root)?;
     }
     Ok(svg)

@@ -248,7 +248,7 @@ fn limits_svg(rows: &[Row], alpha: f64, beta: f64, lambda: f64, amax: f64) -> Re
     ];
     let mut svg = String::new();
     {
-        let root = SVGBackend::with_string(&mut svg, (1300, 900)).into_drawing_area();
+        let root = SVGBackend::with_string(&mut svg, (1300 + crate::plot::LEGEND_WIDTH, 900)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_err)?;
         let title = format!("Appendix E limits and Eq. 17 envelope, α = {}, β = {}, λ = {l}", short(alpha), short(beta));
         let mut chart = load_area_chart(&root, title, amax, ymin, ymax)?;

@@ -22,10 +22,22 @@ pub const PALETTE: [RGBColor; 9] = [
     RGBColor(23, 190, 207),  // cyan
 ];
 
-/// The `i`-th curve colour (cycling).
+/// The `i`-th curve colour: the palette, then further hues spaced by the golden
+/// angle at two lightness levels, so no colour repeats however many curves.
 pub fn colour(i: usize) -> RGBColor {
-    PALETTE[i % PALETTE.len()]
+    if let Some(&c) = PALETTE.get(i) {
+        return c;
+    }
+    let k = (i - PALETTE.len()) as f64;
+    let hue = (0.1 + k * 0.618_033_988_75).fract();
+    let light = if (i - PALETTE.len()) % 2 == 0 { 0.42 } else { 0.58 };
+    let HSLColor(h, s, l) = HSLColor(hue, 0.7, light);
+    let c = HSLColor(h, s, l).to_rgba();
+    RGBColor(c.0, c.1, c.2)
 }
+
+/// Width of the legend column to the right of the load-area plots (pixels).
+pub const LEGEND_WIDTH: u32 = 470;
 
 /// Dark grey of the JKR lines.
 pub const DARK_GREY: RGBColor = RGBColor(70, 70, 70);
@@ -52,17 +64,30 @@ pub fn load_area_chart<'a, 'b>(
     ymin: f64,
     ymax: f64,
 ) -> Result<ChartContext<'a, SVGBackend<'b>, Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>>, String> {
+    xy_chart(root, title, (0.0, amax), (ymin, ymax), ("contact half-width abar", "load Lbar"))
+}
+
+/// A chart over `x` and `y` ranges with the shared style; the right
+/// [`LEGEND_WIDTH`] pixels are kept free for the legend.
+pub fn xy_chart<'a, 'b>(
+    root: &'a DrawingArea<SVGBackend<'b>, plotters::coord::Shift>,
+    title: String,
+    x: (f64, f64),
+    y: (f64, f64),
+    desc: (&str, &str),
+) -> Result<ChartContext<'a, SVGBackend<'b>, Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>>, String> {
     let mut chart = ChartBuilder::on(root)
-        .caption(title, ("sans-serif", 26))
+        .caption(title, ("sans-serif", 24))
         .margin(20)
+        .margin_right(LEGEND_WIDTH + 20)
         .x_label_area_size(60)
         .y_label_area_size(75)
-        .build_cartesian_2d(0.0..amax, ymin..ymax)
+        .build_cartesian_2d(x.0..x.1, y.0..y.1)
         .map_err(plot_err)?;
     chart
         .configure_mesh()
-        .x_desc("contact half-width abar")
-        .y_desc("load Lbar")
+        .x_desc(desc.0)
+        .y_desc(desc.1)
         .axis_desc_style(("sans-serif", 22))
         .label_style(("sans-serif", 17))
         .x_label_formatter(&tick)
@@ -74,14 +99,16 @@ pub fn load_area_chart<'a, 'b>(
     Ok(chart)
 }
 
-/// Draws the legend box (upper left) of a load-area chart and finishes the SVG.
+/// Draws the legend box to the right of the data (outside the plotting area)
+/// and finishes the SVG.
 pub fn finish_load_area_chart<'a, 'b: 'a>(
     mut chart: ChartContext<'a, SVGBackend<'b>, Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>>,
     root: &DrawingArea<SVGBackend<'b>, plotters::coord::Shift>,
 ) -> Result<(), String> {
+    let (w, _) = chart.plotting_area().dim_in_pixel();
     chart
         .configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
+        .position(SeriesLabelPosition::Coordinate(w as i32 + 16, 0))
         .margin(12)
         .legend_area_size(40)
         .label_font(("sans-serif", 17))

@@ -150,6 +150,35 @@ fn curve_json_follows_the_schema() {
     assert!(n_turning > 0 && n_jumps > 0);
 }
 
+/// The plot window flags and a palette that does not repeat for many curves.
+#[test]
+fn plot_window_and_many_curves() {
+    let dir = TempPath::new("window");
+    let mut args: Vec<String> = ["curve", "--points", "12", "--amin", "1", "--ymin", "-3", "--ymax", "20", "--out", dir.str()]
+        .iter()
+        .map(|s| s.to_string())
+        .collect();
+    for k in 1..=12 {
+        args.push("--lambda".into());
+        args.push(format!("{k}/4"));
+    }
+    let refs: Vec<&str> = args.iter().map(String::as_str).collect();
+    let o = maugis(&refs);
+    assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(&o));
+    let svg = std::fs::read_to_string(dir.path().join("load-area.svg")).unwrap();
+    // twelve legend entries with twelve distinct stroke colours
+    let mut colours: Vec<&str> = svg
+        .split("stroke=\"")
+        .skip(1)
+        .filter_map(|t| t.split('"').next())
+        .filter(|c| c.starts_with('#'))
+        .collect();
+    colours.sort();
+    colours.dedup();
+    assert!(colours.len() >= 12 + 2, "{} colours", colours.len());
+    assert!(svg.contains(">\n3</text>") || svg.contains("λ = 3"), "legend");
+}
+
 /// Parameters are arithmetic expressions.
 #[test]
 fn parameters_accept_expressions() {
@@ -229,6 +258,8 @@ fn curve_writes_csv_summary_and_svg() {
         assert_eq!(invalid, in_stretches);
     }
 
+    let svg = std::fs::read_to_string(dir.path().join("load-approach.svg")).unwrap();
+    assert!(svg.contains("<svg") && svg.contains("approach"));
     let svg = std::fs::read_to_string(dir.path().join("load-area.svg")).unwrap();
     assert!(svg.len() > 1000 && svg.contains("<svg"));
     assert!(svg.contains("contact half-width abar") && svg.contains("load Lbar"));
@@ -273,6 +304,10 @@ fn bad_parameters_exit_2_with_one_line_and_no_files() {
         &["curve", "--alpha", "sqrt("],
         &["curve", "--beta", "sqrt(-1)"],
         &["curve", "--lambda", "2 +"],
+        &["curve", "--amin", "7"],
+        &["curve", "--ymin", "3", "--ymax", "1"],
+        &["curve", "--ymax", "NaN"],
+        &["curve", "--amin", "-1"],
         &["sweep", "--lambda-min", "0"],
         &["sweep", "--lambda-min", "2", "--lambda-max", "1"],
         &["sweep", "--lambda-n", "0"],
@@ -305,7 +340,7 @@ fn bad_parameters_exit_2_with_one_line_and_no_files() {
         assert!(stdout(&o).is_empty(), "{args:?}: stdout {}", stdout(&o));
         assert!(!dir.path().exists(), "{args:?}: created the output directory");
         assert!(dir.tmp_siblings().is_empty(), "{args:?}: left a temporary directory");
-        if args[0] == "sweep" {
+        if args[0] == "sweep" || args.iter().any(|a| ["--amin", "--ymin", "--ymax", "--alpha", "--beta"].contains(a)) {
             let flag = args.iter().rev().find(|a| a.starts_with("--")).unwrap();
             assert!(err.contains(flag), "{args:?}: the message does not name {flag}: {err}");
         }
