@@ -8,6 +8,10 @@
 //!   module, not the closed-form approach) at finite data x_d = 40, 80, 160,
 //!   extrapolated to infinity (error ~ 1/x_d^2), and must match to 0.2 %.
 //! * Shifting the approach by k L (another datum) leaves it unchanged.
+//! * Brute force: the closed cycle walked over the grid states alone (running
+//!   minimum down, running maximum back up, no refinement) on a 4x finer grid,
+//!   its enclosed area taken by the shoelace formula in the (Delta, L) plane,
+//!   under both controls; and W_d <= W, with W_d -> W as the datum recedes.
 
 use maugis::contact::curve::{load_area_curve, Curve, CurveOptions, JumpDirection};
 use maugis::contact::displacement::{u_adhesive, u_hertz, u_wave};
@@ -148,7 +152,7 @@ fn dissipation_matches_finite_datum_extrapolation() {
         let c = fig4c(lambda);
         let p = c.params;
         let lc = &c.load_control;
-        let ws: Vec<f64> = [40.0, 80.0, 160.0].iter().map(|&xd| w_at_datum(p, &lc.loading, &lc.unloading, xd)).collect();
+        let ws: Vec<f64> = [40.0, 80.0, 160.0].iter().map(|&xd| w_at_datum(p, &lc.reloading, &lc.unloading, xd)).collect();
         let extrapolated = (4.0 * ws[2] - ws[1]) / 3.0;
         let w = lc.dissipation.total;
         let rel = (w - extrapolated).abs() / extrapolated.abs();
@@ -164,10 +168,10 @@ fn dissipation_matches_finite_datum_extrapolation() {
 fn dissipation_does_not_depend_on_the_datum() {
     let c = fig4c(3.0);
     let lc = &c.load_control;
-    let levels: Vec<f64> = lc.jumps.iter().map(|j| j.from.load).collect();
+    let levels: Vec<f64> = lc.jumps.iter().chain(&lc.reloading_jumps).map(|j| j.from.load).collect();
     for k in [-3.0, 0.7, 5.0] {
         let shift = |v: &[PathNode]| -> Vec<PathNode> { v.iter().map(|n| PathNode { approach: n.approach + k * n.load, ..*n }).collect() };
-        let (loops, d) = loops_and_dissipation(Driver::load(), &shift(&lc.loading), &shift(&lc.unloading), &levels, false);
+        let (loops, d) = loops_and_dissipation(Driver::load(), &shift(&lc.reloading), &shift(&lc.unloading), &levels, false);
         assert_eq!(loops.len(), lc.loops.len());
         let w = lc.dissipation.total;
         assert!((d.total - w).abs() < 1e-10 * w, "k = {k}: {} vs {w}", d.total);
@@ -192,4 +196,110 @@ fn displacement_control_paths_are_consistent() {
     assert!(v.windows(2).all(|w| w[1] <= w[0] + 1e-9), "unloading not monotone");
     assert!(dc.dissipation.total >= 0.0);
     assert!(Driver::displacement(0.0).is_err() && Driver::displacement(f64::NAN).is_err());
+}
+
+/// The closed cycle walked over grid states alone, in the (Delta, L) plane:
+/// unloading follows the running minimum of `y` from the largest contact down
+/// to the first minimum without a target, reloading the running maximum back
+/// up; a jump leaves from the extreme grid state and lands where the chord
+/// between the two grid states around the level crosses it (linear
+/// interpolation, no solve). Returns the area of the polygon (shoelace formula).
+fn brute_force_cycle_area(pts: &[(f64, f64, f64)]) -> f64 {
+    // pts: (y, Delta, L) by increasing abar
+    let n = pts.len();
+    let lerp = |i: usize, j: usize, level: f64| -> (f64, f64) {
+        let (a, b) = (pts[i], pts[j]);
+        let t = if b.0 == a.0 { 0.0 } else { (level - a.0) / (b.0 - a.0) };
+        (a.1 + t * (b.1 - a.1), a.2 + t * (b.2 - a.2))
+    };
+    let mut unload: Vec<(f64, f64)> = vec![(pts[n - 1].1, pts[n - 1].2)];
+    let (mut k, mut level) = (n - 1, pts[n - 1].0);
+    while k > 0 {
+        if pts[k - 1].0 <= level {
+            k -= 1;
+            level = pts[k].0;
+            unload.push((pts[k].1, pts[k].2));
+            continue;
+        }
+        match (0..k).rev().find(|&j| pts[j].0 <= level) {
+            Some(j) => {
+                unload.push(lerp(j, j + 1, level));
+                unload.push((pts[j].1, pts[j].2));
+                k = j;
+                level = pts[j].0;
+            }
+            None => break,
+        }
+    }
+    let end = k;
+    let mut reload: Vec<(f64, f64)> = vec![(pts[end].1, pts[end].2)];
+    let mut level = pts[end].0;
+    while k + 1 < n {
+        if pts[k + 1].0 >= level {
+            k += 1;
+            level = pts[k].0;
+            reload.push((pts[k].1, pts[k].2));
+            continue;
+        }
+        let j = (k + 1..n).find(|&j| pts[j].0 >= level).expect("reloading reaches the largest contact");
+        reload.push(lerp(j - 1, j, level));
+        reload.push((pts[j].1, pts[j].2));
+        k = j;
+        level = pts[j].0;
+    }
+    // polygon: reload (end -> n-1), then unload back (n-1 -> end)
+    let ring: Vec<(f64, f64)> = reload.iter().chain(unload.iter().skip(1)).copied().collect();
+    let mut s = 0.0;
+    for w in 0..ring.len() {
+        let (a, b) = (ring[w], ring[(w + 1) % ring.len()]);
+        s += a.0 * b.1 - b.0 * a.1;
+    }
+    0.5 * s.abs()
+}
+
+#[test]
+fn dissipation_is_the_area_of_the_closed_cycle() {
+    for lambda in [1.5, 3.0, 6.0] {
+        let c = fig4c(lambda);
+        let p = c.params;
+        let fine = load_area_curve(p, CurveOptions { points: 2400, ..CurveOptions::default() }).unwrap();
+        for (paths, drv) in [(&c.load_control, Driver::load()), (&c.displacement_control, Driver::displacement(c.displacement_control.datum).unwrap())] {
+            let pts: Vec<(f64, f64, f64)> = fine.points.iter().map(|q| (drv.value((q.load, q.approach)), q.approach, q.load)).collect();
+            let area = brute_force_cycle_area(&pts);
+            let w = paths.dissipation.total;
+            let rel = (w - area).abs() / area;
+            eprintln!("lambda = {lambda}, {:?}: W = {w}, brute-force polygon area {area} (rel {rel:e})", paths.control);
+            assert!(rel < 5e-3, "lambda = {lambda}, {:?}: W = {w} vs polygon {area}", paths.control);
+        }
+    }
+}
+
+/// A stiffer machine jumps later and less on every fold: W_d <= W, growing
+/// towards W as the datum recedes (a machine gripping at x_d has compliance
+/// (2/pi) ln x_d, and infinite compliance is load control). The exception is
+/// near pull-off: at lambda = 1/2 displacement control at x_d = 100 keeps the
+/// contact past the load-control pull-off (its unloading drops to a small
+/// contact that is stable under the stiffer machine), and reloading from there
+/// adds folds that the load-control cycle never visits.
+#[test]
+fn displacement_control_dissipates_less() {
+    for lambda in [0.5, 1.0, 1.5, 3.0, 6.0] {
+        let p = Params::new(lambda, FIG4C_ALPHA, FIG4C_BETA).unwrap();
+        let run = |datum: f64| load_area_curve(p, CurveOptions { datum, ..CurveOptions::default() }).unwrap();
+        let c = run(100.0);
+        let w = c.load_control.dissipation.total;
+        let pull_off = c.load_control.end.unwrap().state.abar;
+        let dcs: Vec<_> = [1e4, 1e40].iter().map(|&d| run(d).displacement_control).collect();
+        let dcs = [&c.displacement_control, &dcs[0], &dcs[1]];
+        let wd: Vec<f64> = dcs.iter().map(|d| d.dissipation.total).collect();
+        eprintln!("lambda = {lambda}: W = {w}, W_d at data 1e2, 1e4, 1e40: {wd:?}");
+        let tol = 1e-9 * (1.0 + w);
+        assert!(w > 0.0 && (w - wd[2]) <= 0.05 * w + tol && wd[2] <= w + tol, "lambda = {lambda}: W_d(1e40) = {} vs W = {w}", wd[2]);
+        if lambda == 0.5 {
+            let end = dcs[0].end.unwrap().state.abar;
+            assert!(end < 0.5 * pull_off && wd[0] > w, "lambda = 1/2: end {end} vs pull-off {pull_off}, W_d {wd:?} vs W {w}");
+        } else {
+            assert!(wd[0] <= wd[1] + tol && wd[1] <= wd[2] + tol, "lambda = {lambda}: W = {w}, W_d = {wd:?}");
+        }
+    }
 }

@@ -69,6 +69,10 @@ pub struct CurveArgs {
     /// Grid points per curve, abar_i = amax i/points.
     #[arg(long, value_name = "N", default_value = "600", value_parser = args::grid_points)]
     pub points: usize,
+    /// Where a rigid machine grips the body under displacement control, in units
+    /// of l_h (> 0): the controlled approach is Delta + (2 L/pi) ln(datum).
+    #[arg(long, value_name = "XD", default_value = "100", value_parser = args::positive, allow_negative_numbers = true)]
+    pub datum: f64,
     /// Output directory (written atomically).
     #[arg(long, value_name = "DIR", default_value = "maugis-out")]
     pub out: PathBuf,
@@ -206,7 +210,7 @@ pub fn run(a: CurveArgs) -> Result<(), String> {
     if a.format == CurveFormat::Files {
         check_out_dir(&a.out)?;
     }
-    let opts = CurveOptions { amax: a.amax, points: a.points, ..CurveOptions::default() };
+    let opts = CurveOptions { amax: a.amax, points: a.points, datum: a.datum };
 
     let t0 = Instant::now();
     let runs = compute(&lambdas, alpha, beta, opts)?;

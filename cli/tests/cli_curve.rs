@@ -150,6 +150,28 @@ fn curve_json_follows_the_schema() {
     assert!(n_turning > 0 && n_jumps > 0);
 }
 
+/// `--datum` moves the machine's grip: it reaches the schema and the
+/// displacement-controlled paths, and leaves load control alone.
+#[test]
+fn datum_sets_the_displacement_control_grip() {
+    let run = |datum: &str| -> Value {
+        let o = maugis(&["curve", "--lambda", "3", "--points", "200", "--datum", datum, "--format", "json"]);
+        assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(&o));
+        serde_json::from_str(stdout(&o).trim()).expect("valid JSON")
+    };
+    let (near, far) = (run("100"), run("1e4"));
+    assert_eq!(far["params"]["datum"].as_f64(), Some(1e4));
+    let (c1, c2) = (&near["curves"][0], &far["curves"][0]);
+    assert!((c2["displacement_control"]["datum"].as_f64().unwrap() / 1e4 - 1.0).abs() < 1e-12);
+    assert_eq!(c1["dissipation"]["load_control"], c2["dissipation"]["load_control"]);
+    let (w, wd1, wd2) = (
+        c1["dissipation"]["load_control"].as_f64().unwrap(),
+        c1["dissipation"]["displacement_control"].as_f64().unwrap(),
+        c2["dissipation"]["displacement_control"].as_f64().unwrap(),
+    );
+    assert!(wd1 < wd2 && wd2 < w, "W = {w}, W_d(100) = {wd1}, W_d(1e4) = {wd2}");
+}
+
 /// The plot window flags and a palette that does not repeat for many curves.
 #[test]
 fn plot_window_and_many_curves() {
@@ -308,6 +330,8 @@ fn bad_parameters_exit_2_with_one_line_and_no_files() {
         &["curve", "--ymin", "3", "--ymax", "1"],
         &["curve", "--ymax", "NaN"],
         &["curve", "--amin", "-1"],
+        &["curve", "--datum", "0"],
+        &["curve", "--datum", "-3"],
         &["sweep", "--lambda-min", "0"],
         &["sweep", "--lambda-min", "2", "--lambda-max", "1"],
         &["sweep", "--lambda-n", "0"],
@@ -340,7 +364,7 @@ fn bad_parameters_exit_2_with_one_line_and_no_files() {
         assert!(stdout(&o).is_empty(), "{args:?}: stdout {}", stdout(&o));
         assert!(!dir.path().exists(), "{args:?}: created the output directory");
         assert!(dir.tmp_siblings().is_empty(), "{args:?}: left a temporary directory");
-        if args[0] == "sweep" || args.iter().any(|a| ["--amin", "--ymin", "--ymax", "--alpha", "--beta"].contains(a)) {
+        if args[0] == "sweep" || args.iter().any(|a| ["--amin", "--ymin", "--ymax", "--alpha", "--beta", "--datum"].contains(a)) {
             let flag = args.iter().rev().find(|a| a.starts_with("--")).unwrap();
             assert!(err.contains(flag), "{args:?}: the message does not name {flag}: {err}");
         }
