@@ -36,12 +36,14 @@ use crate::error::{Error, Result};
 
 mod bounded;
 mod decimal;
+mod dd_bounded;
 mod double_double;
 pub(crate) use double_double::{quick_two_sum, two_prod, two_sum};
 mod mag;
 pub use bounded::Bounded;
 pub use decimal::{eval_at_decimals, Decimal, MAX_DECIMAL_DIGITS, MAX_DECIMAL_EXPONENT, MAX_DECIMAL_INPUT_PREC};
 pub use double_double::Dd;
+pub(crate) use dd_bounded::{div_f64, mag, BoundedDd, BOUND_INFLATION, C_ADD, U, U2};
 pub use mag::Mag;
 
 /// Precision (bits) of the radius-sized `Float` values handed out by

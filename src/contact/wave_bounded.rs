@@ -27,19 +27,11 @@
 //!
 //! # Error bound
 //!
-//! Every quantity is a pair `(v, e)` of a double-double value and an f64 bound
-//! `e >= |exact - v|`. With `u = 2^-53`, `|a|` standing for `|a.hi| + |a.lo|`,
-//! and the double-double algorithms of [`Dd`] (two_sum and Dekker's two_prod are
-//! exact; the correction terms are two or three f64 operations on quantities of
-//! size `<= u |a|`, so each costs `<= u^2`-level error; quick_two_sum is exact or
-//! off by `u` times its `u`-sized correction):
+//! Every quantity is a [`BoundedDd`]: a double-double value and an f64 bound
+//! `e >= |exact - v|`, propagated through `+ - * / sqrt` by the error model
+//! written out in `crate::ball::dd_bounded` (`8 u^2` per addition and
+//! product, `16 u^2` per quotient and square root, `u = 2^-53`). On top of it:
 //!
-//! * `a + b`: `e = e_a + e_b + 8 u^2 (|a| + |b|)`   (the derivation gives `6 u^2`);
-//! * `a b`: `e = |a| e_b + |b| e_a + e_a e_b + 8 u^2 |a| |b|`   (derivation: `4 u^2`);
-//! * `a / b`: `e = (e_a + |a/b| e_b)/(|b| - e_b) + 16 u^2 |a/b|`   (three-quotient
-//!   long division, derivation `~6 u^2`), refused unless `|b| > e_b`;
-//! * `sqrt(a)`: `e = e_a/sqrt(|a| - e_a) + 16 u^2 sqrt|a|`   (one Newton step from the
-//!   f64 root, `~3 u^2`), refused unless `|a| > e_a`; `sqrt(0) = 0` exactly;
 //! * Horner in f64 for `P(s)` over `J` terms: Higham's running error bound
 //!   `u (2 mu - |p|)` [Higham, *Accuracy and Stability*, Alg. 5.1] (times 1.01 for
 //!   its second-order terms), plus `u P(|s|)` for the rounded coefficients, plus the truncation
@@ -50,10 +42,9 @@
 //!   `tail0 = sum_{n>N} (D/2)^{2n}/(2n)!` and `2 tail2`, `tail2 = sum_{n>N} n^2 (D/2)^{2n}/(2n)!`
 //!   (computed rigorously in MP once per contact).
 //!
-//! The bound itself is evaluated in f64: each of its operations has relative
-//! error `<= u`, and no chain is longer than `2^20` operations, so multiplying
-//! the final bound by `1 + 2^-30` (and stepping one ulp up) covers that. The
-//! final rounding of `hi + lo` to f64 adds `u |value|`.
+//! The bound itself is evaluated in f64 and inflated by `1 + 2^-30` to cover
+//! its own roundings; the final rounding of `hi + lo` to f64 adds `u |value|`
+//! ([`BoundedDd::finish`]).
 //!
 //! # Regions and fallback
 //!
@@ -73,7 +64,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use rug::float::Round;
 use rug::Float;
 
-use crate::ball::{Ball, Bounded, Dd};
+use crate::ball::{Ball, Bounded, BoundedDd, Dd, U};
 use crate::error::Result;
 use crate::special::bessel_j::bessel_j_sequence_mp;
 use crate::special::exact_sub;
@@ -83,16 +74,6 @@ pub const CERT_PREC: u32 = 128;
 
 /// Largest `t = sqrt((x/a - 1)/(x/a + 1))` of the native path (`x/a <= 25/7`).
 pub const T_MAX: f64 = 0.75;
-
-/// Unit roundoff of f64, `2^-53`.
-const U: f64 = f64::EPSILON / 2.0;
-const U2: f64 = U * U;
-const C_ADD: f64 = 8.0 * U2;
-const C_MUL: f64 = 8.0 * U2;
-const C_DIV: f64 = 16.0 * U2;
-const C_SQRT: f64 = 16.0 * U2;
-/// Inflation of the f64-evaluated bound (covers its own roundings, see the module docs).
-const BOUND_INFLATION: f64 = 1.0 + 1.0 / (1u64 << 30) as f64;
 
 static FALLBACKS: AtomicU64 = AtomicU64::new(0);
 
@@ -106,94 +87,26 @@ pub(crate) fn count_fallback() {
     FALLBACKS.fetch_add(1, Ordering::Relaxed);
 }
 
-/// A double-double value with an error bound.
-#[derive(Debug, Clone, Copy)]
-struct Tr {
-    v: Dd,
-    e: f64,
-}
-
-impl Tr {
-    const ZERO: Tr = Tr { v: Dd::ZERO, e: 0.0 };
-    const ONE: Tr = Tr { v: Dd::ONE, e: 0.0 };
-
-    fn exact(x: f64) -> Tr {
-        Tr { v: Dd::from_f64(x), e: 0.0 }
-    }
-
-    fn mag(self) -> f64 {
-        self.v.hi.abs() + self.v.lo.abs()
-    }
-
-    fn add(self, o: Tr) -> Tr {
-        Tr { v: self.v + o.v, e: self.e + o.e + C_ADD * (self.mag() + o.mag()) }
-    }
-
-    fn sub(self, o: Tr) -> Tr {
-        Tr { v: self.v - o.v, e: self.e + o.e + C_ADD * (self.mag() + o.mag()) }
-    }
-
-    fn mul(self, o: Tr) -> Tr {
-        let (ma, mb) = (self.mag(), o.mag());
-        Tr { v: self.v * o.v, e: ma * o.e + mb * self.e + self.e * o.e + C_MUL * ma * mb }
-    }
-
-    /// `self * b` for an exact f64 `b`.
-    fn mul_f64(self, b: f64) -> Tr {
-        let ab = b.abs();
-        Tr { v: self.v.mul_f64(b), e: ab * self.e + C_MUL * self.mag() * ab }
-    }
-
-    fn div(self, o: Tr) -> Option<Tr> {
-        let den = o.mag() - o.e;
-        if !(den > 0.0) {
-            return None;
-        }
-        let v = self.v / o.v;
-        let q = Tr { v, e: 0.0 }.mag();
-        Some(Tr { v, e: (self.e + q * o.e) / den + C_DIV * q })
-    }
-
-    fn sqrt(self) -> Option<Tr> {
-        if self.v.hi == 0.0 && self.v.lo == 0.0 && self.e == 0.0 {
-            return Some(Tr::ZERO);
-        }
-        let low = self.mag() - self.e;
-        if !(self.v.hi > 0.0 && low > 0.0) {
-            return None;
-        }
-        let v = self.v.sqrt();
-        Some(Tr { v, e: self.e / low.sqrt() + C_SQRT * Tr { v, e: 0.0 }.mag() })
-    }
-
-    /// The f64 value and its proven bound (final rounding and bound inflation included).
-    fn finish(self) -> Option<Bounded> {
-        let value = self.v.to_f64();
-        let err = ((self.e + U * value.abs()) * BOUND_INFLATION).next_up();
-        (value.is_finite() && err.is_finite()).then_some(Bounded { value, err })
-    }
-}
-
 /// A certified ball as a double-double with its conversion error.
-fn tr_from_ball(b: &Ball) -> Tr {
+fn tr_from_ball(b: &Ball) -> BoundedDd {
     let mid = b.mid();
     let hi = mid.to_f64();
     let rest = exact_sub(mid, &Float::with_val(53, hi));
     let lo = rest.to_f64();
     let rem = exact_sub(&rest, &Float::with_val(53, lo)).abs().to_f64_round(Round::Up);
     let e = (rem + b.rad_mag().to_f64_up()).next_up();
-    Tr { v: Dd { hi, lo }, e }
+    BoundedDd { v: Dd { hi, lo }, e }
 }
 
 /// `2 atanh(t) = acosh(r)` for `0 <= t <= T_MAX`: `t + t^3/3` in double-double,
 /// `t^5 P(t^2)` with `P` by Horner in f64 (module docs).
-fn two_atanh(t: Tr) -> Option<Tr> {
+fn two_atanh(t: BoundedDd) -> Option<BoundedDd> {
     if !(t.mag() + t.e <= T_MAX) {
         return None;
     }
     let t2 = t.mul(t);
     let t3 = t2.mul(t);
-    let lead = t.add(t3.div(Tr::exact(3.0))?);
+    let lead = t.add(t3.div(BoundedDd::exact(3.0))?);
     let s = t2.v.to_f64();
     let s_up = t2.mag() + t2.e + U; // upper bound of t^2 (covers the rounding of s)
     if !(s_up < 1.0) {
@@ -223,7 +136,7 @@ fn two_atanh(t: Tr) -> Option<Tr> {
     let horner = U * (2.0 * mu - p.abs()) * 1.01 + U * p_abs;
     // P'(s) = sum_j j s^{j-1}/(2j+5) <= 1/(2 (1-s)^2)
     let input = (t2.e + U * s_up) / ((1.0 - s_up) * (1.0 - s_up)) * 0.5;
-    let p_tr = Tr { v: Dd::from_f64(p), e: horner + trunc + input };
+    let p_tr = BoundedDd { v: Dd::from_f64(p), e: horner + trunc + input };
     let t5 = t3.mul(t2);
     Some(lead.add(t5.mul(p_tr)).mul_f64(2.0))
 }
@@ -231,15 +144,15 @@ fn two_atanh(t: Tr) -> Option<Tr> {
 /// The certified per-contact data of the Bessel form.
 #[derive(Debug, Clone)]
 pub(crate) struct CertifiedBessel {
-    d: Tr,
+    d: BoundedDd,
     /// `J_0(D), J_1(D)`.
-    j01: [Tr; 2],
+    j01: [BoundedDd; 2],
     /// `(-1)^{m+1} J_{2m}(D)`, `m = 0..=N` (index 0 unused): the `u` sum in `q^2`.
-    u_coef: Vec<Tr>,
+    u_coef: Vec<BoundedDd>,
     /// `T_m = sum_{n=m+1}^{N} (-1)^{n+1} n J_{2n}(D)`, `m = 0..N`: the gradient sum
     /// `sum_n (-1)^{n+1} n J_{2n} geo_n = (1 + q) sum_m T_m q^{2m}` (collecting the
     /// powers `q^{2m}` and `q^{2m+1}` of `geo_n = sum_{j<2n} q^j`).
-    du_coef: Vec<Tr>,
+    du_coef: Vec<BoundedDd>,
     n_terms: usize,
     /// `sum_{n>N} (D/2)^{2n}/(2n)!`, rounded up.
     tail0: f64,
@@ -261,11 +174,11 @@ impl CertifiedBessel {
             v.add_error_mag(d.rad_mag());
         }
         let n_terms = n_terms as usize;
-        let jt: Vec<Tr> = j.iter().map(tr_from_ball).collect();
+        let jt: Vec<BoundedDd> = j.iter().map(tr_from_ball).collect();
         let sign = |n: usize| if n % 2 == 1 { 1.0 } else { -1.0 };
-        let u_coef: Vec<Tr> = (0..=n_terms).map(|m| jt[2 * m].mul_f64(sign(m))).collect();
-        let mut du_coef = vec![Tr::ZERO; n_terms];
-        let mut acc = Tr::ZERO;
+        let u_coef: Vec<BoundedDd> = (0..=n_terms).map(|m| jt[2 * m].mul_f64(sign(m))).collect();
+        let mut du_coef = vec![BoundedDd::ZERO; n_terms];
+        let mut acc = BoundedDd::ZERO;
         for m in (0..n_terms).rev() {
             acc = acc.add(jt[2 * (m + 1)].mul_f64(sign(m + 1) * (m + 1) as f64));
             du_coef[m] = acc;
@@ -284,13 +197,13 @@ impl CertifiedBessel {
     /// `(u_w(x), du_w/dx)` with proven bounds, or `None` where the native path
     /// does not certify (`x/a > 25/7`). `a <= x` and finiteness are the caller's.
     pub(crate) fn eval_bounded(&self, a: f64, amp: f64, x: f64) -> Option<(Bounded, Bounded)> {
-        let ad = Tr::exact(a);
-        let rm1 = Tr { v: Dd::diff(x, a), e: 0.0 }.div(ad)?; // x/a - 1 (x - a exact)
-        let rp1 = Tr { v: Dd::diff(x, -a), e: 0.0 }.div(ad)?; // x/a + 1 (x + a exact)
+        let ad = BoundedDd::exact(a);
+        let rm1 = BoundedDd { v: Dd::diff(x, a), e: 0.0 }.div(ad)?; // x/a - 1 (x - a exact)
+        let rp1 = BoundedDd { v: Dd::diff(x, -a), e: 0.0 }.div(ad)?; // x/a + 1 (x + a exact)
         let t = rm1.div(rp1)?.sqrt()?;
         let acosh_r = two_atanh(t)?;
-        let q = Tr::ONE.sub(t).div(Tr::ONE.add(t))?;
-        let one_minus_t = Tr::ONE.sub(t);
+        let q = BoundedDd::ONE.sub(t).div(BoundedDd::ONE.add(t))?;
+        let one_minus_t = BoundedDd::ONE.sub(t);
         let q2 = q.mul(q);
         // Horner in q^2 for both sums (coefficients precomputed per contact).
         let n = self.n_terms;
@@ -300,10 +213,10 @@ impl CertifiedBessel {
             sdu = sdu.mul(q2).add(self.du_coef[m]);
         }
         let mut su = su.mul(q2);
-        let mut sdu = sdu.mul(Tr::ONE.add(q));
+        let mut sdu = sdu.mul(BoundedDd::ONE.add(q));
         su.e += self.tail0;
         sdu.e += 2.0 * self.tail2;
-        let inner = Tr::ONE.sub(self.j01[0]).add(self.d.mul(self.j01[1]).mul(acosh_r)).add(su.mul_f64(2.0));
+        let inner = BoundedDd::ONE.sub(self.j01[0]).add(self.d.mul(self.j01[1]).mul(acosh_r)).add(su.mul_f64(2.0));
         let u = inner.mul_f64(amp);
         let du = one_minus_t.mul(sdu).mul_f64(4.0 * amp).div(ad)?;
         Some((u.finish()?, du.finish()?))
@@ -317,8 +230,8 @@ mod tests {
     #[test]
     fn two_atanh_encloses_acosh() {
         for &r in &[1.0, 1.0 + 1e-12, 1.001, 1.35, 2.0, 3.0, 3.5] {
-            let rm1 = Tr { v: Dd::diff(r, 1.0), e: 0.0 };
-            let rp1 = Tr { v: Dd::diff(r, -1.0), e: 0.0 };
+            let rm1 = BoundedDd { v: Dd::diff(r, 1.0), e: 0.0 };
+            let rp1 = BoundedDd { v: Dd::diff(r, -1.0), e: 0.0 };
             let t = rm1.div(rp1).unwrap().sqrt().unwrap();
             let v = two_atanh(t).unwrap().finish().unwrap();
             let exact = Float::with_val(200, r).acosh();
@@ -330,7 +243,7 @@ mod tests {
 
     #[test]
     fn refuses_beyond_t_max() {
-        let t = Tr::exact(0.8);
+        let t = BoundedDd::exact(0.8);
         assert!(two_atanh(t).is_none());
     }
 }

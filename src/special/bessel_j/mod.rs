@@ -45,10 +45,14 @@
 
 mod hankel;
 mod native;
+mod native_hankel;
+mod native_recurrence;
+mod native_series;
 mod recurrence;
 mod series;
 
 pub use hankel::bessel_j_hankel;
+pub use native::{bessel_j_native, choose_native, NativeMethod};
 pub use recurrence::{bessel_j_sequence, bessel_j_sequence_dd, bessel_j_sequence_mp};
 pub use series::{bessel_j_series, bessel_j_series_pfq};
 
@@ -261,10 +265,7 @@ const BOUNDED_NATIVE_REL: f64 = 1.0 / (1u64 << 47) as f64;
 
 /// The native path (`n >= 0`, `x > 0`) when its proven bound is within `rel`.
 fn native(m: u64, x: f64, rel: f64) -> Option<Bounded> {
-    if series_loss_bits(m, x) > native::MAX_NATIVE_LOSS_BITS {
-        return None;
-    }
-    native::series_bounded(m, x).filter(|b| b.err <= rel * b.value.abs())
+    native::bessel_j_native(native::choose_native(m, x), m, x).filter(|b| b.err <= rel * b.value.abs())
 }
 
 /// `J_n(x)` in f64, within 2 ulp: the native double-double series where its
