@@ -7,7 +7,7 @@
 //! `J_0(0) = 1`, `J_n(0) = 0` for `n != 0` (exact).
 //!
 //! Methods, one file each, picked by [`choose_algorithm`] from f64 cost estimates
-//! (terms times working bits; the cheaper wins):
+//! (terms times working bits, weighted per method; the cheapest wins):
 //!
 //! * **Power series** (`series.rs`) [DLMF 10.2.2]:
 //!   `J_n(x) = (x/2)^n / n! * 0F1(; n+1; -x^2/4)`, summed by the pFq core with its
@@ -20,12 +20,20 @@
 //!   valid for every `l`: it stops as soon as the bound is below `2^-wp` and
 //!   pays `log2 e * n^2/x` bits for the exponential factor. It wins for `x`
 //!   beyond about `n^2/(wp + ...)`; see the file's method block.
-//! * **Recurrence** (`recurrence.rs`): sequences `J_0..J_nmax`, certified
-//!   downward from two certified values, and Miller's algorithm in double-double.
+//! * **Three-term recurrence** (`three_term.rs`) for `n` and `x` both large:
+//!   forward from certified `J_0(x)`, `J_1(x)` while `k < x`, with an error
+//!   bound for the whole run from the modulus `M_k = (J_k^2 + Y_k^2)^{1/2}`
+//!   [DLMF 10.18, 10.9.30; Watson §13.74]; past the turning point (`n > x`)
+//!   the ratios `J_k/J_{k-1}` from the backward recurrence (their contraction
+//!   proves the bound). `max(n, x)` steps of three MPFR operations. It takes
+//!   `n ~ x` (J_10000(20000.5): 61 ms by Hankel before, a few ms now) and
+//!   `n << x` where `n^2/x` is large (J_10000(99999.5)).
+//! * **Sequences** (`recurrence.rs`): `J_0..J_nmax`, certified downward from
+//!   two certified values, and Miller's algorithm in double-double.
 //!
-//! Not yet here (issue 13 item 4): the Debye and Airy-type uniform expansions
-//! [DLMF 10.19, 10.20] for `n` and `x` both large and comparable
-//! (`n ~ x >= 2000`), where both methods above cost tens of milliseconds.
+//! Not here (issue 13 item 4, issue 8 item 3): the Debye and Airy-type uniform
+//! expansions [DLMF 10.19, 10.20] with Olver's bounds, which would make
+//! `n ~ x` cost O(prec) instead of O(max(n, x)) steps.
 //!
 //! # Accuracy
 //!
@@ -42,8 +50,10 @@
 //!   over `n <= 60`, `x <= 150` about 0.015% of uniform points for [`bessel_j`],
 //!   none seen for [`bessel_j_bounded`] (examples/bessel_f64.rs).
 //!
-//! Domain: `|n| <= 10^4`, `|x| <= 10^6` are tested (the issue-13 grid); the
-//! power series is refused only past [`MAX_SERIES_GUARD`] guard bits (a time limit).
+//! Domain: every `|n| <= 10^5`, `|x| <= 10^7`, `prec <= 4096` answers (tested
+//! at the corners and the turning point in `tests/bessel_large.rs`; the
+//! issue-13 grid against 170-digit mpmath values). A call is refused only when
+//! the cheapest method's cost estimate passes [`MAX_COST`] (about a minute).
 
 mod hankel;
 mod native;
@@ -52,11 +62,13 @@ mod native_recurrence;
 mod native_series;
 mod recurrence;
 mod series;
+mod three_term;
 
 pub use hankel::bessel_j_hankel;
 pub use native::{bessel_j_native, choose_native, NativeMethod};
 pub use recurrence::{bessel_j_sequence, bessel_j_sequence_dd, bessel_j_sequence_mp};
 pub use series::{bessel_j_series, bessel_j_series_pfq};
+pub use three_term::bessel_j_three_term;
 
 use std::sync::atomic::{AtomicU64, Ordering as AtomicOrdering};
 
@@ -76,6 +88,9 @@ pub enum Algorithm {
     PowerSeries,
     /// Hankel's asymptotic expansion with the DLMF 10.17(iv) remainder bound.
     Hankel,
+    /// Three-term recurrence from `J_0`, `J_1` (forward below the turning
+    /// point, ratios past it) with the modulus bound (`three_term.rs`).
+    Recurrence,
 }
 
 /// A choice with its f64 cost estimate and the guard bits it needs.
@@ -87,6 +102,24 @@ pub(crate) struct Choice {
     /// Estimated work: terms times working bits.
     pub cost: f64,
 }
+
+// Cost model: the unit is one bit of one bare MPFR term operation (about 1 ns
+// on this machine's cores). Each method's work is its terms (or steps) times
+// its working bits plus a per-term overhead in equivalent bits, times a weight.
+// Calibrated on 2026-11-23 from one run of all three methods on the issue-13
+// points (in one process, ratios only): the power series costs ~1 ns per term
+// and bit, a recurrence step (three MPFR operations) ~1.5 ns per bit plus
+// ~150 bits of call overhead, and a term of Hankel's expansion (six ball
+// operations) ~4 ns per bit plus ~400 bits.
+
+/// Per-term overhead of the power series, in equivalent bits.
+const SERIES_TERM_OVERHEAD_BITS: f64 = 100.0;
+/// Weight of a term of Hankel's expansion against a power-series term.
+const HANKEL_WEIGHT: f64 = 4.0;
+/// Per-term overhead of Hankel's expansion, in equivalent bits.
+const HANKEL_TERM_OVERHEAD_BITS: f64 = 400.0;
+/// Per-step overhead of the recurrence (`three_term::plan` counts 1.5 per step), in equivalent bits.
+const RECURRENCE_STEP_OVERHEAD_BITS: f64 = 150.0;
 
 /// Bits the power series loses to cancellation, `log2(I_n(x) / |J_n(x)|)`
 /// (the sum of |terms| is `I_n(x)` up to the common prefactor), from the
@@ -115,7 +148,7 @@ fn series_choice(n: u64, x: f64, wp: u32) -> Choice {
     let k_peak = ((nf * nf + x * x).sqrt() - nf) / 2.0;
     let loss = series_loss_bits(n, x);
     let terms = 2.0 * k_peak + 10.0 + wp as f64 / 8.0;
-    Choice { algorithm: Algorithm::PowerSeries, guard: (loss + 24.0).min(4.0e6) as u32, cost: terms * (wp as f64 + loss) }
+    Choice { algorithm: Algorithm::PowerSeries, guard: (loss + 24.0).min(4.0e6) as u32, cost: terms * (wp as f64 + loss + SERIES_TERM_OVERHEAD_BITS) }
 }
 
 /// Hankel's choice, if its terms reach `2^-wp` before diverging: the peak term
@@ -123,28 +156,51 @@ fn series_choice(n: u64, x: f64, wp: u32) -> Choice {
 fn hankel_choice(n: u64, x: f64, wp: u32) -> Option<Choice> {
     let plan = hankel::plan(n, x, wp)?;
     let guard = plan.peak_bits + (x + n as f64).log2().max(0.0) + 16.0;
-    let cost = plan.terms as f64 * (wp as f64 + guard);
+    let cost = HANKEL_WEIGHT * plan.terms as f64 * (wp as f64 + guard + HANKEL_TERM_OVERHEAD_BITS);
     Some(Choice { algorithm: Algorithm::Hankel, guard: guard.min(4.0e6) as u32, cost })
 }
 
-/// The chooser: the cheaper of the power series and Hankel's expansion
-/// (`n >= 0`, `x > 0`, working precision `wp`), by the f64 cost estimates.
-pub(crate) fn choose(n: u64, x: f64, wp: u32) -> Choice {
-    let series = series_choice(n, x, wp);
-    match hankel_choice(n, x, wp) {
-        Some(h) if h.cost < series.cost => h,
-        _ => series,
+/// The recurrence's choice (`n >= 2`, `x > 2`): its steps at `wp` plus its
+/// guard, and the two starting values `J_0(x)`, `J_1(x)` by their own choices.
+fn recurrence_choice(n: u64, x: f64, wp: u32) -> Option<Choice> {
+    if n < 2 || !(x > RECURRENCE_MIN_X) {
+        return None;
     }
+    let (steps, guard) = three_term::plan(n, x, wp);
+    let start = choose(0, x, wp + guard as u32).cost + choose(1, x, wp + guard as u32).cost;
+    let cost = steps * (wp as f64 + guard + RECURRENCE_STEP_OVERHEAD_BITS) + start;
+    Some(Choice { algorithm: Algorithm::Recurrence, guard: guard.min(4.0e6) as u32, cost })
+}
+
+/// Below this `x` the power series is always cheaper than the recurrence.
+const RECURRENCE_MIN_X: f64 = 2.0;
+
+/// The chooser: the cheapest of the power series, Hankel's expansion and the
+/// recurrence (`n >= 0`, `x > 0`, working precision `wp`), by the f64 cost estimates.
+pub(crate) fn choose(n: u64, x: f64, wp: u32) -> Choice {
+    let mut best = series_choice(n, x, wp);
+    for c in [hankel_choice(n, x, wp), recurrence_choice(n, x, wp)].into_iter().flatten() {
+        if c.cost < best.cost {
+            best = c;
+        }
+    }
+    best
+}
+
+/// The chooser's cost estimates at `(n, x, wp)`, one per applicable method
+/// (for the benches and docs).
+#[doc(hidden)]
+pub fn algorithm_costs(n: u64, x: f64, wp: u32) -> Vec<(Algorithm, f64)> {
+    [Some(series_choice(n, x, wp)), hankel_choice(n, x, wp), recurrence_choice(n, x, wp)]
+        .into_iter()
+        .flatten()
+        .map(|c| (c.algorithm, c.cost))
+        .collect()
 }
 
 /// Picks the algorithm for `n >= 0`, `x > 0` at working precision `wp`.
 pub fn choose_algorithm(n: u64, x: f64, wp: u32) -> Algorithm {
     choose(n, x, wp).algorithm
-}
-
-/// Initial guard bits at output precision `prec` (from the chosen algorithm).
-fn initial_guard(n: u64, x: f64, prec: u32) -> u32 {
-    choose(n, x, prec + 32).guard
 }
 
 fn validate(n: i64, x: &Float) -> Result<()> {
@@ -172,10 +228,18 @@ fn reduce(n: i64, x: &Float) -> (u64, Float, bool) {
 
 /// `J_n(x)` at working precision `wp` (`n >= 0`, `x > 0`), algorithm by [`choose_algorithm`].
 fn bessel_j_positive(n: u64, x: &Float, wp: u32) -> Result<Ball> {
-    if choose_algorithm(n, x.to_f64(), wp) == Algorithm::Hankel {
-        if let Some(b) = bessel_j_hankel(n, x, wp)? {
-            return Ok(b);
+    match choose_algorithm(n, x.to_f64(), wp) {
+        Algorithm::Hankel => {
+            if let Some(b) = bessel_j_hankel(n, x, wp)? {
+                return Ok(b);
+            }
         }
+        Algorithm::Recurrence => {
+            let j0 = bessel_j_positive(0, x, wp)?;
+            let j1 = bessel_j_positive(1, x, wp)?;
+            return bessel_j_three_term(n, x, &j0, &j1, wp);
+        }
+        Algorithm::PowerSeries => {}
     }
     bessel_j_series(n, x, wp)
 }
@@ -228,24 +292,26 @@ pub(crate) fn bessel_j_ball(n: i64, x: &Float, prec: u32) -> Result<Ball> {
     Ok(if negate { b.neg() } else { b })
 }
 
-/// Guard bits past which the power series is refused instead of run: it would
-/// need about `guard` bits and as many terms (at `n ~ x ~ 1e5`, hours of work).
-pub const MAX_SERIES_GUARD: u32 = 1 << 17;
+/// Cost (the chooser's units, about 1 ns each on one core)
+/// past which a call is refused as a time limit (about a minute of work).
+pub const MAX_COST: f64 = 6.0e10;
 
-/// The initial guard, or an error when the power series would be out of
-/// proportion (outside the documented domain |n|, |x| <= 1e4 this can happen).
+/// The initial guard, or an error when even the cheapest method would run for
+/// more than about a minute ([`MAX_COST`]; nothing in |n| <= 1e5, |x| <= 1e7,
+/// prec <= 4096 comes near it).
 fn check_cost(m: u64, x: f64, prec: u32) -> Result<u32> {
-    let guard = initial_guard(m, x, prec);
-    if guard > MAX_SERIES_GUARD {
+    let c = choose(m, x, prec + 32);
+    if !(c.cost <= MAX_COST) {
         return Err(Error::Domain {
             what: format!(
-                "J_n(x) with n = {m}, x = {x:e} would need ~{guard} guard bits and as many terms \
-                 (minutes of work) in the power series, and Hankel's expansion does not reach the \
-                 precision there; n ~ x this large needs the uniform expansion (not yet implemented)"
+                "J_n(x) with n = {m}, x = {x:e} at {prec} bits would take about {:.0} s with the cheapest \
+                 method ({:?}), past the time limit of about a minute; lower the precision",
+                c.cost * 1e-9,
+                c.algorithm
             ),
         });
     }
-    Ok(guard)
+    Ok(c.guard)
 }
 
 /// Calls of [`bessel_j`] / [`bessel_j_bounded`] that the native double-double

@@ -1,0 +1,295 @@
+//! `J_n(x)` for large `n` and `x` by the three-term recurrence: forward from
+//! certified `J_0(x)`, `J_1(x)` below the turning point (`k < x`), and past it
+//! (`k > x`) by a product of ratios `J_k / J_{k-1}` from the backward
+//! (continued-fraction) recurrence. Midpoints run on bare MPFR numbers; the
+//! error bound is proven once for the whole run (no ball per step).
+//!
+//! # Forward part, `1 <= k < x` (the oscillatory region)
+//!
+//! `y_{k+1} = (2k/x) y_k - y_{k-1}` [DLMF 10.6.1] is solved by `J_k(x)` and
+//! `Y_k(x)`. Computed in floating point, the midpoints satisfy it up to a local
+//! error `delta_k` at each step, and `e_k = y~_k - J_k` obeys the same
+//! recurrence forced by `delta_k`. The response at `n` to a unit error entered
+//! at `k + 1` is `G(n, k) = (pi x / 2) (Y_k J_n - J_k Y_n)` (it solves the
+//! recurrence with `G(k, k) = 0`, `G(k+1, k) = 1`, by the cross product
+//! `J_{k+1} Y_k - J_k Y_{k+1} = 2 / (pi x)` [DLMF 10.5.4]). With the modulus
+//! `M_k = (J_k^2 + Y_k^2)^{1/2}` [DLMF 10.18.6], Cauchy-Schwarz gives
+//! `|G(n, k)| <= (pi x / 2) M_k M_n`, so
+//!
+//! `|y~_n - J_n| <= (pi x / 2) M_n (M_0 |e_1| + M_1 |e_0| + sum_{k=1}^{n-1} M_k |delta_k|)`.
+//!
+//! Bounds for the modulus:
+//! * `M_0(x) <= M_1(x)`: Nicholson's integral
+//!   `M_nu^2(x) = (8/pi^2) int_0^inf K_0(2x sinh t) cosh(2 nu t) dt` [DLMF 10.9.30]
+//!   increases with `nu` (`K_0 > 0`).
+//! * for `nu >= 1/2` and `x > nu`, `(x^2 - nu^2)^{1/2} M_nu^2(x)` increases to its
+//!   limit `2/pi` [Watson (1944) §13.74; the limit is DLMF 10.18.17], so
+//!   `M_nu^2(x) <= 2 / (pi (x^2 - nu^2)^{1/2})`. (Checked over `nu` in
+//!   `[1/2, 60]`, `x/nu` in `(1, 70)` with mpmath; see `reference/check_modulus.py`.)
+//!
+//! So with `Q_k = (x^2 - k^2)^{-1/4}`: `(pi x/2) M_n M_k <= x Q_n Q_k`, and
+//! `Q_k <= Q_{n-1}` for `k <= n - 1`.
+//!
+//! **Local errors.** With `u = 2^-wp` (round to nearest) and `c~ = fl(2/x)`
+//! (`|c~ - 2/x| <= u 2/x`), one step computes
+//! `y~_{k+1} = fl(fl(fl(y~_k k) c~) - y~_{k-1})`, so
+//! `|delta_k| <= (2k/x) |y~_k| ((1+u)^3 - 1) + u |y~_{k+1}| / (1 - u) <= 7.1 u 2^E`
+//! for `k < x`, where `2^E` bounds every `|y~_k|` (tracked by exponent). Hence
+//!
+//! `|y~_n - J_n| <= x Q_n (Q_1 (|e_0| + |e_1|) + (n - 1) Q_{n-1} 7.1 u 2^E)`.
+//!
+//! `J_0`, `J_1` come from the other methods of [`super`] (Hankel's expansion
+//! for large `x`). The bound grows like `x n / (x^2 - n^2)^{1/2}` against
+//! `|J_n| ~ M_n`: a few dozen bits, paid as guard bits; near a zero of `J_n`
+//! the Ziv loop of [`super`] adds more.
+//!
+//! # Past the turning point, `n >= x`
+//!
+//! Let `m` be the largest integer below `x`. The forward part certifies
+//! `J_{m-1}`, `J_m`, and one ball step gives `J_{m+1}` (positive: `m+1 >= x`
+//! lies below the first zero `j_{m+1,1} > m + 1` [DLMF 10.21.3]). Then
+//! `J_n = J_{m+1} prod_{k=m+2}^{n} rho_k`, `rho_k = J_k / J_{k-1}`, where for
+//! `k > x` [DLMF 10.6.1]
+//!
+//! `rho_k = x / (2k - x rho_{k+1})`, and `0 < rho_k <= 1`
+//!
+//! (`J_k > 0` for `k > x`; `rho_k -> 0` as `k -> inf`, and `rho_{k+1} <= 1`
+//! gives `rho_k <= x/(2k - x) <= 1`: downward induction). Also
+//! `rho_k >= x/(2k)`. The ratios are run backward from `r~_{N+1} = 1/2`
+//! (`|r~_{N+1} - rho_{N+1}| <= 1/2`). For `a, b` in `[0, 1]` and `k >= x + 1`,
+//! `|x/(2k - xa) - x/(2k - xb)| <= R_k^2 |a - b|`, `R_k = x/(2k - x) < 1`
+//! (decreasing in `k`).
+//!
+//! The ratios are not divided out: the backward recurrence
+//! `y~_{k-1} = fl(fl(fl(y~_k k) c~) - y~_{k+1})` runs on bare midpoints from
+//! `y~_{N+1} = 0`, `y~_N = 1`, and `r~_k = y~_k / y~_{k-1}` (exact quotients of
+//! the computed numbers) telescope: `prod_{k=m+2}^n r~_k = y~_n / y~_{m+1}`.
+//! Dividing a step by `y~_k`: `1/r~_k = ((2k/x)(1 + phi) - r~_{k+1})(1 + theta)`,
+//! `|phi| <= 3.01u`, `|theta| <= u`; as `2k/(2k - x r) <= 2` for `k >= x`,
+//! `r~_k = x/(2k - x r~_{k+1}) (1 + eta)` with `|eta| <= 7.1u`, and `r~_k` stays
+//! in `(0, 1)`. So `eps_k = |r~_k - rho_k| <= C_k + 7.1u / (1 - R_k^2)`
+//! (`eps_{N+1} <= 1`), `C_k = prod_{j=k}^N R_j^2 <= C_n` for `k <= n`. A factor's
+//! relative error is `eta_k <= eps_k 2k/x` (`rho_k >= x/(2k)`); with the one
+//! final division, `|ln(P~/P)| <= L = 2 sum eta_k + u` (all terms `<= 1/2`),
+//! and `|P~ - P| <= 2 L P~` for `L <= 1/2`. `N` is chosen (f64 walk) so that
+//! `C_n` is below `2^-wp` over the number of factors.
+//!
+//! Cost: `max(n, x)` steps of three MPFR operations at `wp` bits plus two
+//! certified values at `x`: about 0.1 us per step at 200 bits.
+
+use rug::float::Round;
+use rug::{Assign, Float};
+
+use crate::ball::{Ball, Mag};
+use crate::error::{Error, Result};
+
+/// Most steps the backward ratio recurrence may run past `n` before giving up.
+const MAX_RATIO_STEPS: u64 = 50_000_000;
+
+/// `(x^2 - k^2)^{-1/4}` rounded up, for exact `x > k >= 0`.
+fn inv_quarter_root_up(x: &Float, k: u64) -> Mag {
+    // x - k and x + k are exact at prec(x) + 80 bits (|k| < 2^64 <= x's scale + 80 bits).
+    let p = x.prec() + 80;
+    let a = Float::with_val(p, x - k);
+    let b = Float::with_val(p, x + k);
+    let d = Float::with_val_round(64, &a * &b, Round::Down).0;
+    if d <= 0 {
+        return Mag::inf();
+    }
+    let s = Float::with_val_round(64, d.sqrt_ref(), Round::Down).0;
+    let q = Float::with_val_round(64, s.sqrt_ref(), Round::Down).0;
+    let r = Float::with_val_round(64, q.recip_ref(), Round::Up).0;
+    Mag::from_float_up(&r)
+}
+
+/// Certified `(J_{t-1}(x), J_t(x))` for `2 <= t < x` from certified `J_0`, `J_1`
+/// (forward recurrence with the modulus bound of the module docs).
+fn forward_pair(t: u64, x: &Float, j0: &Ball, j1: &Ball, wp: u32) -> Result<(Ball, Ball)> {
+    debug_assert!(t >= 2 && *x > t);
+    let mut c = Float::with_val(wp, x.recip_ref());
+    c <<= 1u32; // fl(2/x): one rounding
+    // exact copies (the midpoints may carry more than wp bits)
+    let mut a = Float::with_val(wp.max(j0.prec()), j0.mid());
+    let mut b = Float::with_val(wp.max(j1.prec()), j1.mid());
+    let mut s = Float::new(wp);
+    let mut emax = exp_of(&a).max(exp_of(&b));
+    for k in 1..t {
+        s.assign(&b * k);
+        s *= &c;
+        s -= &a;
+        emax = emax.max(exp_of(&s));
+        std::mem::swap(&mut a, &mut b);
+        std::mem::swap(&mut b, &mut s);
+    }
+    // a = y~_{t-1}, b = y~_t
+    let init = j0.rad_mag().add(j1.rad_mag());
+    let local = Mag::from_f64(7.1).mul(Mag::pow2(emax - wp as i64)); // 7.1 u 2^E
+    let x_up = Mag::from_float_up(x);
+    let q1 = inv_quarter_root_up(x, 1);
+    let bound = |i: u64| -> Mag {
+        if i == 0 {
+            return j0.rad_mag();
+        }
+        if i == 1 {
+            return j1.rad_mag();
+        }
+        let qi = inv_quarter_root_up(x, i);
+        let qprev = inv_quarter_root_up(x, i - 1);
+        let steps = Mag::from_f64((i - 1) as f64);
+        x_up.mul(qi).mul(q1.mul(init).add(steps.mul(qprev).mul(local)))
+    };
+    Ok((Ball::with_mag(a, bound(t - 1)), Ball::with_mag(b, bound(t))))
+}
+
+/// Exponent `e` with `|v| < 2^e` (`i64::MIN / 4` for zero).
+fn exp_of(v: &Float) -> i64 {
+    v.get_exp().map_or(i64::MIN / 4, i64::from)
+}
+
+/// Largest integer strictly below `x` (`x > 0` exact).
+pub(crate) fn below_turning_point(x: &Float) -> u64 {
+    let c = Float::with_val(x.prec(), x.ceil_ref());
+    let ci = c.to_integer().map_or(0, |i| i.to_u64().unwrap_or(u64::MAX));
+    ci.saturating_sub(1)
+}
+
+/// `J_n(x)` by the recurrence (`n >= 2`, `x > 1` exact), given certified
+/// `J_0(x)`, `J_1(x)` at working precision `wp`: forward for `n < x`, forward
+/// to the turning point then the ratio product for `n >= x`.
+pub fn bessel_j_three_term(n: u64, x: &Float, j0: &Ball, j1: &Ball, wp: u32) -> Result<Ball> {
+    if n < 2 || *x <= 1 {
+        return Err(Error::Domain { what: "three-term recurrence needs n >= 2 and x > 1".into() });
+    }
+    let m = below_turning_point(x);
+    if n <= m {
+        return Ok(forward_pair(n, x, j0, j1, wp)?.1);
+    }
+    let (jm1, jm) = if m == 1 { (j0.clone(), j1.clone()) } else { forward_pair(m, x, j0, j1, wp)? };
+    let xb = Ball::from_float(x, wp);
+    // J_{m+1} = (2m/x) J_m - J_{m-1} [DLMF 10.6.1], in balls.
+    let m_i = i64::try_from(m).map_err(|_| Error::Domain { what: "Bessel argument too large".into() })?;
+    let j_next = jm.mul_i64(2 * m_i).div(&xb)?.sub(&jm1);
+    if n == m + 1 {
+        return Ok(j_next);
+    }
+    let p = ratio_product(n, m, x, wp)?;
+    Ok(j_next.mul(&p))
+}
+
+/// `prod_{k=m+2}^{n} J_k/J_{k-1}` as a ball (`m` the largest integer below `x`, `n >= m + 2`):
+/// the backward recurrence `y_{k-1} = (2k/x) y_k - y_{k+1}` from `y_{N+1} = 0`,
+/// `y_N = 1` on bare midpoints (no division), and `y~_n / y~_{m+1}`, which is
+/// exactly the product of the computed ratios `r~_k = y~_k / y~_{k-1}`.
+fn ratio_product(n: u64, m: u64, x: &Float, wp: u32) -> Result<Ball> {
+    let xf = x.to_f64();
+    // R_k = x/(2k - x), with relative slack for the f64 rounding of x and of the operations.
+    let r_of = |k: u64| xf / (2.0 * k as f64 - xf) * (1.0 + 1e-9);
+    let factors = (n - m - 1) as f64;
+    // Walk up from n until C_n = prod_{j=n}^N R_j^2 <= 2^-(wp + log2(factors n / x) + 8).
+    let want = wp as f64 + (factors * n as f64 / xf).log2().max(0.0) + 8.0;
+    let mut log_c = 0.0f64; // log2 C_n (an upper bound: the terms are scaled toward zero)
+    let mut top = n;
+    while -log_c < want {
+        log_c += 2.0 * r_of(top).log2() * (1.0 - 1e-9);
+        top += 1;
+        if top - n > MAX_RATIO_STEPS {
+            return Err(Error::NoConvergence { function: "bessel_j (ratio recurrence)", terms: top - n });
+        }
+    }
+    // top = N + 1: y~_{N+1} = 0, y~_N = 1, so r~_{N+1} = 0 and |r~_{N+1} - rho_{N+1}| <= 1.
+    let mut c = Float::with_val(wp, x.recip_ref());
+    c <<= 1u32; // fl(2/x)
+    let mut a = Float::with_val(wp, 0); // y~_{k+1}
+    let mut b = Float::with_val(wp, 1); // y~_k
+    let mut s = Float::new(wp);
+    let mut y_n = Float::new(wp);
+    // sum over the product's range of (2k/x) / (1 - R_k^2) = (2k - x)^2 / (2x (k - x))
+    let mut amp_sum = 0.0f64;
+    let mut k = top - 1;
+    loop {
+        if k == n {
+            y_n.assign(&b);
+        }
+        if k <= n && k >= m + 2 {
+            let kf = k as f64;
+            amp_sum += (2.0 * kf - xf) * (2.0 * kf - xf) / (2.0 * xf * (kf - xf));
+        }
+        if k == m + 1 {
+            break;
+        }
+        // y~_{k-1} = fl(fl(fl(y~_k k) c~) - y~_{k+1})
+        s.assign(&b * k);
+        s *= &c;
+        s -= &a;
+        std::mem::swap(&mut a, &mut b);
+        std::mem::swap(&mut b, &mut s);
+        k -= 1;
+    }
+    // b = y~_{m+1}
+    let prod = Float::with_val(wp, &y_n / &b);
+    let u = 2f64.powi(-(wp as i32).min(1000));
+    let c_n = 2f64.powf(log_c.max(-1000.0));
+    // L = 2 [ C_n factors (2n/x) + 7.1 u A ] + u, in f64 with slack
+    let l = (2.0 * (c_n * factors * 2.0 * n as f64 / xf + 7.1 * u * amp_sum * (1.0 + 1e-6)) + u) * (1.0 + 1e-6);
+    let l = if wp > 1000 {
+        // u and C_n leave f64's convenient range: the same bound in Mag.
+        let um = Mag::pow2(-(wp as i64));
+        let cm = Mag::pow2(log_c.ceil() as i64);
+        Mag::from_f64(2.0 * factors * 2.0 * n as f64 / xf * (1.0 + 1e-6))
+            .mul(cm)
+            .add(Mag::from_f64(14.2 * amp_sum * (1.0 + 1e-6) + 1.0).mul(um))
+            .mul(Mag::from_f64(1.0 + 1e-6))
+    } else {
+        Mag::from_f64(l)
+    };
+    if !l.le(&Mag::from_f64(0.5)) {
+        return Err(Error::NoConvergence { function: "bessel_j (ratio recurrence bound)", terms: top - n });
+    }
+    let rad = Mag::from_float_up(&prod).mul(l).mul_2exp(1);
+    Ok(Ball::with_mag(prod, rad))
+}
+
+/// f64 estimates for the chooser: `(steps, guard bits)` of [`bessel_j_three_term`]
+/// at `(n, x, wp)` (`n >= 2`, `x > 1`).
+pub(crate) fn plan(n: u64, x: f64, wp: u32) -> (f64, f64) {
+    let nf = n as f64;
+    let m = (x.ceil() - 1.0).max(1.0);
+    let top = nf.min(m);
+    // x t / (x^2 - t^2)^{1/2} against |J_t| ~ (x^2 - t^2)^{-1/4}, plus slack
+    let sep = ((x - top) * (x + top)).max(1.0);
+    let mut guard = (20.0 * x * top / sep.sqrt()).log2().max(0.0) + 12.0;
+    let mut steps = top * 1.5;
+    if nf > m {
+        // backward part: the walk past n until prod R_j^2 < 2^-wp, then down to m + 1
+        let mut log_c = 0.0;
+        let mut j = nf;
+        while -log_c < wp as f64 + 16.0 && j - nf < 1e7 {
+            log_c += 2.0 * (x / (2.0 * j - x)).log2();
+            j += 1.0;
+        }
+        steps += (j - m) * 1.5;
+        guard += ((nf - m) * nf / x).log2().max(0.0) + 4.0;
+    }
+    (steps, guard)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn quarter_root_is_an_upper_bound() {
+        let x = Float::with_val(53, 20000.5);
+        let q = inv_quarter_root_up(&x, 10000).to_f64_up();
+        let exact = ((20000.5f64 * 20000.5 - 1e8) as f64).powf(-0.25);
+        assert!(q >= exact && q <= exact * (1.0 + 1e-15), "{q} vs {exact}");
+        assert!(!inv_quarter_root_up(&x, 20001).is_finite());
+    }
+
+    #[test]
+    fn turning_point_index() {
+        assert_eq!(below_turning_point(&Float::with_val(53, 5000.25)), 5000);
+        assert_eq!(below_turning_point(&Float::with_val(53, 5000.0)), 4999);
+        assert_eq!(below_turning_point(&Float::with_val(53, 1.5)), 1);
+    }
+}
