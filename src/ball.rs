@@ -41,7 +41,7 @@ mod double_double;
 pub(crate) use double_double::{quick_two_sum, two_prod, two_sum};
 mod mag;
 pub use bounded::Bounded;
-pub use decimal::{eval_at_decimals, Decimal, MAX_DECIMAL_DIGITS, MAX_DECIMAL_EXPONENT, MAX_DECIMAL_INPUT_PREC};
+pub use decimal::{eval_at_decimals, eval_at_decimals_with_floor, Decimal, MAX_DECIMAL_DIGITS, MAX_DECIMAL_EXPONENT, MAX_DECIMAL_INPUT_PREC};
 pub use double_double::Dd;
 pub(crate) use dd_bounded::{div_f64, mag, BoundedDd, BOUND_INFLATION, C_ADD, U, U2};
 pub use mag::Mag;

@@ -13,19 +13,12 @@ use maugis::Ball;
 use proptest::prelude::*;
 use rug::Float;
 
-const REF_BITS: u32 = 400;
+const REF_BITS: u32 = common::DECIMAL_REF_BITS;
 
 /// Ball at the decimal `x` with the library's refinement driver (what `maugis eval` runs).
 fn at_decimal(n: i64, x: &str, prec: u32) -> Ball {
     let d = Decimal::parse(x).expect("decimal parses");
     eval_at_decimals(&[d], prec, |b| bessel_j_ball_mp(n, &b[0], prec)).expect("J_n at a decimal")
-}
-
-/// |mid - ref| <= rad + 1e-99 |ref| (the reference carries 100 digits).
-fn contains_ref(b: &Ball, r: &Float) -> bool {
-    let diff = Float::with_val(REF_BITS, b.mid() - r).abs();
-    let slack = Float::with_val(REF_BITS, r.abs_ref()) * Float::with_val(REF_BITS, 1e-99);
-    diff <= Float::with_val(REF_BITS, b.rad() + slack)
 }
 
 #[test]
@@ -41,7 +34,7 @@ fn decimal_zeros_contain_the_value_at_the_decimal() {
         for prec in [53, 128, 256] {
             let b = at_decimal(n, x, prec);
             probes += 1;
-            if !contains_ref(&b, &r) {
+            if !common::contains_decimal_ref(&b, &r, None) {
                 failures.push(format!("n={n} x={x} prec={prec}: {b:?} vs {}", r.to_string_radix(10, Some(30))));
             }
             // The refinement makes the answer a prec-bit answer at the decimal.
@@ -63,8 +56,8 @@ fn rounded_binary_input_is_not_the_decimal() {
     let r = Float::with_val(REF_BITS, Float::parse(&row["value"]).unwrap());
     let rounded = Float::with_val(117, Float::parse(&row["x"]).unwrap());
     let wrong = bessel_j_mp(1, &rounded, 53).unwrap();
-    assert!(!contains_ref(&wrong, &r), "the binary rounding happened to contain it: {wrong:?}");
-    assert!(contains_ref(&at_decimal(1, &row["x"], 53), &r));
+    assert!(!common::contains_decimal_ref(&wrong, &r, None), "the binary rounding happened to contain it: {wrong:?}");
+    assert!(common::contains_decimal_ref(&at_decimal(1, &row["x"], 53), &r, None));
 }
 
 #[test]

@@ -14,19 +14,12 @@ use maugis::special::hyp2f1::hyp2f1_ball_mp;
 use maugis::{Ball, Result};
 use rug::Float;
 
-const REF_BITS: u32 = 400;
+const REF_BITS: u32 = common::DECIMAL_REF_BITS;
 
 /// What `maugis eval` runs for `{"fn": "hyp2f1", ..., "prec": prec}`.
 fn at_decimals(a: &str, b: &str, c: &str, z: &str, prec: u32) -> Result<Ball> {
     let d: Vec<Decimal> = [a, b, c, z].iter().map(|s| Decimal::parse(s).expect("decimal parses")).collect();
     eval_at_decimals(&d, prec, |x| hyp2f1_ball_mp(&x[0], &x[1], &x[2], &x[3], prec))
-}
-
-/// |mid - ref| <= rad + 1e-99 |ref| (the reference carries 100 digits).
-fn contains_ref(b: &Ball, r: &Float) -> bool {
-    let diff = Float::with_val(REF_BITS, b.mid() - r).abs();
-    let slack = Float::with_val(REF_BITS, r.abs_ref()) * Float::with_val(REF_BITS, 1e-99);
-    diff <= Float::with_val(REF_BITS, b.rad() + slack)
 }
 
 #[test]
@@ -42,7 +35,7 @@ fn decimal_probes_contain_the_value_at_the_decimals() {
             probes += 1;
             match at_decimals(a, b, c, z, prec) {
                 Ok(ball) => {
-                    if !contains_ref(&ball, &r) {
+                    if !common::contains_decimal_ref(&ball, &r, None) {
                         failures.push(format!("({a}, {b}; {c}; {z}) prec {prec}: {ball:?} vs {}", r.to_string_radix(10, Some(30))));
                     }
                     if !ball.meets_rel(prec) {

@@ -18,7 +18,8 @@
 //! * Without `"prec"` the f64 path runs: each decimal is rounded to the nearest
 //!   double and the answer is for those doubles.
 //! * With `"prec"` the certified path runs. For the functions wired to ball
-//!   inputs (today: `bessel_j`, `hyp2f1`) each decimal becomes a ball that **contains the
+//!   inputs (`bessel_j`, `hyp1f2`, `hyp2f1`, `meijer_g_k`, `u_wave`, `du_wave`)
+//!   each decimal becomes a ball that **contains the
 //!   decimal** ([`maugis::ball::Decimal`], Arb's convention): exact when the
 //!   decimal is a binary fraction (`2.5`, `0.375`), otherwise the decimal rounded
 //!   to nearest with a one-ulp radius. The printed ball contains the function
@@ -27,9 +28,10 @@
 //!   (near a zero), at more bits ([`maugis::ball::eval_at_decimals`]).
 //!   If an edge of the function (a pole, a divergence) lies inside the input
 //!   ball, the answer is an error that names it, never a number.
-//! * Functions not yet wired to ball inputs round each decimal to nearest at
-//!   `max(prec, 53) + 64` bits and certify the function at that binary number
-//!   (see `arg_float`); they move to the contract above one by one.
+//! * The other functions (`u_wave_series`, `u_wave_quad`, `u_hertz`,
+//!   `u_adhesive`) round each decimal to nearest at `max(prec, 53) + 64` bits
+//!   and certify (or, for the quadrature, estimate) the function at that binary
+//!   number (see `arg_float`).
 //!
 //! Integer arguments (`n`, `k`, `kmax`, `prec`) must be integers as typed.
 //! A bad line gets `{"id": ..., "error": "..."}` and the stream goes on.
@@ -38,7 +40,7 @@ use std::io::{BufRead, Write};
 
 use maugis::contact::{displacement, wave_quadrature};
 use maugis::special::{bessel_j, hyp1f2, hyp2f1, meijer_g};
-use maugis::ball::{eval_at_decimals, Decimal};
+use maugis::ball::{eval_at_decimals, eval_at_decimals_with_floor, Decimal};
 use maugis::{Ball, Error, MAX_PREC};
 use rug::Float;
 use serde_json::{json, Map, Value};
@@ -192,13 +194,8 @@ fn evaluate(obj: &Map<String, Value>) -> Req<Value> {
             hyp1f2::hyp1f2(arg_f64(obj, "a")?, arg_f64(obj, "b1")?, arg_f64(obj, "b2")?, arg_f64(obj, "z")?)?,
         ),
         ("hyp1f2", Some(p)) => {
-            let b = hyp1f2::hyp1f2_mp(
-                &arg_float(obj, "a", p)?,
-                &arg_float(obj, "b1", p)?,
-                &arg_float(obj, "b2", p)?,
-                &arg_float(obj, "z", p)?,
-                p,
-            )?;
+            let args = [arg_decimal(obj, "a")?, arg_decimal(obj, "b1")?, arg_decimal(obj, "b2")?, arg_decimal(obj, "z")?];
+            let b = eval_at_decimals(&args, p, |x| hyp1f2::hyp1f2_ball_mp(&x[0], &x[1], &x[2], &x[3], p))?;
             mp_response(&id, &b, p)
         }
         ("hyp2f1", None) => f64_response(
@@ -212,7 +209,9 @@ fn evaluate(obj: &Map<String, Value>) -> Req<Value> {
         }
         ("meijer_g_k", None) => f64_response(&id, meijer_g::meijer_g_k(arg_u32(obj, "k")?, arg_f64(obj, "y")?)?),
         ("meijer_g_k", Some(p)) => {
-            mp_response(&id, &meijer_g::meijer_g_k_mp(arg_u32(obj, "k")?, &arg_float(obj, "y", p)?, p)?, p)
+            let k = arg_u32(obj, "k")?;
+            let y = arg_decimal(obj, "y")?;
+            mp_response(&id, &eval_at_decimals(&[y], p, |b| meijer_g::meijer_g_k_ball_mp(k, &b[0], p))?, p)
         }
         _ => return evaluate_contact(obj, fname, &id, prec),
     };
@@ -229,6 +228,24 @@ fn wave_mp(obj: &Map<String, Value>, p: u32) -> Req<(Float, Float, Float, Float)
     Ok((arg_float(obj, "a", p)?, arg_float(obj, "zeta", p)?, arg_float(obj, "amp", p)?, arg_float(obj, "x", p)?))
 }
 
+/// `u_w` (or `du_w/dx` when `gradient`) on the ball contract. The accuracy
+/// floor is the function's natural scale, `|A|` (or `6 |A| / zeta`): `u_w`
+/// vanishes where `a/zeta` is an integer. `x` typed as the same number as `a`
+/// is the edge itself, not a ball around it.
+fn wave_ball(obj: &Map<String, Value>, p: u32, gradient: bool) -> Req<Ball> {
+    let args = [arg_decimal(obj, "a")?, arg_decimal(obj, "zeta")?, arg_decimal(obj, "amp")?, arg_decimal(obj, "x")?];
+    let amp = Float::with_val(64, args[2].as_rational()).abs();
+    let floor = if gradient { amp * 6u32 / Float::with_val(64, args[1].as_rational()) } else { amp };
+    let edge = args[3] == args[0];
+    let b = eval_at_decimals_with_floor(if edge { &args[..3] } else { &args }, p, Some(&floor), |v| match (gradient, edge) {
+        (false, true) => displacement::u_wave_at_edge_ball_mp(&v[0], &v[1], &v[2], p),
+        (false, false) => displacement::u_wave_ball_mp(&v[0], &v[1], &v[2], &v[3], p),
+        (true, true) => displacement::du_wave_at_edge_ball_mp(&v[0], &v[1], &v[2], p),
+        (true, false) => displacement::du_wave_ball_mp(&v[0], &v[1], &v[2], &v[3], p),
+    })?;
+    Ok(b)
+}
+
 /// The contact-model functions (displacements).
 fn evaluate_contact(obj: &Map<String, Value>, fname: &str, id: &Value, prec: Option<u32>) -> Req<Value> {
     let out = match (fname, prec) {
@@ -236,18 +253,12 @@ fn evaluate_contact(obj: &Map<String, Value>, fname: &str, id: &Value, prec: Opt
             let (a, z, m, x) = wave_f64(obj)?;
             f64_response(id, displacement::u_wave(a, z, m, x)?)
         }
-        ("u_wave", Some(p)) => {
-            let (a, z, m, x) = wave_mp(obj, p)?;
-            mp_response(id, &displacement::u_wave_mp(&a, &z, &m, &x, p)?, p)
-        }
+        ("u_wave", Some(p)) => mp_response(id, &wave_ball(obj, p, false)?, p),
         ("du_wave", None) => {
             let (a, z, m, x) = wave_f64(obj)?;
             f64_response(id, displacement::du_wave(a, z, m, x)?)
         }
-        ("du_wave", Some(p)) => {
-            let (a, z, m, x) = wave_mp(obj, p)?;
-            mp_response(id, &displacement::du_wave_mp(&a, &z, &m, &x, p)?, p)
-        }
+        ("du_wave", Some(p)) => mp_response(id, &wave_ball(obj, p, true)?, p),
         ("u_wave_series", _) => {
             let kmax = arg_int(obj, "kmax")?;
             let kmax = u64::try_from(kmax).map_err(|_| BadRequest(format!("\"kmax\" must be >= 0 (got {kmax})")))?;

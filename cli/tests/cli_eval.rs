@@ -122,3 +122,46 @@ fn decimal_input_is_a_ball_that_contains_the_decimal() {
     }
     assert!(checked >= 20);
 }
+
+#[test]
+fn ball_contract_for_1f2_g_and_the_wave() {
+    // Every function on the ball contract: the printed ball contains the value
+    // at the decimals typed (reference: reference/data/ball_inputs_decimal.csv).
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../reference/data/ball_inputs_decimal.csv");
+    let table = std::fs::read_to_string(path).expect("reference table");
+    let names = |f: &str| -> &'static [&'static str] {
+        match f {
+            "hyp1f2" => &["a", "b1", "b2", "z"],
+            "meijer_g_k" => &["k", "y"],
+            _ => &["a", "zeta", "amp", "x"],
+        }
+    };
+    let mut input = String::new();
+    let mut expected = Vec::new();
+    for line in table.lines().filter(|l| !l.starts_with('#') && !l.starts_with("fn,")).step_by(3) {
+        let cols: Vec<&str> = line.split(',').collect();
+        let (f, args, value) = (cols[0], cols[1], cols[2]);
+        let fields: Vec<String> =
+            names(f).iter().zip(args.split_whitespace()).map(|(n, v)| format!("\"{n}\":\"{v}\"")).collect();
+        input.push_str(&format!("{{\"fn\":\"{f}\",{},\"prec\":128}}\n", fields.join(",")));
+        expected.push((f.to_string(), args.to_string(), value.to_string()));
+    }
+    let (out, code) = eval_lines(&input);
+    assert_eq!(code, 0);
+    assert_eq!(out.len(), expected.len());
+    for (resp, (f, args, value)) in out.iter().zip(&expected) {
+        let mid = Float::with_val(400, Float::parse(resp["mid"].as_str().unwrap_or_else(|| panic!("{f} {args}: {resp}"))).unwrap());
+        let rad = Float::with_val(400, Float::parse(resp["rad"].as_str().unwrap()).unwrap());
+        let exact = Float::with_val(400, Float::parse(value).unwrap());
+        assert!(Float::with_val(400, &mid - &exact).abs() <= rad, "{f} {args}: {resp} vs {value}");
+    }
+    assert!(expected.len() >= 40, "{}", expected.len());
+    // issue 13's row: u_w(50) at zeta = 0.1 is 1 - cos(1000 pi) = 0
+    let (out, _) = eval_lines("{\"fn\":\"u_wave\",\"a\":\"50\",\"zeta\":\"0.1\",\"amp\":\"1\",\"x\":\"50\",\"prec\":128}\n");
+    let mid = Float::with_val(400, Float::parse(out[0]["mid"].as_str().unwrap()).unwrap());
+    let rad = Float::with_val(400, Float::parse(out[0]["rad"].as_str().unwrap()).unwrap());
+    assert!(mid.abs() <= rad, "{}", out[0]);
+    // an edge inside the balls is an error line that names it
+    let (out, _) = eval_lines("{\"fn\":\"hyp1f2\",\"a\":\"0.5\",\"b1\":\"-2\",\"b2\":\"1.5\",\"z\":\"-3\",\"prec\":64}\n");
+    assert!(out[0]["error"].as_str().unwrap().contains("pole"), "{}", out[0]);
+}

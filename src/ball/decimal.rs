@@ -174,7 +174,18 @@ pub const MAX_DECIMAL_INPUT_PREC: u32 = 1 << 16;
 /// the start, so for them `f` runs once. A domain error of `f` (an edge inside
 /// an input ball) is retried with tighter balls while an input is inexact, and
 /// returned once the balls are exact or at the cap; other errors return at once.
-pub fn eval_at_decimals<F>(args: &[Decimal], prec: u32, mut f: F) -> Result<Ball>
+pub fn eval_at_decimals<F>(args: &[Decimal], prec: u32, f: F) -> Result<Ball>
+where
+    F: FnMut(&[Ball]) -> Result<Ball>,
+{
+    eval_at_decimals_with_floor(args, prec, None, f)
+}
+
+/// [`eval_at_decimals`] for a function with a natural scale `floor` that may
+/// vanish at the decimals (for example `u_w(a) = A (1 - cos(2 pi a/zeta))`,
+/// zero when `a/zeta` is an integer): the answer is accepted once
+/// `rad <= 2^-prec max(|mid|, floor)`.
+pub fn eval_at_decimals_with_floor<F>(args: &[Decimal], prec: u32, floor: Option<&Float>, mut f: F) -> Result<Ball>
 where
     F: FnMut(&[Ball]) -> Result<Ball>,
 {
@@ -194,7 +205,8 @@ where
             }
             Err(e) => return Err(e),
         };
-        if all_exact || out.meets_rel(prec) || input_prec >= MAX_DECIMAL_INPUT_PREC {
+        let meets_floor = floor.is_some_and(|fl| !fl.is_zero() && out.meets_abs(prec, fl));
+        if all_exact || out.meets_rel(prec) || meets_floor || input_prec >= MAX_DECIMAL_INPUT_PREC {
             return Ok(out);
         }
         let achieved = out.rel_accuracy_bits();

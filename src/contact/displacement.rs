@@ -174,26 +174,36 @@ struct WaveGeometry {
 }
 
 fn wave_geometry(a: &Float, zeta: &Float, amp: &Float, x: &Float, wp: u32) -> Result<WaveGeometry> {
-    let ab = Ball::from_float(a, wp);
-    let xb = Ball::from_float(x, wp);
-    let d = Ball::pi(wp).mul(&ab).mul_pow2(1).div(&Ball::from_float(zeta, wp))?;
-    let s = d.sqr().mul_pow2(-2);
-    // x - a and x + a exactly, then divided by a: r - 1 and r + 1.
+    // x - a and x + a exactly (no cancellation next to the edge).
     let xma = Ball::from_float(&exact_sub(x, a), wp);
     let xpa = Ball::from_float(&exact_add(x, a), wp);
-    let rm1 = xma.div(&ab)?;
-    let rp1 = xpa.div(&ab)?;
-    let r = xb.div(&ab)?;
+    let inputs = [a, zeta, amp, x].map(|v| Ball::from_float(v, wp));
+    geometry_from_balls(&inputs, xma, xpa, x == a, wp)
+}
+
+/// The geometry over balls of inputs `[a, zeta, amp, x]`, with `x - a` and
+/// `x + a` given as balls (exact for exact inputs).
+fn geometry_from_balls(inputs: &[Ball; 4], xma: Ball, xpa: Ball, at_edge: bool, wp: u32) -> Result<WaveGeometry> {
+    let [ab, zb, amp, xb] = inputs;
+    let d = Ball::pi(wp).mul(ab).mul_pow2(1).div(zb)?;
+    let s = d.sqr().mul_pow2(-2);
+    // r - 1 and r + 1, r = x/a; a lower end of r - 1 below zero (only for
+    // balls that touch the edge x = a from above) is clipped: the caller has
+    // checked x >= a over the balls.
+    let rm1 = xma.div(ab)?;
+    let rm1 = if rm1.lower() < 0 { Ball::hull(&Float::new(wp), &rm1.upper(), wp) } else { rm1 };
+    let rp1 = xpa.div(ab)?;
+    let r = rm1.add_i64(1);
     let sq = rm1.mul(&rp1).sqrt()?; // sqrt(r^2 - 1)
     let q = r.add(&sq).recip()?;
     let acosh_r = rm1.add(&sq).ln_1p()?;
     let one_minus_q_over_s = Ball::one(wp).sub(&rm1.div(&rp1)?.sqrt()?);
-    let y = ab.div(&xb)?.sqr();
+    let y = ab.div(xb)?.sqr();
     let w = xma.mul(&xpa).div(&xb.sqr())?;
     Ok(WaveGeometry {
-        amp: Ball::from_float(amp, wp),
-        a: ab,
-        x: xb,
+        amp: amp.clone(),
+        a: ab.clone(),
+        x: xb.clone(),
         d,
         s,
         y,
@@ -201,7 +211,7 @@ fn wave_geometry(a: &Float, zeta: &Float, amp: &Float, x: &Float, wp: u32) -> Re
         q,
         acosh_r,
         one_minus_q_over_s,
-        at_edge: x == a,
+        at_edge,
     })
 }
 
@@ -251,7 +261,11 @@ pub(crate) fn bessel_terms(d_upper: &Float, wp: u32) -> Result<(u64, Float, Floa
 
 /// Bessel-form `(u_w, du_w/dx)` as balls at working precision `wp`.
 pub(crate) fn wave_bessel_wp(a: &Float, zeta: &Float, amp: &Float, x: &Float, wp: u32) -> Result<(Ball, Ball)> {
-    let g = wave_geometry(a, zeta, amp, x, wp)?;
+    wave_bessel_geometry(&wave_geometry(a, zeta, amp, x, wp)?, wp)
+}
+
+/// The Bessel form on a geometry (balls): encloses `(u_w, du_w/dx)` over the balls.
+fn wave_bessel_geometry(g: &WaveGeometry, wp: u32) -> Result<(Ball, Ball)> {
     let d_mid = g.d.mid().clone();
     let d_upper = g.d.upper();
     let (n_terms, tail0, tail2) = bessel_terms(&d_upper, wp)?;
@@ -319,6 +333,118 @@ pub fn du_wave_mp(a: &Float, zeta: &Float, amp: &Float, x: &Float, prec: u32) ->
     }
     let floor = gradient_scale(amp, zeta);
     ziv_with_floor("du_wave", prec, DEFAULT_GUARD_BITS, Some(&floor), |wp| Ok(wave_bessel_wp(a, zeta, amp, x, wp)?.1))
+}
+
+/// The edge a ball of `x` may straddle, per function.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum WaveOutput {
+    Displacement,
+    Gradient,
+}
+
+/// [`u_wave_mp`] / [`du_wave_mp`] over balls of inputs (Arb's convention);
+/// `x = None` means `x = a` exactly (the same number, whatever its ball).
+fn wave_ball_mp(a: &Ball, zeta: &Ball, amp: &Ball, x: Option<&Ball>, prec: u32, which: WaveOutput) -> Result<Ball> {
+    crate::error::check_prec(prec)?;
+    let x_is_a = x.is_none();
+    let x = x.unwrap_or(a);
+    let inputs = [a, zeta, amp, x];
+    for (v, what) in [(a, "a"), (zeta, "zeta"), (amp, "amp"), (x, "x")] {
+        if !v.is_finite() {
+            return Err(Error::NonFinite { what });
+        }
+    }
+    if inputs.iter().all(|v| v.is_exact()) {
+        let [a, zeta, amp, x] = inputs.map(|v| v.mid());
+        return match which {
+            WaveOutput::Displacement => u_wave_mp(a, zeta, amp, x, prec),
+            WaveOutput::Gradient => du_wave_mp(a, zeta, amp, x, prec),
+        };
+    }
+    let interval = |v: &Ball| {
+        let end = |f: Float| f.to_string_radix(10, Some(4));
+        format!("[{}, {}]", end(v.lower()), end(v.upper()))
+    };
+    if !(a.lower() > 0) {
+        return Err(Error::Domain { what: format!("the contact half-width a must be > 0 over its input ball {}", interval(a)) });
+    }
+    if !(zeta.lower() > 0) {
+        return Err(Error::Domain { what: format!("the wavelength zeta must be > 0 over its input ball {}", interval(zeta)) });
+    }
+    check_wave_number(2.0 * std::f64::consts::PI * a.upper().to_f64() / zeta.lower().to_f64())?;
+    // x - a over the balls: the edge x = a.
+    let xma = if x_is_a { Ball::zero(a.prec()) } else { x.sub(a) };
+    if xma.upper() < 0 {
+        return Err(Error::Domain { what: format!("the wave displacement is for x >= a (x - a lies in {})", interval(&xma)) });
+    }
+    if xma.lower() < 0 {
+        return Err(Error::Domain {
+            what: match which {
+                WaveOutput::Displacement => format!(
+                    "the contact edge x = a lies within the input balls (x - a in {}): u_w is defined for x >= a only",
+                    interval(&xma)
+                ),
+                WaveOutput::Gradient => format!(
+                    "the contact edge x = a lies within the input balls (x - a in {}): du_w/dx is one-sided there",
+                    interval(&xma)
+                ),
+            },
+        });
+    }
+    let floor = match which {
+        WaveOutput::Displacement => Float::with_val(MAG_PREC, amp.abs_lower()),
+        WaveOutput::Gradient => gradient_scale(&amp.abs_lower(), &zeta.upper()),
+    };
+    crate::special::ziv_ball_inputs(prec, DEFAULT_GUARD_BITS, Some(&floor), |wp| {
+        let balls = [a, zeta, amp, x].map(|v| v.set_prec(wp));
+        let xma = if x_is_a { Ball::zero(wp) } else { balls[3].sub(&balls[0]) };
+        let xpa = balls[3].add(&balls[0]);
+        let at_edge = xma.is_exact() && xma.mid().is_zero();
+        let g = geometry_from_balls(&balls, xma, xpa, at_edge, wp)?;
+        let (u, du) = wave_bessel_geometry(&g, wp)?;
+        Ok(match which {
+            WaveOutput::Displacement => u,
+            WaveOutput::Gradient => du,
+        })
+    })
+}
+
+/// Certified `u_w(x)` over balls of inputs (Arb's convention): the result
+/// contains `u_w` at every point of the balls.
+///
+/// **Argument.** The Bessel form runs in ball arithmetic on the balls (`D`,
+/// `q`, `acosh(x/a)` are ball functions of the inputs); `J_n` at the ball `D`
+/// is its value at the midpoint widened by `rad(D)` (`|J_n'| <= 1`
+/// [DLMF 10.14.1]), and the tail bound uses the upper end of `D`, so every
+/// piece holds over the balls. **Edges**: `a <= 0` or `zeta <= 0` in a ball,
+/// and `x < a` anywhere in the balls (the contact edge `x = a` inside an
+/// inexact `x - a`): typed errors. `x = a` exactly (exact equal inputs) is the
+/// edge value `A (1 - cos D)`. Accuracy: `rad <= 2^-prec max(|u_w|, |A|)` when
+/// the inputs are tight enough (else the wider, enclosing ball).
+pub fn u_wave_ball_mp(a: &Ball, zeta: &Ball, amp: &Ball, x: &Ball, prec: u32) -> Result<Ball> {
+    wave_ball_mp(a, zeta, amp, Some(x), prec, WaveOutput::Displacement)
+}
+
+/// Certified `du_w/dx` over balls of inputs; as [`u_wave_ball_mp`], with the
+/// contact edge `x = a` inside the balls a typed error (the gradient is
+/// one-sided there; exact `x = a` gives the limit from `x > a`).
+/// Accuracy: `rad <= 2^-prec max(|du_w/dx|, 6 |A|/zeta)` when the inputs are tight enough.
+pub fn du_wave_ball_mp(a: &Ball, zeta: &Ball, amp: &Ball, x: &Ball, prec: u32) -> Result<Ball> {
+    wave_ball_mp(a, zeta, amp, Some(x), prec, WaveOutput::Gradient)
+}
+
+/// `u_w` at the contact edge `x = a` over balls of `a`, `zeta`, `amp`: the
+/// same number for `x` and `a` (as when both are typed as the same decimal),
+/// so the edge is not inside the balls. The value is `A (1 - cos D)`, here
+/// from the Bessel form at `x = a` exactly.
+pub fn u_wave_at_edge_ball_mp(a: &Ball, zeta: &Ball, amp: &Ball, prec: u32) -> Result<Ball> {
+    wave_ball_mp(a, zeta, amp, None, prec, WaveOutput::Displacement)
+}
+
+/// `du_w/dx` at the contact edge `x = a` (the limit from `x > a`) over balls
+/// of `a`, `zeta`, `amp`, with `x` the same number as `a`.
+pub fn du_wave_at_edge_ball_mp(a: &Ball, zeta: &Ball, amp: &Ball, prec: u32) -> Result<Ball> {
+    wave_ball_mp(a, zeta, amp, None, prec, WaveOutput::Gradient)
 }
 
 /// The natural scale of `du_w/dx`, `2 pi |A| / zeta` (a lower estimate is fine:

@@ -35,6 +35,10 @@
 //!   cancellation); otherwise the certified 64-bit value, rounded. Tolerance
 //!   `1e-14` relative.
 //!
+//! * Ball inputs ([`hyp1f2_ball_mp`]): the same series in ball arithmetic over
+//!   the input balls, tail bounded over the balls; a pole inside a `b` ball is
+//!   a typed error.
+//!
 //! Domain: finite real parameters with `b1, b2` not non-positive integers
 //! (unless the series terminates first), finite real `z`; `|z| <= 10^4` is tested.
 
@@ -167,6 +171,16 @@ pub fn hyp1f2_model_family(kmax: u32, s: &Ball, wp: u32) -> Result<Vec<Ball>> {
 /// Certified `1F2(a; b1, b2; z)` with `rad <= 2^-prec |mid|`.
 pub fn hyp1f2_mp(a: &Float, b1: &Float, b2: &Float, z: &Float, prec: u32) -> Result<Ball> {
     hyp_pfq_mp(std::slice::from_ref(a), &[b1.clone(), b2.clone()], z, prec)
+}
+
+/// Certified `1F2(a; b1, b2; z)` over balls of inputs (Arb's convention): the
+/// result contains the function at every point of the balls, and a pole
+/// (`b1` or `b2` a non-positive integer inside its ball) is a typed error.
+/// The series runs in ball arithmetic with a tail bound valid over the whole
+/// balls ([`crate::special::pfq::hyp_pfq_ball_mp`] has the argument). Exact
+/// inputs give [`hyp1f2_mp`]'s answer.
+pub fn hyp1f2_ball_mp(a: &Ball, b1: &Ball, b2: &Ball, z: &Ball, prec: u32) -> Result<Ball> {
+    crate::special::pfq::hyp_pfq_ball_mp(std::slice::from_ref(a), &[b1.clone(), b2.clone()], z, prec)
 }
 
 /// Largest relative bound the native f64 series may return (beyond it: MP).

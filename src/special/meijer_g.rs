@@ -462,6 +462,54 @@ pub fn meijer_g_k_mp(k: u32, y: &Float, prec: u32) -> Result<Ball> {
     ziv("meijer_g_k", prec, guard_bits(k, y.to_f64()), |wp| meijer_g_k_wp(k, y, wp))
 }
 
+/// Certified `G(k, y)` over a ball of `y` (Arb's convention): the result
+/// contains `G(k, t)` for every `t` in the ball.
+///
+/// **Argument.** The two sums ([`meijer_g_k_direct_ball`],
+/// [`meijer_g_k_near_one_ball`]) run in ball
+/// arithmetic on the ball `y` (or `w = 1 - y`), and their tail bounds use the
+/// ball's upper end of `y` (resp. `|w|`), so they enclose the function over the
+/// ball. `ln y` is a ball function. The edges are `y = 0` (the logarithmic
+/// singularity) and `y > 1` (outside the domain, `x < a`): a ball that reaches
+/// either is a typed error. A ball that reaches `y = 1` from below is summed by
+/// the near-one expansion, which is valid on `0 <= w < 1`. An exact `y` gives
+/// [`meijer_g_k_mp`]'s answer.
+pub fn meijer_g_k_ball_mp(k: u32, y: &Ball, prec: u32) -> Result<Ball> {
+    crate::error::check_prec(prec)?;
+    if !y.is_finite() {
+        return Err(Error::NonFinite { what: "y" });
+    }
+    if y.is_exact() {
+        return meijer_g_k_mp(k, y.mid(), prec);
+    }
+    validate(k, y.mid())?;
+    if !(y.lower() > 0) {
+        return Err(Error::Domain {
+            what: format!("y = 0 (the logarithmic singularity of G) lies within the input ball [{:e}, {:e}]", y.lower().to_f64(), y.upper().to_f64()),
+        });
+    }
+    if y.upper() > 1 {
+        return Err(Error::Domain {
+            what: format!(
+                "y > 1 lies within the input ball [{:e}, {:e}]: G(k, y) is defined for 0 < y <= 1 (x >= a)",
+                y.lower().to_f64(),
+                y.upper().to_f64()
+            ),
+        });
+    }
+    let yf = y.to_f64();
+    let near_one = matches!(choose_algorithm(k, yf), Algorithm::NearOne | Algorithm::AtOne);
+    crate::special::ziv_ball_inputs(prec, guard_bits(k, yf.min(1.0 - f64::EPSILON)), None, |wp| {
+        let consts = MeijerConstants::new(k, wp)?;
+        let yb = y.set_prec(wp);
+        if near_one {
+            meijer_g_k_near_one_ball(&consts, &Ball::one(wp).sub(&yb), wp)
+        } else {
+            meijer_g_k_direct_ball(&consts, &yb, wp)
+        }
+    })
+}
+
 /// Largest relative bound the native f64 path may return (beyond it: MP).
 pub const NATIVE_REL_TOL: f64 = 1e-14;
 

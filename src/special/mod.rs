@@ -109,6 +109,42 @@ where
     }
 }
 
+/// [`ziv_with_floor`] for inexact (ball) inputs, where raising the working
+/// precision cannot shrink the part of the radius that comes from the inputs.
+///
+/// Every ball `eval` returns must enclose the function over the whole input
+/// balls. It stops with the first result that meets `rad <= 2^-prec max(|mid|, floor)`;
+/// otherwise it raises the working precision as [`ziv`] does, and stops
+/// anyway (returning the wider, still enclosing ball) once a raise no longer
+/// halves the radius: the input radius dominates, and only tighter inputs help
+/// (see [`crate::ball::eval_at_decimals`]). At the working-precision cap it
+/// returns the last ball instead of an error for the same reason.
+pub(crate) fn ziv_ball_inputs<F>(prec: u32, guard: u32, floor: Option<&Float>, mut eval: F) -> Result<Ball>
+where
+    F: FnMut(u32) -> Result<Ball>,
+{
+    if !(2..=MAX_WORKING_PREC).contains(&prec) {
+        return Err(Error::Precision { requested: prec as u64 });
+    }
+    let mut guard = guard.max(8);
+    let mut previous: Option<Float> = None;
+    loop {
+        let wp = prec.saturating_add(guard).min(MAX_WORKING_PREC);
+        let b = eval(wp)?;
+        let meets = b.meets_rel(prec) || floor.is_some_and(|f| !f.is_zero() && b.meets_abs(prec, f));
+        let rad = b.rad();
+        let stalled = previous.as_ref().is_some_and(|p| rad.is_finite() && rad > Float::with_val(p.prec(), p / 2u32));
+        if meets || stalled || wp >= MAX_WORKING_PREC {
+            return Ok(b);
+        }
+        previous = Some(rad);
+        let achieved = b.rel_accuracy_bits();
+        let shortfall = if achieved.is_finite() { (prec as f64 - achieved).max(0.0) } else { wp as f64 };
+        let next = (guard as f64 + shortfall + 16.0).max(2.0 * guard as f64);
+        guard = next.min((MAX_WORKING_PREC - prec) as f64) as u32;
+    }
+}
+
 /// Runs the MP path for an f64 function and rounds the certified midpoint.
 pub(crate) fn f64_from_mp<F>(function: &'static str, guard: u32, eval: F) -> Result<f64>
 where

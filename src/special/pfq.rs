@@ -328,6 +328,83 @@ pub fn hyp_pfq_mp(a: &[Float], b: &[Float], z: &Float, prec: u32) -> Result<Ball
     })
 }
 
+/// Whether the ball contains the integer `-j` for some `0 <= j < limit`
+/// (`limit = None`: any non-positive integer).
+pub(crate) fn contains_pole(x: &Ball, limit: Option<u64>) -> Option<i64> {
+    let lo = x.lower();
+    if lo > 0 {
+        return None;
+    }
+    // the smallest integer >= lo; a pole -j needs -j <= upper and j < limit
+    let k = Float::with_val(lo.prec().max(64), lo.ceil_ref());
+    if k > 0 || k > x.upper() {
+        return None;
+    }
+    let j = (-k.to_f64()) as u64;
+    if limit.is_some_and(|d| j >= d) {
+        return None;
+    }
+    Some(-(j as i64))
+}
+
+/// Certified `pFq(a; b; z)` over balls of inputs (Arb's convention): the result
+/// contains the function at every point of the balls.
+///
+/// **Argument.** [`pfq_series`] runs in ball arithmetic and its tail bound uses
+/// the balls' upper ends of `|z|` and the numerators and the lower ends of the
+/// denominators, so it bounds the tail at every point of the balls; every term
+/// therefore encloses the term at every point, and so does the sum. Exact
+/// inputs go to [`hyp_pfq_mp`]. The inputs are rounded to the working precision
+/// first ([`Ball::set_prec`] adds the rounding to the radius). The working
+/// precision is raised while that still halves the radius
+/// ([`crate::special::ziv_ball_inputs`]); past that the input radius dominates
+/// and the (enclosing) ball is returned.
+///
+/// **Edges.** A denominator ball that contains a non-positive integer the
+/// series reaches (a pole) is a typed error that names it.
+pub fn hyp_pfq_ball_mp(a: &[Ball], b: &[Ball], z: &Ball, prec: u32) -> Result<Ball> {
+    crate::error::check_prec(prec)?;
+    if a.iter().chain(b.iter()).chain(std::iter::once(z)).any(|x| !x.is_finite()) {
+        return Err(Error::NonFinite { what: "hypergeometric argument" });
+    }
+    if a.iter().chain(b.iter()).chain(std::iter::once(z)).all(Ball::is_exact) {
+        let mids = |xs: &[Ball]| xs.iter().map(|x| x.mid().clone()).collect::<Vec<Float>>();
+        return hyp_pfq_mp(&mids(a), &mids(b), z.mid(), prec);
+    }
+    // The series terminates after `d` terms when a numerator is exactly -d.
+    let degree = a
+        .iter()
+        .filter(|x| x.is_exact_nonpositive_integer())
+        .map(|x| (-x.mid().to_f64()) as u64 + 1)
+        .min();
+    for (j, bj) in b.iter().enumerate() {
+        if let Some(pole) = contains_pole(bj, degree) {
+            return Err(Error::Domain {
+                what: format!(
+                    "a pole of {}F{} lies within the input ball: b{} = {pole} is inside [{:e}, {:e}]",
+                    a.len(),
+                    b.len(),
+                    j + 1,
+                    bj.lower().to_f64(),
+                    bj.upper().to_f64()
+                ),
+            });
+        }
+    }
+    let mut guard = DEFAULT_GUARD_BITS;
+    let af: Vec<f64> = a.iter().map(Ball::to_f64).collect();
+    let bf: Vec<f64> = b.iter().map(Ball::to_f64).collect();
+    if let Some((s, _, abs)) = pfq_f64(&af, &bf, z.to_f64()) {
+        if s != 0.0 && s.is_finite() && abs.is_finite() {
+            guard += (abs / s.abs()).log2().max(0.0) as u32;
+        }
+    }
+    crate::special::ziv_ball_inputs(prec, guard, None, |wp| {
+        let at = |xs: &[Ball]| xs.iter().map(|x| x.set_prec(wp)).collect::<Vec<Ball>>();
+        Ok(pfq_series(&at(a), &at(b), &z.set_prec(wp), wp)?.sum)
+    })
+}
+
 /// f64 `pFq(a; b; z)`: fast series when its error estimate is below
 /// [`F64_TRUST`], otherwise the rounded MP value.
 pub fn hyp_pfq(a: &[f64], b: &[f64], z: f64) -> Result<f64> {

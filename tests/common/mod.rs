@@ -125,3 +125,20 @@ pub fn save_report(function: &str, table: &str) {
     let _ = std::fs::create_dir_all(&dir);
     let _ = std::fs::write(dir.join(format!("{function}.md")), table);
 }
+
+/// Precision of the decimal-input reference checks (the tables carry 100 digits).
+pub const DECIMAL_REF_BITS: u32 = 400;
+
+/// `|mid - ref| <= rad + 1e-99 max(|ref|, scale)`: the ball contains a
+/// 100-digit reference of the decimal-input tables (`*_decimal.csv`), within its
+/// last digit; `scale` is the function's natural size where it may vanish.
+pub fn contains_decimal_ref(b: &Ball, r: &Float, scale: Option<&Float>) -> bool {
+    let p = DECIMAL_REF_BITS;
+    let diff = Float::with_val(p, b.mid() - r).abs();
+    let mut size = Float::with_val(p, r.abs_ref());
+    if let Some(s) = scale {
+        size = size.max(s);
+    }
+    let slack = size * Float::with_val(p, 1e-99);
+    diff <= Float::with_val(p, b.rad() + slack)
+}

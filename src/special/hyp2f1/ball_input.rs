@@ -61,12 +61,7 @@ fn domain(what: String) -> Error {
 
 /// Whether the ball contains an integer `<= 0`.
 fn contains_nonpositive_integer(x: &Ball) -> bool {
-    let lo = x.lower();
-    if lo > 0 {
-        return false;
-    }
-    let k = Float::with_val(lo.prec(), lo.ceil_ref());
-    k <= 0 && k <= x.upper()
+    crate::special::pfq::contains_pole(x, None).is_some()
 }
 
 /// `d` when the ball is exactly the non-positive integer `-d`.
