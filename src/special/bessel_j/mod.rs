@@ -7,7 +7,7 @@
 //! `J_0(0) = 1`, `J_n(0) = 0` for `n != 0` (exact).
 //!
 //! Methods, one file each, picked by [`choose_algorithm`] from f64 cost estimates
-//! (terms times working bits, weighted per method; the cheapest wins):
+//! (estimated CPU time from terms times working bits, per method; the cheapest wins):
 //!
 //! * **Power series** (`series.rs`) [DLMF 10.2.2]:
 //!   `J_n(x) = (x/2)^n / n! * 0F1(; n+1; -x^2/4)`, summed by the pFq core with its
@@ -22,8 +22,8 @@
 //!   beyond about `n^2/(wp + ...)`; see the file's method block.
 //! * **Three-term recurrence** (`three_term.rs`) for `n` and `x` both large:
 //!   forward from certified `J_0(x)`, `J_1(x)` while `k < x`, with an error
-//!   bound for the whole run from the modulus `M_k = (J_k^2 + Y_k^2)^{1/2}`
-//!   [DLMF 10.18, 10.9.30; Watson §13.74]; past the turning point (`n > x`)
+//!   bound for the whole run in the energy norm that the step preserves (as
+//!   in `native_recurrence.rs`); past the turning point (`n > x`)
 //!   the ratios `J_k/J_{k-1}` from the backward recurrence (their contraction
 //!   proves the bound). `max(n, x)` steps of three MPFR operations. It takes
 //!   `n ~ x` (J_10000(20000.5): 61 ms by Hankel before, a few ms now) and
@@ -99,26 +99,30 @@ pub(crate) struct Choice {
     pub algorithm: Algorithm,
     /// Initial guard bits (cancellation and phase reduction).
     pub guard: u32,
-    /// Estimated work: terms times working bits.
+    /// Estimated CPU time in ns (see the cost model constants).
     pub cost: f64,
 }
 
-// Cost model: the unit is one bit of one bare MPFR term operation (about 1 ns
-// on this machine's cores). Each method's work is its terms (or steps) times
-// its working bits plus a per-term overhead in equivalent bits, times a weight.
-// Calibrated on 2026-11-23 from one run of all three methods on the issue-13
-// points (in one process, ratios only): the power series costs ~1 ns per term
-// and bit, a recurrence step (three MPFR operations) ~1.5 ns per bit plus
-// ~150 bits of call overhead, and a term of Hankel's expansion (six ball
-// operations) ~4 ns per bit plus ~400 bits.
+// Cost model, in nanoseconds of CPU time on this machine's cores: each
+// method's terms (or steps) times its working bits plus a per-term overhead in
+// equivalent bits, times a per-method rate. Calibrated on 2026-11-23 from CPU
+// times (/proc/self/stat, 0.3 s per point) of all three methods at 36 points
+// (n, x from the issue-13 grid, wp 100/180/560); the model is within a factor
+// 2 of the measurement wherever two methods compete.
 
-/// Per-term overhead of the power series, in equivalent bits.
+/// Power series: ns per term and bit.
+const SERIES_NS_PER_TERM_BIT: f64 = 0.7;
+/// Power series: per-term overhead, in equivalent bits.
 const SERIES_TERM_OVERHEAD_BITS: f64 = 100.0;
-/// Weight of a term of Hankel's expansion against a power-series term.
-const HANKEL_WEIGHT: f64 = 4.0;
-/// Per-term overhead of Hankel's expansion, in equivalent bits.
+/// Power series: fixed cost (prefactor `(x/2)^n/n!`, Ziv bookkeeping), ns.
+const SERIES_FIXED_NS: f64 = 60_000.0;
+/// Hankel's expansion: ns per term and bit (six ball operations a term).
+const HANKEL_NS_PER_TERM_BIT: f64 = 0.8;
+/// Hankel's expansion: per-term overhead, in equivalent bits.
 const HANKEL_TERM_OVERHEAD_BITS: f64 = 400.0;
-/// Per-step overhead of the recurrence (`three_term::plan` counts 1.5 per step), in equivalent bits.
+/// Recurrence: ns per step and bit (`three_term::plan` counts 1.5 per step).
+const RECURRENCE_NS_PER_STEP_BIT: f64 = 0.23;
+/// Recurrence: per-step overhead, in equivalent bits.
 const RECURRENCE_STEP_OVERHEAD_BITS: f64 = 150.0;
 
 /// Bits the power series loses to cancellation, `log2(I_n(x) / |J_n(x)|)`
@@ -148,7 +152,7 @@ fn series_choice(n: u64, x: f64, wp: u32) -> Choice {
     let k_peak = ((nf * nf + x * x).sqrt() - nf) / 2.0;
     let loss = series_loss_bits(n, x);
     let terms = 2.0 * k_peak + 10.0 + wp as f64 / 8.0;
-    Choice { algorithm: Algorithm::PowerSeries, guard: (loss + 24.0).min(4.0e6) as u32, cost: terms * (wp as f64 + loss + SERIES_TERM_OVERHEAD_BITS) }
+    Choice { algorithm: Algorithm::PowerSeries, guard: (loss + 24.0).min(4.0e6) as u32, cost: SERIES_FIXED_NS + SERIES_NS_PER_TERM_BIT * terms * (wp as f64 + loss + SERIES_TERM_OVERHEAD_BITS) }
 }
 
 /// Hankel's choice, if its terms reach `2^-wp` before diverging: the peak term
@@ -156,7 +160,7 @@ fn series_choice(n: u64, x: f64, wp: u32) -> Choice {
 fn hankel_choice(n: u64, x: f64, wp: u32) -> Option<Choice> {
     let plan = hankel::plan(n, x, wp)?;
     let guard = plan.peak_bits + (x + n as f64).log2().max(0.0) + 16.0;
-    let cost = HANKEL_WEIGHT * plan.terms as f64 * (wp as f64 + guard + HANKEL_TERM_OVERHEAD_BITS);
+    let cost = HANKEL_NS_PER_TERM_BIT * plan.terms as f64 * (wp as f64 + guard + HANKEL_TERM_OVERHEAD_BITS);
     Some(Choice { algorithm: Algorithm::Hankel, guard: guard.min(4.0e6) as u32, cost })
 }
 
@@ -168,7 +172,7 @@ fn recurrence_choice(n: u64, x: f64, wp: u32) -> Option<Choice> {
     }
     let (steps, guard) = three_term::plan(n, x, wp);
     let start = choose(0, x, wp + guard as u32).cost + choose(1, x, wp + guard as u32).cost;
-    let cost = steps * (wp as f64 + guard + RECURRENCE_STEP_OVERHEAD_BITS) + start;
+    let cost = RECURRENCE_NS_PER_STEP_BIT * steps * (wp as f64 + guard + RECURRENCE_STEP_OVERHEAD_BITS) + start;
     Some(Choice { algorithm: Algorithm::Recurrence, guard: guard.min(4.0e6) as u32, cost })
 }
 
@@ -292,7 +296,7 @@ pub(crate) fn bessel_j_ball(n: i64, x: &Float, prec: u32) -> Result<Ball> {
     Ok(if negate { b.neg() } else { b })
 }
 
-/// Cost (the chooser's units, about 1 ns each on one core)
+/// Cost (the chooser's estimate in ns of CPU time)
 /// past which a call is refused as a time limit (about a minute of work).
 pub const MAX_COST: f64 = 6.0e10;
 

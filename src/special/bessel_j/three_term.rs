@@ -6,42 +6,39 @@
 //!
 //! # Forward part, `1 <= k < x` (the oscillatory region)
 //!
-//! `y_{k+1} = (2k/x) y_k - y_{k-1}` [DLMF 10.6.1] is solved by `J_k(x)` and
-//! `Y_k(x)`. Computed in floating point, the midpoints satisfy it up to a local
-//! error `delta_k` at each step, and `e_k = y~_k - J_k` obeys the same
-//! recurrence forced by `delta_k`. The response at `n` to a unit error entered
-//! at `k + 1` is `G(n, k) = (pi x / 2) (Y_k J_n - J_k Y_n)` (it solves the
-//! recurrence with `G(k, k) = 0`, `G(k+1, k) = 1`, by the cross product
-//! `J_{k+1} Y_k - J_k Y_{k+1} = 2 / (pi x)` [DLMF 10.5.4]). With the modulus
-//! `M_k = (J_k^2 + Y_k^2)^{1/2}` [DLMF 10.18.6], Cauchy-Schwarz gives
-//! `|G(n, k)| <= (pi x / 2) M_k M_n`, so
+//! `y_{k+1} = c_k y_k - y_{k-1}`, `c_k = 2k/x` [DLMF 10.6.1], is solved by
+//! `J_k(x)` and `Y_k(x)`. Computed in floating point, the midpoints satisfy it
+//! up to a local error `delta_k`, and the errors `e_k = y~_k - J_k` obey the
+//! same recurrence forced by `delta_k`. Bounding `|e_k|` by absolute values
+//! would grow like a Fibonacci sequence (`~e^{0.47 x}` at `n = x`); instead the
+//! pair `(e_{k+1}, e_k)` is measured in the energy norm
+//! `||(a, b)||_c = (a^2 - c a b + b^2)^{1/2}` (`0 <= c < 2`), the same argument
+//! as the double-double path (`native_recurrence.rs`):
 //!
-//! `|y~_n - J_n| <= (pi x / 2) M_n (M_0 |e_1| + M_1 |e_0| + sum_{k=1}^{n-1} M_k |delta_k|)`.
-//!
-//! Bounds for the modulus:
-//! * `M_0(x) <= M_1(x)`: Nicholson's integral
-//!   `M_nu^2(x) = (8/pi^2) int_0^inf K_0(2x sinh t) cosh(2 nu t) dt` [DLMF 10.9.30]
-//!   increases with `nu` (`K_0 > 0`).
-//! * for `nu >= 1/2` and `x > nu`, `(x^2 - nu^2)^{1/2} M_nu^2(x)` increases to its
-//!   limit `2/pi` [Watson (1944) §13.74; the limit is DLMF 10.18.17], so
-//!   `M_nu^2(x) <= 2 / (pi (x^2 - nu^2)^{1/2})`. (Checked over `nu` in
-//!   `[1/2, 60]`, `x/nu` in `(1, 70)` with mpmath; see `reference/check_modulus.py`.)
-//!
-//! So with `Q_k = (x^2 - k^2)^{-1/4}`: `(pi x/2) M_n M_k <= x Q_n Q_k`, and
-//! `Q_k <= Q_{n-1}` for `k <= n - 1`.
+//! * the step matrix `[[c_k, -1], [1, 0]]` preserves `a^2 - c_k a b + b^2`
+//!   (expand), so a step adds only `|delta_k|` to the norm;
+//! * `|a b| <= Q_c / (2 - c)` (from `a^2 + b^2 >= 2|ab|`), so going from `c_k`
+//!   to `c_{k+1} = c_k + 2/x` multiplies the norm by at most
+//!   `(1 + 1/(x - k))^{1/2}`; over `k = 1..t-2` the product is at most
+//!   `exp(1/2 sum 1/(x - k)) <= ((x - 1)/(x - t + 1))^{1/2}` (the sum is below
+//!   `int_1^{t-1} ds/(x - s)`, the summand increasing);
+//! * at the start `||(e_1, e_0)||_{c_1} <= |e_0| + |e_1|`, and at the end
+//!   `Q_c(a, b) >= (1 - c^2/4) max(a^2, b^2)` with `c = c_{t-1}`, i.e. a factor
+//!   `x / (x^2 - (t-1)^2)^{1/2}`.
 //!
 //! **Local errors.** With `u = 2^-wp` (round to nearest) and `c~ = fl(2/x)`
 //! (`|c~ - 2/x| <= u 2/x`), one step computes
 //! `y~_{k+1} = fl(fl(fl(y~_k k) c~) - y~_{k-1})`, so
 //! `|delta_k| <= (2k/x) |y~_k| ((1+u)^3 - 1) + u |y~_{k+1}| / (1 - u) <= 7.1 u 2^E`
-//! for `k < x`, where `2^E` bounds every `|y~_k|` (tracked by exponent). Hence
+//! for `k < x`, where `2^E` bounds every `|y~_k|` (tracked by exponent). Hence,
+//! for `2 <= t < x` and both `i = t - 1, t`,
 //!
-//! `|y~_n - J_n| <= x Q_n (Q_1 (|e_0| + |e_1|) + (n - 1) Q_{n-1} 7.1 u 2^E)`.
+//! `|y~_i - J_i| <= (|e_0| + |e_1| + (t - 1) 7.1 u 2^E) x (x - 1)^{1/2} / ((x - t + 1) (x + t - 1)^{1/2})`.
 //!
 //! `J_0`, `J_1` come from the other methods of [`super`] (Hankel's expansion
-//! for large `x`). The bound grows like `x n / (x^2 - n^2)^{1/2}` against
-//! `|J_n| ~ M_n`: a few dozen bits, paid as guard bits; near a zero of `J_n`
-//! the Ziv loop of [`super`] adds more.
+//! for large `x`). Against `|J_t| ~ (x^2 - t^2)^{-1/4}` the bound costs about
+//! `log2(t x / (x - t))` bits, paid as guard bits; near a zero of `J_n` the Ziv
+//! loop of [`super`] adds more.
 //!
 //! # Past the turning point, `n >= x`
 //!
@@ -86,19 +83,22 @@ use crate::error::{Error, Result};
 /// Most steps the backward ratio recurrence may run past `n` before giving up.
 const MAX_RATIO_STEPS: u64 = 50_000_000;
 
-/// `(x^2 - k^2)^{-1/4}` rounded up, for exact `x > k >= 0`.
-fn inv_quarter_root_up(x: &Float, k: u64) -> Mag {
-    // x - k and x + k are exact at prec(x) + 80 bits (|k| < 2^64 <= x's scale + 80 bits).
+/// Upper bound of `x (x - 1)^{1/2} / ((x - t + 1) (x + t - 1)^{1/2})` for exact `x > t >= 2`:
+/// the energy norm's growth and its conversion back to one component.
+fn forward_growth_up(x: &Float, t: u64) -> Mag {
+    // x - 1, x - t + 1 and x + t - 1 are exact at prec(x) + 80 bits (t < 2^64 <= x's scale + 80 bits).
     let p = x.prec() + 80;
-    let a = Float::with_val(p, x - k);
-    let b = Float::with_val(p, x + k);
-    let d = Float::with_val_round(64, &a * &b, Round::Down).0;
-    if d <= 0 {
+    let xm1 = Float::with_val(p, x - 1u32);
+    let lo = Float::with_val(p, x - (t - 1));
+    let hi = Float::with_val(p, x + (t - 1));
+    if lo <= 0 {
         return Mag::inf();
     }
-    let s = Float::with_val_round(64, d.sqrt_ref(), Round::Down).0;
-    let q = Float::with_val_round(64, s.sqrt_ref(), Round::Down).0;
-    let r = Float::with_val_round(64, q.recip_ref(), Round::Up).0;
+    let s_up = Float::with_val_round(64, xm1.sqrt_ref(), Round::Up).0;
+    let num = Float::with_val_round(64, x * &s_up, Round::Up).0;
+    let s_dn = Float::with_val_round(64, hi.sqrt_ref(), Round::Down).0;
+    let den = Float::with_val_round(64, &lo * &s_dn, Round::Down).0;
+    let r = Float::with_val_round(64, &num / &den, Round::Up).0;
     Mag::from_float_up(&r)
 }
 
@@ -121,24 +121,11 @@ fn forward_pair(t: u64, x: &Float, j0: &Ball, j1: &Ball, wp: u32) -> Result<(Bal
         std::mem::swap(&mut a, &mut b);
         std::mem::swap(&mut b, &mut s);
     }
-    // a = y~_{t-1}, b = y~_t
-    let init = j0.rad_mag().add(j1.rad_mag());
+    // a = y~_{t-1}, b = y~_t; one bound for both (energy norm, module docs)
     let local = Mag::from_f64(7.1).mul(Mag::pow2(emax - wp as i64)); // 7.1 u 2^E
-    let x_up = Mag::from_float_up(x);
-    let q1 = inv_quarter_root_up(x, 1);
-    let bound = |i: u64| -> Mag {
-        if i == 0 {
-            return j0.rad_mag();
-        }
-        if i == 1 {
-            return j1.rad_mag();
-        }
-        let qi = inv_quarter_root_up(x, i);
-        let qprev = inv_quarter_root_up(x, i - 1);
-        let steps = Mag::from_f64((i - 1) as f64);
-        x_up.mul(qi).mul(q1.mul(init).add(steps.mul(qprev).mul(local)))
-    };
-    Ok((Ball::with_mag(a, bound(t - 1)), Ball::with_mag(b, bound(t))))
+    let norm = j0.rad_mag().add(j1.rad_mag()).add(Mag::from_f64((t - 1) as f64).mul(local));
+    let bound = norm.mul(forward_growth_up(x, t));
+    Ok((Ball::with_mag(a, bound), Ball::with_mag(b, bound)))
 }
 
 /// Exponent `e` with `|v| < 2^e` (`i64::MIN / 4` for zero).
@@ -255,9 +242,9 @@ pub(crate) fn plan(n: u64, x: f64, wp: u32) -> (f64, f64) {
     let nf = n as f64;
     let m = (x.ceil() - 1.0).max(1.0);
     let top = nf.min(m);
-    // x t / (x^2 - t^2)^{1/2} against |J_t| ~ (x^2 - t^2)^{-1/4}, plus slack
-    let sep = ((x - top) * (x + top)).max(1.0);
-    let mut guard = (20.0 * x * top / sep.sqrt()).log2().max(0.0) + 12.0;
+    // the bound's growth t x / (x - t) against |J_t| ~ (x^2 - t^2)^{-1/4}, plus slack
+    let gap = (x - top + 1.0).max(1.0);
+    let mut guard = (9.0 * x * top / gap * ((x - top) * (x + top)).max(1.0).powf(0.25) * (x / (x + top)).sqrt()).log2().max(0.0) + 12.0;
     let mut steps = top * 1.5;
     if nf > m {
         // backward part: the walk past n until prod R_j^2 < 2^-wp, then down to m + 1
@@ -278,12 +265,12 @@ mod tests {
     use super::*;
 
     #[test]
-    fn quarter_root_is_an_upper_bound() {
+    fn growth_factor_is_an_upper_bound() {
         let x = Float::with_val(53, 20000.5);
-        let q = inv_quarter_root_up(&x, 10000).to_f64_up();
-        let exact = ((20000.5f64 * 20000.5 - 1e8) as f64).powf(-0.25);
-        assert!(q >= exact && q <= exact * (1.0 + 1e-15), "{q} vs {exact}");
-        assert!(!inv_quarter_root_up(&x, 20001).is_finite());
+        let g = forward_growth_up(&x, 10000).to_f64_up();
+        let exact = 20000.5 * 19999.5f64.sqrt() / (10001.5 * 29999.5f64.sqrt());
+        assert!(g >= exact && g <= exact * (1.0 + 1e-15), "{g} vs {exact}");
+        assert!(!forward_growth_up(&Float::with_val(53, 100.0), 101).is_finite());
     }
 
     #[test]
