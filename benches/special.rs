@@ -5,7 +5,11 @@
 //! * `hyp1f2(1/2; k+1, k+3/2; -300)` at 128 bits (the Eq. 12 factor at abar = 6,
 //!   beta = 9/8 is about -280);
 //! * `hyp2f1(1, k+1/2; k+2; y)` at 128 bits near and at y = 1;
-//! * `bessel_j` MP and f64.
+//! * `bessel_j` MP and f64;
+//! * `bessel_j_large`: `bessel_j_mp` over the issue-13 grid (n in {0, 1, 7, 60,
+//!   500, 2000, 10000} x x in {0.001, ..., 1000000.5}) and J_500(30000),
+//!   J_-1200(50000.25), at 53, 128 and 512 bits, one id per point (targets:
+//!   2 ms at 53 and 128 bits, 10 ms at 512).
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use maugis::special::{bessel_j, exact, hyp1f2, hyp2f1, meijer_g};
@@ -178,9 +182,29 @@ fn bench_bessel(c: &mut Criterion) {
     g.finish();
 }
 
+/// The issue-13 grid (the same points as `examples/bessel_grid.rs`).
+const GRID_ORDERS: [i64; 7] = [0, 1, 7, 60, 500, 2000, 10000];
+const GRID_ARGS: [f64; 9] = [0.001, 1.5, 30.25, 150.5, 999.5, 5000.25, 20000.5, 99999.5, 1000000.5];
+const GRID_EXTRA: [(i64, f64); 2] = [(500, 30000.0), (-1200, 50000.25)];
+
+fn bench_bessel_large(c: &mut Criterion) {
+    let mut g = c.benchmark_group("bessel_j_large");
+    g.sample_size(10).warm_up_time(std::time::Duration::from_millis(100)).measurement_time(std::time::Duration::from_millis(400));
+    for prec in [53u32, 128, 512] {
+        let points = GRID_ORDERS.iter().flat_map(|&n| GRID_ARGS.iter().map(move |&x| (n, x))).chain(GRID_EXTRA);
+        for (n, x) in points {
+            let xe = exact(x);
+            g.bench_with_input(BenchmarkId::new(format!("prec={prec}"), format!("n={n},x={x}")), &(n, x), |b, _| {
+                b.iter(|| bessel_j::bessel_j_mp(black_box(n), &xe, prec).unwrap())
+            });
+        }
+    }
+    g.finish();
+}
+
 criterion_group! {
     name = benches;
     config = Criterion::default().sample_size(20).warm_up_time(std::time::Duration::from_millis(300)).measurement_time(std::time::Duration::from_secs(1));
-    targets = bench_meijer, bench_hyp1f2, bench_hyp1f2_domain, bench_meijer_domain, bench_hyp2f1, bench_hyp2f1_f64, bench_bessel
+    targets = bench_meijer, bench_hyp1f2, bench_hyp1f2_domain, bench_meijer_domain, bench_hyp2f1, bench_hyp2f1_f64, bench_bessel, bench_bessel_large
 }
 criterion_main!(benches);

@@ -28,8 +28,9 @@
 //!
 //! **Local errors.** With `u = 2^-wp` (round to nearest) and `c~ = fl(2/x)`
 //! (`|c~ - 2/x| <= u 2/x`), one step computes
-//! `y~_{k+1} = fl(fl(fl(y~_k k) c~) - y~_{k-1})`, so
-//! `|delta_k| <= (2k/x) |y~_k| ((1+u)^3 - 1) + u |y~_{k+1}| / (1 - u) <= 7.1 u 2^E`
+//! `y~_{k+1} = fl(t~_k y~_k - y~_{k-1})` with one rounding (`mpfr_fms`) and
+//! `t~_k = fl(k c~) = (2k/x)(1 + phi)`, `|phi| <= (1+u)^2 - 1 <= 2.01u`, so
+//! `|delta_k| <= (2k/x) |y~_k| 2.01u + u |y~_{k+1}| / (1 - u) <= 7.1 u 2^E`
 //! for `k < x`, where `2^E` bounds every `|y~_k|` (tracked by exponent). Hence,
 //! for `2 <= t < x` and both `i = t - 1, t`,
 //!
@@ -58,11 +59,11 @@
 //! (decreasing in `k`).
 //!
 //! The ratios are not divided out: the backward recurrence
-//! `y~_{k-1} = fl(fl(fl(y~_k k) c~) - y~_{k+1})` runs on bare midpoints from
+//! `y~_{k-1} = fl(fl(k c~) y~_k - y~_{k+1})` runs on bare midpoints from
 //! `y~_{N+1} = 0`, `y~_N = 1`, and `r~_k = y~_k / y~_{k-1}` (exact quotients of
 //! the computed numbers) telescope: `prod_{k=m+2}^n r~_k = y~_n / y~_{m+1}`.
 //! Dividing a step by `y~_k`: `1/r~_k = ((2k/x)(1 + phi) - r~_{k+1})(1 + theta)`,
-//! `|phi| <= 3.01u`, `|theta| <= u`; as `2k/(2k - x r) <= 2` for `k >= x`,
+//! `|phi| <= 2.01u`, `|theta| <= u`; as `2k/(2k - x r) <= 2` for `k >= x`,
 //! `r~_k = x/(2k - x r~_{k+1}) (1 + eta)` with `|eta| <= 7.1u`, and `r~_k` stays
 //! in `(0, 1)`. So `eps_k = |r~_k - rho_k| <= C_k + 7.1u / (1 - R_k^2)`
 //! (`eps_{N+1} <= 1`), `C_k = prod_{j=k}^N R_j^2 <= C_n` for `k <= n`. A factor's
@@ -112,11 +113,11 @@ fn forward_pair(t: u64, x: &Float, j0: &Ball, j1: &Ball, wp: u32) -> Result<(Bal
     let mut a = Float::with_val(wp.max(j0.prec()), j0.mid());
     let mut b = Float::with_val(wp.max(j1.prec()), j1.mid());
     let mut s = Float::new(wp);
+    let mut ck = Float::new(wp); // fl(k c~)
     let mut emax = exp_of(&a).max(exp_of(&b));
     for k in 1..t {
-        s.assign(&b * k);
-        s *= &c;
-        s -= &a;
+        ck.assign(&c * k);
+        s.assign(b.mul_sub_ref(&ck, &a)); // one rounding (mpfr_fms)
         emax = emax.max(exp_of(&s));
         std::mem::swap(&mut a, &mut b);
         std::mem::swap(&mut b, &mut s);
@@ -189,6 +190,7 @@ fn ratio_product(n: u64, m: u64, x: &Float, wp: u32) -> Result<Ball> {
     let mut a = Float::with_val(wp, 0); // y~_{k+1}
     let mut b = Float::with_val(wp, 1); // y~_k
     let mut s = Float::new(wp);
+    let mut ck = Float::new(wp); // fl(k c~)
     let mut y_n = Float::new(wp);
     // sum over the product's range of (2k/x) / (1 - R_k^2) = (2k - x)^2 / (2x (k - x))
     let mut amp_sum = 0.0f64;
@@ -204,10 +206,9 @@ fn ratio_product(n: u64, m: u64, x: &Float, wp: u32) -> Result<Ball> {
         if k == m + 1 {
             break;
         }
-        // y~_{k-1} = fl(fl(fl(y~_k k) c~) - y~_{k+1})
-        s.assign(&b * k);
-        s *= &c;
-        s -= &a;
+        // y~_{k-1} = fl(fl(k c~) y~_k - y~_{k+1})
+        ck.assign(&c * k);
+        s.assign(b.mul_sub_ref(&ck, &a)); // one rounding (mpfr_fms)
         std::mem::swap(&mut a, &mut b);
         std::mem::swap(&mut b, &mut s);
         k -= 1;
