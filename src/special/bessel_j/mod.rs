@@ -125,6 +125,18 @@ const RECURRENCE_NS_PER_STEP_BIT: f64 = 0.23;
 /// Recurrence: per-step overhead, in equivalent bits.
 const RECURRENCE_STEP_OVERHEAD_BITS: f64 = 150.0;
 
+/// Above this many bits a full MPFR multiplication costs more than linear time
+/// (GMP's Toom-Cook range).
+const LINEAR_MUL_BITS: f64 = 2048.0;
+
+/// Equivalent bits of one operation at `bits` working bits plus a per-call
+/// `overhead`: linear up to [`LINEAR_MUL_BITS`], then `bits^1.6` (the
+/// multiplications' Toom-Cook growth; most terms hold one full product).
+fn op_bits(bits: f64, overhead: f64) -> f64 {
+    let growth = (bits / LINEAR_MUL_BITS).max(1.0).powf(0.6);
+    bits * growth + overhead
+}
+
 /// Bits the power series loses to cancellation, `log2(I_n(x) / |J_n(x)|)`
 /// (the sum of |terms| is `I_n(x)` up to the common prefactor), from the
 /// exponential factors of Debye's expansions [DLMF 10.41.3, 10.19.3]:
@@ -152,7 +164,7 @@ fn series_choice(n: u64, x: f64, wp: u32) -> Choice {
     let k_peak = ((nf * nf + x * x).sqrt() - nf) / 2.0;
     let loss = series_loss_bits(n, x);
     let terms = 2.0 * k_peak + 10.0 + wp as f64 / 8.0;
-    Choice { algorithm: Algorithm::PowerSeries, guard: (loss + 24.0).min(4.0e6) as u32, cost: SERIES_FIXED_NS + SERIES_NS_PER_TERM_BIT * terms * (wp as f64 + loss + SERIES_TERM_OVERHEAD_BITS) }
+    Choice { algorithm: Algorithm::PowerSeries, guard: (loss + 24.0).min(4.0e6) as u32, cost: SERIES_FIXED_NS + SERIES_NS_PER_TERM_BIT * terms * op_bits(wp as f64 + loss, SERIES_TERM_OVERHEAD_BITS) }
 }
 
 /// Hankel's choice, if its terms reach `2^-wp` before diverging: the peak term
@@ -160,7 +172,7 @@ fn series_choice(n: u64, x: f64, wp: u32) -> Choice {
 fn hankel_choice(n: u64, x: f64, wp: u32) -> Option<Choice> {
     let plan = hankel::plan(n, x, wp)?;
     let guard = plan.peak_bits + (x + n as f64).log2().max(0.0) + 16.0;
-    let cost = HANKEL_NS_PER_TERM_BIT * plan.terms as f64 * (wp as f64 + guard + HANKEL_TERM_OVERHEAD_BITS);
+    let cost = HANKEL_NS_PER_TERM_BIT * plan.terms as f64 * op_bits(wp as f64 + guard, HANKEL_TERM_OVERHEAD_BITS);
     Some(Choice { algorithm: Algorithm::Hankel, guard: guard.min(4.0e6) as u32, cost })
 }
 
@@ -172,7 +184,7 @@ fn recurrence_choice(n: u64, x: f64, wp: u32) -> Option<Choice> {
     }
     let (steps, guard) = three_term::plan(n, x, wp);
     let start = choose(0, x, wp + guard as u32).cost + choose(1, x, wp + guard as u32).cost;
-    let cost = RECURRENCE_NS_PER_STEP_BIT * steps * (wp as f64 + guard + RECURRENCE_STEP_OVERHEAD_BITS) + start;
+    let cost = RECURRENCE_NS_PER_STEP_BIT * steps * op_bits(wp as f64 + guard, RECURRENCE_STEP_OVERHEAD_BITS) + start;
     Some(Choice { algorithm: Algorithm::Recurrence, guard: guard.min(4.0e6) as u32, cost })
 }
 
