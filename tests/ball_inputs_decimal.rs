@@ -10,9 +10,10 @@
 
 mod common;
 
-use maugis::ball::{eval_at_decimals, eval_at_decimals_with_floor, Decimal};
+use maugis::ball::{eval_at_decimals, Decimal};
 use maugis::contact::displacement::{
     du_wave_at_edge_ball_mp, du_wave_ball_mp, du_wave_mp, u_wave_at_edge_ball_mp, u_wave_ball_mp, u_wave_mp,
+    wave_at_decimals,
 };
 use maugis::special::hyp1f2::{hyp1f2_ball_mp, hyp1f2_mp};
 use maugis::special::meijer_g::{meijer_g_k_ball_mp, meijer_g_k_mp};
@@ -46,18 +47,8 @@ fn at_decimals(fname: &str, args: &[&str], prec: u32) -> (Result<Ball>, Option<F
             (eval_at_decimals(&d[1..], prec, |x| meijer_g_k_ball_mp(k, &x[0], prec)), None)
         }
         "u_wave" | "du_wave" => {
-            let floor = wave_floor(fname, &d);
-            let gradient = fname == "du_wave";
-            let edge = d[3] == d[0];
-            let r = eval_at_decimals_with_floor(if edge { &d[..3] } else { &d }, prec, Some(&floor), |x| {
-                match (gradient, edge) {
-                    (false, true) => u_wave_at_edge_ball_mp(&x[0], &x[1], &x[2], prec),
-                    (false, false) => u_wave_ball_mp(&x[0], &x[1], &x[2], &x[3], prec),
-                    (true, true) => du_wave_at_edge_ball_mp(&x[0], &x[1], &x[2], prec),
-                    (true, false) => du_wave_ball_mp(&x[0], &x[1], &x[2], &x[3], prec),
-                }
-            });
-            (r, Some(floor))
+            let d: [Decimal; 4] = d.try_into().expect("four wave arguments");
+            (wave_at_decimals(&d, prec, fname == "du_wave"), Some(wave_floor(fname, &d)))
         }
         other => panic!("unknown fn {other}"),
     }

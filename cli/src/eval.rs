@@ -40,7 +40,7 @@ use std::io::{BufRead, Write};
 
 use maugis::contact::{displacement, wave_quadrature};
 use maugis::special::{bessel_j, hyp1f2, hyp2f1, meijer_g};
-use maugis::ball::{eval_at_decimals, eval_at_decimals_with_floor, Decimal};
+use maugis::ball::{eval_at_decimals, Decimal};
 use maugis::{Ball, Error, MAX_PREC};
 use rug::Float;
 use serde_json::{json, Map, Value};
@@ -228,22 +228,11 @@ fn wave_mp(obj: &Map<String, Value>, p: u32) -> Req<(Float, Float, Float, Float)
     Ok((arg_float(obj, "a", p)?, arg_float(obj, "zeta", p)?, arg_float(obj, "amp", p)?, arg_float(obj, "x", p)?))
 }
 
-/// `u_w` (or `du_w/dx` when `gradient`) on the ball contract. The accuracy
-/// floor is the function's natural scale, `|A|` (or `6 |A| / zeta`): `u_w`
-/// vanishes where `a/zeta` is an integer. `x` typed as the same number as `a`
-/// is the edge itself, not a ball around it.
+/// `u_w` (or `du_w/dx` when `gradient`) on the ball contract
+/// ([`displacement::wave_at_decimals`]).
 fn wave_ball(obj: &Map<String, Value>, p: u32, gradient: bool) -> Req<Ball> {
     let args = [arg_decimal(obj, "a")?, arg_decimal(obj, "zeta")?, arg_decimal(obj, "amp")?, arg_decimal(obj, "x")?];
-    let amp = Float::with_val(64, args[2].as_rational()).abs();
-    let floor = if gradient { amp * 6u32 / Float::with_val(64, args[1].as_rational()) } else { amp };
-    let edge = args[3] == args[0];
-    let b = eval_at_decimals_with_floor(if edge { &args[..3] } else { &args }, p, Some(&floor), |v| match (gradient, edge) {
-        (false, true) => displacement::u_wave_at_edge_ball_mp(&v[0], &v[1], &v[2], p),
-        (false, false) => displacement::u_wave_ball_mp(&v[0], &v[1], &v[2], &v[3], p),
-        (true, true) => displacement::du_wave_at_edge_ball_mp(&v[0], &v[1], &v[2], p),
-        (true, false) => displacement::du_wave_ball_mp(&v[0], &v[1], &v[2], &v[3], p),
-    })?;
-    Ok(b)
+    Ok(displacement::wave_at_decimals(&args, p, gradient)?)
 }
 
 /// The contact-model functions (displacements).

@@ -13,8 +13,11 @@ over the flat result with the GIL released (in parallel on rayon's pool from
   (``output="mpf"``, exact binary values) or decimal strings
   (``output="str"``; the decimal radius also covers the decimal rounding of
   ``mid``). Arguments may then be floats and ints (taken exactly),
-  ``mpmath.mpf`` (exactly) or decimal strings (rounded to ``prec + 64`` bits,
-  as ``maugis eval`` does).
+  ``mpmath.mpf`` (exactly) or decimal strings. A decimal string is a ball
+  that contains the decimal as typed (Arb's convention, as in ``maugis eval``),
+  so the answer contains the function at the decimal, not at a binary
+  neighbour; an edge inside the input (a pole, ``c - a - b = 0`` at ``z = 1``,
+  the contact edge) raises ``ValueError`` naming it.
 
 Bad input -- NaN, infinity, an argument out of the function's domain -- raises
 ``ValueError`` with the library's message and the arguments of the first

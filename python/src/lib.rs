@@ -8,7 +8,8 @@
 //! * f64 loops release the GIL ([`Python::detach`]) and run on rayon's pool
 //!   once an array has [`PARALLEL_MIN_LEN`] elements.
 //! * Arbitrary precision ([`eval_mp`]) takes exact binary inputs (`man * 2^exp`)
-//!   or decimal strings, and returns each certified ball either as exact binary
+//!   or decimal strings (each a ball that contains the decimal as typed, as in
+//!   `maugis eval`), and returns each certified ball either as exact binary
 //!   pairs (for `mpmath.mpf`) or as decimal strings whose radius still encloses.
 //! * Every library [`maugis::Error`] becomes a Python `ValueError` carrying the
 //!   library's message and the arguments of the element that failed.
@@ -23,14 +24,15 @@ use maugis::contact::curve::{self, load_area_curve, CurveOptions};
 use maugis::contact::summary::{CurveSummary, RunParams, RunSummary};
 use maugis::contact::sweep::{run_sweep, SweepGrid};
 use maugis::contact::displacement::{
-    du_wave, du_wave_bounded, du_wave_mp, profile_depth, u_wave, u_wave_bounded, u_wave_mp,
+    du_wave, du_wave_bounded, profile_depth, u_wave, u_wave_bounded, wave_at_decimals,
 };
 use maugis::contact::model::{ContactSize, Params, Validity};
-use maugis::rug::{Float, Integer};
-use maugis::special::bessel_j::{bessel_j, bessel_j_bounded, bessel_j_mp};
-use maugis::special::hyp1f2::{hyp1f2, hyp1f2_bounded, hyp1f2_mp};
-use maugis::special::hyp2f1::{hyp2f1, hyp2f1_bounded, hyp2f1_mp};
-use maugis::special::meijer_g::{meijer_g_k, meijer_g_k_bounded, meijer_g_k_mp};
+use maugis::ball::{eval_at_decimals, Decimal};
+use maugis::rug::{Float, Integer, Rational};
+use maugis::special::bessel_j::{bessel_j, bessel_j_ball_mp, bessel_j_bounded};
+use maugis::special::hyp1f2::{hyp1f2, hyp1f2_ball_mp, hyp1f2_bounded};
+use maugis::special::hyp2f1::{hyp2f1, hyp2f1_ball_mp, hyp2f1_bounded};
+use maugis::special::meijer_g::{meijer_g_k, meijer_g_k_ball_mp, meijer_g_k_bounded};
 use maugis::{Ball, Bounded, Error};
 
 /// Arrays shorter than this are evaluated on the calling thread: below it,
@@ -181,8 +183,10 @@ fn meijer_g_k_f64<'py>(py: Python<'py>, k: PyReadonlyArray1<'py, i64>, y: PyRead
 
 // ---------------------------------------------------------------- arbitrary precision
 
-/// One MP argument as Python sends it: exact `man * 2^exp`, or a decimal string
-/// (rounded to `prec + 64` bits, as `maugis eval` does).
+/// One MP argument as Python sends it: exact `man * 2^exp`, or a decimal string.
+/// Both become a [`Decimal`] (Arb's convention, as in `maugis eval`): the
+/// certified ball contains the function at the number given, an exact binary
+/// value or the decimal as typed.
 #[derive(Clone, Debug)]
 enum MpArg {
     Exact { man: String, exp: i64 },
@@ -201,17 +205,28 @@ impl<'a, 'py> FromPyObject<'a, 'py> for MpArg {
 }
 
 impl MpArg {
-    fn to_float(&self, what: &'static str, prec: u32) -> maugis::Result<Float> {
-        let bad = || Error::Domain { what: format!("{what} = {self} is not a number") };
-        let v = match self {
+    fn to_decimal(&self, what: &'static str) -> maugis::Result<Decimal> {
+        match self {
             MpArg::Exact { man, exp } => {
+                let bad = || Error::Domain { what: format!("{what} = {self} is not a number") };
                 let m: Integer = man.parse().map_err(|_| bad())?;
-                let bits = m.significant_bits().max(2);
                 let e = i32::try_from(*exp).map_err(|_| Error::Overflow { what: format!("the exponent of {what}") })?;
-                Float::with_val(bits, m) << e
+                let q = if e >= 0 { Rational::from(m << e as u32) } else { Rational::from((m, Integer::from(1) << e.unsigned_abs())) };
+                Ok(Decimal::from_rational(q))
             }
-            MpArg::Decimal(s) => Float::with_val(prec.max(53) + 64, Float::parse(s).map_err(|_| bad())?),
-        };
+            MpArg::Decimal(s) => Decimal::parse(s).map_err(|e| match e {
+                // unparseable text: say which argument; other errors (exponent or
+                // length out of range) carry their own message
+                Error::Domain { what: w } if w.contains("is not a decimal number") => Error::Domain {
+                    what: format!("{what} = {s:?} is not a number (expected a decimal such as 2.5, -0.125 or 3.8317e-2)"),
+                },
+                other => other,
+            }),
+        }
+    }
+
+    fn to_float(&self, what: &'static str, prec: u32) -> maugis::Result<Float> {
+        let v = Float::with_val(prec.max(64), self.to_decimal(what)?.as_rational());
         if !v.is_finite() {
             return Err(Error::NonFinite { what });
         }
@@ -246,18 +261,31 @@ fn mp_signature(function: &str) -> Option<&'static [&'static str]> {
     })
 }
 
-/// One certified ball of `function` at the arguments `args`.
+/// One certified ball of `function` at the arguments `args`, on the ball
+/// contract of [`eval_at_decimals`]: it contains the function at the numbers
+/// given, and an edge inside the input balls is an error that names it.
 fn mp_one(function: &str, args: &[MpArg], prec: u32) -> maugis::Result<Ball> {
     let names = mp_signature(function).unwrap_or(&[]);
-    let f = |i: usize| args[i].to_float(names[i], prec);
+    let d = |i: usize| args[i].to_decimal(names[i]);
     match function {
-        "bessel_j" => bessel_j_mp(args[0].to_i64("n")?, &f(1)?, prec),
-        "hyp1f2" => hyp1f2_mp(&f(0)?, &f(1)?, &f(2)?, &f(3)?, prec),
-        "hyp2f1" => hyp2f1_mp(&f(0)?, &f(1)?, &f(2)?, &f(3)?, prec),
-        "meijer_g_k" => meijer_g_k_mp(order_u32(args[0].to_i64("k")?)?, &f(1)?, prec),
-        "u_wave" => u_wave_mp(&f(0)?, &f(1)?, &f(2)?, &f(3)?, prec),
-        "du_wave" => du_wave_mp(&f(0)?, &f(1)?, &f(2)?, &f(3)?, prec),
-        _ => Err(Error::Internal { what: format!("no MP function {function}") }),
+        "bessel_j" => {
+            let n = args[0].to_i64("n")?;
+            eval_at_decimals(&[d(1)?], prec, |b| bessel_j_ball_mp(n, &b[0], prec))
+        }
+        "meijer_g_k" => {
+            let k = order_u32(args[0].to_i64("k")?)?;
+            eval_at_decimals(&[d(1)?], prec, |b| meijer_g_k_ball_mp(k, &b[0], prec))
+        }
+        _ => {
+            let four = [d(0)?, d(1)?, d(2)?, d(3)?];
+            match function {
+                "hyp1f2" => eval_at_decimals(&four, prec, |b| hyp1f2_ball_mp(&b[0], &b[1], &b[2], &b[3], prec)),
+                "hyp2f1" => eval_at_decimals(&four, prec, |b| hyp2f1_ball_mp(&b[0], &b[1], &b[2], &b[3], prec)),
+                "u_wave" => wave_at_decimals(&four, prec, false),
+                "du_wave" => wave_at_decimals(&four, prec, true),
+                _ => Err(Error::Internal { what: format!("no MP function {function}") }),
+            }
+        }
     }
 }
 

@@ -212,10 +212,43 @@ def test_prec_inputs_mpf_and_strings():
         x = mpmath.mpf(1) / 3  # 120 bits, taken exactly
         mid, rad = maugis.bessel_j(2, x, prec=110)
         assert abs(mid - mpmath.besselj(2, x)) <= rad + mpmath.mpf(2) ** -118
-    # a decimal string is rounded to prec + 64 bits, as `maugis eval` does
+    # a decimal string is a ball that contains the decimal, as in `maugis eval`
     mids, rads = maugis.bessel_j(2, "0.1", prec=110)
     with mpmath.workprec(400):
         assert abs(mids - mpmath.besselj(2, mpmath.mpf("0.1"))) <= rads + mpmath.mpf(2) ** -170
+
+
+@pytest.mark.parametrize(
+    "function, args, reference",
+    [
+        # J_1 at its first zero typed to 20 digits: the value at the decimal, not at its binary neighbour
+        ("bessel_j", (1, "3.83170597020751231561"), lambda: mpmath.besselj(1, mpmath.mpf("3.83170597020751231561"))),
+        # 2F1 next to z = 1: exactly 1e20 at the decimal
+        ("hyp2f1", ("1", "2", "2", "0.99999999999999999999"), lambda: mpmath.mpf(10) ** 20),
+        ("hyp1f2", ("0.5", "-2.00000000000000000001", "1.5", "-3.3"),
+         lambda: mpmath.hyp1f2(mpmath.mpf("0.5"), mpmath.mpf("-2.00000000000000000001"), mpmath.mpf("1.5"), mpmath.mpf("-3.3"))),
+        ("meijer_g_k", (7, "0.9"), lambda: mpmath.re(mpmath.meijerg([[0, mpmath.mpf(0.5) - 7], [1]], [[0, 0], [-8]], -mpmath.mpf("0.9")))),
+        # u_w at the contact edge a = 50 with zeta = 0.1: 1 - cos(1000 pi) = 0
+        ("u_wave", ("50", "0.1", "1", "50"), lambda: mpmath.mpf(0)),
+    ],
+)
+def test_prec_strings_are_balls_that_contain_the_decimal(function, args, reference):
+    mid, rad = getattr(maugis, function)(*args, prec=128)
+    with mpmath.workprec(600):
+        assert abs(mid - reference()) <= rad + mpmath.mpf(2) ** -500
+
+
+@pytest.mark.parametrize(
+    "function, args, message",
+    [
+        ("hyp2f1", ("0.3", "0.7", "1", "1"), "c - a - b = 0"),
+        ("hyp1f2", ("0.5", "-2", "1.5", "-3"), "pole"),
+        ("meijer_g_k", (3, "1.5"), "y"),
+    ],
+)
+def test_prec_edges_inside_the_input_raise(function, args, message):
+    with pytest.raises(ValueError, match=message):
+        getattr(maugis, function)(*args, prec=64)
 
 
 def test_prec_broadcasts_to_object_arrays():

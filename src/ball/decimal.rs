@@ -111,6 +111,13 @@ impl Decimal {
         Ok(Decimal { value, binary_bits })
     }
 
+    /// An exact rational number (for example a binary float `m 2^e` handed over
+    /// exactly), under the same contract as a parsed decimal.
+    pub fn from_rational(value: Rational) -> Decimal {
+        let binary_bits = binary_fraction_bits(&value);
+        Decimal { value, binary_bits }
+    }
+
     /// The exact value.
     pub fn as_rational(&self) -> &Rational {
         &self.value

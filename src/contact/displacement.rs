@@ -447,6 +447,26 @@ pub fn du_wave_at_edge_ball_mp(a: &Ball, zeta: &Ball, amp: &Ball, prec: u32) -> 
     wave_ball_mp(a, zeta, amp, None, prec, WaveOutput::Gradient)
 }
 
+/// `u_w` (or `du_w/dx` when `gradient`) at decimal inputs `[a, zeta, amp, x]`
+/// on the ball contract of [`crate::ball::eval_at_decimals`] (what `maugis eval`
+/// and the Python package run). The accuracy floor is the function's natural
+/// scale, `|A|` (or `6 |A| / zeta`), since `u_w` vanishes where `a/zeta` is an
+/// integer. `x` given as the same number as `a` is the edge itself
+/// ([`u_wave_at_edge_ball_mp`]), not a ball around it.
+pub fn wave_at_decimals(args: &[crate::ball::Decimal; 4], prec: u32, gradient: bool) -> Result<Ball> {
+    let amp = Float::with_val(64, args[2].as_rational()).abs();
+    let zeta = Float::with_val(64, args[1].as_rational());
+    let floor = if gradient && zeta > 0 { amp * 6u32 / zeta } else { amp };
+    let edge = args[3] == args[0];
+    let inputs = if edge { &args[..3] } else { &args[..] };
+    crate::ball::eval_at_decimals_with_floor(inputs, prec, Some(&floor), |v| match (gradient, edge) {
+        (false, true) => u_wave_at_edge_ball_mp(&v[0], &v[1], &v[2], prec),
+        (false, false) => u_wave_ball_mp(&v[0], &v[1], &v[2], &v[3], prec),
+        (true, true) => du_wave_at_edge_ball_mp(&v[0], &v[1], &v[2], prec),
+        (true, false) => du_wave_ball_mp(&v[0], &v[1], &v[2], &v[3], prec),
+    })
+}
+
 /// The natural scale of `du_w/dx`, `2 pi |A| / zeta` (a lower estimate is fine:
 /// it only sets the absolute accuracy floor).
 fn gradient_scale(amp: &Float, zeta: &Float) -> Float {
