@@ -16,14 +16,10 @@ use std::path::PathBuf;
 
 use clap::{Args, ValueEnum};
 use plotters::prelude::*;
-use serde::Serialize;
 
 use maugis::contact::curve::{load_area_curve, CurveOptions};
 use maugis::contact::model::Params;
-use maugis_solver::contact::{ContactSolver, SolveOptions, State};
-use maugis_solver::grid::Grid;
-use maugis_solver::path::{compare_with_model, cycle, suggested_half_width, CycleOptions};
-use maugis_solver::profile::{Adhesion, Profile};
+use maugis_solver::run::{simulate, SimulationSpec, StateRecord};
 
 use crate::args::{self, short};
 use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
@@ -67,55 +63,8 @@ pub struct SimulateArgs {
     pub format: SimFormat,
 }
 
-#[derive(Serialize)]
-struct Row {
-    leg: &'static str,
-    approach: f64,
-    abar: f64,
-    load: f64,
-    delta: f64,
-    contact_intervals: usize,
-    zone_cells: usize,
-    model_load: Option<f64>,
-    model_valid: Option<bool>,
-}
-
-#[derive(Serialize)]
-struct JsonOut {
-    lambda: f64,
-    alpha: f64,
-    beta: f64,
-    cells: usize,
-    half_width: f64,
-    datum: f64,
-    dissipated: f64,
-    states: Vec<Row>,
-}
-
-fn rows(params: Params, leg: &'static str, states: &[State]) -> Vec<Row> {
-    let cmp = compare_with_model(params, states);
-    states
-        .iter()
-        .map(|s| {
-            let m = cmp.iter().find(|r| r.abar == s.abar && s.abar > 0.0);
-            Row {
-                leg,
-                approach: s.approach,
-                abar: s.abar,
-                load: s.load,
-                delta: s.approach,
-                contact_intervals: s.contact_intervals(),
-                zone_cells: s.zone_cells,
-                model_load: m.map(|r| r.model_load),
-                model_valid: m.map(|r| r.model_valid),
-            }
-        })
-        .collect()
-}
-
 /// Runs the subcommand.
 pub fn run(a: SimulateArgs) -> Result<(), String> {
-    let e = |e: maugis_solver::SolverError| e.to_string();
     if a.format == SimFormat::Files {
         check_out_dir(&a.out)?;
     }
@@ -123,36 +72,23 @@ pub fn run(a: SimulateArgs) -> Result<(), String> {
         return Err(format!("--steps must lie in [2, 100000] (got {})", a.steps));
     }
     let params = Params::new(a.lambda, a.alpha, a.beta).map_err(|e| e.to_string())?;
-    let x = suggested_half_width(params, a.amax).map_err(e)?;
-    let grid = Grid::new(a.grid, x).map_err(e)?;
-    let profile = Profile::wavy_cylinder(a.alpha, a.beta).map_err(e)?;
-    let mut solver =
-        ContactSolver::new(grid, None, &profile, Adhesion::dugdale(a.lambda).map_err(e)?, SolveOptions::default()).map_err(e)?;
+    let spec = SimulationSpec { lambda: a.lambda, alpha: a.alpha, beta: a.beta, amax: a.amax, cells: a.grid, steps_per_leg: a.steps };
     let pb = crate::curve::progress(2 * a.steps as u64, "simulating");
-    let c = cycle(&mut solver, CycleOptions { amax: a.amax, steps_per_leg: a.steps }, &mut |k, total| {
+    let sim = simulate(spec, &mut |k, total| {
         pb.set_length(total as u64);
         pb.set_position(k as u64);
     })
-    .map_err(e)?;
+    .map_err(|e| e.to_string())?;
     pb.finish_and_clear();
-    let mut all = rows(params, "loading", &c.loading);
-    all.extend(rows(params, "unloading", &c.unloading));
+    let (x, c) = (sim.half_width, &sim.cycle);
+    let report = sim.report();
+    let all = &report.states;
     if a.format == SimFormat::Json {
-        let out = JsonOut {
-            lambda: a.lambda,
-            alpha: a.alpha,
-            beta: a.beta,
-            cells: a.grid,
-            half_width: x,
-            datum: solver.datum(),
-            dissipated: c.dissipated,
-            states: all,
-        };
-        let text = serde_json::to_string(&out).map_err(|e| e.to_string())?;
+        let text = serde_json::to_string(&report).map_err(|e| e.to_string())?;
         return print_stdout(&(text + "\n"));
     }
     let mut csv = String::from("leg,approach,abar,load,contact_intervals,zone_cells,model_load,model_valid\n");
-    for r in &all {
+    for r in all {
         let _ = writeln!(
             csv,
             "{},{},{},{},{},{},{},{}",
@@ -166,10 +102,10 @@ pub fn run(a: SimulateArgs) -> Result<(), String> {
             r.model_valid.map(|v| v.to_string()).unwrap_or_default()
         );
     }
-    let svg = overlay_svg(params, a.amax, &all)?;
+    let svg = overlay_svg(params, a.amax, all)?;
     let files = [OutFile::text("simulate.csv", csv), OutFile::text("simulate.svg", svg)];
     let written = write_atomically(&a.out, &files)?;
-    let mut report = format!(
+    let mut text = format!(
         "maugis simulate: lambda {}, alpha {}, beta {}, {} cells on [-{}, {}], {} states, dissipated work {}\n",
         short(a.lambda),
         short(a.alpha),
@@ -181,13 +117,13 @@ pub fn run(a: SimulateArgs) -> Result<(), String> {
         short(c.dissipated)
     );
     for p in written {
-        let _ = writeln!(report, "  {}", p.display());
+        let _ = writeln!(text, "  {}", p.display());
     }
-    print_stdout(&report)
+    print_stdout(&text)
 }
 
 /// Simulated states (loading and unloading markers) over the model curve.
-fn overlay_svg(params: Params, amax: f64, rows: &[Row]) -> Result<String, String> {
+fn overlay_svg(params: Params, amax: f64, rows: &[StateRecord]) -> Result<String, String> {
     let curve = load_area_curve(params, CurveOptions { amax, points: 400, ..CurveOptions::default() }).map_err(|e| e.to_string())?;
     let loads = curve.points.iter().map(|p| p.load).chain(rows.iter().map(|r| r.load));
     let (lo, hi) = loads.fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), v| (l.min(v), h.max(v)));

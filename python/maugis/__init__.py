@@ -30,6 +30,7 @@ from ._model import (
     curve,
     profile,
     run_summary,
+    simulate,
     state,
     sweep,
 )
@@ -53,6 +54,7 @@ __all__ = [
     "du_wave",
     "run_summary",
     "sweep",
+    "simulate",
     "curve",
     "state",
     "profile",

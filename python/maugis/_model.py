@@ -226,3 +226,23 @@ def sweep(lambda_min, lambda_max, lambda_n, axis, min, max, n, fixed, *, amax=6.
         "points": _count("points", points),
     }
     return _convert(json.loads(_ext.sweep_json(json.dumps(grid))))
+
+
+def simulate(lam, alpha=FIG4C_ALPHA, beta=FIG4C_BETA, *, amax=4.0, cells=4096, steps=100):
+    """One loading-unloading cycle of the numerical Dugdale-Maugis solver
+    (``maugis-solver``; ``maugis simulate --format json``): the states the
+    semi-analytical model cannot describe (cavitated contacts) and a check of
+    the model where it holds.
+
+    ``cells`` is the grid (a power of two), ``steps`` the approach steps per
+    leg. Returns a :class:`Record` with ``lambda``, ``alpha``, ``beta``,
+    ``cells``, ``half_width``, ``datum``, ``dissipated`` and ``states``: a
+    :class:`Table` with ``leg``, ``approach``, ``abar``, ``load``,
+    ``contact_intervals``, ``zone_cells``, ``model_load`` and ``model_valid``
+    (``None`` where the model has no state at that half-width).
+    """
+    lam, alpha, beta, amax = (
+        _real_scalar(n, v) for n, v in (("lam", lam), ("alpha", alpha), ("beta", beta), ("amax", amax))
+    )
+    text = _ext.simulate_json(lam, alpha, beta, amax, _count("cells", cells), _count("steps", steps))
+    return _convert(json.loads(text))

@@ -29,6 +29,7 @@ use maugis::contact::displacement::{
 use maugis::contact::model::{ContactSize, Params, Validity};
 use maugis::ball::{eval_at_decimals, Decimal};
 use maugis::rug::{Float, Integer, Rational};
+use maugis_solver::run::{simulate, SimulationSpec};
 use maugis::special::bessel_j::{bessel_j, bessel_j_ball_mp, bessel_j_bounded};
 use maugis::special::hyp1f2::{hyp1f2, hyp1f2_ball_mp, hyp1f2_bounded};
 use maugis::special::hyp2f1::{hyp2f1, hyp2f1_ball_mp, hyp2f1_bounded};
@@ -422,6 +423,16 @@ fn states_json(
     to_json(&pts)
 }
 
+/// One loading-unloading cycle of the numerical solver (`maugis simulate`):
+/// JSON text of the solver's `SimulationReport`.
+#[pyfunction]
+#[allow(clippy::too_many_arguments)]
+fn simulate_json(py: Python<'_>, lam: f64, alpha: f64, beta: f64, amax: f64, cells: usize, steps: usize) -> PyResult<String> {
+    let spec = SimulationSpec { lambda: lam, alpha, beta, amax, cells, steps_per_leg: steps };
+    let sim = py.detach(|| simulate(spec, &mut |_, _| ())).map_err(|e| PyValueError::new_err(e.to_string()))?;
+    to_json(&sim.report())
+}
+
 /// One state and its traction, displacement, gap and surface depth at `x`: the
 /// fields of `maugis profile --format json`, samples as columns.
 #[pyfunction]
@@ -501,6 +512,7 @@ fn _maugis(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(states_json, m)?)?;
     m.add_function(wrap_pyfunction!(sweep_json, m)?)?;
     m.add_function(wrap_pyfunction!(profile_dict, m)?)?;
+    m.add_function(wrap_pyfunction!(simulate_json, m)?)?;
     m.add_function(wrap_pyfunction!(_native_loop_seconds, m)?)?;
     m.add("PARALLEL_MIN_LEN", PARALLEL_MIN_LEN)?;
     m.add("MAX_PREC", maugis::MAX_PREC)?;

@@ -151,3 +151,31 @@ def test_sweep_small_grid():
         maugis.sweep(1.0, 6.0, 2, "gamma", 0.1, 0.35, 2, 9 / 8)
     with pytest.raises(ValueError):
         maugis.sweep(-1.0, 6.0, 2, "alpha", 0.1, 0.35, 2, 9 / 8)
+
+
+def test_simulate_equals_cli_json(maugis_cli):
+    # a small smooth cycle: the numerical solver through Python and through the CLI
+    args = dict(lam=1.0, alpha=0.0, beta=1.0, amax=1.5, cells=512, steps=8)
+    cli = json.loads(run_cli(
+        maugis_cli, "simulate", "--lambda", "1", "--alpha", "0", "--beta", "1", "--amax", "1.5",
+        "--grid", "512", "--steps", "8", "--format", "json",
+    ))
+    sim = maugis.simulate(**args)
+    assert sim.cells == cli["cells"] == 512
+    assert sim.dissipated == cli["dissipated"]
+    assert sim.half_width == cli["half_width"] and sim.datum == cli["datum"]
+    s = sim.states
+    assert s.nrows == len(cli["states"]) > 8
+    for key in ("approach", "abar", "load", "contact_intervals", "zone_cells"):
+        np.testing.assert_array_equal(s[key], [r[key] for r in cli["states"]])
+    assert list(s.leg) == [r["leg"] for r in cli["states"]]
+    assert set(s.leg) == {"loading", "unloading"}
+
+
+def test_simulate_bad_input_raises():
+    with pytest.raises(ValueError, match="power of two"):
+        maugis.simulate(1.0, 0.0, 1.0, cells=1000, steps=4)
+    with pytest.raises(ValueError):
+        maugis.simulate(-1.0, 0.0, 1.0, cells=512, steps=4)
+    with pytest.raises(ValueError, match="steps"):
+        maugis.simulate(1.0, 0.0, 1.0, cells=512, steps=2**20)

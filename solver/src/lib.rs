@@ -21,7 +21,9 @@
 //! * [`contact::ContactSolver`]: one equilibrium at a given approach
 //!   (Polonsky-Keer CG inside a Dugdale-zone fixed point), warm-started;
 //! * [`path`]: displacement-controlled loading and unloading, the cycle's
-//!   dissipated work, and the comparison with the semi-analytical curve.
+//!   dissipated work, and the comparison with the semi-analytical curve;
+//! * [`run::simulate`]: one cycle from `(lambda, alpha, beta)`, set up as
+//!   `maugis simulate` and the Python package run it.
 //!
 //! ```
 //! use maugis_solver::{grid::Grid, profile::{Adhesion, Profile}, contact::{ContactSolver, SolveOptions}};
@@ -40,5 +42,6 @@ pub mod error;
 pub mod grid;
 pub mod path;
 pub mod profile;
+pub mod run;
 
 pub use error::{Result, SolverError};
