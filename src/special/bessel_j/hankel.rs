@@ -74,22 +74,42 @@ pub(crate) fn plan(n: u64, x: f64, wp: u32) -> Option<HankelPlan> {
         return None;
     }
     let target = -(wp as f64) - 1.0 - remainder_bits - 2.0; // 2 bits of f64 slack
-    let mut log_term = 0.0f64;
+    // The term is m 2^e (f64 mantissa product, renormalised by log2 only when it
+    // leaves [2^-400, 2^400]): one multiplication per term instead of a log2.
+    let mut m = 1.0f64;
+    let mut e = 0.0f64;
+    let mut peak_m = 1.0f64;
     let mut peak = 0.0f64;
+    let mut threshold = target.exp2();
     for k in 0..MAX_HANKEL_TERMS {
-        if k >= 1 && log_term <= target {
-            return Some(HankelPlan { terms: k, peak_bits: peak, remainder_bits });
+        if k >= 1 && m <= threshold {
+            return Some(HankelPlan { terms: k, peak_bits: peak.max(peak_m.log2() + e), remainder_bits });
         }
         let odd = (2 * k + 1) as f64;
         let ratio = (four_n2 - odd * odd).abs() / (8.0 * (k + 1) as f64 * x);
         if (k as f64) > n as f64 && ratio >= 1.0 {
             return None;
         }
-        log_term += ratio.log2();
-        peak = peak.max(log_term);
+        m *= ratio;
+        peak_m = peak_m.max(m);
+        if !(RENORM_LOW..=RENORM_HIGH).contains(&m) {
+            if m == 0.0 {
+                return None; // a zero term: 4n^2 = (2k+1)^2 cannot happen for integer n; defensive
+            }
+            peak = peak.max(peak_m.log2() + e);
+            let l = m.log2().floor();
+            e += l;
+            m = (m.log2() - l).exp2();
+            peak_m = m;
+            threshold = (target - e).exp2();
+        }
     }
     None
 }
+
+/// Renormalisation range of the plan's f64 mantissa.
+const RENORM_LOW: f64 = 1.0 / (1u128 << 100) as f64 / (1u128 << 100) as f64 / (1u128 << 100) as f64 / (1u128 << 100) as f64;
+const RENORM_HIGH: f64 = 1.0 / RENORM_LOW;
 
 /// `J_n(x)` by Hankel's expansion at working precision `wp` (`x > 0`), summed
 /// until the remainder bound is below `2^-wp`; `None` if the terms diverge first.
