@@ -5,7 +5,7 @@
 //! * `hyp1f2(1/2; k+1, k+3/2; -300)` at 128 bits (the Eq. 12 factor at abar = 6,
 //!   beta = 9/8 is about -280);
 //! * `hyp2f1(1, k+1/2; k+2; y)` at 128 bits near and at y = 1;
-//! * `bessel_j` MP and f64;
+//! * `bessel_j` MP at fixed points; f64 over the issue-8 domain (`bessel_j_f64`);
 //! * `bessel_j_large`: `bessel_j_mp` over the issue-13 grid (n in {0, 1, 7, 60,
 //!   500, 2000, 10000} x x in {0.001, ..., 1000000.5}) and J_500(30000),
 //!   J_-1200(50000.25), at 53, 128 and 512 bits, one id per point (targets:
@@ -175,8 +175,53 @@ fn bench_bessel(c: &mut Criterion) {
         g.bench_with_input(BenchmarkId::new("mp128", format!("n={n},x={x}")), &(n, x), |b, _| {
             b.iter(|| bessel_j::bessel_j_mp(black_box(n), &xe, 128).unwrap())
         });
-        g.bench_with_input(BenchmarkId::new("f64", format!("n={n},x={x}")), &(n, x), |b, _| {
-            b.iter(|| bessel_j::bessel_j(black_box(n), black_box(x)).unwrap())
+    }
+    g.finish();
+}
+
+/// The issue-8 J_n domain, integer n <= 60, x <= 150, uniform: the points of
+/// examples/bessel_f64.rs and `reference/bench_scipy.py --bessel` (same LCG,
+/// same seed), so the three compare side by side.
+fn bessel_bench_points(count: usize) -> Vec<(i64, f64)> {
+    let mut state: u64 = 0xB355E1;
+    let mut uniform = || {
+        state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    (0..count).map(|_| (((uniform() * 61.0) as i64).min(60), uniform() * 150.0)).collect()
+}
+
+/// f64 J_n over 1000 points of the domain (time per 1000 values), and each
+/// native method on its own share of them; the MP-fallback count and the
+/// worst error against the certified value are printed once.
+fn bench_bessel_f64(c: &mut Criterion) {
+    let pts = bessel_bench_points(1000);
+    let (mut fallbacks, mut worst) = (0, 0.0f64);
+    for &(n, x) in &pts {
+        let (m, ax) = (n.unsigned_abs(), x.abs());
+        let native = bessel_j::bessel_j_native(bessel_j::choose_native(m, ax), m, ax);
+        if !native.is_some_and(|b| b.err <= b.value.abs() / (1u64 << 47) as f64) {
+            fallbacks += 1;
+        }
+        let v = bessel_j::bessel_j(n, x).unwrap();
+        let e = bessel_j::bessel_j_mp(n, &exact(x), 128).unwrap().to_f64();
+        if e != 0.0 {
+            worst = worst.max(((v - e) / e).abs());
+        }
+    }
+    eprintln!("bessel_j_f64 points: {fallbacks} MP fallbacks (bounded) of {}, worst rel error {worst:.2e}", pts.len());
+    let mut g = c.benchmark_group("bessel_j_f64");
+    g.bench_function("bessel_j/1000 random points", |b| {
+        b.iter(|| pts.iter().map(|&(n, x)| bessel_j::bessel_j(n, black_box(x)).unwrap()).sum::<f64>())
+    });
+    g.bench_function("bessel_j_bounded/1000 random points", |b| {
+        b.iter(|| pts.iter().map(|&(n, x)| bessel_j::bessel_j_bounded(n, black_box(x)).unwrap().err).sum::<f64>())
+    });
+    for m in [bessel_j::NativeMethod::Recurrence, bessel_j::NativeMethod::Series] {
+        let sel: Vec<(u64, f64)> =
+            pts.iter().map(|&(n, x)| (n as u64, x)).filter(|&(n, x)| bessel_j::choose_native(n, x) == m).collect();
+        g.bench_function(format!("{m:?}/{} of the points", sel.len()), |b| {
+            b.iter(|| sel.iter().map(|&(n, x)| bessel_j::bessel_j_native(m, n, black_box(x)).map_or(0.0, |v| v.value)).sum::<f64>())
         });
     }
     g.finish();
@@ -205,6 +250,6 @@ fn bench_bessel_large(c: &mut Criterion) {
 criterion_group! {
     name = benches;
     config = Criterion::default().sample_size(20).warm_up_time(std::time::Duration::from_millis(300)).measurement_time(std::time::Duration::from_secs(1));
-    targets = bench_meijer, bench_hyp1f2, bench_hyp1f2_domain, bench_meijer_domain, bench_hyp2f1, bench_hyp2f1_f64, bench_bessel, bench_bessel_large
+    targets = bench_meijer, bench_hyp1f2, bench_hyp1f2_domain, bench_meijer_domain, bench_hyp2f1, bench_hyp2f1_f64, bench_bessel, bench_bessel_large, bench_bessel_f64
 }
 criterion_main!(benches);

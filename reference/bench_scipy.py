@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Side-by-side timing and accuracy of 2F1 in f64: SciPy (vectorised) and maugis.
+"""Side-by-side timing and accuracy in f64: SciPy (vectorised) and maugis, for 2F1
+(default) and J_n (`--bessel`).
 
 The points are the issue-8 domain a, b in [-3, 3], c in [0.5, 6], z in [-5, 0.9],
 drawn from the same 64-bit LCG as `hyp2f1_bench_points` in benches/special.rs
@@ -14,10 +15,26 @@ and worst error against the certified 120-bit value), then
 It times scipy.special.hyp2f1 on the whole vector (best of 7), computes SciPy's
 worst relative error against mpmath at 120 bits, and prints one table with the
 maugis time per value read from criterion's estimates.
+
+J_n (issue 8: integer n <= 60, x <= 150, uniform): build the example first
+(`cargo build --release --example bessel_f64`), then
+
+    python3 reference/bench_scipy.py --bessel [--points 100000]
+
+In one run, on the same points (the LCG of `points` in examples/bessel_f64.rs,
+seed 0xB355E1): scipy.special.jv on the whole vector (best of 5, wall and CPU
+time), the Python binding `maugis.bessel_j(n, x)` if it is importable (same),
+and the Rust example as a subprocess (per value, wall and CPU, per method, MP
+fallbacks, worst error and bound misses against the certified value); SciPy's
+worst relative error against mpmath (53-bit inputs, 120 bits) on the first
+`--accuracy-points` points. The load average is printed with the table: the
+machine is shared, so compare the CPU-time columns, which were taken in one run.
 """
 
 import argparse
 import json
+import os
+import subprocess
 import time
 from pathlib import Path
 
@@ -52,10 +69,85 @@ def criterion_ns(group, bench):
     return est["median"]["point_estimate"]
 
 
+def bessel_points(n, seed=0xB355E1):
+    """The points of examples/bessel_f64.rs: n = min(floor(61 u), 60), x = 150 u'."""
+    state = seed
+    ns, xs = [], []
+
+    def uniform():
+        nonlocal state
+        state = (state * 6364136223846793005 + 1442695040888963407) & MASK
+        return (state >> 11) / float(1 << 53)
+
+    for _ in range(n):
+        ns.append(min(int(uniform() * 61.0), 60))
+        xs.append(uniform() * 150.0)
+    return np.array(ns, dtype=np.int64), np.array(xs)
+
+
+def best_of(reps, f):
+    """Best (wall, cpu) seconds of `reps` calls of f."""
+    wall = cpu = float("inf")
+    for _ in range(reps):
+        w0, c0 = time.perf_counter(), time.process_time()
+        f()
+        wall = min(wall, time.perf_counter() - w0)
+        cpu = min(cpu, time.process_time() - c0)
+    return wall, cpu
+
+
+def bench_bessel(points, accuracy_points):
+    n, x = bessel_points(points)
+    load = os.getloadavg()
+    rows = []
+    wall, cpu = best_of(5, lambda: scipy.special.jv(n, x))
+    v = scipy.special.jv(n, x)
+    mpmath.mp.prec = 120
+    worst = 0.0
+    for ni, xi, vi in zip(n[:accuracy_points], x[:accuracy_points], v[:accuracy_points]):
+        ref = mpmath.besselj(int(ni), mpmath.mpf(float(xi)))
+        if ref != 0:
+            worst = max(worst, float(abs((mpmath.mpf(float(vi)) - ref) / ref)))
+    rows.append(("scipy.special.jv (vectorised)", wall, cpu, "%.1e (first %d points)" % (worst, accuracy_points)))
+    try:
+        import maugis  # the Python binding, `pip install ./python`
+
+        wall, cpu = best_of(5, lambda: maugis.bessel_j(n, x))
+        rows.append(("maugis.bessel_j (Python binding)", wall, cpu, ""))
+        wall, cpu = best_of(5, lambda: maugis.bessel_j(n, x, bounded=True))
+        rows.append(("maugis.bessel_j(bounded=True) (Python binding)", wall, cpu, ""))
+    except ImportError:
+        rows.append(("maugis.bessel_j (Python binding)", None, None, "not installed (pip install ./python)"))
+    exe = ROOT / "target" / "release" / "examples" / "bessel_f64"
+    rust = None
+    if exe.exists():
+        rust = subprocess.run([str(exe), str(points)], capture_output=True, text=True, check=True).stdout
+    print("points: %d (integer n <= 60, x <= 150, uniform); scipy %s, numpy %s; load average %.1f %.1f %.1f"
+          % (points, scipy.__version__, np.__version__, *load))
+    print("| J_n, f64 | wall per value | CPU per value | worst rel. error (vs mpmath, 120 bits) |")
+    print("|---|---|---|---|")
+    for name, wall, cpu, acc in rows:
+        if wall is None:
+            print("| %s | | | %s |" % (name, acc))
+        else:
+            print("| %s | %.3f us | %.3f us | %s |" % (name, wall / points * 1e6, cpu / points * 1e6, acc))
+    if rust is None:
+        print("(build the Rust side first: cargo build --release --example bessel_f64)")
+    else:
+        print("Rust, same points, same run (examples/bessel_f64):")
+        print(rust.rstrip())
+
+
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("--points", type=int, default=1000)
+    ap.add_argument("--points", type=int, default=None)
+    ap.add_argument("--bessel", action="store_true", help="J_n instead of 2F1")
+    ap.add_argument("--accuracy-points", type=int, default=20000)
     args = ap.parse_args()
+    if args.bessel:
+        bench_bessel(args.points or 100000, args.accuracy_points)
+        return
+    args.points = args.points or 1000
     p = points(args.points)
     a, b, c, z = p[:, 0], p[:, 1], p[:, 2], p[:, 3]
     best = float("inf")

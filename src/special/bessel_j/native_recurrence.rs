@@ -10,22 +10,27 @@
 //! double-double but without renormalising, so that the dependency chain per
 //! step is one product and one subtraction (Graillat, Langlois, Louvet,
 //! "Algorithms for accurate, validated and fast polynomial evaluation", 2009,
-//! do the same for Horner's scheme). With `c~_k = ch + cl = fl_dd(1/x) * 2k`
-//! (`|c~_k - c_k| <= 25 u^2 |ch|`, the quotient and the exact-f64 product of
-//! `crate::ball::dd_bounded`):
+//! do the same for Horner's scheme). The coefficient is split without a
+//! product of its own: `ih` is `fl_dd(1/x).hi` with its low 15 bits cleared and
+//! `il = fl((hi - ih) + lo)`, so `|1/x - ih - il| <= g_1 = 16 u^2 |1/x| + u |il|`,
+//! `ch = 2k ih` is exact (`2k < 2^15`), `cl = fl(2k il)`, and
+//! `|c_k - ch - cl| <= g_k = 2k g_1 + u |cl|`:
 //!
 //! ```text
 //! p + pi = ch * h_k            (Dekker's exact product)
 //! s + sigma = p - h_{k-1}      (Knuth's exact sum)
-//! h_{k+1} = s,   l_{k+1} = fl(((pi + sigma) + cl h_k) + ch l_k - l_{k-1})
+//! h_{k+1} = s,   l_{k+1} = fl(((pi + sigma) + cl h_k) + cf l_k - l_{k-1}),   cf = fl(ch + cl)
 //! ```
 //!
 //! The exact step applied to `h + l` differs from `h_{k+1} + l_{k+1}` by the
-//! rounding of the five-term f64 sum (`<= gamma_5 sum |terms|`, `gamma_5 <= 5.01 u`),
-//! the dropped `cl l_k`, and `(c_k - c~_k)(h_k + l_k)`; with `|pi| <= u |p|`,
-//! `|sigma| <= u |s|`, `|cl| <= u |ch|`, `|ch h_k| <= (1 + u) |p|`:
+//! rounding of the five-term f64 sum (`<= gamma_5 sum |terms|`, `gamma_5 <= 5.01 u`,
+//! products included), `(ch + cl - cf) l_k` (`<= u |cf l_k|`), and
+//! `(c_k - ch - cl)(h_k + l_k)`; with `|pi| <= u |p|`, `|sigma| <= u |s|`:
 //!
-//! `|delta_k| <= u^2 (36 |p| + 5.1 |s|) + 6.1 u |ch| |l_k| + 5.1 u |l_{k-1}|`.
+//! `|delta_k| <= u (5.1 (u |p| + u |s| + |cl h_k| + |l_{k-1}|) + 6.1 |cf l_k|) + g_k (|h_k| + |l_k|)`.
+//!
+//! (`l_k` is not small like a double-double's low part: it collects the
+//! `cl h` terms, `~2^-37` of the value, and it is carried exactly as above.)
 //!
 //! # Error bound: an energy norm instead of absolute values
 //!
@@ -51,7 +56,7 @@
 //! evaluated in f64 (`x - k` and `x +- (n-1)` are single roundings) and inflated
 //! by [`crate::ball::dd_bounded`]'s `1 + 2^-30` at the end.
 
-use crate::ball::{div_f64, two_prod, two_sum, BoundedDd, Dd, U, U2};
+use crate::ball::{div_f64, mag, two_prod, two_sum, BoundedDd, Dd, U, U2};
 
 /// Most steps (beyond the issue-8 domain the MP path is used).
 pub(crate) const MAX_RECURRENCE_ORDER: u64 = 10_000;
@@ -68,15 +73,25 @@ pub(crate) fn forward(n: u64, x: f64, j0: BoundedDd, j1: BoundedDd) -> Option<Bo
         return None;
     }
     let inv_x = div_f64(Dd::ONE, x);
+    // ih: inv_x.hi with its low 15 bits cleared, so that 2k ih is exact for
+    // 2k < 2^15; il: the rest (one rounding). |1/x - ih - il| <= g1.
+    let ih = f64::from_bits(inv_x.hi.to_bits() & !((1u64 << 15) - 1));
+    let il = (inv_x.hi - ih) + inv_x.lo;
+    let g1 = 16.0 * U2 * mag(inv_x) + U * il.abs();
     let (mut h_prev, mut l_prev) = (j0.v.hi, j0.v.lo);
     let (mut h, mut l) = (j1.v.hi, j1.v.lo);
     let mut norm = j0.e + j1.e;
     for k in 1..n {
-        let c = inv_x.mul_f64((2 * k) as f64);
-        let (p, pi) = two_prod(c.hi, h);
+        let two_k = (2 * k) as f64;
+        let (ch, cl) = (two_k * ih, two_k * il); // ch exact
+        let cf = ch + cl;
+        let (p, pi) = two_prod(ch, h);
         let (s, sigma) = two_sum(p, -h_prev);
-        let l_next = (pi + sigma) + c.lo * h + c.hi * l - l_prev;
-        norm += U2 * (36.0 * p.abs() + 5.1 * s.abs()) + U * (6.1 * c.hi.abs() * l.abs() + 5.1 * l_prev.abs());
+        let l_next = (pi + sigma) + cl * h + cf * l - l_prev;
+        // |c_k - ch - cl| <= 2k g1 + u |cl|
+        let g = two_k * g1 + U * cl.abs();
+        norm += U * (5.1 * (U * (p.abs() + s.abs()) + cl.abs() * h.abs() + l_prev.abs()) + 6.1 * cf.abs() * l.abs())
+            + g * (h.abs() + l.abs());
         if k + 1 < n {
             norm *= 1.0 + 0.5 / (x - k as f64);
         }
