@@ -3,7 +3,9 @@
 //! next to zeros, large x), the methods agree where their regions overlap, the
 //! plain f64 value is within 2 ulp, and the MP fallback is rare.
 
-use maugis::special::bessel_j::{bessel_j, bessel_j_bounded, bessel_j_mp, bessel_j_native, choose_native, NativeMethod};
+use maugis::special::bessel_j::{
+    bessel_j, bessel_j_bounded, bessel_j_mp, bessel_j_native, bessel_j_native_portable, choose_native, NativeMethod,
+};
 use proptest::prelude::*;
 use rug::Float;
 
@@ -32,6 +34,15 @@ fn check(n: i64, x: f64) -> Result<(), String> {
         return Err(format!("J_{n}({x}) = {v}: error {:e} > 2 ulp", (v - e).abs()));
     }
     Ok(())
+}
+
+/// Uniform numbers in [0, 1) from a 64-bit LCG with a fixed seed.
+fn uniform_from(seed: u64) -> impl FnMut() -> f64 {
+    let mut state = seed;
+    move || {
+        state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    }
 }
 
 /// Each native method on its own: where it runs, its bound holds.
@@ -133,11 +144,7 @@ fn methods_agree_where_they_overlap() {
 /// points (near zeros); measured directly, not through the process-wide counter.
 #[test]
 fn fallback_is_rare() {
-    let mut state: u64 = 0x5EED;
-    let mut uniform = || {
-        state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut uniform = uniform_from(0x5EED);
     let mut refused = 0;
     let count = 4000;
     for _ in 0..count {
@@ -149,6 +156,22 @@ fn fallback_is_rare() {
         }
     }
     assert!(refused * 1000 <= count, "{refused} of {count} points refused");
+}
+
+/// The fused-multiply-add products (taken at run time where the CPU has
+/// them) and Dekker's portable ones are both exact: values and bounds agree
+/// bit for bit, so the portable path is tested by every test above too.
+#[test]
+fn fused_and_portable_products_agree_bit_for_bit() {
+    let mut uniform = uniform_from(0xF3A);
+    let bits = |b: Option<maugis::Bounded>| b.map(|v| (v.value.to_bits(), v.err.to_bits()));
+    for _ in 0..3000 {
+        let n = (uniform() * 80.0) as u64;
+        let x = uniform() * 200.0;
+        for m in [NativeMethod::Recurrence, NativeMethod::Series] {
+            assert_eq!(bits(bessel_j_native(m, n, x)), bits(bessel_j_native_portable(m, n, x)), "{m:?} J_{n}({x})");
+        }
+    }
 }
 
 proptest! {

@@ -16,7 +16,7 @@
 //! * `a + b`, `a - b`: `e = e_a + e_b + 8 u^2 (|a| + |b|)`   (derivation: `6 u^2`);
 //! * `a b`: `e = |a| e_b + |b| e_a + e_a e_b + 8 u^2 |a| |b|`   (derivation: `4 u^2`);
 //! * `a b` for an exact f64 `b`: `e = |b| e_a + 8 u^2 |a| |b|`;
-//! * `a / d` for an exact f64 `d` ([`div_f64`]): `e = e_a / |d| + 16 u^2 |a/d|`;
+//! * `a / d` for an exact f64 `d` ([`div_f64_p`]): `e = e_a / |d| + 16 u^2 |a/d|`;
 //! * `a / b`: `e = (e_a + |a/b| e_b)/(|b| - e_b) + 16 u^2 |a/b|`   (three-quotient
 //!   long division, derivation `~6 u^2`), refused unless `|b| > e_b`;
 //! * `sqrt(a)`: `e = e_a/sqrt(|a| - e_a) + 16 u^2 sqrt|a|`   (one Newton step from
@@ -28,6 +28,7 @@
 //! (and stepping one ulp up) covers them. [`BoundedDd::finish`] does that and
 //! adds the final rounding of `hi + lo` to f64, `u |value|`.
 
+use super::double_double::{Dekker, ExactProduct};
 use super::{Bounded, Dd};
 
 /// Unit roundoff of f64, `2^-53`.
@@ -45,13 +46,13 @@ pub(crate) const C_SQRT: f64 = 16.0 * U2;
 /// Inflation of an f64-evaluated bound (covers its own roundings, see above).
 pub(crate) const BOUND_INFLATION: f64 = 1.0 + 1.0 / (1u64 << 30) as f64;
 
-/// `a / d` for an f64 `d`: one quotient, the exact remainder by Dekker's
-/// product, a second quotient (the "double-word by float" division; error a
+/// `a / d` for an f64 `d`: one quotient, the exact remainder by an exact
+/// product (strategy `P`), a second quotient (the "double-word by float" division; error a
 /// few `u^2`, charged [`C_DIV`]).
-#[inline]
-pub(crate) fn div_f64(a: Dd, d: f64) -> Dd {
+#[inline(always)]
+pub(crate) fn div_f64_p<P: ExactProduct>(a: Dd, d: f64) -> Dd {
     let q1 = a.hi / d;
-    let pr = Dd::prod(q1, d);
+    let pr = Dd::prod_p::<P>(q1, d);
     let r = (a.hi - pr.hi) - pr.lo + a.lo;
     let q2 = r / d;
     let s = q1 + q2;
@@ -104,21 +105,33 @@ impl BoundedDd {
 
     #[inline]
     pub(crate) fn mul(self, o: BoundedDd) -> BoundedDd {
+        self.mul_p::<Dekker>(o)
+    }
+
+    /// [`BoundedDd::mul`] with the product strategy `P` (same value, same bound).
+    #[inline(always)]
+    pub(crate) fn mul_p<P: ExactProduct>(self, o: BoundedDd) -> BoundedDd {
         let (ma, mb) = (self.mag(), o.mag());
-        BoundedDd { v: self.v * o.v, e: ma * o.e + mb * self.e + self.e * o.e + C_MUL * ma * mb }
+        BoundedDd { v: self.v.mul_p::<P>(o.v), e: ma * o.e + mb * self.e + self.e * o.e + C_MUL * ma * mb }
     }
 
     /// `self * b` for an exact f64 `b`.
     #[inline]
     pub(crate) fn mul_f64(self, b: f64) -> BoundedDd {
-        let ab = b.abs();
-        BoundedDd { v: self.v.mul_f64(b), e: ab * self.e + C_MUL * self.mag() * ab }
+        self.mul_f64_p::<Dekker>(b)
     }
 
-    /// `self / d` for an exact nonzero f64 `d`.
-    #[inline]
-    pub(crate) fn div_f64(self, d: f64) -> BoundedDd {
-        let v = div_f64(self.v, d);
+    /// [`BoundedDd::mul_f64`] with the product strategy `P`.
+    #[inline(always)]
+    pub(crate) fn mul_f64_p<P: ExactProduct>(self, b: f64) -> BoundedDd {
+        let ab = b.abs();
+        BoundedDd { v: self.v.mul_f64_p::<P>(b), e: ab * self.e + C_MUL * self.mag() * ab }
+    }
+
+    /// `self / d` for an exact nonzero f64 `d`, with the product strategy `P`.
+    #[inline(always)]
+    pub(crate) fn div_f64_p<P: ExactProduct>(self, d: f64) -> BoundedDd {
+        let v = div_f64_p::<P>(self.v, d);
         BoundedDd { v, e: self.e / d.abs() + C_DIV * mag(v) }
     }
 
@@ -133,6 +146,12 @@ impl BoundedDd {
     }
 
     pub(crate) fn sqrt(self) -> Option<BoundedDd> {
+        self.sqrt_p::<Dekker>()
+    }
+
+    /// [`BoundedDd::sqrt`] with the product strategy `P`.
+    #[inline(always)]
+    pub(crate) fn sqrt_p<P: ExactProduct>(self) -> Option<BoundedDd> {
         if self.v.hi == 0.0 && self.v.lo == 0.0 && self.e == 0.0 {
             return Some(BoundedDd::ZERO);
         }
@@ -140,7 +159,7 @@ impl BoundedDd {
         if !(self.v.hi > 0.0 && low > 0.0) {
             return None;
         }
-        let v = self.v.sqrt();
+        let v = self.v.sqrt_p::<P>();
         Some(BoundedDd { v, e: self.e / low.sqrt() + C_SQRT * mag(v) })
     }
 
@@ -180,10 +199,10 @@ mod tests {
         assert!(holds(q, &qf));
         let r = q.sqrt().unwrap();
         assert!(holds(r, &Float::with_val(300, qf.sqrt_ref())));
-        let s = r.div_f64(7.0).mul_f64(-3.0).neg();
+        let s = r.div_f64_p::<Dekker>(7.0).mul_f64(-3.0).neg();
         let sf = Float::with_val(300, exact_of(r.v) * 3u32) / 7u32;
         assert!(holds(s, &sf));
-        let b = BoundedDd::exact(0.1).div_f64(3.0).finish().unwrap();
+        let b = BoundedDd::exact(0.1).div_f64_p::<Dekker>(3.0).finish().unwrap();
         let e = Float::with_val(300, 0.1f64) / 3u32;
         assert!(Float::with_val(300, &e - b.value).abs() <= b.err);
     }

@@ -55,6 +55,36 @@ pub(crate) fn two_prod(a: f64, b: f64) -> (f64, f64) {
     (p, e)
 }
 
+/// How an exact product `a b = p + e` is formed: Dekker's splitting
+/// (portable, 17 flops) or one fused multiply-add (2 operations, where the CPU
+/// has it; the native f64 special functions pick it at run time). Both are
+/// exact, so every result built on them is bit-identical either way.
+pub(crate) trait ExactProduct {
+    fn two_prod(a: f64, b: f64) -> (f64, f64);
+}
+
+/// Dekker's splitting, [`two_prod`].
+pub(crate) struct Dekker;
+
+/// `p = fl(a b)`, `e = fma(a, b, -p)`; only fast inside a function compiled
+/// with the `fma` target feature (elsewhere `mul_add` is a library call).
+pub(crate) struct Fused;
+
+impl ExactProduct for Dekker {
+    #[inline(always)]
+    fn two_prod(a: f64, b: f64) -> (f64, f64) {
+        two_prod(a, b)
+    }
+}
+
+impl ExactProduct for Fused {
+    #[inline(always)]
+    fn two_prod(a: f64, b: f64) -> (f64, f64) {
+        let p = a * b;
+        (p, a.mul_add(b, -p))
+    }
+}
+
 impl Dd {
     /// Zero.
     pub const ZERO: Dd = Dd { hi: 0.0, lo: 0.0 };
@@ -85,15 +115,36 @@ impl Dd {
     /// The exact product `a * b` of two doubles.
     #[inline]
     pub fn prod(a: f64, b: f64) -> Dd {
-        let (p, e) = two_prod(a, b);
+        Dd::prod_p::<Dekker>(a, b)
+    }
+
+    /// [`Dd::prod`] with the product strategy `P`.
+    #[inline(always)]
+    pub(crate) fn prod_p<P: ExactProduct>(a: f64, b: f64) -> Dd {
+        let (p, e) = P::two_prod(a, b);
         Dd { hi: p, lo: e }
     }
 
     /// `self * b` for an f64 `b`.
     #[inline]
     pub fn mul_f64(self, b: f64) -> Dd {
-        let (p, e) = two_prod(self.hi, b);
+        self.mul_f64_p::<Dekker>(b)
+    }
+
+    /// [`Dd::mul_f64`] with the product strategy `P`.
+    #[inline(always)]
+    pub(crate) fn mul_f64_p<P: ExactProduct>(self, b: f64) -> Dd {
+        let (p, e) = P::two_prod(self.hi, b);
         let e = e + self.lo * b;
+        let (hi, lo) = quick_two_sum(p, e);
+        Dd { hi, lo }
+    }
+
+    /// `self * b` with the product strategy `P` (the `*` operator is `P = Dekker`).
+    #[inline(always)]
+    pub(crate) fn mul_p<P: ExactProduct>(self, b: Dd) -> Dd {
+        let (p, e) = P::two_prod(self.hi, b.hi);
+        let e = e + (self.hi * b.lo + self.lo * b.hi);
         let (hi, lo) = quick_two_sum(p, e);
         Dd { hi, lo }
     }
@@ -110,12 +161,18 @@ impl Dd {
 
     /// Square root (one Newton step from the f64 root).
     pub fn sqrt(self) -> Dd {
+        self.sqrt_p::<Dekker>()
+    }
+
+    /// [`Dd::sqrt`] with the product strategy `P`.
+    #[inline(always)]
+    pub(crate) fn sqrt_p<P: ExactProduct>(self) -> Dd {
         if self.hi <= 0.0 {
             return Dd::ZERO;
         }
         let r = self.hi.sqrt();
         // r + (self - r^2)/(2r)
-        let corr = (self - Dd::prod(r, r)).hi / (2.0 * r);
+        let corr = (self - Dd::prod_p::<P>(r, r)).hi / (2.0 * r);
         let (hi, lo) = quick_two_sum(r, corr);
         Dd { hi, lo }
     }
@@ -157,10 +214,7 @@ impl Mul for Dd {
     type Output = Dd;
     #[inline]
     fn mul(self, b: Dd) -> Dd {
-        let (p, e) = two_prod(self.hi, b.hi);
-        let e = e + (self.hi * b.lo + self.lo * b.hi);
-        let (hi, lo) = quick_two_sum(p, e);
-        Dd { hi, lo }
+        self.mul_p::<Dekker>(b)
     }
 }
 

@@ -65,7 +65,7 @@ mod series;
 mod three_term;
 
 pub use hankel::bessel_j_hankel;
-pub use native::{bessel_j_native, choose_native, NativeMethod};
+pub use native::{bessel_j_native, bessel_j_native_portable, choose_native, NativeMethod};
 pub use recurrence::{bessel_j_sequence, bessel_j_sequence_dd, bessel_j_sequence_mp};
 pub use series::{bessel_j_series, bessel_j_series_pfq};
 pub use three_term::bessel_j_three_term;

@@ -53,7 +53,7 @@
 //! above): against `|J_n| ~ 0.1` that is `2^-60` relative, far below the
 //! `2^-53` the callers need.
 
-use crate::ball::{two_sum, BoundedDd, Dd, U, U2};
+use crate::ball::{two_sum, BoundedDd, Dd, ExactProduct, U, U2};
 
 /// Smallest `x` of this path: below it the least term of the expansion (about
 /// `e^{-2x}`) stops being small enough, and the power series is used instead.
@@ -111,29 +111,31 @@ fn tables() -> &'static Tables {
 }
 
 /// `(J_0(x), J_1(x))` with proven bounds, `HANKEL_MIN_X <= x <= HANKEL_MAX_X`.
-pub(crate) fn bessel_j01(x: f64) -> Option<(BoundedDd, BoundedDd)> {
+#[inline(always)]
+pub(crate) fn bessel_j01<P: ExactProduct>(x: f64) -> Option<(BoundedDd, BoundedDd)> {
     if !(HANKEL_MIN_X..=HANKEL_MAX_X).contains(&x) {
         return None;
     }
     let t = tables();
-    let v = BoundedDd::ONE.div_f64(8.0 * x);
-    let v2 = v.mul(v);
-    let v3 = v2.mul(v);
-    let (p0, q0) = hankel_pq(t, [v, v2, v3], &E0, 0.0)?;
-    let (p1, q1) = hankel_pq(t, [v, v2, v3], &E1, 4.0)?;
-    let (sin_w, cos_w) = sin_cos_phase(t, x)?;
-    let amp = TWO_OVER_PI.div_f64(x).sqrt()?;
-    let j0 = amp.mul(p0.mul(cos_w).sub(q0.mul(sin_w)));
-    let j1 = amp.mul(p1.mul(sin_w).add(q1.mul(cos_w)));
+    let v = BoundedDd::ONE.div_f64_p::<P>(8.0 * x);
+    let v2 = v.mul_p::<P>(v);
+    let v3 = v2.mul_p::<P>(v);
+    let (p0, q0) = hankel_pq::<P>(t, [v, v2, v3], &E0, 0.0)?;
+    let (p1, q1) = hankel_pq::<P>(t, [v, v2, v3], &E1, 4.0)?;
+    let (sin_w, cos_w) = sin_cos_phase::<P>(t, x)?;
+    let amp = TWO_OVER_PI.div_f64_p::<P>(x).sqrt_p::<P>()?;
+    let j0 = amp.mul_p::<P>(p0.mul_p::<P>(cos_w).sub(q0.mul_p::<P>(sin_w)));
+    let j1 = amp.mul_p::<P>(p1.mul_p::<P>(sin_w).add(q1.mul_p::<P>(cos_w)));
     Some((j0, j1))
 }
 
 /// `P_nu`, `Q_nu` with their bounds from `v = 1/(8x)` and its powers; the
 /// truncation remainder is added to both (it bounds the complex remainder).
-fn hankel_pq(t: &Tables, [v, v2, v3]: [BoundedDd; 3], e: &[f64; HEAD + 1], four_nu2: f64) -> Option<(BoundedDd, BoundedDd)> {
-    let p = BoundedDd::ONE.add(v2.mul_f64(-e[2]));
-    let s_head = v3.mul_f64(-e[3]);
-    let q = v.mul_f64(e[1]).add(s_head);
+#[inline(always)]
+fn hankel_pq<P: ExactProduct>(t: &Tables, [v, v2, v3]: [BoundedDd; 3], e: &[f64; HEAD + 1], four_nu2: f64) -> Option<(BoundedDd, BoundedDd)> {
+    let p = BoundedDd::ONE.add(v2.mul_f64_p::<P>(-e[2]));
+    let s_head = v3.mul_f64_p::<P>(-e[3]);
+    let q = v.mul_f64_p::<P>(e[1]).add(s_head);
     // f64 tail from k = HEAD + 1, signed terms stored and summed smallest first.
     let vf = v.v.hi;
     let mut terms = [0.0f64; MAX_TERMS];
@@ -173,11 +175,12 @@ fn hankel_pq(t: &Tables, [v, v2, v3]: [BoundedDd; 3], e: &[f64; HEAD + 1], four_
 }
 
 /// `(sin w, cos w)`, `w = x - pi/4`, with proven bounds (module docs).
-fn sin_cos_phase(t: &Tables, x: f64) -> Option<(BoundedDd, BoundedDd)> {
+#[inline(always)]
+fn sin_cos_phase<P: ExactProduct>(t: &Tables, x: f64) -> Option<(BoundedDd, BoundedDd)> {
     let quarter_turns = ((x - PI_4.v.hi) / (2.0 * PI_4.v.hi)).round();
     let m = 2.0 * quarter_turns + 1.0; // exact: x <= 2^40
-    let r = BoundedDd::exact(x).sub(PI_4.mul_f64(m));
-    let (s, c) = sin_cos_reduced(t, r.v)?;
+    let r = BoundedDd::exact(x).sub(PI_4.mul_f64_p::<P>(m));
+    let (s, c) = sin_cos_reduced::<P>(t, r.v)?;
     let (s, c) = (BoundedDd { v: s.v, e: s.e + r.e }, BoundedDd { v: c.v, e: c.e + r.e });
     Some(match (quarter_turns as i64).rem_euclid(4) {
         0 => (s, c),
@@ -190,7 +193,8 @@ fn sin_cos_phase(t: &Tables, x: f64) -> Option<(BoundedDd, BoundedDd)> {
 /// `(sin r, cos r)` at an exact double-double `r`, `|r| <= 0.8`: the table
 /// at `j/128` nearest to `r` and `sin d`, `cos d` for `d = r - j/128`,
 /// `|d| <= 1/256` (module docs).
-fn sin_cos_reduced(t: &Tables, r: Dd) -> Option<(BoundedDd, BoundedDd)> {
+#[inline(always)]
+fn sin_cos_reduced<P: ExactProduct>(t: &Tables, r: Dd) -> Option<(BoundedDd, BoundedDd)> {
     if !(r.hi.abs() <= 0.8) {
         return None;
     }
@@ -199,7 +203,7 @@ fn sin_cos_reduced(t: &Tables, r: Dd) -> Option<(BoundedDd, BoundedDd)> {
     // r.hi - r0 is exact (Sterbenz: r.hi and r0 within a factor 3/2, or r0 = 0).
     let (dh, dl) = two_sum(r.hi - r0, r.lo);
     let d = BoundedDd { v: Dd { hi: dh, lo: dl }, e: 0.0 };
-    let dsq = d.mul(d);
+    let dsq = d.mul_p::<P>(d);
     let big_d = dsq.v.hi; // |big_d - d^2| <= (u + 9 u^2) d^2
     if !(big_d <= SINCOS_D2_MAX) {
         return None;
@@ -208,10 +212,10 @@ fn sin_cos_reduced(t: &Tables, r: Dd) -> Option<(BoundedDd, BoundedDd)> {
     // cos d = 1 - D/2 + T_c, T_c = sum_{i=2}^{4} (-1)^i D^i/(2i)!.
     let t_s = small_poly(big_d, &SIN_COEF);
     let t_c = small_poly(big_d, &COS_COEF);
-    let sin_d = d.add(d.mul(t_s));
-    let cos_d = BoundedDd::ONE.sub(dsq.mul_f64(0.5)).add(t_c);
+    let sin_d = d.add(d.mul_p::<P>(t_s));
+    let cos_d = BoundedDd::ONE.sub(dsq.mul_f64_p::<P>(0.5)).add(t_c);
     let (s0, c0) = t.sincos[(j as i64 + SINCOS_J) as usize];
-    Some((s0.mul(cos_d).add(c0.mul(sin_d)), c0.mul(cos_d).sub(s0.mul(sin_d))))
+    Some((s0.mul_p::<P>(cos_d).add(c0.mul_p::<P>(sin_d)), c0.mul_p::<P>(cos_d).sub(s0.mul_p::<P>(sin_d))))
 }
 
 /// Largest `d^2` the short polynomials cover: `(1/256 + 2^-40)^2`, rounded up.
@@ -242,6 +246,7 @@ fn small_poly(big_d: f64, c: &[f64]) -> BoundedDd {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ball::Dekker;
     use rug::Float;
 
     fn to_float(d: Dd) -> Float {
@@ -262,7 +267,7 @@ mod tests {
     #[test]
     fn sin_cos_enclose() {
         for &r in &[0.0, 1e-20, -0.3, 0.7853981633974483, -0.8, 0.5] {
-            let (s, c) = sin_cos_reduced(tables(), Dd { hi: r, lo: r * 1e-17 }).unwrap();
+            let (s, c) = sin_cos_reduced::<Dekker>(tables(), Dd { hi: r, lo: r * 1e-17 }).unwrap();
             let rf = to_float(Dd { hi: r, lo: r * 1e-17 });
             assert!(encloses(s, &Float::with_val(300, rf.sin_ref())), "sin {r}");
             assert!(encloses(c, &Float::with_val(300, rf.cos_ref())), "cos {r}");
@@ -273,13 +278,13 @@ mod tests {
     #[test]
     fn j01_enclose_the_mp_values() {
         for &x in &[25.0, 25.5, 30.0, 47.123, 100.0, 150.0, 1e4 + 0.25, 7e8] {
-            let (j0, j1) = bessel_j01(x).unwrap();
+            let (j0, j1) = bessel_j01::<Dekker>(x).unwrap();
             for (n, b) in [(0i64, j0), (1, j1)] {
                 let e = super::super::bessel_j_mp(n, &Float::with_val(53, x), 300).unwrap();
                 assert!(encloses(b, e.mid()), "J_{n}({x}): {:?} vs {}", b, e.mid());
                 assert!(b.e < if x < 30.0 { 1e-21 } else { 3e-22 }, "J_{n}({x}): bound {:e}", b.e);
             }
         }
-        assert!(bessel_j01(24.9).is_none());
+        assert!(bessel_j01::<Dekker>(24.9).is_none());
     }
 }

@@ -56,13 +56,14 @@
 //! evaluated in f64 (`x - k` and `x +- (n-1)` are single roundings) and inflated
 //! by [`crate::ball::dd_bounded`]'s `1 + 2^-30` at the end.
 
-use crate::ball::{div_f64, mag, two_prod, two_sum, BoundedDd, Dd, U, U2};
+use crate::ball::{div_f64_p, mag, two_sum, BoundedDd, Dd, ExactProduct, U, U2};
 
 /// Most steps (beyond the issue-8 domain the MP path is used).
 pub(crate) const MAX_RECURRENCE_ORDER: u64 = 10_000;
 
 /// `J_n(x)` from `(J_0, J_1)` for `n + 1 <= x`, `n <= MAX_RECURRENCE_ORDER`.
-pub(crate) fn forward(n: u64, x: f64, j0: BoundedDd, j1: BoundedDd) -> Option<BoundedDd> {
+#[inline(always)]
+pub(crate) fn forward<P: ExactProduct>(n: u64, x: f64, j0: BoundedDd, j1: BoundedDd) -> Option<BoundedDd> {
     if n == 0 {
         return Some(j0);
     }
@@ -72,7 +73,7 @@ pub(crate) fn forward(n: u64, x: f64, j0: BoundedDd, j1: BoundedDd) -> Option<Bo
     if n > MAX_RECURRENCE_ORDER || !((n + 1) as f64 <= x) {
         return None;
     }
-    let inv_x = div_f64(Dd::ONE, x);
+    let inv_x = div_f64_p::<P>(Dd::ONE, x);
     // ih: inv_x.hi with its low 15 bits cleared, so that 2k ih is exact for
     // 2k < 2^15; il: the rest (one rounding). |1/x - ih - il| <= g1.
     let ih = f64::from_bits(inv_x.hi.to_bits() & !((1u64 << 15) - 1));
@@ -85,7 +86,7 @@ pub(crate) fn forward(n: u64, x: f64, j0: BoundedDd, j1: BoundedDd) -> Option<Bo
         let two_k = (2 * k) as f64;
         let (ch, cl) = (two_k * ih, two_k * il); // ch exact
         let cf = ch + cl;
-        let (p, pi) = two_prod(ch, h);
+        let (p, pi) = P::two_prod(ch, h);
         let (s, sigma) = two_sum(p, -h_prev);
         let l_next = (pi + sigma) + cl * h + cf * l - l_prev;
         // |c_k - ch - cl| <= 2k g1 + u |cl|
@@ -105,22 +106,23 @@ pub(crate) fn forward(n: u64, x: f64, j0: BoundedDd, j1: BoundedDd) -> Option<Bo
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ball::Dekker;
     use rug::Float;
 
     #[test]
     fn bound_holds_up_to_the_turning_point() {
         for &x in &[25.0, 61.5, 150.0, 149.99] {
-            let (j0, j1) = super::super::native_hankel::bessel_j01(x).unwrap();
+            let (j0, j1) = super::super::native_hankel::bessel_j01::<Dekker>(x).unwrap();
             let top = (x - 1.0).floor() as u64;
             for n in [2, 7, top / 2, top - 1, top] {
-                let b = forward(n, x, j0, j1).unwrap();
+                let b = forward::<Dekker>(n, x, j0, j1).unwrap();
                 let e = super::super::bessel_j_mp(n as i64, &Float::with_val(53, x), 300).unwrap();
                 let got = Float::with_val(300, b.v.hi) + b.v.lo;
                 let diff = Float::with_val(300, got - e.mid()).abs();
                 assert!(diff <= b.e, "J_{n}({x}): diff {} bound {:e}", diff.to_f64(), b.e);
                 assert!(b.e < 1e-20, "J_{n}({x}): bound {:e}", b.e);
             }
-            assert!(forward(top + 2, x, j0, j1).is_none());
+            assert!(forward::<Dekker>(top + 2, x, j0, j1).is_none());
         }
     }
 }

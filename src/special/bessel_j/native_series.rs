@@ -42,7 +42,7 @@
 //! and count it ([`super::bessel_j_fallbacks`]). Hankel's expansion in
 //! double-double (for larger `x`) is not implemented yet.
 
-use crate::ball::{div_f64, mag, Bounded, Dd, BOUND_INFLATION, C_ADD, U, U2};
+use crate::ball::{div_f64_p, mag, Bounded, Dd, ExactProduct, BOUND_INFLATION, C_ADD, U, U2};
 
 /// Per `*` then `/` step: covers `(1 + 8u^2)(1 + 16u^2) - 1` with room.
 const C_STEP: f64 = 25.0 * U2;
@@ -84,32 +84,33 @@ fn inv_factorials() -> &'static [Dd] {
 
 /// `(x/2)^n / n!` and its relative error bound: binary powering and the
 /// table for `n <= 170`, else the running product `prod (x/2)/j`.
-fn prefactor(n: u64, half: f64) -> Option<(Dd, f64)> {
+#[inline(always)]
+fn prefactor<P: ExactProduct>(n: u64, half: f64) -> Option<(Dd, f64)> {
     if n <= MAX_TABLE_FACTORIAL {
         let (mut acc, mut eta_acc) = (Dd::ONE, 0.0f64);
         let (mut base, mut eta_base) = (Dd::from_f64(half), 0.0f64);
         let mut e = n;
         while e > 0 {
             if e & 1 == 1 {
-                acc = acc * base;
+                acc = acc.mul_p::<P>(base);
                 eta_acc = compose(eta_acc, eta_base, 8.0 * U2);
             }
             e >>= 1;
             if e > 0 {
-                base = base * base;
+                base = base.mul_p::<P>(base);
                 eta_base = compose(eta_base, eta_base, 8.0 * U2);
             }
         }
         if !acc.hi.is_finite() || acc.hi == 0.0 {
             return None;
         }
-        let p = acc * inv_factorials()[n as usize];
+        let p = acc.mul_p::<P>(inv_factorials()[n as usize]);
         return Some((p, compose(eta_acc, TABLE_ETA, 8.0 * U2)));
     }
     let mut p = Dd::ONE;
     let mut eta_p = 0.0f64;
     for j in 1..=n {
-        p = div_f64(p.mul_f64(half), j as f64);
+        p = div_f64_p::<P>(p.mul_f64_p::<P>(half), j as f64);
         eta_p = eta_p * (1.0 + C_STEP) + C_STEP;
     }
     Some((p, eta_p))
@@ -118,15 +119,16 @@ fn prefactor(n: u64, half: f64) -> Option<(Dd, f64)> {
 /// The series in double-double with its proven bound, `x > 0`; `None` where it
 /// cannot run (prefactor underflow, terms out of range) — the caller then
 /// falls back to MP.
-pub(crate) fn series_bounded(n: u64, x: f64) -> Option<Bounded> {
+#[inline(always)]
+pub(crate) fn series_bounded<P: ExactProduct>(n: u64, x: f64) -> Option<Bounded> {
     if !(x > 0.0) || n > MAX_NATIVE_ORDER {
         return None;
     }
-    let (p, eta_p) = prefactor(n, x / 2.0)?;
+    let (p, eta_p) = prefactor::<P>(n, x / 2.0)?;
     if !(p.hi.abs() > 1e-280) || !p.hi.is_finite() {
         return None;
     }
-    let xx = Dd::prod(x, x); // exact
+    let xx = Dd::prod_p::<P>(x, x); // exact
     let z = Dd { hi: -xx.hi / 4.0, lo: -xx.lo / 4.0 };
     let z_abs = mag(z);
     let mut t = Dd::ONE;
@@ -137,7 +139,7 @@ pub(crate) fn series_bounded(n: u64, x: f64) -> Option<Bounded> {
     let tail = loop {
         let d = ((k + 1) * (n + k + 1)) as f64; // exact below 2^53
         // the ratio z/d does not depend on t: off the dependency chain
-        t = t * div_f64(z, d);
+        t = t.mul_p::<P>(div_f64_p::<P>(z, d));
         eta = eta * (1.0 + C_STEP) + C_STEP;
         k += 1;
         let t_abs = mag(t);
@@ -160,7 +162,7 @@ pub(crate) fn series_bounded(n: u64, x: f64) -> Option<Bounded> {
     let s_abs = mag(s);
     let p_abs = mag(p);
     let e_p = eta_p * p_abs;
-    let v = p * s;
+    let v = p.mul_p::<P>(s);
     let value = v.hi + v.lo;
     if !value.is_finite() || value == 0.0 {
         return None;
