@@ -96,7 +96,7 @@ def best_of(reps, f):
     return wall, cpu
 
 
-def bench_bessel(points, accuracy_points):
+def bench_bessel(points, accuracy_points, exe):
     n, x = bessel_points(points)
     load = os.getloadavg()
     rows = []
@@ -118,7 +118,6 @@ def bench_bessel(points, accuracy_points):
         rows.append(("maugis.bessel_j(bounded=True) (Python binding)", wall, cpu, ""))
     except ImportError:
         rows.append(("maugis.bessel_j (Python binding)", None, None, "not installed (pip install ./python)"))
-    exe = ROOT / "target" / "release" / "examples" / "bessel_f64"
     rust = None
     if exe.exists():
         rust = subprocess.run([str(exe), str(points)], capture_output=True, text=True, check=True).stdout
@@ -143,9 +142,11 @@ def main():
     ap.add_argument("--points", type=int, default=None)
     ap.add_argument("--bessel", action="store_true", help="J_n instead of 2F1")
     ap.add_argument("--accuracy-points", type=int, default=20000)
+    ap.add_argument("--rust-example", type=Path, default=ROOT / "target" / "release" / "examples" / "bessel_f64",
+                    help="the built examples/bessel_f64 binary")
     args = ap.parse_args()
     if args.bessel:
-        bench_bessel(args.points or 100000, args.accuracy_points)
+        bench_bessel(args.points or 100000, args.accuracy_points, args.rust_example)
         return
     args.points = args.points or 1000
     p = points(args.points)
