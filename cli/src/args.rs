@@ -3,8 +3,18 @@
 //! Every numeric flag is checked while the command line is parsed, so a bad value
 //! is a clap usage error (exit code 2, one line on stderr) raised before anything
 //! is computed or written. Numbers are arithmetic expressions, parsed by the
-//! `meval` crate: decimals (`0.125`, `1e-1`), fractions (`1/10`, `9/8`), `pi`,
-//! `e`, `sqrt(2)/3`, `2*sqrt(2)/8`, powers (`2^-3`) and the usual functions.
+//! `exmex` crate (all arithmetic in f64, so `1/10` is 0.1): decimals (`0.125`,
+//! `1e-1`, `2E6`), fractions (`1/10`, `9/8`), `pi` (or `PI`, `π`), `e`,
+//! `sqrt(2)/3`, `2*sqrt(2)/8`, powers (`2^-3`) and the usual functions.
+//!
+//! The flag groups shared by several subcommands are flattened structs here:
+//! [`Roughness`] (`--alpha`, `--beta`) and [`SiArgs`] (`--units si` and the
+//! material flags).
+
+use clap::{Args, ValueEnum};
+use exmex::prelude::*;
+use exmex::{literal_matcher_from_pattern, FloatOpsFactory, MakeOperators, MatchLiteral, Operator};
+use maugis::contact::units::{Cohesion, Material, Physical, Scales};
 
 /// The paper's Fig. 4c amplitude `alpha = 2 sqrt(2)/8`.
 pub const FIG4C_ALPHA: f64 = std::f64::consts::SQRT_2 / 4.0;
@@ -70,12 +80,32 @@ pub fn number(s: &str) -> Result<f64, String> {
     if t.is_empty() {
         return Err("empty value: give a number or an expression like sqrt(2)/3".into());
     }
-    let v = meval::eval_str(t).map_err(|e| format!("'{s}' is not a number or an arithmetic expression ({e})"))?;
+    let v = Expression::parse(t)
+        .and_then(|ex| ex.eval(&[]))
+        .map_err(|e| format!("'{s}' is not a number or an arithmetic expression ({e})"))?;
     if !v.is_finite() {
         return Err(format!("'{s}' must be a finite number (not NaN or infinity)"));
     }
     Ok(v)
 }
+
+// Literals with an optional exponent (`2e6`, `1.5E-3`); exmex's default has none.
+literal_matcher_from_pattern!(DecimalLiteral, r"^([0-9]+(\.[0-9]*)?|\.[0-9]+)([eE][+-]?[0-9]+)?");
+
+/// exmex's float operators plus the constant `pi`.
+#[derive(Clone, Debug)]
+struct Operators;
+
+impl MakeOperators<f64> for Operators {
+    fn make<'a>() -> Vec<Operator<'a, f64>> {
+        let mut ops = FloatOpsFactory::<f64>::make();
+        ops.push(Operator::make_constant("pi", std::f64::consts::PI));
+        ops
+    }
+}
+
+/// A parsed expression without variables.
+type Expression = FlatEx<f64, Operators, DecimalLiteral>;
 
 /// Any finite number.
 pub fn finite(s: &str) -> Result<f64, String> {
@@ -125,6 +155,137 @@ pub fn short(x: f64) -> String {
     }
 }
 
+/// `--alpha` and `--beta` (curve, profile, limits, sweep).
+#[derive(Args, Debug, Clone, Copy, Default)]
+pub struct Roughness {
+    /// Normalised wave amplitude alpha >= 0, e.g. 2*sqrt(2)/8 [default: 2 sqrt(2)/8];
+    /// in `sweep` the fixed value when alpha is not the swept axis.
+    #[arg(long, value_name = "A", value_parser = non_negative, allow_negative_numbers = true)]
+    pub alpha: Option<f64>,
+    /// Normalised wavelength beta > 0 [default: 9/8]; in `sweep` the fixed value
+    /// when beta is not the swept axis.
+    #[arg(long, value_name = "B", value_parser = positive, allow_negative_numbers = true)]
+    pub beta: Option<f64>,
+}
+
+impl Roughness {
+    /// `(alpha, beta)` with the Fig. 4c defaults.
+    pub fn values(&self) -> (f64, f64) {
+        (self.alpha.unwrap_or(FIG4C_ALPHA), self.beta.unwrap_or(FIG4C_BETA))
+    }
+}
+
+/// The unit system of the inputs and outputs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum UnitSystem {
+    /// SI: the contact from --e-star, --radius, --dgamma, --sigma or --delta-c, --amplitude, --wavelength.
+    Si,
+}
+
+/// `--units si` and the material flags (curve, profile, limits).
+#[derive(Args, Debug, Clone, Default)]
+pub struct SiArgs {
+    /// Physical units: `si` takes the contact from the material flags below
+    /// instead of --lambda, --alpha and --beta, and adds SI values to the output.
+    #[arg(long, value_name = "SYSTEM")]
+    pub units: Option<UnitSystem>,
+    /// Plane-strain modulus E* = E/(1 - nu^2) in Pa (with --units si).
+    #[arg(long = "e-star", value_name = "PA", value_parser = positive, allow_negative_numbers = true)]
+    pub e_star: Option<f64>,
+    /// Cylinder radius R in m (with --units si).
+    #[arg(long, value_name = "M", value_parser = positive, allow_negative_numbers = true)]
+    pub radius: Option<f64>,
+    /// Work of adhesion dgamma in J/m^2 (with --units si).
+    #[arg(long, value_name = "J_M2", value_parser = positive, allow_negative_numbers = true)]
+    pub dgamma: Option<f64>,
+    /// Dugdale adhesive stress sigma_0 in Pa (with --units si); repeat for several curves.
+    #[arg(long, value_name = "PA", value_parser = positive, allow_negative_numbers = true)]
+    pub sigma: Vec<f64>,
+    /// Dugdale interaction range delta_c = dgamma/sigma_0 in m (with --units si), instead of --sigma.
+    #[arg(long = "delta-c", value_name = "M", value_parser = positive, allow_negative_numbers = true)]
+    pub delta_c: Vec<f64>,
+    /// Wave amplitude A in m (with --units si) [default: 0, smooth].
+    #[arg(long, value_name = "M", value_parser = non_negative, allow_negative_numbers = true)]
+    pub amplitude: Option<f64>,
+    /// Wavelength zeta in m (with --units si; needed when --amplitude > 0).
+    #[arg(long, value_name = "M", value_parser = positive, allow_negative_numbers = true)]
+    pub wavelength: Option<f64>,
+}
+
+/// A run in SI units: the material and one contact per Dugdale strength.
+#[derive(Debug, Clone)]
+pub struct SiRun {
+    /// Material and geometry.
+    pub material: Material,
+    /// The scales.
+    pub scales: Scales,
+    /// `lambda` per `--sigma` / `--delta-c`, in the order given.
+    pub lambdas: Vec<f64>,
+    /// `alpha`.
+    pub alpha: f64,
+    /// `beta`.
+    pub beta: f64,
+}
+
+impl SiArgs {
+    /// `None` without `--units`; with `--units si` the contact in model units.
+    /// `normalised` lists the normalised flags the command was given (they
+    /// conflict with `--units si`). Every message names its flag.
+    pub fn resolve(&self, normalised: &[(&str, bool)]) -> Result<Option<SiRun>, String> {
+        let given = [
+            ("--e-star", self.e_star.is_some()),
+            ("--radius", self.radius.is_some()),
+            ("--dgamma", self.dgamma.is_some()),
+            ("--sigma", !self.sigma.is_empty()),
+            ("--delta-c", !self.delta_c.is_empty()),
+            ("--amplitude", self.amplitude.is_some()),
+            ("--wavelength", self.wavelength.is_some()),
+        ];
+        let Some(UnitSystem::Si) = self.units else {
+            if let Some((flag, _)) = given.iter().find(|g| g.1) {
+                return Err(format!("{flag} needs --units si"));
+            }
+            return Ok(None);
+        };
+        if let Some((flag, _)) = normalised.iter().find(|g| g.1) {
+            return Err(format!("{flag} conflicts with --units si (give the material: --e-star, --radius, --dgamma, --sigma or --delta-c, --amplitude, --wavelength)"));
+        }
+        let need = |v: Option<f64>, flag: &str| v.ok_or_else(|| format!("--units si needs {flag}"));
+        let material = Material { e_star: need(self.e_star, "--e-star")?, radius: need(self.radius, "--radius")?, dgamma: need(self.dgamma, "--dgamma")? };
+        let cohesions: Vec<Cohesion> = match (self.sigma.is_empty(), self.delta_c.is_empty()) {
+            (false, true) => self.sigma.iter().map(|&s| Cohesion::Stress(s)).collect(),
+            (true, false) => self.delta_c.iter().map(|&d| Cohesion::Range(d)).collect(),
+            (true, true) => return Err("--units si needs --sigma or --delta-c".into()),
+            (false, false) => return Err("--sigma conflicts with --delta-c: give one of them".into()),
+        };
+        let amplitude = self.amplitude.unwrap_or(0.0);
+        let scales = Scales::new(material).map_err(|e| format!("--e-star/--radius/--dgamma: {e}"))?;
+        // smooth: the wavelength does not enter; take l_h
+        let wavelength = match self.wavelength {
+            Some(z) => z,
+            None if amplitude == 0.0 => scales.horizontal,
+            None => return Err("--amplitude > 0 needs --wavelength".into()),
+        };
+        let mut lambdas = Vec::new();
+        let (mut alpha, mut beta) = (0.0, 1.0);
+        for c in cohesions {
+            let flag = if matches!(c, Cohesion::Stress(_)) { "--sigma" } else { "--delta-c" };
+            let p = Physical { material, cohesion: c, amplitude, wavelength };
+            let lambda = scales.lambda(c).map_err(|e| format!("{flag}: {e}"))?;
+            alpha = scales.alpha(amplitude).map_err(|e| format!("--amplitude: {e}"))?;
+            beta = scales.beta(wavelength).map_err(|e| format!("--wavelength: {e}"))?;
+            check_params(&[lambda], alpha, beta).map_err(|e| {
+                let e = e.replace("--lambda", &format!("lambda = l_v/delta_c from {flag}"));
+                let e = e.replace("--alpha", "alpha = A/l_v from --amplitude");
+                e.replace("--beta", "beta = zeta/l_h from --wavelength")
+            })?;
+            p.params().map_err(|e| format!("{flag}: {e}"))?;
+            lambdas.push(lambda);
+        }
+        Ok(Some(SiRun { material, scales, lambdas, alpha, beta }))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -141,6 +302,12 @@ mod tests {
         assert_eq!(positive("2*sqrt(2)/8"), Ok(FIG4C_ALPHA));
         assert_eq!(positive("pi/4"), Ok(std::f64::consts::FRAC_PI_4));
         assert_eq!(positive("1e-1"), Ok(0.1));
+        assert_eq!(positive("2E6"), Ok(2e6));
+        assert_eq!(positive("1.5e+3/3"), Ok(500.0));
+        assert_eq!(positive("pi"), Ok(std::f64::consts::PI));
+        assert_eq!(positive("2^-3"), Ok(0.125));
+        assert_eq!(positive(".5"), Ok(0.5));
+        assert!(positive("1e").is_err());
         assert!(positive("sqrt(-1)").is_err());
         assert!(positive("2 +").is_err());
         assert!(positive("").is_err());

@@ -34,7 +34,11 @@ use maugis::contact::summary::{CurveSummary, RunParams, RunSummary};
 use maugis::contact::limits::{jkr_envelope, jkr_load, mdmt_envelope, mdmt_load};
 use maugis::contact::model::Params;
 
-use crate::args::{self, num, short, FIG4C_ALPHA, FIG4C_BETA};
+use maugis::contact::summary::SiSummary;
+use maugis::contact::units::Scales;
+use serde::Serialize;
+
+use crate::args::{self, num, short, Roughness, SiArgs, SiRun};
 use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
 use crate::plot::{finish_load_area_chart, xy_chart, arrow_head, clip_y, colour, plot_err, triangle_down, triangle_up, DARK_GREY, LIGHT_GREY};
 
@@ -57,12 +61,12 @@ pub struct CurveArgs {
     /// [default: 1/10 1/4 1/2 1 3/2 3 6]. Expressions like 1/10 or sqrt(2)/3 are accepted.
     #[arg(long = "lambda", value_name = "L", value_parser = args::positive, allow_negative_numbers = true)]
     pub lambda: Vec<f64>,
-    /// Normalised wave amplitude alpha >= 0, e.g. 2*sqrt(2)/8 [default: 2 sqrt(2)/8].
-    #[arg(long, value_name = "A", value_parser = args::non_negative, allow_negative_numbers = true)]
-    pub alpha: Option<f64>,
-    /// Normalised wavelength beta > 0 [default: 9/8].
-    #[arg(long, value_name = "B", value_parser = args::positive, allow_negative_numbers = true)]
-    pub beta: Option<f64>,
+    /// --alpha, --beta.
+    #[command(flatten)]
+    pub roughness: Roughness,
+    /// --units si and the material.
+    #[command(flatten)]
+    pub si: SiArgs,
     /// Largest contact half-width abar.
     #[arg(long, value_name = "AMAX", default_value = "6", value_parser = args::positive, allow_negative_numbers = true)]
     pub amax: f64,
@@ -121,21 +125,50 @@ fn summary(runs: &[Run], alpha: f64, beta: f64, opts: CurveOptions, mdmt_lambda:
     }
 }
 
+/// The run as JSON; with `--units si` an `si` object ([`SiSummary`]) joins the
+/// normalised schema's keys.
+fn with_si(run: &RunSummary, si: Option<&SiRun>, pretty: bool) -> Result<String, String> {
+    #[derive(Serialize)]
+    struct WithSi<'a> {
+        #[serde(flatten)]
+        run: &'a RunSummary,
+        si: SiSummary,
+    }
+    let text = match si {
+        None if pretty => serde_json::to_string_pretty(run),
+        None => serde_json::to_string(run),
+        Some(r) => {
+            let out = WithSi { run, si: SiSummary::new(run, r.material).map_err(|e| e.to_string())? };
+            if pretty {
+                serde_json::to_string_pretty(&out)
+            } else {
+                serde_json::to_string(&out)
+            }
+        }
+    };
+    text.map_err(|e| format!("could not format JSON: {e}"))
+}
+
 /// The CSV file name of a curve.
 pub fn csv_name(lambda: f64) -> String {
     format!("curve_lambda_{lambda}.csv")
 }
 
 /// The grid states of a curve as CSV; every row carries the curve's parameters.
-fn curve_csv(c: &Curve) -> Result<String, String> {
+/// With `--units si` (`scales`) three SI columns follow: `a_m`, `load_n_per_m`, `approach_m`.
+fn curve_csv(c: &Curve, scales: Option<&Scales>) -> Result<String, String> {
     let mut w = csv::Writer::from_writer(Vec::new());
     let err = |e: csv::Error| format!("could not format CSV: {e}");
-    w.write_record([
-        "lambda", "alpha", "beta", "abar", "m", "m_minus_1", "load", "approach", "valid", "min_strip_gap", "max_traction",
-    ])
-    .map_err(err)?;
+    let mut header = vec!["lambda", "alpha", "beta", "abar", "m", "m_minus_1", "load", "approach", "valid", "min_strip_gap", "max_traction"];
+    if scales.is_some() {
+        header.extend(["a_m", "load_n_per_m", "approach_m"]);
+    }
+    w.write_record(&header).map_err(err)?;
     let Params { lambda, alpha, beta } = c.params;
     for p in &c.points {
+        let si: Vec<String> = scales
+            .map(|s| vec![s.to_horizontal(p.abar).to_string(), s.to_load(p.load).to_string(), s.to_vertical(p.approach).to_string()])
+            .unwrap_or_default();
         w.write_record([
             lambda.to_string(),
             alpha.to_string(),
@@ -148,7 +181,9 @@ fn curve_csv(c: &Curve) -> Result<String, String> {
             p.validity.valid.to_string(),
             p.validity.min_strip_gap.to_string(),
             p.validity.max_traction.to_string(),
-        ])
+        ]
+        .into_iter()
+        .chain(si))
         .map_err(err)?;
     }
     let bytes = w.into_inner().map_err(|e| format!("could not format CSV: {e}"))?;
@@ -189,9 +224,16 @@ pub fn compute(lambdas: &[f64], alpha: f64, beta: f64, opts: CurveOptions) -> Re
 
 /// Runs `maugis curve`.
 pub fn run(a: CurveArgs) -> Result<(), String> {
-    let alpha = a.alpha.unwrap_or(FIG4C_ALPHA);
-    let beta = a.beta.unwrap_or(FIG4C_BETA);
-    let mut lambdas = if a.lambda.is_empty() { DEFAULT_LAMBDAS.to_vec() } else { a.lambda.clone() };
+    let si = a.si.resolve(&[("--lambda", !a.lambda.is_empty()), ("--alpha", a.roughness.alpha.is_some()), ("--beta", a.roughness.beta.is_some())])?;
+    let (alpha, beta) = match &si {
+        Some(r) => (r.alpha, r.beta),
+        None => a.roughness.values(),
+    };
+    let mut lambdas = match &si {
+        Some(r) => r.lambdas.clone(),
+        None if a.lambda.is_empty() => DEFAULT_LAMBDAS.to_vec(),
+        None => a.lambda.clone(),
+    };
     lambdas.sort_by(f64::total_cmp);
     lambdas.dedup();
     // Everything is validated before any work: the parsers checked the ranges,
@@ -219,17 +261,17 @@ pub fn run(a: CurveArgs) -> Result<(), String> {
 
     if a.format == CurveFormat::Json {
         let out = summary(&runs, alpha, beta, opts, mdmt_lambda, false);
-        let text = serde_json::to_string(&out).map_err(|e| format!("could not format JSON: {e}"))?;
+        let text = with_si(&out, si.as_ref(), false)?;
         return print_stdout(&format!("{text}\n"));
     }
 
     // Every file is rendered in memory before anything touches the disk.
     let mut files = Vec::new();
     for r in &runs {
-        files.push(OutFile::text(csv_name(r.lambda), curve_csv(&r.curve)?));
+        files.push(OutFile::text(csv_name(r.lambda), curve_csv(&r.curve, si.as_ref().map(|s| &s.scales))?));
     }
     let summary = summary(&runs, alpha, beta, opts, mdmt_lambda, true);
-    let mut text = serde_json::to_string_pretty(&summary).map_err(|e| format!("could not format JSON: {e}"))?;
+    let mut text = with_si(&summary, si.as_ref(), true)?;
     text.push('\n');
     files.push(OutFile::text("summary.json", text));
     files.push(OutFile::text("load-area.svg", load_area_svg(&runs, alpha, beta, a.amax, mdmt_lambda, window)?));
@@ -268,6 +310,25 @@ pub fn run(a: CurveArgs) -> Result<(), String> {
             po,
             format!("{inv}/{}", c.points.len())
         );
+    }
+    if let Some(r) = &si {
+        let s = SiSummary::new(&summary, r.material).map_err(|e| e.to_string())?;
+        let _ = writeln!(report, "SI: l_h = {:.4e} m, l_v = {:.4e} m, load scale {:.4e} N/m, energy scale {:.4e} J/m", s.scales.horizontal, s.scales.vertical, s.scales.load, s.scales.energy);
+        for c in &s.curves {
+            let po = match (c.pull_off_load_n_per_m, c.pull_off_half_width_m) {
+                (Some(l), Some(w)) => format!("pull-off {l:.4e} N/m at a = {w:.4e} m"),
+                _ => "no pull-off".into(),
+            };
+            let _ = writeln!(
+                report,
+                "  lambda = {}: sigma_0 = {:.4e} Pa, delta_c = {:.4e} m, {po}, W = {:.4e} J/m (load control), {:.4e} J/m (displacement control)",
+                short(c.lambda),
+                c.sigma_pa,
+                c.delta_c_m,
+                c.dissipation_load_control_j_per_m,
+                c.dissipation_displacement_control_j_per_m
+            );
+        }
     }
     let _ = writeln!(report, "wrote {} file(s) to {}:", written.len(), a.out.display());
     for p in &written {

@@ -25,7 +25,7 @@ use maugis::contact::limits::{
 };
 use maugis::contact::model::Params;
 
-use crate::args::{self, num, short, FIG4C_ALPHA, FIG4C_BETA};
+use crate::args::{self, num, short, Roughness};
 use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
 use crate::plot::{finish_load_area_chart, load_area_chart, clip_y, colour, plot_err, DARK_GREY, LIGHT_GREY};
 
@@ -43,12 +43,9 @@ pub enum LimitsFormat {
 /// Flags of `maugis limits`.
 #[derive(Args, Debug)]
 pub struct LimitsArgs {
-    /// Normalised wave amplitude alpha >= 0 [default: 2 sqrt(2)/8].
-    #[arg(long, value_name = "A", value_parser = args::non_negative, allow_negative_numbers = true)]
-    pub alpha: Option<f64>,
-    /// Normalised wavelength beta > 0 [default: 9/8].
-    #[arg(long, value_name = "B", value_parser = args::positive, allow_negative_numbers = true)]
-    pub beta: Option<f64>,
+    /// --alpha, --beta.
+    #[command(flatten)]
+    pub roughness: Roughness,
     /// Maugis parameter of the M-DMT (E.43), smooth M-DMT (E.44) and local (Eq. 17) curves.
     #[arg(long, value_name = "L", default_value = "1/10", value_parser = args::positive, allow_negative_numbers = true)]
     pub lambda: f64,
@@ -161,8 +158,7 @@ fn table_csv(rows: &[Row]) -> Result<String, String> {
 
 /// Runs `maugis limits`.
 pub fn run(a: LimitsArgs) -> Result<(), String> {
-    let alpha = a.alpha.unwrap_or(FIG4C_ALPHA);
-    let beta = a.beta.unwrap_or(FIG4C_BETA);
+    let (alpha, beta) = a.roughness.values();
     let params = Params::new(a.lambda, alpha, beta).map_err(|e| e.to_string())?;
     args::check_size("--amax", a.amax, alpha, beta)?;
     if a.format == LimitsFormat::Files {

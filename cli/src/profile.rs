@@ -22,7 +22,9 @@ use serde::Serialize;
 use maugis::contact::displacement::profile_depth;
 use maugis::contact::model::{ContactSize, Params, Validity};
 
-use crate::args::{self, num, short, FIG4C_ALPHA, FIG4C_BETA};
+use maugis::contact::units::{Material, Scales};
+
+use crate::args::{self, num, short, Roughness, SiArgs};
 use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
 use crate::plot::{tick, clip_y, colour, plot_err, DARK_GREY, LIGHT_GREY};
 
@@ -38,18 +40,21 @@ pub enum ProfileFormat {
 /// Flags of `maugis profile`.
 #[derive(Args, Debug)]
 pub struct ProfileArgs {
-    /// Contact half-width abar > 0.
+    /// Contact half-width abar > 0 (required, or --half-width with --units si).
     #[arg(long, value_name = "A", value_parser = args::positive, allow_negative_numbers = true)]
-    pub abar: f64,
-    /// Maugis parameter lambda > 0.
-    #[arg(long, value_name = "L", default_value = "1", value_parser = args::positive, allow_negative_numbers = true)]
-    pub lambda: f64,
-    /// Normalised wave amplitude alpha >= 0 [default: 2 sqrt(2)/8].
-    #[arg(long, value_name = "A", value_parser = args::non_negative, allow_negative_numbers = true)]
-    pub alpha: Option<f64>,
-    /// Normalised wavelength beta > 0 [default: 9/8].
-    #[arg(long, value_name = "B", value_parser = args::positive, allow_negative_numbers = true)]
-    pub beta: Option<f64>,
+    pub abar: Option<f64>,
+    /// Contact half-width a in m (with --units si), instead of --abar.
+    #[arg(long = "half-width", value_name = "M", value_parser = args::positive)]
+    pub half_width: Option<f64>,
+    /// Maugis parameter lambda > 0 [default: 1].
+    #[arg(long, value_name = "L", value_parser = args::positive, allow_negative_numbers = true)]
+    pub lambda: Option<f64>,
+    /// --alpha, --beta.
+    #[command(flatten)]
+    pub roughness: Roughness,
+    /// --units si and the material.
+    #[command(flatten)]
+    pub si: SiArgs,
     /// Sample points over xbar in [0, 1.5 m abar] (the edge and strip end are added).
     #[arg(long, value_name = "N", default_value = "600", value_parser = args::grid_points)]
     pub points: usize,
@@ -85,6 +90,21 @@ struct ProfileJson {
     max_traction: f64,
     max_traction_at: f64,
     samples: Vec<Sample>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    si: Option<ProfileSi>,
+}
+
+/// The state in SI units (with `--units si`); samples scale by `scales`
+/// (`x` by `horizontal`, `u`, `g`, `h` by `vertical`, `p` by `sigma_pa`).
+#[derive(Serialize)]
+struct ProfileSi {
+    material: Material,
+    scales: Scales,
+    sigma_pa: f64,
+    delta_c_m: f64,
+    half_width_m: f64,
+    strip_end_m: f64,
+    load_n_per_m: f64,
 }
 
 /// A one-line description of the validity of a state.
@@ -109,24 +129,45 @@ fn validity_text(v: &Validity) -> String {
 
 /// Runs `maugis profile`.
 pub fn run(a: ProfileArgs) -> Result<(), String> {
-    let alpha = a.alpha.unwrap_or(FIG4C_ALPHA);
-    let beta = a.beta.unwrap_or(FIG4C_BETA);
-    let params = Params::new(a.lambda, alpha, beta).map_err(|e| e.to_string())?;
-    args::check_size("--abar", a.abar, alpha, beta)?;
+    let si = a.si.resolve(&[
+        ("--lambda", a.lambda.is_some()),
+        ("--alpha", a.roughness.alpha.is_some()),
+        ("--beta", a.roughness.beta.is_some()),
+        ("--abar", a.abar.is_some()),
+    ])?;
+    let (lambda, alpha, beta, abar) = match &si {
+        Some(r) => {
+            if r.lambdas.len() != 1 {
+                return Err("profile takes one --sigma or --delta-c".into());
+            }
+            let hw = a.half_width.ok_or("--units si needs --half-width (the contact half-width in m)")?;
+            (r.lambdas[0], r.alpha, r.beta, r.scales.from_horizontal(hw))
+        }
+        None => {
+            if a.half_width.is_some() {
+                return Err("--half-width needs --units si (or give --abar)".into());
+            }
+            let (alpha, beta) = a.roughness.values();
+            (a.lambda.unwrap_or(1.0), alpha, beta, a.abar.ok_or("--abar is required (the contact half-width, normalised)")?)
+        }
+    };
+    let flag = if si.is_some() { "--half-width" } else { "--abar" };
+    let params = Params::new(lambda, alpha, beta).map_err(|e| e.to_string())?;
+    args::check_size(flag, abar, alpha, beta)?;
     if a.format == ProfileFormat::Files {
         check_out_dir(&a.out)?;
     }
-    let cs = ContactSize::new(params, a.abar).map_err(|e| e.to_string())?;
-    let strip = cs.solve_strip().map_err(|e| format!("abar = {}: {e}", num(a.abar)))?;
+    let cs = ContactSize::new(params, abar).map_err(|e| e.to_string())?;
+    let strip = cs.solve_strip().map_err(|e| format!("abar = {}: {e}", num(abar)))?;
     let m = strip.m();
     let load = cs.load_at(strip);
-    let validity = cs.validity_at(strip).map_err(|e| format!("abar = {}: {e}", num(a.abar)))?;
-    let c = m * a.abar;
+    let validity = cs.validity_at(strip).map_err(|e| format!("abar = {}: {e}", num(abar)))?;
+    let c = m * abar;
     let xmax = 1.5 * c;
 
     // Uniform grid plus the contact edge and the strip end.
     let mut xs: Vec<f64> = (0..a.points).map(|i| xmax * i as f64 / (a.points - 1) as f64).collect();
-    xs.push(a.abar);
+    xs.push(abar);
     xs.push(c);
     xs.sort_by(f64::total_cmp);
     xs.dedup();
@@ -144,10 +185,10 @@ pub fn run(a: ProfileArgs) -> Result<(), String> {
 
     if a.format == ProfileFormat::Json {
         let out = ProfileJson {
-            lambda: a.lambda,
+            lambda: lambda,
             alpha,
             beta,
-            abar: a.abar,
+            abar: abar,
             m,
             load,
             valid: validity.valid,
@@ -156,6 +197,15 @@ pub fn run(a: ProfileArgs) -> Result<(), String> {
             max_traction: validity.max_traction,
             max_traction_at: validity.max_traction_at,
             samples,
+            si: si.as_ref().map(|r| ProfileSi {
+                material: r.material,
+                scales: r.scales,
+                sigma_pa: r.scales.sigma(lambda),
+                delta_c_m: r.scales.delta_c(lambda),
+                half_width_m: r.scales.to_horizontal(abar),
+                strip_end_m: r.scales.to_horizontal(c),
+                load_n_per_m: r.scales.to_load(load),
+            }),
         };
         let text = serde_json::to_string(&out).map_err(|e| format!("could not format JSON: {e}"))?;
         return print_stdout(&format!("{text}\n"));
@@ -163,10 +213,18 @@ pub fn run(a: ProfileArgs) -> Result<(), String> {
 
     let mut w = csv::Writer::from_writer(Vec::new());
     let err = |e: csv::Error| format!("could not format CSV: {e}");
-    w.write_record(["xbar", "pbar", "ubar", "gbar", "hbar"]).map_err(err)?;
+    let mut header = vec!["xbar", "pbar", "ubar", "gbar", "hbar"];
+    if si.is_some() {
+        header.extend(["x_m", "p_pa", "u_m", "g_m", "h_m"]);
+    }
+    w.write_record(&header).map_err(err)?;
     for s in &samples {
-        w.write_record([s.xbar.to_string(), s.pbar.to_string(), s.ubar.to_string(), s.gbar.to_string(), s.hbar.to_string()])
-            .map_err(err)?;
+        let mut row = vec![s.xbar.to_string(), s.pbar.to_string(), s.ubar.to_string(), s.gbar.to_string(), s.hbar.to_string()];
+        if let Some(r) = &si {
+            let k = &r.scales;
+            row.extend([k.to_horizontal(s.xbar), k.to_traction(s.pbar, lambda), k.to_vertical(s.ubar), k.to_vertical(s.gbar), k.to_vertical(s.hbar)].map(|v| v.to_string()));
+        }
+        w.write_record(&row).map_err(err)?;
     }
     let csv_bytes = w.into_inner().map_err(|e| format!("could not format CSV: {e}"))?;
     let svg = profile_svg(&samples, &cs, m, load, &validity)?;
@@ -176,15 +234,27 @@ pub fn run(a: ProfileArgs) -> Result<(), String> {
     let _ = writeln!(
         report,
         "maugis profile: lambda = {}, alpha = {}, beta = {}, abar = {}: m = {:.6}, strip end c = {:.6}, load = {:.6}",
-        short(a.lambda),
+        short(lambda),
         short(alpha),
         short(beta),
-        short(a.abar),
+        short(abar),
         m,
         c,
         load
     );
     let _ = writeln!(report, "  {}", validity_text(&validity));
+    if let Some(r) = &si {
+        let k = &r.scales;
+        let _ = writeln!(
+            report,
+            "  SI: a = {:.4e} m, c = {:.4e} m, load = {:.4e} N/m, sigma_0 = {:.4e} Pa, delta_c = {:.4e} m",
+            k.to_horizontal(abar),
+            k.to_horizontal(c),
+            k.to_load(load),
+            k.sigma(lambda),
+            k.delta_c(lambda)
+        );
+    }
     let _ = writeln!(report, "wrote {} file(s) to {}:", written.len(), a.out.display());
     for p in &written {
         let _ = writeln!(report, "  {}", p.display());

@@ -24,7 +24,7 @@ use plotters::prelude::*;
 
 use maugis::contact::sweep::{merge, run_sweep, Regime, Sweep, SweepAxis, SweepGrid};
 
-use crate::args::{self, num, short, FIG4C_ALPHA, FIG4C_BETA};
+use crate::args::{self, num, short, Roughness};
 use crate::curve::progress;
 use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
 use crate::plot::plot_err;
@@ -64,12 +64,9 @@ pub struct SweepArgs {
     /// Number of values of the second axis (linear).
     #[arg(long, value_name = "N", default_value = "40", value_parser = axis_points)]
     pub n: usize,
-    /// Fixed alpha (for --axis beta) [default: 2 sqrt(2)/8].
-    #[arg(long, value_name = "A", value_parser = args::non_negative, allow_negative_numbers = true)]
-    pub alpha: Option<f64>,
-    /// Fixed beta (for --axis alpha or johnson) [default: 9/8].
-    #[arg(long, value_name = "B", value_parser = args::positive, allow_negative_numbers = true)]
-    pub beta: Option<f64>,
+    /// --alpha (fixed for --axis beta), --beta (fixed for --axis alpha or johnson).
+    #[command(flatten)]
+    pub roughness: Roughness,
     /// Largest contact half-width of every curve.
     #[arg(long, value_name = "AMAX", default_value = "6", value_parser = args::positive, allow_negative_numbers = true)]
     pub amax: f64,
@@ -269,9 +266,9 @@ fn report(s: &Sweep, written: &[PathBuf], out: &std::path::Path, secs: Option<f6
 /// Runs `maugis sweep`.
 pub fn run(a: SweepArgs) -> Result<(), String> {
     let (axis, fixed) = match a.axis {
-        Axis::Alpha => (SweepAxis::Alpha, a.beta.unwrap_or(FIG4C_BETA)),
-        Axis::Beta => (SweepAxis::Beta, a.alpha.unwrap_or(FIG4C_ALPHA)),
-        Axis::Johnson => (SweepAxis::Johnson, a.beta.unwrap_or(FIG4C_BETA)),
+        Axis::Alpha => (SweepAxis::Alpha, a.roughness.values().1),
+        Axis::Beta => (SweepAxis::Beta, a.roughness.values().0),
+        Axis::Johnson => (SweepAxis::Johnson, a.roughness.values().1),
     };
     if a.lambda_max < a.lambda_min {
         return Err(format!("--lambda-max ({}) must be >= --lambda-min ({})", num(a.lambda_max), num(a.lambda_min)));

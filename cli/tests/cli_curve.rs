@@ -150,6 +150,121 @@ fn curve_json_follows_the_schema() {
     assert!(n_turning > 0 && n_jumps > 0);
 }
 
+/// PDMS-like material used by the SI tests.
+const SI: [&str; 12] = ["--units", "si", "--e-star", "2e6", "--radius", "1e-3", "--dgamma", "0.05", "--amplitude", "2.5e-7", "--wavelength", "3.3e-5"];
+
+fn json_of(args: &[&str]) -> Value {
+    let o = maugis(args);
+    assert_eq!(o.status.code(), Some(0), "{args:?}: stderr: {}", stderr(&o));
+    serde_json::from_str(stdout(&o).trim()).expect("valid JSON")
+}
+
+/// `--units si`: the same curve as the normalised run at the derived lambda,
+/// alpha, beta; SI values are the normalised ones times the scales; `--sigma`
+/// and `--delta-c = dgamma/sigma` agree; CSV and profile carry SI columns.
+#[test]
+fn units_si_converts_inputs_and_outputs() {
+    let mut args = vec!["curve", "--points", "120", "--format", "json", "--sigma", "1.5e5"];
+    args.extend(SI);
+    let si = json_of(&args);
+    let c = &si["curves"][0];
+    let (lambda, alpha, beta) = (c["lambda"].as_f64().unwrap(), c["alpha"].as_f64().unwrap(), c["beta"].as_f64().unwrap());
+    // by hand: l_h = (dgamma R^2/E*)^(1/3), l_v = l_h^2/R, sigma scale (E*^2 dgamma/R)^(1/3)
+    let (e, r, g) = (2e6f64, 1e-3f64, 0.05f64);
+    let lh = (g * r * r / e).cbrt();
+    let lv = lh * lh / r;
+    assert!((lambda / (1.5e5 / (e * e * g / r).cbrt()) - 1.0).abs() < 1e-12, "{lambda}");
+    assert!((alpha / (2.5e-7 / lv) - 1.0).abs() < 1e-12 && (beta / (3.3e-5 / lh) - 1.0).abs() < 1e-12);
+    // the normalised run at those parameters is the same object plus nothing
+    let norm = json_of(&["curve", "--points", "120", "--format", "json", "--lambda", &lambda.to_string(), "--alpha", &alpha.to_string(), "--beta", &beta.to_string()]);
+    assert_eq!(norm["curves"], si["curves"]);
+    assert!(norm.get("si").is_none());
+    let s = &si["si"];
+    let load_scale = (e * g * g * r).cbrt();
+    let po = c["pull_off"]["load"].as_f64().unwrap();
+    let sc = &s["curves"][0];
+    assert!((sc["pull_off_load_n_per_m"].as_f64().unwrap() / (po * load_scale) - 1.0).abs() < 1e-12);
+    assert!((sc["pull_off_half_width_m"].as_f64().unwrap() / (c["pull_off"]["abar"].as_f64().unwrap() * lh) - 1.0).abs() < 1e-12);
+    let w = c["dissipation"]["load_control"].as_f64().unwrap();
+    assert!((sc["dissipation_load_control_j_per_m"].as_f64().unwrap() - w * g * lh).abs() <= 1e-12 * (w * g * lh).abs().max(1e-300));
+    assert!((sc["delta_c_m"].as_f64().unwrap() / (g / 1.5e5) - 1.0).abs() < 1e-12);
+    assert!((s["scales"]["vertical"].as_f64().unwrap() / lv - 1.0).abs() < 1e-12);
+    // --delta-c = dgamma/sigma_0 gives the same lambda
+    let mut args = vec!["curve", "--points", "120", "--format", "json", "--delta-c"];
+    let dc = (g / 1.5e5).to_string();
+    args.push(&dc);
+    args.extend(SI);
+    let by_range = json_of(&args);
+    assert!((by_range["curves"][0]["lambda"].as_f64().unwrap() / lambda - 1.0).abs() < 1e-12);
+    // files: CSV with SI columns, summary.json with the si object
+    let dir = TempPath::new("si");
+    let mut args = vec!["curve", "--points", "40", "--sigma", "1.5e5", "--out", dir.str()];
+    args.extend(SI);
+    let o = maugis(&args);
+    assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(&o));
+    assert!(stdout(&o).contains("J/m"));
+    let summary: Value = serde_json::from_str(&std::fs::read_to_string(dir.path().join("summary.json")).unwrap()).unwrap();
+    assert!(summary["si"]["scales"]["horizontal"].is_number());
+    let csv_name = summary["curves"][0]["csv"].as_str().unwrap().to_string();
+    let text = std::fs::read_to_string(dir.path().join(csv_name)).unwrap();
+    let mut lines = text.lines();
+    assert!(lines.next().unwrap().ends_with(",a_m,load_n_per_m,approach_m"));
+    let row: Vec<f64> = lines.next().unwrap().split(',').filter_map(|v| v.parse().ok()).collect();
+    let (abar, load, a_m, l_si) = (row[3], row[6], row[row.len() - 3], row[row.len() - 2]);
+    assert!((a_m / (abar * lh) - 1.0).abs() < 1e-12 && (l_si / (load * load_scale) - 1.0).abs() < 1e-12);
+    // profile: --half-width in m
+    let mut args = vec!["profile", "--format", "json", "--sigma", "1.5e5", "--half-width", "6e-5", "--points", "20"];
+    args.extend(SI);
+    let p = json_of(&args);
+    assert!((p["abar"].as_f64().unwrap() / (6e-5 / lh) - 1.0).abs() < 1e-12);
+    assert!((p["si"]["load_n_per_m"].as_f64().unwrap() / (p["load"].as_f64().unwrap() * load_scale) - 1.0).abs() < 1e-12);
+    assert!((p["si"]["half_width_m"].as_f64().unwrap() / 6e-5 - 1.0).abs() < 1e-12);
+}
+
+/// Bad SI input exits 2, names the flag, writes nothing.
+#[test]
+fn units_si_bad_input_names_the_flag() {
+    let base = |extra: &[&'static str]| -> Vec<&'static str> {
+        let mut v = vec!["curve", "--units", "si", "--e-star", "2e6", "--radius", "1e-3", "--dgamma", "0.05"];
+        v.extend(extra);
+        v
+    };
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (vec!["curve", "--sigma", "1e5"], "--sigma"),
+        (vec!["curve", "--units", "cgs"], "--units"),
+        (vec!["curve", "--units", "si", "--sigma", "1e5"], "--e-star"),
+        (base(&[]), "--sigma"),
+        (base(&["--sigma", "1e5", "--lambda", "3"]), "--lambda"),
+        (base(&["--sigma", "1e5", "--alpha", "0.3"]), "--alpha"),
+        (base(&["--sigma", "1e5", "--delta-c", "1e-6"]), "--delta-c"),
+        (base(&["--sigma", "-1e5"]), "--sigma"),
+        (base(&["--sigma", "0"]), "--sigma"),
+        (base(&["--delta-c", "NaN"]), "--delta-c"),
+        (base(&["--sigma", "1e25"]), "--sigma"),
+        (base(&["--sigma", "1e5", "--amplitude", "1e-6"]), "--wavelength"),
+        (base(&["--sigma", "1e5", "--amplitude=-1e-6", "--wavelength", "1e-5"]), "--amplitude"),
+        (base(&["--sigma", "1e5", "--amplitude", "1e-6", "--wavelength", "0"]), "--wavelength"),
+        (vec!["curve", "--units", "si", "--e-star", "-2e6", "--radius", "1e-3", "--dgamma", "0.05", "--sigma", "1e5"], "--e-star"),
+        (vec!["curve", "--units", "si", "--e-star", "2e6", "--radius", "1e-3", "--dgamma", "0", "--sigma", "1e5"], "--dgamma"),
+        (vec!["profile", "--units", "si", "--e-star", "2e6", "--radius", "1e-3", "--dgamma", "0.05", "--sigma", "1e5"], "--half-width"),
+        (vec!["profile", "--units", "si", "--e-star", "2e6", "--radius", "1e-3", "--dgamma", "0.05", "--sigma", "1e5", "--abar", "2"], "--abar"),
+        (vec!["profile", "--abar", "2", "--half-width", "1e-5"], "--half-width"),
+        (vec!["profile", "--lambda", "1"], "--abar"),
+    ];
+    for (args, flag) in cases {
+        let dir = TempPath::new("si-bad");
+        let mut full = args.clone();
+        full.insert(1, "--out");
+        full.insert(2, dir.str());
+        let o = maugis(&full);
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: stderr {err}");
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err:?}");
+        assert!(err.contains(flag), "{args:?}: does not name {flag}: {err}");
+        assert!(stdout(&o).is_empty() && !dir.path().exists(), "{args:?}: wrote output");
+    }
+}
+
 /// `--datum` moves the machine's grip: it reaches the schema and the
 /// displacement-controlled paths, and leaves load control alone.
 #[test]

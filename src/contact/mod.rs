@@ -17,6 +17,7 @@
 //! * [`summary`]: the output schema of a run (summary.json, `--format json`).
 //! * [`sweep`]: regime maps over grids of lambda and alpha, beta or the Johnson parameter, sharded.
 //! * [`limits`]: Appendix E (JKR, M-DMT) and the Eq. 17 envelope.
+//! * [`units`]: SI inputs and outputs (scales of Eq. 13a with two length scales).
 //!
 //! Sign convention (notes/model.md, sec. 1): compressive traction is negative,
 //! `u` is positive "downward" like the profile depth
@@ -34,3 +35,4 @@ pub mod model_mp;
 pub mod paths;
 pub mod summary;
 pub mod sweep;
+pub mod units;

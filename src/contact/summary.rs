@@ -8,6 +8,7 @@
 
 use crate::contact::curve::{Curve, CurveOptions, CurvePoint, PullOff, TurningPoint};
 use crate::contact::paths::{ControlPaths, HysteresisLoop, Jump, PathNode};
+use crate::contact::units::{Material, Scales};
 
 /// The energy one loading-unloading cycle dissipates (units of `dgamma l_h`).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -178,5 +179,71 @@ impl RunParams {
     /// From the shared roughness and the grid options.
     pub fn new(alpha: f64, beta: f64, opts: CurveOptions) -> RunParams {
         RunParams { alpha, beta, amax: opts.amax, points: opts.points, datum: opts.datum }
+    }
+}
+
+/// One curve's headline numbers in SI units.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct SiCurve {
+    /// Maugis parameter.
+    pub lambda: f64,
+    /// Adhesive (Dugdale) stress `sigma_0` (Pa).
+    pub sigma_pa: f64,
+    /// Interaction range `delta_c = dgamma/sigma_0` (m).
+    pub delta_c_m: f64,
+    /// Pull-off load per unit length (N/m).
+    pub pull_off_load_n_per_m: Option<f64>,
+    /// Contact half-width at pull-off (m).
+    pub pull_off_half_width_m: Option<f64>,
+    /// Dissipation of one closed cycle under load control (J/m).
+    pub dissipation_load_control_j_per_m: f64,
+    /// The same under displacement control (J/m).
+    pub dissipation_displacement_control_j_per_m: f64,
+}
+
+/// A run in SI units: the material, the scales and each curve's headline
+/// numbers (the grid states stay normalised; multiply by the scales).
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct SiSummary {
+    /// Material and geometry.
+    pub material: Material,
+    /// Wave amplitude `A` (m).
+    pub amplitude_m: f64,
+    /// Wavelength `zeta` (m).
+    pub wavelength_m: f64,
+    /// The scales: `l_h`, `l_v` (m), load (N/m), stress (Pa), energy (J/m).
+    pub scales: Scales,
+    /// Datum of displacement control (m).
+    pub datum_m: f64,
+    /// One entry per curve.
+    pub curves: Vec<SiCurve>,
+}
+
+impl SiSummary {
+    /// The SI view of a run.
+    pub fn new(run: &RunSummary, material: Material) -> crate::error::Result<SiSummary> {
+        let s = Scales::new(material)?;
+        Ok(SiSummary {
+            material,
+            amplitude_m: s.to_vertical(run.params.alpha),
+            wavelength_m: s.to_horizontal(run.params.beta),
+            scales: s,
+            datum_m: s.to_horizontal(run.params.datum),
+            curves: run
+                .curves
+                .iter()
+                .map(|c| SiCurve {
+                    lambda: c.lambda,
+                    sigma_pa: s.sigma(c.lambda),
+                    delta_c_m: s.delta_c(c.lambda),
+                    pull_off_load_n_per_m: c.pull_off.map(|p| s.to_load(p.load)),
+                    pull_off_half_width_m: c.pull_off.map(|p| s.to_horizontal(p.abar)),
+                    dissipation_load_control_j_per_m: s.to_energy(c.dissipation.load_control),
+                    dissipation_displacement_control_j_per_m: s.to_energy(c.dissipation.displacement_control),
+                })
+                .collect(),
+        })
     }
 }
