@@ -303,3 +303,26 @@ fn displacement_control_dissipates_less() {
         }
     }
 }
+
+/// Issue 9, lambda = 1/4: the load-controlled pull-off (-1.52 at abar = 0.935)
+/// lies in a cavitating stretch. The valid pull-off is the most tensile valid
+/// state unloading can reach, here on the small-contact branch below that
+/// stretch: L -> -1.2533 as abar -> 0+ (an independent boundary-element
+/// solution with cavitation: -1.233 to -1.244), not a state above it.
+#[test]
+fn lambda_quarter_valid_pull_off_is_on_the_small_contact_branch() {
+    let c = fig4c(0.25);
+    let po = c.pull_off.unwrap();
+    assert!(!po.validity.valid && (po.load + 1.5203).abs() < 1e-3, "{po:?}");
+    let v = c.valid_pull_off.unwrap();
+    assert!(v.valid && v.abar < 0.2, "{v:?}");
+    // it is the most tensile valid grid state, and the branch limit is near
+    let most = c.points.iter().filter(|p| p.validity.valid).map(|p| p.load).fold(f64::INFINITY, f64::min);
+    assert_eq!(v.load, most);
+    assert!((v.load + 1.2533).abs() < 1e-3, "{v:?}");
+    assert!(v.load < -1.233 && v.load > -1.27, "{v:?} vs the BEM's -1.233..-1.244");
+    // at lambda = 6 the pull-off itself is valid and is the valid pull-off
+    let c6 = fig4c(6.0);
+    let (po6, v6) = (c6.pull_off.unwrap(), c6.valid_pull_off.unwrap());
+    assert!(po6.validity.valid && (v6.load - po6.load).abs() < 1e-12, "{po6:?} {v6:?}");
+}

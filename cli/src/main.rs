@@ -9,6 +9,7 @@
 //! * `maugis profile`: traction, displacement and gap of one state (`profile.rs`).
 //! * `maugis limits`: the Appendix E limits and the Eq. 17 envelope (`limits.rs`).
 //! * `maugis sweep` / `maugis merge`: regime maps, sharded for array jobs (`sweep.rs`).
+//! * `maugis paper`: the paper's quoted numbers next to ours, docs/paper.md (`paper.rs`).
 //!
 //! Usage errors and runtime errors exit with code 2 and a one-line message on
 //! stderr (`maugis: ...`); no output file is written then.
@@ -18,6 +19,7 @@ mod curve;
 mod eval;
 mod limits;
 mod output;
+mod paper;
 mod plot;
 mod profile;
 mod simulate;
@@ -53,6 +55,8 @@ enum Command {
     Simulate(simulate::SimulateArgs),
     /// Merge the output directories of `maugis sweep --shard s/n` runs into the whole sweep.
     Merge(sweep::MergeArgs),
+    /// Every number the seed paper quotes, recomputed, next to the paper's value (docs/paper.md).
+    Paper(paper::PaperArgs),
 }
 
 /// Requests of the demo: the Eq. 12 factors at abar = 6, beta = 9/8, and the edge x = a.
@@ -99,6 +103,7 @@ fn main() {
         Command::Sweep(a) => report(guarded(move || sweep::run(a))),
         Command::Simulate(a) => report(guarded(move || simulate::run(a))),
         Command::Merge(a) => report(guarded(move || sweep::run_merge(a))),
+        Command::Paper(a) => report(guarded(move || paper::run(a))),
     };
     std::process::exit(code);
 }
@@ -154,7 +159,7 @@ fn report(r: Result<(), String>) -> i32 {
 fn one_line(e: &clap::Error) -> String {
     use clap::error::ErrorKind;
     if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand || e.kind() == ErrorKind::MissingSubcommand {
-        return "a subcommand is required (eval, demo, curve, profile, limits, sweep, merge, simulate); try 'maugis --help'".into();
+        return "a subcommand is required (eval, demo, curve, profile, limits, sweep, merge, simulate, paper); try 'maugis --help'".into();
     }
     let text = e.render().to_string();
     let parts: Vec<&str> = text

@@ -150,6 +150,38 @@ fn curve_json_follows_the_schema() {
     assert!(n_turning > 0 && n_jumps > 0);
 }
 
+/// The numbers of a Markdown page, in order.
+fn numbers(text: &str) -> Vec<f64> {
+    text.split(|c: char| !(c.is_ascii_digit() || c == '.' || c == '-' || c == '+'))
+        .filter_map(|t| t.trim_matches(|c| c == '.' || c == '+').parse::<f64>().ok())
+        .collect()
+}
+
+/// docs/paper.md is what `maugis paper` generates now (every number, to the
+/// printed digits).
+#[test]
+fn paper_md_is_current() {
+    let dir = TempPath::new("paper");
+    std::fs::create_dir(dir.path()).unwrap();
+    let file = dir.path().join("paper.md");
+    let o = maugis(&["paper", "--write", file.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(&o));
+    let fresh = std::fs::read_to_string(&file).unwrap();
+    let committed = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/paper.md")).expect("docs/paper.md");
+    let (a, b) = (numbers(&fresh), numbers(&committed));
+    assert_eq!(a.len(), b.len(), "docs/paper.md is stale: regenerate with `maugis paper --write docs/paper.md`");
+    for (x, y) in a.iter().zip(&b) {
+        assert!((x - y).abs() <= 1e-4 + 1e-9 * x.abs(), "docs/paper.md is stale ({x} vs {y}): regenerate with `maugis paper --write docs/paper.md`");
+    }
+    // stdout without --write; a missing folder is refused
+    let o = maugis(&["paper"]);
+    assert_eq!(o.status.code(), Some(0));
+    assert_eq!(numbers(&stdout(&o)), a);
+    let o = maugis(&["paper", "--write", dir.path().join("no/such/paper.md").to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--write"));
+}
+
 /// PDMS-like material used by the SI tests.
 const SI: [&str; 12] = ["--units", "si", "--e-star", "2e6", "--radius", "1e-3", "--dgamma", "0.05", "--amplitude", "2.5e-7", "--wavelength", "3.3e-5"];
 

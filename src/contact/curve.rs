@@ -15,7 +15,7 @@
 //! * The pull-off state is the end of the unloading path under load control,
 //!   refined (golden section on the solved load), with the validity of the
 //!   refined state itself; [`Curve::valid_pull_off`] is the most tensile valid
-//!   state the unloading path visits.
+//!   state unloading can reach: on the path, or on the curve below its end.
 
 #[cfg(feature = "parallel")]
 use rayon::prelude::*;
@@ -96,7 +96,9 @@ pub struct Curve {
     pub jumps: Vec<Jump>,
     /// The pull-off state.
     pub pull_off: Option<PullOff>,
-    /// The most tensile valid state on the unloading path under load control.
+    /// The most tensile valid state unloading under load control can reach:
+    /// a state the path visits, or a grid state below its end (the
+    /// small-contact branch past a cavitating stretch).
     pub valid_pull_off: Option<PathNode>,
     /// Hysteresis loops under load control, each counted once.
     pub loops: Vec<HysteresisLoop>,
@@ -188,12 +190,19 @@ pub fn load_area_curve(params: Params, opts: CurveOptions) -> Result<Curve> {
         }
         None => None,
     };
+    // The most tensile valid state unloading can reach: the valid states the
+    // path visits, and the valid states below its end (a path through
+    // cavitating states is not described by the model, but its small-contact
+    // branch is: a boundary-element solution with cavitation reaches it,
+    // docs/model.md "Pull-off").
+    let end_abar = load_control.end.map_or(f64::NEG_INFINITY, |e| e.state.abar);
     let valid_pull_off = load_control
         .unloading
         .iter()
+        .copied()
+        .chain(points.iter().filter(|p| p.abar <= end_abar).map(|p| PathNode { abar: p.abar, load: p.load, approach: p.approach, valid: p.validity.valid }))
         .filter(|n| n.valid)
-        .min_by(|p, q| p.load.total_cmp(&q.load))
-        .copied();
+        .min_by(|p, q| p.load.total_cmp(&q.load));
     Ok(Curve {
         params,
         points,
