@@ -37,16 +37,18 @@ fn main() {
     );
     let mut worst: f64 = 0.0;
     for leg in [&c.loading, &c.unloading] {
-        for r in compare_with_model(params, leg) {
+        for r in compare_with_model(params, s.datum(), leg) {
             if r.model_valid && r.contact_intervals == 1 && r.abar > 0.2 {
                 worst = worst.max((r.load - r.model_load).abs());
             }
         }
     }
     println!("max |L - L_model| on valid single-interval states: {worst:.4e}; dissipated {:.5}", c.dissipated);
+    let datum = s.datum();
     if std::env::var("VERBOSE").is_ok() {
         for s in &all {
-            println!("{:.5} {:.5} {:.5} {} {} {} {}", s.approach, s.abar, s.load, s.contact_intervals(), s.zone_cells, s.cg_iterations, s.zone_updates);
+            let m = compare_with_model(params, datum, std::slice::from_ref(*s)).first().map(|r| (r.model_load, r.model_valid));
+            println!("{:.5} {:.5} {:.5} {} {} {} {} {:?}", s.approach, s.abar, s.load, s.contact_intervals(), s.zone_cells, s.cg_iterations, s.zone_updates, m);
         }
     }
 }

@@ -133,6 +133,16 @@ fn checked(solver: &mut ContactSolver, approach: f64, cells: usize) -> Result<St
     Ok(s)
 }
 
+/// The simulated approach on the model's datum: the library's
+/// `ContactSize::approach_at` measures `Delta` from a datum at infinity with the
+/// logarithmic term removed, `Delta_model = lim [u(x) - (2 Lbar/pi) ln x]`; the
+/// solver's datum is at distance `datum`, so
+/// `Delta_model = Delta - (2/pi) Lbar ln(datum)` (exact for the log kernel; the
+/// Hertz test checks it).
+pub fn approach_on_model_datum(approach: f64, load: f64, datum: f64) -> f64 {
+    approach - 2.0 / std::f64::consts::PI * load * datum.ln()
+}
+
 /// A simulated state next to the semi-analytical model at the same `abar`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ModelComparison {
@@ -140,17 +150,22 @@ pub struct ModelComparison {
     pub abar: f64,
     /// Simulated load.
     pub load: f64,
+    /// Simulated approach on the model's datum ([`approach_on_model_datum`]).
+    pub approach: f64,
     /// Semi-analytical load at `abar` (Eq. 14).
     pub model_load: f64,
+    /// Semi-analytical approach at `abar` (`ContactSize::approach_at`).
+    pub model_approach: f64,
     /// Whether the semi-analytical state is valid (no interpenetration, no cavitation).
     pub model_valid: bool,
     /// Simulated contact intervals.
     pub contact_intervals: usize,
 }
 
-/// The semi-analytical load and validity at each simulated contact state
-/// (`abar > 0`). States the model cannot solve are skipped.
-pub fn compare_with_model(params: Params, states: &[State]) -> Vec<ModelComparison> {
+/// The semi-analytical load, approach and validity at each simulated contact
+/// state (`abar > 0`); `datum` is the solver's ([`ContactSolver::datum`]).
+/// States the model cannot solve are skipped.
+pub fn compare_with_model(params: Params, datum: f64, states: &[State]) -> Vec<ModelComparison> {
     states
         .iter()
         .filter(|s| s.abar > 0.0)
@@ -159,7 +174,9 @@ pub fn compare_with_model(params: Params, states: &[State]) -> Vec<ModelComparis
             Some(ModelComparison {
                 abar: s.abar,
                 load: s.load,
+                approach: approach_on_model_datum(s.approach, s.load, datum),
                 model_load: m.load,
+                model_approach: m.approach,
                 model_valid: m.validity.valid,
                 contact_intervals: s.contact_intervals(),
             })

@@ -150,8 +150,8 @@ pub fn simulate(spec: SimulationSpec, progress: &mut dyn FnMut(usize, usize)) ->
         spec,
         half_width,
         datum: solver.datum(),
-        model_loading: compare_with_model(params, &cycle.loading),
-        model_unloading: compare_with_model(params, &cycle.unloading),
+        model_loading: compare_with_model(params, solver.datum(), &cycle.loading),
+        model_unloading: compare_with_model(params, solver.datum(), &cycle.unloading),
         cycle,
     })
 }
