@@ -12,6 +12,12 @@
 //! previous one, so the path follows a branch as a stiff testing machine would:
 //! snap-in and pull-off appear as jumps between neighbouring states.
 //!
+//! # Load control
+//!
+//! [`load_controlled`] reads the path of a soft machine (prescribed load) off a
+//! leg of the displacement-controlled cycle: the states with
+//! `dLbar/dDelta > 0`, the jumps between them and the pull-off load.
+//!
 //! # Dissipated work
 //!
 //! [`Cycle::dissipated`] is the work of the displacement-controlled cycle,
@@ -117,6 +123,79 @@ pub fn cycle(solver: &mut ContactSolver, opts: CycleOptions, progress: &mut dyn 
         dissipated = f64::NAN;
     }
     Ok(Cycle { loading, unloading, step, dissipated })
+}
+
+/// Direction of the load under load control.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LoadDirection {
+    /// Loading: the load increases.
+    Increasing,
+    /// Unloading: the load decreases.
+    Decreasing,
+}
+
+/// The load-controlled path read off one leg of a displacement-controlled
+/// cycle (a soft machine: the load is prescribed).
+///
+/// A state is stable under load control only where `dLbar/dDelta > 0`. With
+/// the load increasing, the machine follows the leg while the load rises; where
+/// the displacement-controlled load falls back (an unstable stretch under load
+/// control: snap-in at zero load, or the stretch before a cavitation jump) it
+/// jumps, at the load reached, to the first later state whose load is at least
+/// as high. Unloading is the mirror image with the load decreasing, and ends in
+/// pull-off at the most tensile load of the leg, where the contact separates
+/// under load control.
+///
+/// The states are those of the stiff-machine path: where that path itself
+/// jumped past the state a soft machine lands on, the load-controlled path
+/// resumes at the first visited state beyond the jump load (within one
+/// displacement step of the landing).
+#[derive(Debug, Clone, PartialEq)]
+pub struct LoadControlled {
+    /// Indices (into the leg) of the states on the load-controlled path, in order.
+    pub states: Vec<usize>,
+    /// Jumps as `(from, to)` index pairs: consecutive path states with skipped
+    /// (load-control unstable) states between them.
+    pub jumps: Vec<(usize, usize)>,
+    /// Unloading: the pull-off load (the most tensile load of the leg) and the
+    /// index of its state; `None` when loading or when no state carries tension.
+    pub pull_off: Option<(usize, f64)>,
+}
+
+/// The load-controlled path of one leg ([`LoadControlled`]): `Increasing`
+/// for the loading leg, `Decreasing` for the unloading leg (which should start
+/// at the last loading state, as [`Cycle::unloading`] does after it).
+pub fn load_controlled(leg: &[State], direction: LoadDirection) -> LoadControlled {
+    let mut states = Vec::new();
+    let mut jumps = Vec::new();
+    let mut record: Option<f64> = None;
+    for (i, s) in leg.iter().enumerate() {
+        let beyond = match (record, direction) {
+            (None, _) => true,
+            (Some(r), LoadDirection::Increasing) => s.load > r,
+            (Some(r), LoadDirection::Decreasing) => s.load < r,
+        };
+        if beyond {
+            if let Some(&last) = states.last() {
+                if i > last + 1 {
+                    jumps.push((last, i));
+                }
+            }
+            states.push(i);
+            record = Some(s.load);
+        }
+    }
+    let pull_off = match direction {
+        LoadDirection::Increasing => None,
+        LoadDirection::Decreasing => states.last().map(|&i| (i, leg[i].load)).filter(|&(_, l)| l < 0.0),
+    };
+    if let Some((i, _)) = pull_off {
+        // Under load control the contact separates at the most tensile load:
+        // the states after it on the leg are not reached.
+        states.retain(|&j| j <= i);
+        jumps.retain(|&(a, _)| a < i);
+    }
+    LoadControlled { states, jumps, pull_off }
 }
 
 /// One solve, then the check that nothing reached the end of the domain.
