@@ -50,7 +50,7 @@ pub struct SimulateArgs {
     #[arg(long, value_name = "X", default_value = "4", value_parser = args::positive, allow_negative_numbers = true)]
     pub amax: f64,
     /// Grid cells, a power of two.
-    #[arg(long, value_name = "N", default_value = "16384")]
+    #[arg(long, value_name = "N", default_value = "4096")]
     pub grid: usize,
     /// Approach steps per leg.
     #[arg(long, value_name = "S", default_value = "100")]
