@@ -29,7 +29,7 @@ use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use rayon::prelude::*;
 
-use maugis::contact::curve::{load_area_curve, Curve, CurveOptions, JumpDirection, TurningKind};
+use maugis::contact::curve::{load_area_curve, Curve, CurveOptions, CurvePoint, JumpDirection, TurningKind};
 use maugis::contact::summary::{CurveSummary, RunParams, RunSummary};
 use maugis::contact::limits::{jkr_envelope, jkr_load, mdmt_envelope, mdmt_load};
 use maugis::contact::model::Params;
@@ -341,10 +341,10 @@ pub fn run(a: CurveArgs) -> Result<(), String> {
 
 /// Splits a curve into runs of equal validity; neighbouring runs share their
 /// boundary point so the drawn line is continuous.
-fn validity_runs(c: &Curve) -> Vec<(bool, Vec<(f64, f64)>)> {
+fn validity_runs<'p>(points: impl IntoIterator<Item = &'p CurvePoint>, coords: impl Fn(&CurvePoint) -> (f64, f64)) -> Vec<(bool, Vec<(f64, f64)>)> {
     let mut out: Vec<(bool, Vec<(f64, f64)>)> = Vec::new();
-    for p in &c.points {
-        let xy = (p.abar, p.load);
+    for p in points {
+        let xy = coords(p);
         let v = p.validity.valid;
         match out.last_mut() {
             Some((lv, pts)) if *lv == v => pts.push(xy),
@@ -366,6 +366,45 @@ fn validity_runs(c: &Curve) -> Vec<(bool, Vec<(f64, f64)>)> {
         }
     }
     out
+}
+
+/// Draws one curve's validity runs (from [`validity_runs`]): valid parts solid,
+/// invalid parts thin, faded and dashed, clipped to `[ymin, ymax]`, with one
+/// legend entry for the curve (marked when every state is invalid).
+fn draw_validity_runs(
+    chart: &mut ChartContext<'_, SVGBackend<'_>, Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>>,
+    runs: Vec<(bool, Vec<(f64, f64)>)>,
+    (ymin, ymax): (f64, f64),
+    colour_index: usize,
+    lambda: f64,
+) -> Result<(), String> {
+    let col = colour(colour_index);
+    let solid = col.stroke_width(3);
+    let faded = ShapeStyle { color: col.mix(0.6), filled: false, stroke_width: 2 };
+    let mut labelled = false;
+    for (valid, pts) in runs {
+        for piece in clip_y(&pts, ymin, ymax) {
+            if valid {
+                let ann = chart.draw_series(LineSeries::new(piece, solid)).map_err(plot_err)?;
+                if !labelled {
+                    ann.label(format!("λ = {}", short(lambda)))
+                        .legend(move |(x, y)| PathElement::new(vec![(x - 4, y), (x + 26, y)], solid));
+                    labelled = true;
+                }
+            } else {
+                chart.draw_series(DashedLineSeries::new(piece, 3, 5, faded)).map_err(plot_err)?;
+            }
+        }
+    }
+    if !labelled {
+        // an all-invalid curve still gets its legend entry
+        chart
+            .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
+            .map_err(plot_err)?
+            .label(format!("λ = {} (all states invalid)", short(lambda)))
+            .legend(move |(x, y)| DashedPathElement::new(vec![(x - 4, y), (x + 26, y)], 3, 5, faded));
+    }
+    Ok(())
 }
 
 /// A limit line: points, style, dash, gap, legend label.
@@ -448,32 +487,7 @@ pub fn load_area_svg(runs: &[Run], alpha: f64, beta: f64, amax: f64, mdmt_lambda
 
         // Curves: valid parts solid, invalid parts thin, faded and dashed.
         for (i, r) in runs.iter().enumerate() {
-            let col = colour(i);
-            let solid = col.stroke_width(3);
-            let faded = ShapeStyle { color: col.mix(0.6), filled: false, stroke_width: 2 };
-            let mut labelled = false;
-            for (valid, pts) in validity_runs(&r.curve) {
-                for piece in clip_y(&pts, ymin, ymax) {
-                    if valid {
-                        let ann = chart.draw_series(LineSeries::new(piece, solid)).map_err(plot_err)?;
-                        if !labelled {
-                            ann.label(format!("λ = {}", short(r.lambda)))
-                                .legend(move |(x, y)| PathElement::new(vec![(x - 4, y), (x + 26, y)], solid));
-                            labelled = true;
-                        }
-                    } else {
-                        chart.draw_series(DashedLineSeries::new(piece, 3, 5, faded)).map_err(plot_err)?;
-                    }
-                }
-            }
-            if !labelled {
-                // an all-invalid curve still gets its legend entry
-                chart
-                    .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
-                    .map_err(plot_err)?
-                    .label(format!("λ = {} (all states invalid)", short(r.lambda)))
-                    .legend(move |(x, y)| DashedPathElement::new(vec![(x - 4, y), (x + 26, y)], 3, 5, faded));
-            }
+            draw_validity_runs(&mut chart, validity_runs(&r.curve.points, |p| (p.abar, p.load)), (ymin, ymax), i, r.lambda)?;
         }
 
         // Jumps: horizontal arrows at constant load, in the curve's colour; thin
@@ -641,45 +655,8 @@ pub fn load_approach_svg(runs: &[Run], alpha: f64, beta: f64, window: Window) ->
         let mut chart = xy_chart(&root, title, (x0 - dx, x1 + dx), (ymin, ymax), ("approach Δ̄", "load Lbar"))?;
         for (i, r) in runs.iter().enumerate() {
             let col = colour(i);
-            let solid = col.stroke_width(3);
-            let faded = ShapeStyle { color: col.mix(0.6), filled: false, stroke_width: 2 };
-            let mut labelled = false;
-            let mut piece: Vec<(f64, f64)> = Vec::new();
-            let mut valid = None;
-            let pts: Vec<_> = r.curve.points.iter().filter(|p| p.abar >= window.amin).collect();
-            for (k, p) in pts.iter().enumerate() {
-                let xy = (p.approach, p.load);
-                let v = p.validity.valid;
-                if valid != Some(v) || k + 1 == pts.len() {
-                    if k + 1 == pts.len() {
-                        piece.push(xy);
-                    }
-                    if let Some(was) = valid {
-                        for seg in clip_y(&piece, ymin, ymax) {
-                            if was {
-                                let ann = chart.draw_series(LineSeries::new(seg, solid)).map_err(plot_err)?;
-                                if !labelled {
-                                    ann.label(format!("λ = {}", short(r.lambda)))
-                                        .legend(move |(x, y)| PathElement::new(vec![(x - 4, y), (x + 26, y)], solid));
-                                    labelled = true;
-                                }
-                            } else {
-                                chart.draw_series(DashedLineSeries::new(seg, 3, 5, faded)).map_err(plot_err)?;
-                            }
-                        }
-                    }
-                    piece = piece.last().copied().into_iter().collect();
-                    valid = Some(v);
-                }
-                piece.push(xy);
-            }
-            if !labelled {
-                chart
-                    .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
-                    .map_err(plot_err)?
-                    .label(format!("λ = {} (all states invalid)", short(r.lambda)))
-                    .legend(move |(x, y)| DashedPathElement::new(vec![(x - 4, y), (x + 26, y)], 3, 5, faded));
-            }
+            let pts = r.curve.points.iter().filter(|p| p.abar >= window.amin);
+            draw_validity_runs(&mut chart, validity_runs(pts, |p| (p.approach, p.load)), (ymin, ymax), i, r.lambda)?;
             if let Some(po) = r.curve.pull_off {
                 if po.load >= ymin && po.load <= ymax {
                     chart
