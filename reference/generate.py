@@ -1412,10 +1412,119 @@ def write_ball_decimal():
         BALL_DECIMAL_BITS, BALL_DECIMAL_OUT_DIGITS, "fn,args,value", ball_decimal_rows())
 
 
+# --------------------------------------------------------------------------
+# The model's strip ratio m and load at decimal parameters (the ball contract)
+# --------------------------------------------------------------------------
+
+MODEL_DECIMAL_BITS = (700, 900)
+MODEL_DECIMAL_OUT_DIGITS = 100
+# sqrt(2)/4 (Fig. 4c's alpha) typed to 40 digits: not a binary fraction.
+FIG4C_ALPHA = "0.3535533905932737622004221810524245196424"
+
+
+def model_residual(lam, alpha, beta, abar, e):
+    """F(m) = lambda gbar(m abar) - 1 of Eq. 15b (corrected, docs/model.md),
+    m = 1 + e, at mpmath's current precision; u_w by the Bessel form."""
+    m = 1 + e
+    s = mpmath.sqrt(e * (e + 2))
+    acosh_m = mpmath.acosh(m)
+    hertz = abar ** 2 / 2 * (m * s - acosh_m)
+    adhesive = 4 / mpmath.pi * lam * abar * (s * acosh_m - m * mpmath.log(m))
+    wave = 0
+    if alpha != 0:
+        u = wave_bessel_ref(abar, beta, alpha, m * abar)[0]
+        wave = 2 * alpha * mpmath.sin(mpmath.pi * m * abar / beta) ** 2 - u
+    return lam * (hertz + adhesive + wave) - 1
+
+
+def model_first_root(args):
+    """The first root e = m - 1 > 0 of F (F(1) = -1 < 0): a scan on a
+    geometric grid of e and bisection at 80 bits, then the secant method at
+    the current precision, and a proven-by-evaluation sign change of F across
+    the result at that precision."""
+    work = mp.prec
+    mp.prec = 80
+    lam, alpha, beta, abar = (mpf(v) for v in args)
+    f = lambda e: model_residual(lam, alpha, beta, abar, e)
+    lo = hi = None
+    prev = mpf(0)
+    for i in range(2400):
+        e = mpf(10) ** -14 * mpf("1.02") ** i
+        if f(e) > 0:
+            lo, hi = prev, e
+            break
+        prev = e
+    if hi is None:
+        raise ValueError("no sign change of F below e = %s" % e)
+    while hi - lo > hi * mpf(2) ** -70:
+        mid = (lo + hi) / 2
+        if f(mid) > 0:
+            hi = mid
+        else:
+            lo = mid
+    mp.prec = work
+    lam, alpha, beta, abar = (mpf(v) for v in args)
+    f = lambda e: model_residual(lam, alpha, beta, abar, e)
+    root = mpmath.findroot(f, (mpf(lo), mpf(hi)), solver="secant", tol=mpf(2) ** (-2 * work))
+    delta = abs(root) * mpf(2) ** (-work + 20)
+    if not (f(root - delta) < 0 < f(root + delta)):
+        raise ValueError("no sign change of F across the refined root at %d bits" % work)
+    return root
+
+
+def model_load(args, m):
+    lam, alpha, beta, abar = (mpf(v) for v in args)
+    d = 2 * mpmath.pi * abar / beta
+    return (mpmath.pi * abar ** 2 / 4 - 2 * lam * abar * mpmath.sqrt(m * m - 1)
+            + mpmath.pi ** 2 * alpha * abar / beta * mpmath.besselj(1, d))
+
+
+def model_decimal_inputs():
+    """(lambda, alpha, beta, abar) decimal strings: Fig. 4c roughness, the
+    smooth cylinder, a large lambda (m -> 1) and decimals that are not binary."""
+    out = []
+    for lam in ("0.25", "1", "3", "6", "0.3"):
+        for abar in ("0.7", "2.2", "3.16"):
+            out.append((lam, FIG4C_ALPHA, "1.125", abar))
+    for lam, abar in (("0.1", "1.3"), ("1", "0.7"), ("10", "2.5"), ("1000", "1.7")):
+        out.append((lam, "0", "1.125", abar))
+    out.append(("2.7182818284590452353602874713526624977572", "0.1", "0.3", "1.4142135623730950488"))
+    out.append(("6", "0.35", "1.1", "1.05"))
+    return out
+
+
+def model_decimal_rows():
+    rows = []
+    for args in model_decimal_inputs():
+        vals = []
+        for bits in MODEL_DECIMAL_BITS:
+            mp.prec = bits
+            m = 1 + model_first_root(args)
+            vals.append((m, model_load(args, m)))
+        mp.prec = MODEL_DECIMAL_BITS[1]
+        (m0, l0), (m1, l1) = vals
+        tol = mpf(10) ** -(MODEL_DECIMAL_OUT_DIGITS + 20)
+        if not (abs(m0 - m1) < tol * abs(m1) and abs(l0 - l1) < tol * max(abs(l1), 1)):
+            log("model_decimal: reject %s" % (args,))
+            continue
+        fmt = lambda v: mpmath.nstr(v, MODEL_DECIMAL_OUT_DIGITS, min_fixed=1, max_fixed=0)
+        rows.append(args + (fmt(m1), fmt(l1)))
+        log("model_decimal: %s m = %s" % (args, mpmath.nstr(m1, 12)))
+    return rows
+
+
+def write_model_decimal():
+    return write_decimal_table(
+        "model_decimal",
+        ["the strip ratio m (first root of Eq. 15b, corrected) and the load (Eq. 14) at the DECIMALS as typed;",
+         "F by the Bessel form of u_w, root by a scan at 80 bits and bisection at each precision;"],
+        MODEL_DECIMAL_BITS, MODEL_DECIMAL_OUT_DIGITS, "lambda,alpha,beta,abar,m,load", model_decimal_rows())
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--jobs", type=int, default=2)
-    ap.add_argument("--only", default="bessel_j,hyp1f2,hyp2f1,meijer_g_k,bessel_j_decimal,hyp2f1_decimal,bessel_j_grid,ball_inputs_decimal")
+    ap.add_argument("--only", default="bessel_j,hyp1f2,hyp2f1,meijer_g_k,bessel_j_decimal,hyp2f1_decimal,bessel_j_grid,ball_inputs_decimal,model_decimal")
     ap.add_argument("--limit", type=int, default=0, help="debug: only the first N points per table")
     args = ap.parse_args()
     tables = args.only.split(",")
@@ -1428,6 +1537,11 @@ def main():
     if "bessel_j_decimal" in tables:
         write_bessel_j_decimal()
         tables = [t for t in tables if t != "bessel_j_decimal"]
+        if not tables:
+            return
+    if "model_decimal" in tables:
+        write_model_decimal()
+        tables = [t for t in tables if t != "model_decimal"]
         if not tables:
             return
     if "ball_inputs_decimal" in tables:

@@ -18,8 +18,8 @@
 //! * Without `"prec"` the f64 path runs: each decimal is rounded to the nearest
 //!   double and the answer is for those doubles.
 //! * With `"prec"` the certified path runs. For the functions wired to ball
-//!   inputs (`bessel_j`, `hyp1f2`, `hyp2f1`, `meijer_g_k`, `u_wave`, `du_wave`)
-//!   each decimal becomes a ball that **contains the
+//!   inputs (`bessel_j`, `hyp1f2`, `hyp2f1`, `meijer_g_k`, `u_wave`, `du_wave`,
+//!   and the model's `strip_ratio` and `load`) each decimal becomes a ball that **contains the
 //!   decimal** ([`maugis::ball::Decimal`], Arb's convention): exact when the
 //!   decimal is a binary fraction (`2.5`, `0.375`), otherwise the decimal rounded
 //!   to nearest with a one-ulp radius. The printed ball contains the function
@@ -38,7 +38,8 @@
 
 use std::io::{BufRead, Write};
 
-use maugis::contact::{displacement, wave_quadrature};
+use maugis::contact::model::{ContactSize, Params};
+use maugis::contact::{displacement, model_mp, wave_quadrature};
 use maugis::special::{bessel_j, hyp1f2, hyp2f1, meijer_g};
 use maugis::ball::{eval_at_decimals, Decimal};
 use maugis::{Ball, Error, MAX_PREC};
@@ -68,7 +69,12 @@ const FUNCTIONS: &[(&str, &[&str])] = &[
     ("u_wave_quad", &["a", "zeta", "amp", "x"]),
     ("u_hertz", &["a", "r", "x"]),
     ("u_adhesive", &["a", "c", "sigma", "e_star", "x"]),
+    ("strip_ratio", &MODEL_ARGS),
+    ("load", &MODEL_ARGS),
 ];
+
+/// The model's inputs (normalised, docs/model.md), for `strip_ratio` and `load`.
+const MODEL_ARGS: [&str; 4] = ["lambda", "alpha", "beta", "abar"];
 
 /// The argument as decimal text (JSON number text or string).
 fn arg_text<'a>(obj: &'a Map<String, Value>, name: &str) -> Req<String> {
@@ -213,6 +219,7 @@ fn evaluate(obj: &Map<String, Value>) -> Req<Value> {
             let y = arg_decimal(obj, "y")?;
             mp_response(&id, &eval_at_decimals(&[y], p, |b| meijer_g::meijer_g_k_ball_mp(k, &b[0], p))?, p)
         }
+        ("strip_ratio" | "load", _) => return evaluate_model(obj, fname, &id, prec),
         _ => return evaluate_contact(obj, fname, &id, prec),
     };
     Ok(out)
@@ -311,6 +318,25 @@ fn evaluate_contact(obj: &Map<String, Value>, fname: &str, id: &Value, prec: Opt
         _ => return Err(BadRequest(format!("internal: no dispatch for {fname}"))),
     };
     Ok(out)
+}
+
+/// The model at one contact size: the strip ratio `m = c/a` (first root of
+/// Eq. 15b, corrected) and the load (Eq. 14) at that `m`.
+fn evaluate_model(obj: &Map<String, Value>, fname: &str, id: &Value, prec: Option<u32>) -> Req<Value> {
+    Ok(match prec {
+        None => {
+            let [lambda, alpha, beta, abar] = MODEL_ARGS.map(|n| arg_f64(obj, n));
+            let contact = ContactSize::new(Params::new(lambda?, alpha?, beta?)?, abar?)?;
+            let m = contact.solve_m()?;
+            f64_response(id, if fname == "load" { contact.load(m)? } else { m })
+        }
+        Some(p) => {
+            let [lambda, alpha, beta, abar] = MODEL_ARGS.map(|n| arg_decimal(obj, n));
+            let args = [lambda?, alpha?, beta?, abar?];
+            let b = if fname == "load" { model_mp::load_at_decimals(&args, p)? } else { model_mp::strip_ratio_at_decimals(&args, p)? };
+            mp_response(id, &b, p)
+        }
+    })
 }
 
 /// Handles one input line; always returns exactly one response.

@@ -165,3 +165,37 @@ fn ball_contract_for_1f2_g_and_the_wave() {
     let (out, _) = eval_lines("{\"fn\":\"hyp1f2\",\"a\":\"0.5\",\"b1\":\"-2\",\"b2\":\"1.5\",\"z\":\"-3\",\"prec\":64}\n");
     assert!(out[0]["error"].as_str().unwrap().contains("pole"), "{}", out[0]);
 }
+
+#[test]
+fn model_strip_ratio_and_load_at_typed_decimals() {
+    // strip_ratio and load on the ball contract: the printed balls contain m
+    // and the load at the decimals typed (reference/data/model_decimal.csv),
+    // the f64 path agrees, and a parameter out of range is an error line.
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../reference/data/model_decimal.csv");
+    let table = std::fs::read_to_string(path).expect("reference table");
+    let mut input = String::new();
+    let mut expected = Vec::new();
+    for line in table.lines().filter(|l| !l.starts_with('#') && !l.starts_with("lambda,")).step_by(4) {
+        let c: Vec<&str> = line.split(',').collect();
+        let fields = format!("\"lambda\":\"{}\",\"alpha\":\"{}\",\"beta\":\"{}\",\"abar\":\"{}\"", c[0], c[1], c[2], c[3]);
+        for (f, value) in [("strip_ratio", c[4]), ("load", c[5])] {
+            input.push_str(&format!("{{\"fn\":\"{f}\",{fields},\"prec\":128}}\n{{\"fn\":\"{f}\",{fields}}}\n"));
+            expected.push((f, line.to_string(), value.to_string()));
+        }
+    }
+    let (out, code) = eval_lines(&input);
+    assert_eq!(code, 0);
+    assert_eq!(out.len(), 2 * expected.len());
+    for (pair, (f, line, value)) in out.chunks(2).zip(&expected) {
+        let (ball, f64_resp) = (&pair[0], &pair[1]);
+        let mid = Float::with_val(400, Float::parse(ball["mid"].as_str().unwrap_or_else(|| panic!("{f} {line}: {ball}"))).unwrap());
+        let rad = Float::with_val(400, Float::parse(ball["rad"].as_str().unwrap()).unwrap());
+        let exact = Float::with_val(400, Float::parse(value).unwrap());
+        assert!(Float::with_val(400, &mid - &exact).abs() <= rad, "{f} {line}: {ball} vs {value}");
+        let v = f64_resp["f64"].as_f64().unwrap_or_else(|| panic!("{f} {line}: {f64_resp}"));
+        assert!((v - exact.to_f64()).abs() <= 1e-9 * exact.to_f64().abs().max(1.0), "{f} {line}: f64 {v} vs {value}");
+    }
+    assert!(expected.len() >= 8, "{}", expected.len());
+    let (out, _) = eval_lines("{\"fn\":\"load\",\"lambda\":\"1\",\"alpha\":\"-0.1\",\"beta\":\"1.125\",\"abar\":\"2\",\"prec\":64}\n");
+    assert!(out[0]["error"].as_str().unwrap().contains("alpha"), "{}", out[0]);
+}

@@ -264,6 +264,20 @@ pub(crate) fn wave_bessel_wp(a: &Float, zeta: &Float, amp: &Float, x: &Float, wp
     wave_bessel_geometry(&wave_geometry(a, zeta, amp, x, wp)?, wp)
 }
 
+/// `u_w` (Bessel form) at `x = r a` over balls of `a`, `zeta`, `amp` and of
+/// `r - 1 >= 0` (the model's strip ratio `m = c/a`, Eq. 15b): `x - a = a (r - 1)`
+/// and `x + a = a (r + 1)` come from `r - 1`, so there is no cancellation next
+/// to the edge. The caller checks the domain (`a, zeta > 0`, `r - 1 >= 0`).
+pub(crate) fn u_wave_at_ratio_balls(a: &Ball, zeta: &Ball, amp: &Ball, r_minus_1: &Ball, wp: u32) -> Result<Ball> {
+    check_wave_number(2.0 * std::f64::consts::PI * a.upper().to_f64() / zeta.lower().to_f64())?;
+    let x = a.mul(&r_minus_1.add_i64(1));
+    let xma = a.mul(r_minus_1);
+    let xpa = a.mul(&r_minus_1.add_i64(2));
+    let at_edge = r_minus_1.is_exact() && r_minus_1.mid().is_zero();
+    let g = geometry_from_balls(&[a.clone(), zeta.clone(), amp.clone(), x], xma, xpa, at_edge, wp)?;
+    Ok(wave_bessel_geometry(&g, wp)?.0)
+}
+
 /// The Bessel form on a geometry (balls): encloses `(u_w, du_w/dx)` over the balls.
 fn wave_bessel_geometry(g: &WaveGeometry, wp: u32) -> Result<(Ball, Ball)> {
     let d_mid = g.d.mid().clone();

@@ -2,92 +2,236 @@
 //! the strip residual `F(m)` (Eq. 15b, corrected), a certified enclosure of the
 //! strip end `m`, and the load (Eq. 14).
 //!
-//! `F` is evaluated in ball arithmetic (the wave term by the certified Bessel form
-//! of [`crate::contact::displacement`]), so the sign of `F` at a point is proven
-//! when its ball excludes zero. [`solve_m_mp`] starts from the f64 first root of
-//! [`ContactSize::solve_strip`] (solved in `m - 1`, so the bracket is tight even as `m -> 1`), proves a sign change of `F` across a small bracket and
-//! bisects it to the requested width: the returned ball provably contains a root
-//! of `F`. That it is the *first* root rests on the f64 scan (see `model.rs`).
+//! **Two entry points per quantity.** The `*_ball_mp` functions take the model's
+//! inputs `lambda, alpha, beta, abar` as balls ([`ModelBalls`], Arb's
+//! convention): the result encloses the quantity at *every* point of the input
+//! balls, which is how a decimal typed by a user is certified
+//! (`maugis eval`'s `strip_ratio` and `load`). The f64 entry points
+//! ([`strip_residual_mp`], [`solve_m_mp`], [`load_mp`]) read their inputs as
+//! exact binary numbers and run the ball code on exact balls.
+//!
+//! **Method.** `F` is evaluated in ball arithmetic in the variable `e = m - 1`
+//! (no cancellation as `m -> 1`): `sqrt(m^2 - 1) = sqrt(e (e + 2))`,
+//! `acosh m = ln1p(e + sqrt(e (e + 2)))`, `ln m = ln1p(e)`, and the wave term by
+//! the certified Bessel form of [`crate::contact::displacement`] at `x/a = m`,
+//! with `J_n` at a ball `D = 2 pi abar / beta` taken at its midpoint and widened
+//! by `rad(D)` (`|J_n'| <= 1`, DLMF 10.14.1). Every operation is a ball
+//! operation on the input balls, so the sign of `F` is proven for all inputs in
+//! the balls when its ball excludes zero.
+//!
+//! [`solve_m_ball_mp`] starts from the f64 first root of
+//! [`ContactSize::solve_strip`] at the midpoints (solved in `m - 1`, so the
+//! bracket is tight even as `m -> 1`), proves a sign change of `F` across a
+//! small bracket **over the whole input balls** and bisects it. A bisection
+//! point where `F`'s ball straddles zero is re-evaluated at the input
+//! midpoints: if that straddles too the working precision is raised (Ziv);
+//! otherwise the width of the inputs is what keeps the root from being located
+//! more tightly, and the current bracket is returned. So the returned ball
+//! contains, for every input in the balls, a root of `F`; for exact inputs its
+//! relative width is `2^-prec`. That it is the *first* root rests on the f64
+//! scan at the midpoints (see `model.rs`).
+//!
+//! The load (Eq. 14) is ball arithmetic on the inputs and the ball of `m`; the
+//! pair (inputs, `m(inputs)`) lies inside the balls, so the load ball encloses
+//! the load at every input in the balls.
 
 use rug::Float;
 
-use crate::ball::Ball;
-use crate::contact::displacement::wave_bessel_wp;
-use crate::contact::model::{ContactSize, Params};
+use crate::ball::{eval_at_decimals, eval_at_decimals_with_floor, Ball, Decimal};
+use crate::contact::displacement::u_wave_at_ratio_balls;
+use crate::contact::model::{ContactSize, Params, ABAR_MAX, ALPHA_MAX, BETA_RANGE, LAMBDA_RANGE};
 use crate::error::{check_prec, Error, Result};
 use crate::special::bessel_j::bessel_j_mp;
 use crate::special::exact_sub;
 use crate::MAX_WORKING_PREC;
 
-/// `F(m) = lambda gbar(m abar) - 1` in ball arithmetic at working precision `wp`
-/// (`m >= 1` exact).
-pub fn strip_residual_mp(params: Params, abar: f64, m: &Float, wp: u32) -> Result<Ball> {
-    let Params { lambda, alpha, beta } = params;
-    if *m < 1 {
-        return Err(Error::Domain { what: "the strip ratio m must be >= 1".into() });
+/// The model's inputs as balls: the Maugis parameter `lambda`, the wave
+/// amplitude `alpha` and wavelength `beta` (normalised, `docs/model.md`) and the
+/// contact half-width `abar`. Every result computed from them encloses its
+/// value at every point of the balls.
+#[derive(Debug, Clone)]
+pub struct ModelBalls {
+    /// Maugis parameter, within [`LAMBDA_RANGE`] over the whole ball.
+    pub lambda: Ball,
+    /// Wave amplitude, within `[0, ALPHA_MAX]` over the whole ball.
+    pub alpha: Ball,
+    /// Wavelength, within [`BETA_RANGE`] over the whole ball.
+    pub beta: Ball,
+    /// Contact half-width, within `(0, ABAR_MAX]` over the whole ball.
+    pub abar: Ball,
+}
+
+/// `v` at no fewer than `wp` bits (raising the precision is exact; a ball
+/// already finer than `wp`, such as a decimal input, is kept as it is).
+fn at_least(v: &Ball, wp: u32) -> Ball {
+    if v.prec() >= wp {
+        v.clone()
+    } else {
+        v.set_prec(wp)
     }
-    let a = Ball::from_f64(abar, wp)?;
-    let lam = Ball::from_f64(lambda, wp)?;
-    let e = Ball::from_float(&exact_sub(m, &Float::with_val(2, 1)), wp); // m - 1, exact
+}
+
+/// `[lo, hi]` of a ball, 4 digits each, for error messages.
+fn interval(v: &Ball) -> String {
+    let end = |f: Float| f.to_string_radix(10, Some(4));
+    format!("[{}, {}]", end(v.lower()), end(v.upper()))
+}
+
+impl ModelBalls {
+    /// Checked inputs: each ball must be finite and lie inside the model's
+    /// domain over its whole width (an edge inside a ball is a typed error that
+    /// names it).
+    pub fn new(lambda: Ball, alpha: Ball, beta: Ball, abar: Ball) -> Result<ModelBalls> {
+        for (v, what) in [(&lambda, "lambda"), (&alpha, "alpha"), (&beta, "beta"), (&abar, "abar")] {
+            if !v.is_finite() {
+                return Err(Error::NonFinite { what });
+            }
+        }
+        let within = |v: &Ball, what: &str, lo: f64, lo_open: bool, hi: f64| -> Result<()> {
+            let low_ok = if lo_open { v.lower() > lo } else { v.lower() >= lo };
+            if low_ok && v.upper() <= hi {
+                return Ok(());
+            }
+            let open = if lo_open { "(" } else { "[" };
+            let bound = |x: f64| if x == 0.0 { "0".to_string() } else { format!("{x:e}") };
+            let got = if v.is_exact() {
+                format!("(got {})", v.mid().to_string_radix(10, Some(6)))
+            } else {
+                format!("over its whole input ball (got {})", interval(v))
+            };
+            Err(Error::Domain { what: format!("{what} must lie in {open}{}, {}] {got}", bound(lo), bound(hi)) })
+        };
+        within(&lambda, "lambda", LAMBDA_RANGE.0, false, LAMBDA_RANGE.1)?;
+        within(&alpha, "alpha", 0.0, false, ALPHA_MAX)?;
+        within(&beta, "beta", BETA_RANGE.0, false, BETA_RANGE.1)?;
+        within(&abar, "abar", 0.0, true, ABAR_MAX)?;
+        Ok(ModelBalls { lambda, alpha, beta, abar })
+    }
+
+    /// Exact balls of validated f64 parameters and `abar`.
+    pub fn exact(params: Params, abar: f64) -> Result<ModelBalls> {
+        let b = |v: f64| Ball::from_f64(v, 53);
+        ModelBalls::new(b(params.lambda)?, b(params.alpha)?, b(params.beta)?, b(abar)?)
+    }
+
+    /// Whether every input is an exact number.
+    pub fn is_exact(&self) -> bool {
+        [&self.lambda, &self.alpha, &self.beta, &self.abar].iter().all(|v| v.is_exact())
+    }
+
+    /// The midpoints, as exact balls.
+    fn midpoints(&self) -> ModelBalls {
+        let m = |v: &Ball| Ball::from_float(v.mid(), v.prec());
+        ModelBalls { lambda: m(&self.lambda), alpha: m(&self.alpha), beta: m(&self.beta), abar: m(&self.abar) }
+    }
+
+    /// The midpoints rounded to f64, for the f64 root scan that starts
+    /// [`solve_m_ball_mp`].
+    fn f64_start(&self) -> Result<ContactSize> {
+        let f = |v: &Ball| v.mid().to_f64();
+        ContactSize::new(Params::new(f(&self.lambda), f(&self.alpha), f(&self.beta))?, f(&self.abar))
+    }
+}
+
+/// `F(m) = lambda gbar(m abar) - 1` over the input balls, at working precision
+/// `wp`, for a ball of `e = m - 1 >= 0`.
+pub fn strip_residual_ball_mp(inputs: &ModelBalls, m_minus_1: &Ball, wp: u32) -> Result<Ball> {
+    if m_minus_1.upper() < 0 {
+        return Err(Error::Domain { what: format!("the strip ratio m must be >= 1 (m - 1 lies in {})", interval(m_minus_1)) });
+    }
+    // m - 1 >= 0 by definition: clip a ball that reaches below zero.
+    let e = if m_minus_1.lower() < 0 { Ball::hull(&Float::new(wp), &m_minus_1.upper(), wp) } else { at_least(m_minus_1, wp) };
+    let [lam, alpha, beta, a] = [&inputs.lambda, &inputs.alpha, &inputs.beta, &inputs.abar].map(|v| at_least(v, wp));
     let mb = e.add_i64(1);
     let s = e.mul(&e.add_i64(2)).sqrt()?; // sqrt(m^2 - 1)
     let acosh_m = e.add(&s).ln_1p()?;
     let ln_m = e.ln_1p()?;
     let hertz = a.sqr().mul(&mb.mul(&s).sub(&acosh_m)).mul_pow2(-1);
     let adhesive = Ball::pi(wp).recip()?.mul_pow2(2).mul(&lam).mul(&a).mul(&s.mul(&acosh_m).sub(&mb.mul(&ln_m)));
-    // c = m abar exactly (enough bits for the product of two binary numbers)
-    let abar_f = Float::with_val(53, abar);
-    let c = Float::with_val(m.prec() + 53, m * &abar_f);
-    let wave = if alpha > 0.0 {
-        let (beta_f, alpha_f) = (Float::with_val(53, beta), Float::with_val(53, alpha));
-        let uw = wave_bessel_wp(&abar_f, &beta_f, &alpha_f, &c, wp)?.0;
-        let arg = Ball::pi(wp).mul(&Ball::from_float(&c, wp)).div(&Ball::from_f64(beta, wp)?)?;
-        let sn = arg.sin_cos().0;
-        sn.sqr().mul(&Ball::from_f64(alpha, wp)?).mul_pow2(1).sub(&uw)
-    } else {
+    let wave = if alpha.is_exact() && alpha.mid().is_zero() {
         Ball::zero(wp)
+    } else {
+        // 2 alpha sin^2(pi c / beta) - u_w(c), c = m abar
+        let uw = u_wave_at_ratio_balls(&a, &beta, &alpha, &e, wp)?;
+        let arg = Ball::pi(wp).mul(&a).mul(&mb).div(&beta)?;
+        let sn = arg.sin_cos().0;
+        sn.sqr().mul(&alpha).mul_pow2(1).sub(&uw)
     };
     Ok(lam.mul(&hertz.add(&adhesive).add(&wave)).add_i64(-1))
 }
 
-/// A ball that provably contains a root of `F` (the f64 solver's first root),
-/// of relative width `2^-prec`.
-pub fn solve_m_mp(params: Params, abar: f64, prec: u32) -> Result<Ball> {
+/// `F(m) = lambda gbar(m abar) - 1` in ball arithmetic at working precision `wp`
+/// (`m >= 1` and the parameters exact binary numbers).
+pub fn strip_residual_mp(params: Params, abar: f64, m: &Float, wp: u32) -> Result<Ball> {
+    if *m < 1 {
+        return Err(Error::Domain { what: "the strip ratio m must be >= 1".into() });
+    }
+    let e = Ball::from_float(&exact_sub(m, &Float::with_val(2, 1)), wp); // m - 1, exact
+    strip_residual_ball_mp(&ModelBalls::exact(params, abar)?, &e, wp)
+}
+
+/// What the bisection's width is relative to.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum RootScale {
+    /// `m`: the ball of `m` has relative width `2^-prec`.
+    StripRatio,
+    /// `m - 1`: the ball of `m - 1` has relative width `2^-prec` (for the
+    /// load, whose `sqrt(m^2 - 1)` magnifies errors in `m` as `m -> 1`).
+    StripRatioMinusOne,
+}
+
+/// A ball of `e = m - 1` that contains, for every input in the balls, a root
+/// of `F`; see the module doc and [`solve_m_ball_mp`].
+fn bracket_root(inputs: &ModelBalls, prec: u32, scale: RootScale) -> Result<Ball> {
     check_prec(prec)?;
-    let e0 = ContactSize::new(params, abar)?.solve_strip()?.m_minus_1();
-    // m = 1 + (m - 1) must be exact: enough bits for the exponent gap of m - 1.
-    let gap_bits = (-e0.log2()).max(0.0).min(1100.0) as u32;
-    let mut wp = (prec + 32).max(gap_bits + 64);
-    // Bracket around the f64 root with a proven sign change.
+    let e0 = inputs.f64_start()?.solve_strip()?.m_minus_1();
+    let mut wp = prec + 32;
+    let mids = inputs.midpoints();
+    let exact = inputs.is_exact();
+    // Bracket [lo, hi] of m - 1 around the f64 root with a proven sign change
+    // over the whole input balls.
     let mut delta = e0 * 1e-9;
     let (mut lo, mut hi);
     let mut tries = 0;
     loop {
-        lo = Float::with_val(wp, 1) + (e0 - delta).max(0.0);
-        hi = Float::with_val(wp, 1) + (e0 + delta);
-        let (flo, fhi) = (strip_residual_mp(params, abar, &lo, wp)?, strip_residual_mp(params, abar, &hi, wp)?);
+        lo = Float::with_val(wp, (e0 - delta).max(0.0));
+        hi = Float::with_val(wp, e0 + delta);
+        let flo = strip_residual_ball_mp(inputs, &Ball::from_float(&lo, wp), wp)?;
+        let fhi = strip_residual_ball_mp(inputs, &Ball::from_float(&hi, wp), wp)?;
         if flo.is_negative() && fhi.is_positive() {
             break;
         }
         delta *= 16.0;
         tries += 1;
         if tries > 12 {
-            return Err(Error::Internal { what: format!("no certified sign change of F around the f64 root m - 1 = {e0}") });
+            let why = if exact { "" } else { " (the input balls may be too wide to separate the root)" };
+            return Err(Error::Internal { what: format!("no certified sign change of F around the f64 root m - 1 = {e0}{why}") });
         }
     }
-    // Bisection until the bracket is 2^-prec m wide.
+    // Bisection until the bracket is 2^-prec m (or 2^-prec (m - 1)) wide.
     loop {
         let width = Float::with_val(wp, &hi - &lo);
-        let scale = Float::with_val(wp, &hi >> prec as i32);
-        if width <= scale {
+        let size = match scale {
+            RootScale::StripRatio => Float::with_val(wp, &hi + 1u32),
+            RootScale::StripRatioMinusOne => hi.clone(),
+        };
+        if width <= size >> prec as i32 {
             return Ok(Ball::hull(&lo, &hi, wp));
         }
         let mid = Float::with_val(wp + 1, &lo + &hi) / 2u32;
-        let f = strip_residual_mp(params, abar, &mid, wp)?;
+        let f = strip_residual_ball_mp(inputs, &Ball::from_float(&mid, wp + 1), wp)?;
         if f.is_negative() {
             lo = mid;
         } else if f.is_positive() {
             hi = mid;
+        } else if !exact && !strip_residual_ball_mp(&mids, &Ball::from_float(&mid, wp + 1), wp)?.contains_zero() {
+            // At the midpoint inputs the sign is proven: the input width is
+            // what straddles, and the roots over the balls fill a range
+            // around `mid`. Locate its two ends separately.
+            let fine = Float::with_val(wp, &hi - &lo) >> 5u32;
+            let lower = one_sided_end(inputs, &lo, &mid, true, &fine, wp)?;
+            let upper = one_sided_end(inputs, &mid, &hi, false, &fine, wp)?;
+            return Ok(Ball::hull(&lower, &upper, wp));
         } else {
             // F's ball straddles zero at this precision: raise it (Ziv).
             wp += 32;
@@ -100,28 +244,109 @@ pub fn solve_m_mp(params: Params, abar: f64, prec: u32) -> Result<Ball> {
     }
 }
 
-/// Eq. 14 in ball arithmetic for a strip ratio known as a ball:
+/// One end of the range of roots over wide input balls: within `[lo, hi]`,
+/// where `F` is proven negative at `lo` and straddles zero at `hi` (`lower`)
+/// or straddles at `lo` and is proven positive at `hi` (upper end), bisect
+/// until the interval is `fine` wide, keeping the side whose sign is proven.
+/// Returns the proven end (`lo` for the lower end, `hi` for the upper).
+fn one_sided_end(inputs: &ModelBalls, lo: &Float, hi: &Float, lower: bool, fine: &Float, wp: u32) -> Result<Float> {
+    let (mut lo, mut hi) = (lo.clone(), hi.clone());
+    while Float::with_val(wp, &hi - &lo) > *fine {
+        let mid = Float::with_val(wp + 1, &lo + &hi) / 2u32;
+        let f = strip_residual_ball_mp(inputs, &Ball::from_float(&mid, wp + 1), wp)?;
+        let proven_outside = if lower { f.is_negative() } else { f.is_positive() };
+        match (lower, proven_outside) {
+            (true, true) | (false, false) => lo = mid,
+            (true, false) | (false, true) => hi = mid,
+        }
+    }
+    Ok(if lower { lo } else { hi })
+}
+
+/// A ball that contains, for every input in the balls, a root of `F` (the f64
+/// solver's first root at the midpoints); of relative width `2^-prec` when the
+/// inputs are tight enough, wider (and still enclosing) when their width keeps
+/// the root from being located more tightly. See the module doc.
+pub fn solve_m_ball_mp(inputs: &ModelBalls, prec: u32) -> Result<Ball> {
+    Ok(bracket_root(inputs, prec, RootScale::StripRatio)?.add_i64(1))
+}
+
+/// A ball that provably contains a root of `F` (the f64 solver's first root),
+/// of relative width `2^-prec`; the parameters are exact binary numbers.
+pub fn solve_m_mp(params: Params, abar: f64, prec: u32) -> Result<Ball> {
+    solve_m_ball_mp(&ModelBalls::exact(params, abar)?, prec)
+}
+
+/// Eq. 14 over the input balls, for a strip ratio known as a ball:
 /// `pi abar^2/4 - 2 lambda abar sqrt(m^2-1) + (pi^2 alpha abar/beta) J1(2 pi abar/beta)`.
-pub fn load_mp(params: Params, abar: f64, m: &Ball, prec: u32) -> Result<Ball> {
+pub fn load_ball_mp(inputs: &ModelBalls, m: &Ball, prec: u32) -> Result<Ball> {
+    check_prec(prec)?;
+    if !m.is_finite() {
+        return Err(Error::NonFinite { what: "m" });
+    }
+    load_from_m_minus_1(inputs, &m.add_i64(-1), prec)
+}
+
+/// Eq. 14 for a ball of `e = m - 1`, with `sqrt(m^2 - 1) = sqrt(e (e + 2))`.
+fn load_from_m_minus_1(inputs: &ModelBalls, e: &Ball, prec: u32) -> Result<Ball> {
     check_prec(prec)?;
     let wp = prec + 16;
-    let Params { lambda, alpha, beta } = params;
-    let a = Ball::from_f64(abar, wp)?;
+    if e.upper() < 0 {
+        return Err(Error::Domain { what: format!("the strip ratio m must be >= 1 (m - 1 lies in {})", interval(e)) });
+    }
+    // m - 1 >= 0 by definition: clip a ball that reaches below zero.
+    let e = if e.lower() < 0 { Ball::hull(&Float::new(wp), &e.upper(), wp) } else { at_least(e, wp) };
+    let [lam, alpha, beta, a] = [&inputs.lambda, &inputs.alpha, &inputs.beta, &inputs.abar].map(|v| at_least(v, wp));
     let pi = Ball::pi(wp);
-    let s = m.sqr().add_i64(-1);
-    let s = if s.lower() < 0 { Ball::hull(&Float::new(wp), &s.upper(), wp) } else { s };
+    let s = e.mul(&e.add_i64(2)).sqrt()?;
     let hertz = pi.mul(&a.sqr()).mul_pow2(-2);
-    let adhesive = Ball::from_f64(lambda, wp)?.mul(&a).mul(&s.sqrt()?).mul_pow2(1);
-    let wave = if alpha > 0.0 {
+    let adhesive = lam.mul(&a).mul(&s).mul_pow2(1);
+    let wave = if alpha.is_exact() && alpha.mid().is_zero() {
+        Ball::zero(wp)
+    } else {
         // J1 at D = 2 pi abar/beta (a ball): |J1'| <= 1, evaluate at the midpoint and widen
-        let d = pi.mul(&a).mul_pow2(1).div(&Ball::from_f64(beta, wp)?)?;
+        let d = pi.mul(&a).mul_pow2(1).div(&beta)?;
         let mut j1 = bessel_j_mp(1, d.mid(), wp)?;
         j1.add_error_mag(d.rad_mag());
-        pi.sqr().mul(&Ball::from_f64(alpha, wp)?).mul(&a).div(&Ball::from_f64(beta, wp)?)?.mul(&j1)
-    } else {
-        Ball::zero(wp)
+        pi.sqr().mul(&alpha).mul(&a).div(&beta)?.mul(&j1)
     };
     Ok(hertz.sub(&adhesive).add(&wave))
+}
+
+/// Eq. 14 in ball arithmetic for a strip ratio known as a ball; the parameters
+/// are exact binary numbers.
+pub fn load_mp(params: Params, abar: f64, m: &Ball, prec: u32) -> Result<Ball> {
+    load_ball_mp(&ModelBalls::exact(params, abar)?, m, prec)
+}
+
+/// The four model inputs `[lambda, alpha, beta, abar]` typed as decimals, as balls.
+fn model_balls(b: &[Ball]) -> Result<ModelBalls> {
+    match b {
+        [lambda, alpha, beta, abar] => ModelBalls::new(lambda.clone(), alpha.clone(), beta.clone(), abar.clone()),
+        _ => Err(Error::Internal { what: format!("the model takes 4 inputs, got {}", b.len()) }),
+    }
+}
+
+/// The strip ratio `m` at decimal inputs `[lambda, alpha, beta, abar]` on the
+/// ball contract of [`crate::ball::eval_at_decimals`] (what `maugis eval` runs
+/// for `strip_ratio`): the ball contains the (first) root of Eq. 15b at the
+/// decimals as typed, with `rad <= 2^-prec m`.
+pub fn strip_ratio_at_decimals(args: &[Decimal; 4], prec: u32) -> Result<Ball> {
+    eval_at_decimals(args, prec, |b| solve_m_ball_mp(&model_balls(b)?, prec))
+}
+
+/// The load (Eq. 14) at the strip ratio of Eq. 15b, at decimal inputs
+/// `[lambda, alpha, beta, abar]` (what `maugis eval` runs for `load`). The load
+/// vanishes along every load-area curve, so the accuracy promise is absolute,
+/// on the Hertz load of the same contact: `rad <= 2^-prec max(|L|, pi abar^2/4)`.
+pub fn load_at_decimals(args: &[Decimal; 4], prec: u32) -> Result<Ball> {
+    let abar = Float::with_val(64, args[3].as_rational());
+    let hertz = Float::with_val(64, &abar * &abar) * Float::with_val(64, rug::float::Constant::Pi) / 4u32;
+    eval_at_decimals_with_floor(args, prec, Some(&hertz), |b| {
+        let inputs = model_balls(b)?;
+        let e = bracket_root(&inputs, prec + 32, RootScale::StripRatioMinusOne)?;
+        load_from_m_minus_1(&inputs, &e, prec)
+    })
 }
 
 #[cfg(test)]
