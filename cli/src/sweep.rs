@@ -5,7 +5,8 @@
 //!
 //! * `sweep.csv`: one row per grid point (`index, lambda, value, alpha, beta,
 //!   instabilities, unloading_jumps, dissipation, dissipation_valid,
-//!   dissipation_invalid, pull_off, pull_off_valid, valid_fraction, regime`);
+//!   dissipation_invalid, pull_off, pull_off_valid, valid_pull_off, valid_fraction,
+//!   regime`);
 //! * `sweep.json`: the grid, the shard and the points (the library's `Sweep`);
 //! * `sweep.svg`: the regime map (colour: regime; shade: dissipation) — only
 //!   for a whole sweep, not for a shard.
@@ -133,7 +134,7 @@ fn sweep_csv(s: &Sweep) -> Result<String, String> {
     let err = |e: csv::Error| format!("could not format CSV: {e}");
     w.write_record([
         "index", "lambda", "value", "alpha", "beta", "instabilities", "unloading_jumps", "dissipation", "dissipation_valid",
-        "dissipation_invalid", "pull_off", "pull_off_valid", "valid_fraction", "regime",
+        "dissipation_invalid", "pull_off", "pull_off_valid", "valid_pull_off", "valid_fraction", "regime",
     ])
     .map_err(err)?;
     for p in &s.points {
@@ -150,6 +151,7 @@ fn sweep_csv(s: &Sweep) -> Result<String, String> {
             p.dissipation_invalid.to_string(),
             p.pull_off.map_or(String::new(), |v| v.to_string()),
             p.pull_off_valid.to_string(),
+            p.valid_pull_off.map_or(String::new(), |v| v.to_string()),
             p.valid_fraction.to_string(),
             regime_str(p.regime).to_string(),
         ])

@@ -530,9 +530,16 @@ fn sweep_writes_a_map_and_shards_merge_to_the_whole() {
     assert_eq!(header[..3], ["index", "lambda", "value"]);
     let rows: Vec<csv::StringRecord> = r.records().map(|x| x.unwrap()).collect();
     assert_eq!(rows.len(), 9);
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap_or_else(|| panic!("no column {name}"));
     for row in &rows {
-        let regime = &row[13];
+        let regime = &row[col("regime")];
         assert!(["dissipative", "cavitating", "smooth_like"].contains(&regime), "{regime}");
+        // A valid pull-off state is (up to the grid) the most tensile valid state.
+        if &row[col("pull_off_valid")] == "true" {
+            let p: f64 = row[col("pull_off")].parse().unwrap();
+            let v: f64 = row[col("valid_pull_off")].parse().expect("a valid pull-off has a valid_pull_off");
+            assert!((v - p).abs() <= 0.05, "valid_pull_off {v} vs valid pull_off {p}");
+        }
     }
     let svg = std::fs::read_to_string(whole.path().join("sweep.svg")).unwrap();
     assert!(svg.contains("<svg") && svg.contains("dissipative"));

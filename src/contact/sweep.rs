@@ -106,6 +106,9 @@ pub struct SweepPoint {
     pub pull_off: Option<f64>,
     /// The pull-off state is valid.
     pub pull_off_valid: bool,
+    /// The most tensile valid load under load control (`Curve::valid_pull_off`):
+    /// the pull-off a valid Maugis state supports, when `pull_off` is not valid.
+    pub valid_pull_off: Option<f64>,
     /// Fraction of valid grid states.
     pub valid_fraction: f64,
     /// The regime.
@@ -224,6 +227,7 @@ pub fn sweep_point(grid: &SweepGrid, index: usize) -> Result<SweepPoint> {
         dissipation_invalid: d.invalid,
         pull_off: c.pull_off.map(|p| p.load),
         pull_off_valid: c.pull_off.map_or(false, |p| p.validity.valid),
+        valid_pull_off: c.valid_pull_off.map(|p| p.load),
         valid_fraction: n_valid as f64 / c.points.len() as f64,
         regime,
     })
