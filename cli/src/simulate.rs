@@ -4,9 +4,12 @@
 //!
 //! Writes into `--out` (atomically, [`crate::output`]):
 //!
-//! * `simulate.csv`: `leg,approach,abar,load,contact_intervals,zone_cells,model_load,model_valid`;
+//! * `simulate.csv`: `leg,approach,abar,load,contact_intervals,zone_cells,model_load,model_valid,load_controlled`
+//!   (`load_controlled`: the state is on the load-controlled path of its leg,
+//!   `maugis_solver::path::load_controlled`);
 //! * `simulate.svg`: the simulated states over the semi-analytical curve (valid
-//!   stretches solid, invalid ones faded).
+//!   stretches solid, invalid ones faded), and the load-controlled path of each
+//!   leg as a line (its jumps dashed).
 //!
 //! `--format json` writes no file and prints one JSON object. Bad input exits
 //! with code 2 before any work.
@@ -87,11 +90,11 @@ pub fn run(a: SimulateArgs) -> Result<(), String> {
         let text = serde_json::to_string(&report).map_err(|e| e.to_string())?;
         return print_stdout(&(text + "\n"));
     }
-    let mut csv = String::from("leg,approach,abar,load,contact_intervals,zone_cells,model_load,model_valid\n");
+    let mut csv = String::from("leg,approach,abar,load,contact_intervals,zone_cells,model_load,model_valid,load_controlled\n");
     for r in all {
         let _ = writeln!(
             csv,
-            "{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{}",
             r.leg,
             r.approach,
             r.abar,
@@ -99,14 +102,16 @@ pub fn run(a: SimulateArgs) -> Result<(), String> {
             r.contact_intervals,
             r.zone_cells,
             r.model_load.map(|v| v.to_string()).unwrap_or_default(),
-            r.model_valid.map(|v| v.to_string()).unwrap_or_default()
+            r.model_valid.map(|v| v.to_string()).unwrap_or_default(),
+            r.load_controlled
         );
     }
     let svg = overlay_svg(params, a.amax, all)?;
     let files = [OutFile::text("simulate.csv", csv), OutFile::text("simulate.svg", svg)];
     let written = write_atomically(&a.out, &files)?;
     let mut text = format!(
-        "maugis simulate: lambda {}, alpha {}, beta {}, {} cells on [-{}, {}], {} states, dissipated work {}\n",
+        "maugis simulate: lambda {}, alpha {}, beta {}, {} cells on [-{}, {}], {} states, dissipated work {}, \
+         load-controlled pull-off {}\n",
         short(a.lambda),
         short(a.alpha),
         short(a.beta),
@@ -114,7 +119,8 @@ pub fn run(a: SimulateArgs) -> Result<(), String> {
         short(x),
         short(x),
         all.len(),
-        short(c.dissipated)
+        short(c.dissipated),
+        report.pull_off.map(short).unwrap_or_else(|| "none".into())
     );
     for p in written {
         let _ = writeln!(text, "  {}", p.display());
@@ -147,6 +153,28 @@ fn overlay_svg(params: Params, amax: f64, rows: &[StateRecord]) -> Result<String
             }
         }
         for (leg, col, name) in [("loading", colour(3), "simulation, loading"), ("unloading", colour(2), "simulation, unloading")] {
+            // The load-controlled path: consecutive path states joined, solid
+            // where the leg visits them in turn, dashed across a jump.
+            let leg_rows: Vec<&StateRecord> = rows.iter().filter(|r| r.leg == leg).collect();
+            let mut last: Option<(usize, (f64, f64))> = None;
+            let mut labelled = false;
+            for (i, r) in leg_rows.iter().enumerate().filter(|(_, r)| r.load_controlled && r.abar > 0.0) {
+                let p = (r.abar, r.load);
+                if let Some((j, q)) = last {
+                    let series = if i == j + 1 {
+                        chart.draw_series(LineSeries::new([q, p], col.stroke_width(1))).map_err(plot_err)?
+                    } else {
+                        chart.draw_series(DashedLineSeries::new([q, p], 4, 4, col.stroke_width(1))).map_err(plot_err)?
+                    };
+                    if !labelled {
+                        labelled = true;
+                        series
+                            .label(format!("{name}, load-controlled path (jumps dashed)"))
+                            .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], col.stroke_width(1)));
+                    }
+                }
+                last = Some((i, p));
+            }
             let pts: Vec<(f64, f64)> = rows.iter().filter(|r| r.leg == leg && r.abar > 0.0).map(|r| (r.abar, r.load)).collect();
             chart
                 .draw_series(pts.iter().map(|&p| Circle::new(p, 3, col.filled())))

@@ -11,16 +11,48 @@ fn small_run_writes_csv_and_svg() {
     let dir = std::env::temp_dir().join(format!("maugis-sim-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     let out = maugis()
-        .args(["simulate", "--lambda", "1", "--alpha", "0", "--beta", "1", "--amax", "1.5", "--grid", "512", "--steps", "6", "--out"])
+        .args(["simulate", "--lambda", "1", "--alpha", "0", "--beta", "1", "--amax", "2.5", "--grid", "512", "--steps", "10", "--out"])
         .arg(&dir)
         .output()
         .unwrap();
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let csv = std::fs::read_to_string(dir.join("simulate.csv")).unwrap();
-    assert!(csv.starts_with("leg,approach,abar,load,contact_intervals"));
+    let header = csv.lines().next().unwrap();
+    assert!(header.starts_with("leg,approach,abar,load,contact_intervals"));
+    assert!(header.ends_with(",load_controlled"));
     assert!(csv.lines().any(|l| l.starts_with("unloading,")));
+    // The load-controlled path: on loading its loads rise; some unloading
+    // states are on it, and the unloading path's loads fall.
+    for leg in ["loading,", "unloading,"] {
+        let loads: Vec<f64> = csv
+            .lines()
+            .filter(|l| l.starts_with(leg) && l.ends_with(",true"))
+            .map(|l| l.split(',').nth(3).unwrap().parse().unwrap())
+            .collect();
+        assert!(loads.len() >= 2, "{leg} {loads:?}");
+        let rising = leg == "loading,";
+        assert!(loads.windows(2).all(|w| if rising { w[1] > w[0] } else { w[1] < w[0] }), "{leg} {loads:?}");
+    }
     assert!(std::fs::read_to_string(dir.join("simulate.svg")).unwrap().contains("<svg"));
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn json_carries_the_load_controlled_path_and_pull_off() {
+    let out = maugis()
+        .args(["simulate", "--lambda", "1", "--alpha", "0", "--beta", "1", "--amax", "2.5", "--grid", "512", "--steps", "10", "--format", "json"])
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let pull_off = v["pull_off"].as_f64().expect("pull_off");
+    let states = v["states"].as_array().unwrap();
+    let on_path: Vec<&serde_json::Value> = states.iter().filter(|s| s["load_controlled"] == true).collect();
+    assert!(on_path.len() >= 4 && on_path.len() < states.len());
+    // Pull-off is the most tensile load of the unloading leg, and on the path.
+    let min_unloading = states.iter().filter(|s| s["leg"] == "unloading").map(|s| s["load"].as_f64().unwrap()).fold(f64::INFINITY, f64::min);
+    assert!(pull_off < 0.0 && pull_off == min_unloading, "{pull_off} {min_unloading}");
+    assert!(on_path.iter().any(|s| s["load"].as_f64() == Some(pull_off)));
 }
 
 #[test]
@@ -31,6 +63,15 @@ fn bad_input_exits_2_without_files() {
         vec!["--lambda", "-1", "--alpha", "0", "--beta", "1"],
         vec!["--lambda", "1", "--alpha", "0", "--beta", "1", "--grid", "1000"],
         vec!["--lambda", "1", "--alpha", "0", "--beta", "1", "--steps", "1"],
+        vec!["--lambda", "nan", "--alpha", "0", "--beta", "1"],
+        vec!["--lambda", "1e5", "--alpha", "0", "--beta", "1"],
+        vec!["--lambda", "1", "--alpha", "-0.1", "--beta", "1"],
+        vec!["--lambda", "1", "--alpha", "0", "--beta", "0"],
+        vec!["--lambda", "1", "--alpha", "0", "--beta", "1", "--amax", "-1"],
+        vec!["--lambda", "1", "--alpha", "0", "--beta", "1", "--amax", "inf"],
+        vec!["--lambda", "1", "--alpha", "0", "--beta", "1", "--grid", "32"],
+        vec!["--lambda", "1", "--alpha", "0", "--beta", "1", "--grid", "0"],
+        vec!["--lambda", "1", "--alpha", "0", "--beta", "1", "--format", "xml"],
     ] {
         let out = maugis().arg("simulate").args(&args).arg("--out").arg(&dir).output().unwrap();
         assert_eq!(out.status.code(), Some(2), "{args:?}");

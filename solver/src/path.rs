@@ -96,7 +96,17 @@ pub fn cycle(solver: &mut ContactSolver, opts: CycleOptions, progress: &mut dyn 
             break;
         }
         if k > LEG_STEP_FACTOR * opts.steps_per_leg {
-            return Err(SolverError::NeverTouches);
+            let reached = loading.iter().map(|s| s.abar).fold(0.0, f64::max);
+            if loading.iter().all(|s| s.contact.is_empty()) {
+                return Err(SolverError::NeverTouches);
+            }
+            return Err(SolverError::Domain {
+                what: format!(
+                    "the contact half-width reached only {reached:.4} in {k} approach steps, short of amax = {}; \
+                     lower amax or give more steps",
+                    opts.amax
+                ),
+            });
         }
     }
     let mut unloading = Vec::new();

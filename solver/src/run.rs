@@ -13,7 +13,9 @@ use maugis::contact::model::Params;
 use crate::contact::{ContactSolver, SolveOptions, State};
 use crate::error::{Result, SolverError};
 use crate::grid::Grid;
-use crate::path::{compare_with_model, cycle, suggested_half_width, Cycle, CycleOptions, ModelComparison};
+use crate::path::{
+    compare_with_model, cycle, load_controlled, suggested_half_width, Cycle, CycleOptions, LoadControlled, LoadDirection, ModelComparison,
+};
 use crate::profile::{Adhesion, Profile};
 
 /// What to simulate.
@@ -58,12 +60,29 @@ impl Simulation {
         list.iter().find(|r| r.abar == state.abar && state.abar > 0.0)
     }
 
+    /// The load-controlled paths ([`load_controlled`]) of the loading leg and
+    /// of the unloading leg. The unloading leg starts at the last loading
+    /// state, so its indices are shifted by one: index `k >= 1` is
+    /// `cycle.unloading[k - 1]`, index 0 the last loading state.
+    pub fn load_controlled(&self) -> (LoadControlled, LoadControlled) {
+        let loading = load_controlled(&self.cycle.loading, LoadDirection::Increasing);
+        let mut back = Vec::with_capacity(self.cycle.unloading.len() + 1);
+        back.extend(self.cycle.loading.last().cloned());
+        back.extend(self.cycle.unloading.iter().cloned());
+        (loading, load_controlled(&back, LoadDirection::Decreasing))
+    }
+
     /// The run as a flat report: the object `maugis simulate --format json`
     /// prints and the Python package returns.
     pub fn report(&self) -> SimulationReport {
+        let (lc_loading, lc_unloading) = self.load_controlled();
+        let on_path = [
+            (0..self.cycle.loading.len()).map(|i| lc_loading.states.contains(&i)).collect::<Vec<bool>>(),
+            (0..self.cycle.unloading.len()).map(|i| lc_unloading.states.contains(&(i + 1))).collect::<Vec<bool>>(),
+        ];
         let mut states = Vec::with_capacity(self.cycle.loading.len() + self.cycle.unloading.len());
         for (unloading, leg, list) in [(false, "loading", &self.cycle.loading), (true, "unloading", &self.cycle.unloading)] {
-            for s in list.iter() {
+            for (i, s) in list.iter().enumerate() {
                 let m = self.model_at(s, unloading);
                 states.push(StateRecord {
                     leg,
@@ -74,6 +93,7 @@ impl Simulation {
                     zone_cells: s.zone_cells,
                     model_load: m.map(|r| r.model_load),
                     model_valid: m.map(|r| r.model_valid),
+                    load_controlled: on_path[usize::from(unloading)][i],
                 });
             }
         }
@@ -85,6 +105,7 @@ impl Simulation {
             half_width: self.half_width,
             datum: self.datum,
             dissipated: self.cycle.dissipated,
+            pull_off: lc_unloading.pull_off.map(|(_, load)| load),
             states,
         }
     }
@@ -110,6 +131,11 @@ pub struct StateRecord {
     pub model_load: Option<f64>,
     /// Whether that model state is valid.
     pub model_valid: Option<bool>,
+    /// Whether the state is on the load-controlled path of its leg
+    /// ([`crate::path::load_controlled`]): a soft machine (prescribed load)
+    /// visits it; between two such states of a leg with others in between, it
+    /// jumps.
+    pub load_controlled: bool,
 }
 
 /// A simulated cycle as a flat report.
@@ -130,6 +156,9 @@ pub struct SimulationReport {
     pub datum: f64,
     /// `oint Lbar dDelta` over the cycle.
     pub dissipated: f64,
+    /// The pull-off load under load control (the most tensile load of the
+    /// unloading leg), if the unloading leg carries tension.
+    pub pull_off: Option<f64>,
     /// The states, loading then unloading.
     pub states: Vec<StateRecord>,
 }
