@@ -99,6 +99,7 @@ mod log_case;
 mod native;
 mod polynomial;
 mod power;
+mod power_f64;
 mod series;
 mod transform;
 

@@ -7,7 +7,10 @@
 //! * `z < -1/2`: Pfaff [DLMF 15.8.1], `(1-z)^{-a} 2F1(a, c-b; c; w)` or
 //!   `(1-z)^{-b} 2F1(c-a, b; c; w)`, `w = z/(z-1) in (1/3, 1)`; the candidate
 //!   with fewer negative numerators first, the other if the first cannot certify.
-//!   `c - b` is a double word (exact); the prefactor is [`pow_dw`](super::power::pow_dw).
+//!   `c - b` is a double word (exact); the prefactor is
+//!   [`pow_f64`](super::power_f64) for the f64 sums (a bound of a few `u`,
+//!   running error analysis) and [`pow_dw`](super::power::pow_dw) for the
+//!   double-word sums.
 //!
 //! Anything else (`z` in `(9/10, 1]`, more than [`MAX_NATIVE_TERMS`] terms, a
 //! bound above the caller's tolerance, values near the f64 range ends) returns
@@ -35,6 +38,7 @@
 //! `pow_dw`; the product `P S` adds one rounding.
 
 use super::power::{dw_add, dw_div, dw_mul, pow_dw, Dw, U};
+use super::power_f64::pow_f64;
 use crate::ball::Bounded;
 
 /// Cap on the terms of a native series (beyond it, MP).
@@ -286,12 +290,11 @@ pub(super) fn hyp2f1_native(a: f64, b: f64, c: f64, z: f64, rel_tol: f64) -> Opt
     let w = -z / omz.hi;
     for (p, q) in candidates {
         let Some((s, err_s)) = series(Param::exact(p), Param::from_dw(q), Param::exact(c), w, 2.01 * U) else { continue };
-        let Some((pre, pre_rel)) = pow_dw(omz, Dw::new(-p), 0.0) else { continue };
-        let pre_hi = pre.hi + pre.lo;
-        let v = pre_hi * s;
-        // P~ = fl(P) has relative error <= pre_rel + u; one more rounding for the product.
-        let pr = (pre_rel + U) * 1.0001;
-        let err = (pre_hi.abs() * err_s * (1.0 + 2.0 * pr) + (1.01 * pr + U) * v.abs()) * (1.0 + 4.0 * U);
+        // |P - P~| <= pre_rel |P~| (power_f64); one more rounding for the product.
+        let Some((pre, pre_rel)) = pow_f64(omz, -p) else { continue };
+        let v = pre * s;
+        let pr = pre_rel * 1.0001;
+        let err = (pre.abs() * err_s * (1.0 + 2.0 * pr) + (1.01 * pr + U) * v.abs()) * (1.0 + 4.0 * U);
         if let Some(r) = accept(v, err) {
             return Some(r);
         }

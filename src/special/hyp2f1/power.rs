@@ -90,9 +90,9 @@ pub(super) fn dw_mul(x: Dw, y: Dw) -> Dw {
 }
 
 /// `ln 2 = LN2_C1 + LN2_C2 + LN2_C3` to about 160 bits; `LN2_C1` has 42 significant bits.
-const LN2_C1: f64 = 0.6931471805598903;
-const LN2_C2: f64 = 5.497923018708371e-14;
-const LN2_C3: f64 = 1.94704509238075e-31;
+pub(super) const LN2_C1: f64 = 0.6931471805598903;
+pub(super) const LN2_C2: f64 = 5.497923018708371e-14;
+pub(super) const LN2_C3: f64 = 1.94704509238075e-31;
 
 /// DWTimesFP1 [Joldes-Muller-Popescu 2017, Alg. 7]: relative error `<= 2u^2`.
 #[inline]
