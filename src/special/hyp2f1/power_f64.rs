@@ -51,7 +51,7 @@
 //! non-finite input, `|y| > 700`); the caller then takes the double-word or
 //! MP path.
 
-use super::power::{dw_div, Dw, LN2_C1, LN2_C2, LN2_C3, U};
+use super::power::{dw_div, Dw, LN2_C1, LN2_C2, U};
 use crate::ball::{two_prod, two_sum};
 
 /// Terms of `Q(q) = sum_{k<=LN_TERMS} q^k/(2k+1)` in [`ln_f64`].
@@ -182,6 +182,7 @@ pub(super) fn pow_f64(x: Dw, p: f64) -> Option<(f64, f64)> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::power::LN2_C3;
     use super::*;
     use rug::ops::Pow;
     use rug::Float;
