@@ -104,6 +104,7 @@ impl BoundedDd {
     }
 
     #[inline]
+    #[allow(dead_code)] // the native paths call mul_p; kept for tests and callers
     pub(crate) fn mul(self, o: BoundedDd) -> BoundedDd {
         self.mul_p::<Dekker>(o)
     }
@@ -145,6 +146,7 @@ impl BoundedDd {
         Some(BoundedDd { v, e: (self.e + q * o.e) / den + C_DIV * q })
     }
 
+    #[allow(dead_code)] // the native paths call sqrt_p; kept for tests and callers
     pub(crate) fn sqrt(self) -> Option<BoundedDd> {
         self.sqrt_p::<Dekker>()
     }

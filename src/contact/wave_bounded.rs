@@ -64,16 +64,39 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use rug::float::Round;
 use rug::Float;
 
-use crate::ball::{Ball, Bounded, BoundedDd, Dd, U};
+use crate::ball::{two_sum, Ball, Bounded, BoundedDd, Dd, Dekker, ExactProduct, U};
 use crate::error::Result;
-use crate::special::bessel_j::bessel_j_sequence_mp;
+use crate::special::bessel_j::{bessel_j_sequence_mp, inv_factorials, MAX_TABLE_FACTORIAL, TABLE_ETA};
 use crate::special::exact_sub;
 
-/// Precision (bits) of the per-contact certified Bessel data.
+/// Precision (bits) of the per-contact certified Bessel data on the MP route.
 pub const CERT_PREC: u32 = 128;
 
 /// Largest `t = sqrt((x/a - 1)/(x/a + 1))` of the native path (`x/a <= 25/7`).
 pub const T_MAX: f64 = 0.75;
+
+/// The Bessel sums are cut where both tails (`tail0`, `tail2`) are below this
+/// (`2^-64`; relative to the scales `|A|` and `2 pi |A|/zeta` of the results
+/// they weigh at most `2^-61`, far below the final rounding).
+const BESSEL_TAIL_TARGET: f64 = 5.421_010_862_427_522e-20;
+
+/// The Horner sums in `q^2` stop at the first power whose rigorous remainder
+/// bound is below `2^-72 min(1, D)` (the remainder is added to the bound).
+const HORNER_TAIL_REL: f64 = 2.117_582_368_135_750_6e-22;
+
+/// The top series stop when the next term is below `2^-108` of the sum.
+const TAIL_REL_SERIES: f64 = 3.081_487_911_019_577e-33;
+
+/// `gamma_4 = 4u/(1 - 4u)`, rounded up (a four-deep f64 sum, Higham Lemma 3.1).
+const GAMMA4: f64 = 4.0001 * U;
+
+/// A certified native sequence is accepted when every `J_n(D)` is known to
+/// this absolute accuracy, `2^-60` (otherwise the MP route builds the data;
+/// over the model domain, `D <= 33.5`, the bound is below `3e-20`).
+const NATIVE_J_ERR_MAX: f64 = 8.673_617_379_884_035e-19; // 2^-60
+
+/// `|2 pi - Dd::TWO_PI|` is below `u |lo| < 2.8e-32`.
+const TWO_PI_ERR: f64 = 3.0e-32;
 
 static FALLBACKS: AtomicU64 = AtomicU64::new(0);
 
@@ -85,6 +108,19 @@ pub fn wave_bounded_fallbacks() -> u64 {
 
 pub(crate) fn count_fallback() {
     FALLBACKS.fetch_add(1, Ordering::Relaxed);
+}
+
+/// Whether the CPU has a fused multiply-add (checked once; `std` caches it).
+#[inline]
+fn has_fma() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        std::arch::is_x86_feature_detected!("fma")
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        false
+    }
 }
 
 /// A certified ball as a double-double with its conversion error.
@@ -100,28 +136,23 @@ fn tr_from_ball(b: &Ball) -> BoundedDd {
 
 /// `2 atanh(t) = acosh(r)` for `0 <= t <= T_MAX`: `t + t^3/3` in double-double,
 /// `t^5 P(t^2)` with `P` by Horner in f64 (module docs).
-fn two_atanh(t: BoundedDd) -> Option<BoundedDd> {
+#[inline(always)]
+fn two_atanh<P: ExactProduct>(t: BoundedDd) -> Option<BoundedDd> {
     if !(t.mag() + t.e <= T_MAX) {
         return None;
     }
-    let t2 = t.mul(t);
-    let t3 = t2.mul(t);
-    let lead = t.add(t3.div(BoundedDd::exact(3.0))?);
+    let t2 = t.mul_p::<P>(t);
+    let t3 = t2.mul_p::<P>(t);
+    let lead = t.add(t3.div_f64_p::<P>(3.0));
     let s = t2.v.to_f64();
     let s_up = t2.mag() + t2.e + U; // upper bound of t^2 (covers the rounding of s)
     if !(s_up < 1.0) {
         return None;
     }
-    // Terms until s^J/((2J+5)(1-s)) <= 2^-64 (relative to P(0) = 1/5).
-    let mut j_terms = 1usize;
-    let mut sp = s_up;
-    while sp / ((2 * j_terms + 5) as f64 * (1.0 - s_up)) > 1.0 / (1u64 << 63) as f64 / 8.0 {
-        sp *= s_up;
-        j_terms += 1;
-        if j_terms > 4000 {
-            return None;
-        }
-    }
+    // Terms until s^J/((2J+5)(1-s)) <= 2^-66 (relative to P(0) = 1/5): J from
+    // an f64 estimate, then the truncation bound below is computed for that J.
+    let j_terms = if s_up <= 1e-300 { 1 } else { ((-45.75 / s_up.ln()).ceil().max(1.0) as usize).min(4000) };
+    let sp = s_up.powi(j_terms as i32) * (1.0 + 1e-12); // powi: < 2 j_terms roundings
     // Horner with Higham's running error bound (Algorithm 5.1): u (2 mu - |p|).
     let mut p = 1.0 / (2 * (j_terms - 1) + 5) as f64;
     let mut mu = p / 2.0;
@@ -137,8 +168,66 @@ fn two_atanh(t: BoundedDd) -> Option<BoundedDd> {
     // P'(s) = sum_j j s^{j-1}/(2j+5) <= 1/(2 (1-s)^2)
     let input = (t2.e + U * s_up) / ((1.0 - s_up) * (1.0 - s_up)) * 0.5;
     let p_tr = BoundedDd { v: Dd::from_f64(p), e: horner + trunc + input };
-    let t5 = t3.mul(t2);
-    Some(lead.add(t5.mul(p_tr)).mul_f64(2.0))
+    let t5 = t3.mul_p::<P>(t2);
+    Some(lead.add(t5.mul_p::<P>(p_tr)).mul_f64_p::<P>(2.0))
+}
+
+/// One accumulator of the compensated Horner scheme: the value `h + l`
+/// (not renormalised) and the bound `e` on its distance to the exact
+/// polynomial at the exact argument (module docs, "Compensated Horner").
+#[derive(Clone, Copy)]
+struct CompAcc {
+    h: f64,
+    l: f64,
+    e: f64,
+}
+
+/// The per-`x` constants of a compensated Horner step: the argument
+/// `X = xh + xl` (a double-double) with its error `ex`, and the multipliers of
+/// the running bound.
+#[derive(Clone, Copy)]
+struct CompArg {
+    xh: f64,
+    xl: f64,
+    /// `|xh| + |xl| + ex`, which bounds `|X~|` and `|X|`.
+    xa: f64,
+    /// `ex + gamma_4 |xl|`: multiplies `|h|`.
+    kh: f64,
+    /// `ex + gamma_4 |xh| + |xl|`: multiplies `|l|`.
+    kl: f64,
+}
+
+impl CompArg {
+    #[inline(always)]
+    fn new(x: BoundedDd) -> CompArg {
+        let (xh, xl, ex) = (x.v.hi, x.v.lo, x.e);
+        CompArg { xh, xl, xa: xh.abs() + xl.abs() + ex, kh: ex + GAMMA4 * xl.abs(), kl: ex + GAMMA4 * xh.abs() + xl.abs() }
+    }
+}
+
+impl CompAcc {
+    #[inline(always)]
+    fn start(c: Dd, ec: f64) -> CompAcc {
+        CompAcc { h: c.hi, l: c.lo, e: ec }
+    }
+
+    /// `S X + C`: `h' + sigma = fl(h xh) + pi + c.hi` exactly (two_prod, two_sum),
+    /// `l' = fl((pi + sigma) + (h xl + (l xh + c.lo)))`; `ec` is the coefficient's
+    /// own error plus `gamma_4 |c.lo|` (precomputed).
+    #[inline(always)]
+    fn step<P: ExactProduct>(self, x: CompArg, c: Dd, ec: f64) -> CompAcc {
+        let (p, pi) = P::two_prod(self.h, x.xh);
+        let (h, sigma) = two_sum(p, c.hi);
+        let l = (pi + sigma) + (self.h * x.xl + (self.l * x.xh + c.lo));
+        let e = self.e * x.xa + self.h.abs() * x.kh + self.l.abs() * x.kl + GAMMA4 * U * (p.abs() + h.abs()) + ec;
+        CompAcc { h, l, e }
+    }
+
+    #[inline(always)]
+    fn finish(self) -> BoundedDd {
+        let (hi, lo) = two_sum(self.h, self.l);
+        BoundedDd { v: Dd { hi, lo }, e: self.e }
+    }
 }
 
 /// The certified per-contact data of the Bessel form.
@@ -147,12 +236,19 @@ pub(crate) struct CertifiedBessel {
     d: BoundedDd,
     /// `J_0(D), J_1(D)`.
     j01: [BoundedDd; 2],
-    /// `(-1)^{m+1} J_{2m}(D)`, `m = 0..=N` (index 0 unused): the `u` sum in `q^2`.
-    u_coef: Vec<BoundedDd>,
-    /// `T_m = sum_{n=m+1}^{N} (-1)^{n+1} n J_{2n}(D)`, `m = 0..N`: the gradient sum
-    /// `sum_n (-1)^{n+1} n J_{2n} geo_n = (1 + q) sum_m T_m q^{2m}` (collecting the
-    /// powers `q^{2m}` and `q^{2m+1}` of `geo_n = sum_{j<2n} q^j`).
-    du_coef: Vec<BoundedDd>,
+    /// `u_{i+1} = (-1)^i J_{2i+2}(D)`, `i = 0..N`: the `u` sum is `X sum_i u_{i+1} X^i`, `X = q^2`.
+    u_coef: Vec<Dd>,
+    /// `T_i = sum_{n=i+1}^{N} (-1)^{n+1} n J_{2n}(D)`, `i = 0..N`: the gradient sum
+    /// `sum_n (-1)^{n+1} n J_{2n} geo_n = (1 + q) sum_i T_i q^{2i}` (collecting the
+    /// powers `q^{2i}` and `q^{2i+1}` of `geo_n = sum_{j<2n} q^j`).
+    du_coef: Vec<Dd>,
+    /// Error bounds of the coefficients plus `gamma_4 |lo|` (the Horner step's share).
+    u_err: Vec<f64>,
+    du_err: Vec<f64>,
+    /// `max` over both sums of `sum_{i' >= i} (|c_i'| + err_i')`, rounded up; entry `N` is 0.
+    suffix: Vec<f64>,
+    /// Tolerance of the Horner truncation, `2^-72 min(1, D)`.
+    horner_tol: f64,
     n_terms: usize,
     /// `sum_{n>N} (D/2)^{2n}/(2n)!`, rounded up.
     tail0: f64,
@@ -160,9 +256,133 @@ pub(crate) struct CertifiedBessel {
     tail2: f64,
 }
 
+/// `N` and the tails `sum_{n>N} (D/2)^{2n}/(2n)!`, `sum_{n>N} n^2 (D/2)^{2n}/(2n)!`
+/// in f64, rounded up: the terms `t_m = (D/2)^{2m}/(2m)!` by their ratio
+/// `h^2/((2m-1) 2m)` (three roundings per step, covered by `1 + 4u`), and once the
+/// ratio of the weighted terms `rho = h^2 ((m+1)/m)^2/((2m+1)(2m+2))` is below
+/// 1/2, the tails from `m` are at most `t_m m^p/(1 - rho)` (decreasing ratios).
+/// `half_d_up >= D/2`. `None` if `N` passes `max_n`.
+fn bessel_tails(half_d_up: f64, max_n: usize) -> Option<(usize, f64, f64)> {
+    let h2 = half_d_up * half_d_up * (1.0 + 2.0 * U);
+    let mut t = 1.0f64; // t_0
+    for m in 1..=max_n + 1 {
+        let mf = m as f64;
+        t = t * h2 / ((2.0 * mf - 1.0) * (2.0 * mf)) * (1.0 + 4.0 * U);
+        let rho = h2 / ((2.0 * mf + 1.0) * (2.0 * mf + 2.0)) * ((mf + 1.0) / mf).powi(2) * (1.0 + 8.0 * U);
+        if rho < 0.5 {
+            let tail0 = t / (1.0 - rho) * (1.0 + 4.0 * U);
+            let tail2 = t * mf * mf / (1.0 - rho) * (1.0 + 8.0 * U);
+            if tail0 <= BESSEL_TAIL_TARGET && tail2 <= BESSEL_TAIL_TARGET {
+                return Some((m - 1, tail0, tail2));
+            }
+        }
+    }
+    None
+}
+
+/// `J_n(D) = (D/2)^n/n! sum_k t_k`, `t_{k+1} = t_k z/((k+1)(n+k+1))`, `z = -(D/2)^2`
+/// [DLMF 10.2.2] in [`BoundedDd`]: `pre` is `(D/2)^n/n!`. The sum stops at the
+/// first `K` with ratio bound `|z|/((K+1)(n+K+1)) <= 1/2` and
+/// `|t_K| <= 2^-108 |S|`; the tail is then at most `2 |t_K|` (the downward
+/// recurrence amplifies the top errors by up to `~2^100` at `D = 33.5`, but in
+/// absolute terms to `~1e-20`).
+#[inline(always)]
+fn j_series<P: ExactProduct>(pre: BoundedDd, z: BoundedDd, n: usize) -> Option<BoundedDd> {
+    let z_up = z.mag() + z.e;
+    let mut t = BoundedDd::ONE;
+    let mut s = BoundedDd::ONE;
+    let mut k = 0usize;
+    let tail = loop {
+        let div = ((k + 1) * (n + k + 1)) as f64; // exact
+        t = t.mul_p::<P>(z.div_f64_p::<P>(div));
+        k += 1;
+        let t_up = t.mag() + t.e;
+        if z_up <= 0.5 * ((k + 1) * (n + k + 1)) as f64 && t_up <= TAIL_REL_SERIES * s.mag() {
+            break 2.0 * t_up;
+        }
+        s = s.add(t);
+        if k > 10_000 || !t_up.is_finite() {
+            return None;
+        }
+    };
+    s.e += tail;
+    Some(pre.mul_p::<P>(s))
+}
+
+/// `J_0(D), ..., J_top(D)` with proven bounds, natively: `J_{top-1}`, `J_top` by
+/// the power series, the rest by the recurrence `J_{k-1} = (2k/D) J_k - J_{k+1}`
+/// [DLMF 10.6.1] run downward, everything in [`BoundedDd`] (module docs).
+#[inline(always)]
+fn native_sequence<P: ExactProduct>(d: BoundedDd, top: usize) -> Option<Vec<BoundedDd>> {
+    if top < 2 || top as u64 > MAX_TABLE_FACTORIAL {
+        return None;
+    }
+    let h = d.mul_f64_p::<P>(0.5);
+    let z = h.mul_p::<P>(h).neg();
+    // (D/2)^m by binary powering, then 1/m! from the table (relative error <= TABLE_ETA).
+    let m = top - 1;
+    let (mut acc, mut base, mut e) = (BoundedDd::ONE, h, m);
+    while e > 0 {
+        if e & 1 == 1 {
+            acc = acc.mul_p::<P>(base);
+        }
+        e >>= 1;
+        if e > 0 {
+            base = base.mul_p::<P>(base);
+        }
+    }
+    let f = inv_factorials()[m];
+    let inv_fact = BoundedDd { v: f, e: TABLE_ETA * crate::ball::mag(f) };
+    let pre_m = acc.mul_p::<P>(inv_fact);
+    let pre_top = pre_m.mul_p::<P>(h).div_f64_p::<P>(top as f64);
+    let mut y = vec![BoundedDd::ZERO; top + 1];
+    y[m] = j_series::<P>(pre_m, z, m)?;
+    y[top] = j_series::<P>(pre_top, z, top)?;
+    let inv = BoundedDd::ONE.div(d)?;
+    for k in (1..=m).rev() {
+        y[k - 1] = y[k].mul_p::<P>(inv).mul_f64_p::<P>((2 * k) as f64).sub(y[k + 1]);
+    }
+    Some(y)
+}
+
 impl CertifiedBessel {
-    /// Certified `D` and `J_n(D)` for `a > 0`, `zeta > 0` (validated by the caller).
+    /// Certified `D` and `J_n(D)` for `a > 0`, `zeta > 0` (validated by the
+    /// caller): natively in double-double where that certifies (`D` up to about
+    /// 60), else at [`CERT_PREC`] bits in MP.
     pub(crate) fn new(a: f64, zeta: f64) -> Result<CertifiedBessel> {
+        #[cfg(target_arch = "x86_64")]
+        if has_fma() {
+            // SAFETY: the CPU supports FMA (checked just above).
+            if let Some(c) = unsafe { native_fused(a, zeta) } {
+                return Ok(c);
+            }
+            return Self::new_mp(a, zeta);
+        }
+        match Self::native::<Dekker>(a, zeta) {
+            Some(c) => Ok(c),
+            None => Self::new_mp(a, zeta),
+        }
+    }
+
+    /// The native per-contact data (`None` where it does not certify).
+    #[inline(always)]
+    fn native<P: ExactProduct>(a: f64, zeta: f64) -> Option<CertifiedBessel> {
+        let two_pi = BoundedDd { v: Dd::TWO_PI, e: TWO_PI_ERR };
+        let d = two_pi.mul_f64_p::<P>(a).div_f64_p::<P>(zeta);
+        let half_up = (d.mag() + d.e) * 0.5 * (1.0 + 2.0 * U);
+        let (n_terms, tail0, tail2) = bessel_tails(half_up, (MAX_TABLE_FACTORIAL as usize - 2) / 2)?;
+        let n_terms = n_terms.max(1);
+        let j = native_sequence::<P>(d, 2 * n_terms + 1)?;
+        if !j.iter().all(|v| v.e <= NATIVE_J_ERR_MAX) {
+            return None;
+        }
+        Some(Self::from_sequence(d, &j, n_terms, tail0, tail2))
+    }
+
+    /// The MP route: `J_n(D)` as balls at [`CERT_PREC`] bits
+    /// ([`bessel_j_sequence_mp`] at the midpoint of the ball `D`, widened by
+    /// `rad(D)` since `|J_n'| <= 1` [DLMF 10.14.1]).
+    pub(crate) fn new_mp(a: f64, zeta: f64) -> Result<CertifiedBessel> {
         let wp = CERT_PREC;
         let d = Ball::pi(wp).mul_pow2(1).mul(&Ball::from_f64(a, wp)?).div(&Ball::from_f64(zeta, wp)?)?;
         // N with both tails below 2^-110 (the double-double level).
@@ -173,54 +393,123 @@ impl CertifiedBessel {
         for v in j.iter_mut() {
             v.add_error_mag(d.rad_mag());
         }
-        let n_terms = n_terms as usize;
         let jt: Vec<BoundedDd> = j.iter().map(tr_from_ball).collect();
+        Ok(Self::from_sequence(
+            tr_from_ball(&d),
+            &jt,
+            n_terms as usize,
+            tail0.to_f64_round(Round::Up),
+            tail2.to_f64_round(Round::Up),
+        ))
+    }
+
+    /// The Horner coefficients and their bounds from `J_0, ..., J_{2N+1}`.
+    fn from_sequence(d: BoundedDd, jt: &[BoundedDd], n_terms: usize, tail0: f64, tail2: f64) -> CertifiedBessel {
         let sign = |n: usize| if n % 2 == 1 { 1.0 } else { -1.0 };
-        let u_coef: Vec<BoundedDd> = (0..=n_terms).map(|m| jt[2 * m].mul_f64(sign(m))).collect();
-        let mut du_coef = vec![BoundedDd::ZERO; n_terms];
+        let u: Vec<BoundedDd> = (0..n_terms).map(|i| jt[2 * i + 2].mul_f64(sign(i + 1))).collect();
+        let mut du = vec![BoundedDd::ZERO; n_terms];
         let mut acc = BoundedDd::ZERO;
-        for m in (0..n_terms).rev() {
-            acc = acc.add(jt[2 * (m + 1)].mul_f64(sign(m + 1) * (m + 1) as f64));
-            du_coef[m] = acc;
+        for i in (0..n_terms).rev() {
+            acc = acc.add(jt[2 * (i + 1)].mul_f64(sign(i + 1) * (i + 1) as f64));
+            du[i] = acc;
         }
-        Ok(CertifiedBessel {
-            d: tr_from_ball(&d),
+        let err = |c: &BoundedDd| (c.e + GAMMA4 * c.v.lo.abs()) * (1.0 + 4.0 * U);
+        let mut suffix = vec![0.0f64; n_terms + 1];
+        let (mut su, mut sd) = (0.0f64, 0.0f64);
+        for i in (0..n_terms).rev() {
+            su = (su + u[i].mag() + err(&u[i])) * (1.0 + 4.0 * U);
+            sd = (sd + du[i].mag() + err(&du[i])) * (1.0 + 4.0 * U);
+            suffix[i] = su.max(sd);
+        }
+        let d_lo = d.v.hi.abs() - d.v.lo.abs() - d.e;
+        CertifiedBessel {
+            d,
             j01: [jt[0], jt[1]],
-            u_coef,
-            du_coef,
+            u_coef: u.iter().map(|c| c.v).collect(),
+            du_coef: du.iter().map(|c| c.v).collect(),
+            u_err: u.iter().map(err).collect(),
+            du_err: du.iter().map(err).collect(),
+            suffix,
+            horner_tol: HORNER_TAIL_REL * d_lo.clamp(0.0, 1.0),
             n_terms,
-            tail0: tail0.to_f64_round(Round::Up),
-            tail2: tail2.to_f64_round(Round::Up),
-        })
+            tail0,
+            tail2,
+        }
     }
 
     /// `(u_w(x), du_w/dx)` with proven bounds, or `None` where the native path
     /// does not certify (`x/a > 25/7`). `a <= x` and finiteness are the caller's.
     pub(crate) fn eval_bounded(&self, a: f64, amp: f64, x: f64) -> Option<(Bounded, Bounded)> {
-        let ad = BoundedDd::exact(a);
-        let rm1 = BoundedDd { v: Dd::diff(x, a), e: 0.0 }.div(ad)?; // x/a - 1 (x - a exact)
-        let rp1 = BoundedDd { v: Dd::diff(x, -a), e: 0.0 }.div(ad)?; // x/a + 1 (x + a exact)
-        let t = rm1.div(rp1)?.sqrt()?;
-        let acosh_r = two_atanh(t)?;
-        let q = BoundedDd::ONE.sub(t).div(BoundedDd::ONE.add(t))?;
-        let one_minus_t = BoundedDd::ONE.sub(t);
-        let q2 = q.mul(q);
-        // Horner in q^2 for both sums (coefficients precomputed per contact).
-        let n = self.n_terms;
-        let (mut su, mut sdu) = (self.u_coef[n], self.du_coef[n - 1]);
-        for m in (0..n - 1).rev() {
-            su = su.mul(q2).add(self.u_coef[m + 1]);
-            sdu = sdu.mul(q2).add(self.du_coef[m]);
+        #[cfg(target_arch = "x86_64")]
+        if has_fma() {
+            // SAFETY: the CPU supports FMA (checked just above).
+            return unsafe { eval_fused(self, a, amp, x) };
         }
-        let mut su = su.mul(q2);
-        let mut sdu = sdu.mul(BoundedDd::ONE.add(q));
+        self.eval_with::<Dekker>(a, amp, x)
+    }
+
+    #[inline(always)]
+    fn eval_with<P: ExactProduct>(&self, a: f64, amp: f64, x: f64) -> Option<(Bounded, Bounded)> {
+        let rm1 = BoundedDd { v: Dd::diff(x, a), e: 0.0 }; // x - a, exact
+        let rp1 = BoundedDd { v: Dd::diff(x, -a), e: 0.0 }; // x + a, exact
+        let t = rm1.div(rp1)?.sqrt_p::<P>()?;
+        let acosh_r = two_atanh::<P>(t)?;
+        let one_minus_t = BoundedDd::ONE.sub(t);
+        let q = one_minus_t.div(BoundedDd::ONE.add(t))?;
+        let q2 = q.mul_p::<P>(q);
+        let arg = CompArg::new(q2);
+        // Truncate the Horner sums where the remainder is negligible (|X| <= xa).
+        let n = self.n_terms;
+        let mut top = n - 1;
+        let mut rem = 0.0f64;
+        if arg.xa < 1.0 {
+            let mut pw = arg.xa;
+            for i in 0..n - 1 {
+                let r = pw * self.suffix[i + 1] * (1.0 + 1.0 / (1u64 << 40) as f64);
+                if r <= self.horner_tol {
+                    top = i;
+                    rem = r;
+                    break;
+                }
+                pw *= arg.xa;
+            }
+        }
+        // Compensated Horner in q^2, the two sums interleaved.
+        let (mut su, mut sdu) =
+            (CompAcc::start(self.u_coef[top], self.u_err[top]), CompAcc::start(self.du_coef[top], self.du_err[top]));
+        for i in (0..top).rev() {
+            su = su.step::<P>(arg, self.u_coef[i], self.u_err[i]);
+            sdu = sdu.step::<P>(arg, self.du_coef[i], self.du_err[i]);
+        }
+        let (mut su, mut sdu) = (su.finish(), sdu.finish());
+        su.e += rem;
+        sdu.e += rem;
+        let mut su = su.mul_p::<P>(q2);
+        let mut sdu = sdu.mul_p::<P>(BoundedDd::ONE.add(q));
         su.e += self.tail0;
         sdu.e += 2.0 * self.tail2;
-        let inner = BoundedDd::ONE.sub(self.j01[0]).add(self.d.mul(self.j01[1]).mul(acosh_r)).add(su.mul_f64(2.0));
-        let u = inner.mul_f64(amp);
-        let du = one_minus_t.mul(sdu).mul_f64(4.0 * amp).div(ad)?;
+        let inner = BoundedDd::ONE
+            .sub(self.j01[0])
+            .add(self.d.mul_p::<P>(self.j01[1]).mul_p::<P>(acosh_r))
+            .add(su.mul_f64_p::<P>(2.0));
+        let u = inner.mul_f64_p::<P>(amp);
+        let du = one_minus_t.mul_p::<P>(sdu).mul_f64_p::<P>(4.0 * amp).div_f64_p::<P>(a);
         Some((u.finish()?, du.finish()?))
     }
+}
+
+/// [`CertifiedBessel::native`] compiled with the `fma` target feature.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "fma")]
+unsafe fn native_fused(a: f64, zeta: f64) -> Option<CertifiedBessel> {
+    CertifiedBessel::native::<crate::ball::Fused>(a, zeta)
+}
+
+/// [`CertifiedBessel::eval_with`] compiled with the `fma` target feature.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "fma")]
+unsafe fn eval_fused(c: &CertifiedBessel, a: f64, amp: f64, x: f64) -> Option<(Bounded, Bounded)> {
+    c.eval_with::<crate::ball::Fused>(a, amp, x)
 }
 
 #[cfg(test)]
@@ -233,7 +522,7 @@ mod tests {
             let rm1 = BoundedDd { v: Dd::diff(r, 1.0), e: 0.0 };
             let rp1 = BoundedDd { v: Dd::diff(r, -1.0), e: 0.0 };
             let t = rm1.div(rp1).unwrap().sqrt().unwrap();
-            let v = two_atanh(t).unwrap().finish().unwrap();
+            let v = two_atanh::<Dekker>(t).unwrap().finish().unwrap();
             let exact = Float::with_val(200, r).acosh();
             let diff = Float::with_val(200, &exact - v.value).abs().to_f64();
             assert!(diff <= v.err, "r={r}: {v} vs {exact}");
@@ -242,8 +531,17 @@ mod tests {
     }
 
     #[test]
+    fn debug_native() {
+        for i in 1..=12 {
+            let a = 0.5 * i as f64;
+            let ok = CertifiedBessel::native::<Dekker>(a, 1.125);
+            eprintln!("a={a} D={} native={}", 2.0 * std::f64::consts::PI * a / 1.125, ok.is_some());
+        }
+    }
+
+    #[test]
     fn refuses_beyond_t_max() {
         let t = BoundedDd::exact(0.8);
-        assert!(two_atanh(t).is_none());
+        assert!(two_atanh::<Dekker>(t).is_none());
     }
 }

@@ -64,11 +64,11 @@ fn compose(a: f64, b: f64, c: f64) -> f64 {
 
 /// `1/k!` for `k <= MAX_TABLE_FACTORIAL` as double-doubles, rounded from 256-bit
 /// MPFR values (`hi` nearest, `lo` nearest to the rest: relative error `<= 2 u^2`).
-const MAX_TABLE_FACTORIAL: u64 = 170;
+pub(crate) const MAX_TABLE_FACTORIAL: u64 = 170;
 /// Relative error of a table entry.
-const TABLE_ETA: f64 = 2.0 * U2;
+pub(crate) const TABLE_ETA: f64 = 2.0 * U2;
 
-fn inv_factorials() -> &'static [Dd] {
+pub(crate) fn inv_factorials() -> &'static [Dd] {
     static TABLE: std::sync::OnceLock<Vec<Dd>> = std::sync::OnceLock::new();
     TABLE.get_or_init(|| {
         (0..=MAX_TABLE_FACTORIAL as u32)
