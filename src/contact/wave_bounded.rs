@@ -66,7 +66,9 @@ use rug::Float;
 
 use crate::ball::{two_sum, Ball, Bounded, BoundedDd, Dd, Dekker, ExactProduct, U};
 use crate::error::Result;
-use crate::special::bessel_j::{bessel_j_sequence_mp, inv_factorials, MAX_TABLE_FACTORIAL, TABLE_ETA};
+use crate::special::bessel_j::{
+    bessel_j01, bessel_j_sequence_mp, forward_sequence, inv_factorials, HANKEL_MAX_X, HANKEL_MIN_X, MAX_TABLE_FACTORIAL, TABLE_ETA,
+};
 use crate::special::exact_sub;
 
 /// Precision (bits) of the per-contact certified Bessel data on the MP route.
@@ -106,6 +108,15 @@ pub fn wave_bounded_fallbacks() -> u64 {
     FALLBACKS.load(Ordering::Relaxed)
 }
 
+static MP_CONTACTS: AtomicU64 = AtomicU64::new(0);
+
+/// How many times the per-contact Bessel data of the bounded path were built
+/// in MP (where the native double-double sequence does not certify: `D`
+/// beyond about 60) since the process started.
+pub fn wave_bounded_mp_contacts() -> u64 {
+    MP_CONTACTS.load(Ordering::Relaxed)
+}
+
 pub(crate) fn count_fallback() {
     FALLBACKS.fetch_add(1, Ordering::Relaxed);
 }
@@ -134,10 +145,74 @@ fn tr_from_ball(b: &Ball) -> BoundedDd {
     BoundedDd { v: Dd { hi, lo }, e }
 }
 
-/// `2 atanh(t) = acosh(r)` for `0 <= t <= T_MAX`: `t + t^3/3` in double-double,
-/// `t^5 P(t^2)` with `P` by Horner in f64 (module docs).
+/// `num / den` in [`BoundedDd`] without the long division: with `den = H + L`
+/// (a normalised double-double, `|L| <= u |H|`) and `eps = fl(L/H)`,
+/// `num/den = (num/H) (1 - eps) + r`, `|r| <= (u^2 + eps^2/(1 + eps)) |num/H| <= 2.01 u^2 |num/H|`
+/// (`|L/H - eps| <= u |eps| <= u^2`), so `num/H` ([`BoundedDd::div_f64_p`]) times
+/// the double-double `1 - eps` carrying `3 u^2` gives `num/den~`; the error
+/// `e_den` of the denominator adds `|num/den~| e_den/(|den~| - e_den)`.
+/// Falls back to [`BoundedDd::div`] if `den` is not normalised.
+#[inline(always)]
+fn div_p<P: ExactProduct>(num: BoundedDd, den: BoundedDd) -> Option<BoundedDd> {
+    let (h, l) = (den.v.hi, den.v.lo);
+    let eps = l / h;
+    if !(eps.abs() <= U) || h == 0.0 {
+        return num.div(den);
+    }
+    let low = den.mag() - den.e;
+    if !(low > 0.0) {
+        return None;
+    }
+    let corr = BoundedDd { v: Dd { hi: 1.0, lo: -eps }, e: 3.0 * U * U };
+    let mut r = num.div_f64_p::<P>(h).mul_p::<P>(corr);
+    if den.e > 0.0 {
+        r.e += (r.mag() + r.e) * den.e / low;
+    }
+    Some(r)
+}
+
+/// Spacing of the table of `atanh(t0)`, `t0 = i/16`, `i = 0..=12` (up to `T_MAX`).
+const ATANH_TABLE_STEP: f64 = 0.0625;
+
+/// `atanh(i/16)` for `i = 0..=12` as double-doubles with their errors (MPFR at
+/// 256 bits, correctly rounded, then split: error `<= |rest| + 2^-250 |v|`).
+fn atanh_table() -> &'static [BoundedDd] {
+    static TABLE: std::sync::OnceLock<Vec<BoundedDd>> = std::sync::OnceLock::new();
+    TABLE.get_or_init(|| {
+        (0..=12)
+            .map(|i| {
+                let f = Float::with_val(256, i as f64 * ATANH_TABLE_STEP).atanh();
+                let hi = f.to_f64();
+                let rest = Float::with_val(256, &f - hi);
+                let lo = rest.to_f64();
+                let rem = Float::with_val(256, &rest - lo).abs().to_f64_round(Round::Up);
+                BoundedDd { v: Dd { hi, lo }, e: (rem + hi.abs() * 5.5e-76).next_up() }
+            })
+            .collect()
+    })
+}
+
+/// `2 atanh(t) = acosh(r)` for `0 <= t <= T_MAX`: with `t0 = i/16` the table
+/// point nearest to `t`, `atanh(t) = atanh(t0) + atanh(w)`,
+/// `w = (t - t0)/(1 - t t0)`, `|w| <= 0.08`, and `atanh(w)` by [`atanh_series`].
 #[inline(always)]
 fn two_atanh<P: ExactProduct>(t: BoundedDd) -> Option<BoundedDd> {
+    if !(t.mag() + t.e <= T_MAX) {
+        return None;
+    }
+    let i = (t.v.hi / ATANH_TABLE_STEP).round().clamp(0.0, 12.0) as usize;
+    if i == 0 {
+        return Some(atanh_series::<P>(t)?.mul_f64_p::<P>(2.0));
+    }
+    let t0 = i as f64 * ATANH_TABLE_STEP; // exact
+    let w = div_p::<P>(t.sub(BoundedDd::exact(t0)), BoundedDd::ONE.sub(t.mul_f64_p::<P>(t0)))?;
+    Some(atanh_table()[i].add(atanh_series::<P>(w)?).mul_f64_p::<P>(2.0))
+}
+
+/// `atanh(t) = t + t^3/3 + t^5 P(t^2)` for `|t| <= T_MAX`: the first two terms in
+/// double-double, `P` by Horner in f64 (module docs).
+#[inline(always)]
+fn atanh_series<P: ExactProduct>(t: BoundedDd) -> Option<BoundedDd> {
     if !(t.mag() + t.e <= T_MAX) {
         return None;
     }
@@ -169,7 +244,7 @@ fn two_atanh<P: ExactProduct>(t: BoundedDd) -> Option<BoundedDd> {
     let input = (t2.e + U * s_up) / ((1.0 - s_up) * (1.0 - s_up)) * 0.5;
     let p_tr = BoundedDd { v: Dd::from_f64(p), e: horner + trunc + input };
     let t5 = t3.mul_p::<P>(t2);
-    Some(lead.add(t5.mul_p::<P>(p_tr)).mul_f64_p::<P>(2.0))
+    Some(lead.add(t5.mul_p::<P>(p_tr)))
 }
 
 /// One accumulator of the compensated Horner scheme: the value `h + l`
@@ -338,9 +413,36 @@ fn native_sequence<P: ExactProduct>(d: BoundedDd, top: usize) -> Option<Vec<Boun
     let mut y = vec![BoundedDd::ZERO; top + 1];
     y[m] = j_series::<P>(pre_m, z, m)?;
     y[top] = j_series::<P>(pre_top, z, top)?;
+    // Below the turning point (`k < D`) the downward recurrence's running bound
+    // grows like `e^{0.47 D}` on top of the `e^{0.55 D}` above it; from
+    // `D = 25` on, the orders below `nf = floor(x) - 1` come instead from the
+    // forward recurrence of `native_recurrence.rs` at `x = D.hi` (Hankel's
+    // `J_0`, `J_1`; energy-norm bound, no such growth), moved to `D = x + delta`
+    // by Taylor: `J_k(D) = J_k(x) + delta (J_{k-1}(x) - J_{k+1}(x))/2 + R`,
+    // `|R| <= delta^2/2` (`|J_k''| <= 1`, DLMF 10.6.1, 10.14.1).
+    let x = d.v.hi;
+    let nf = if (HANKEL_MIN_X..=HANKEL_MAX_X).contains(&x) { x.floor() as usize - 1 } else { 0 };
+    if nf >= m {
+        return None;
+    }
     let inv = BoundedDd::ONE.div(d)?;
-    for k in (1..=m).rev() {
+    for k in (nf + 1..=m).rev() {
         y[k - 1] = y[k].mul_p::<P>(inv).mul_f64_p::<P>((2 * k) as f64).sub(y[k + 1]);
+    }
+    if nf > 0 {
+        let (j0, j1) = bessel_j01::<P>(x)?;
+        let mut fw = vec![BoundedDd::ZERO; nf + 1];
+        forward_sequence::<P>(nf as u64, x, j0, j1, &mut fw)?;
+        let delta = BoundedDd { v: Dd::from_f64(d.v.lo), e: d.e };
+        let delta_up = delta.mag() + delta.e;
+        let rem = 0.5 * delta_up * delta_up * (1.0 + 4.0 * U);
+        for k in 0..nf {
+            let below = if k == 0 { fw[1].neg() } else { fw[k - 1] };
+            let deriv = below.sub(fw[k + 1]).mul_f64_p::<P>(0.5);
+            let mut v = fw[k].add(delta.mul_p::<P>(deriv));
+            v.e += rem;
+            y[k] = v;
+        }
     }
     Some(y)
 }
@@ -350,18 +452,24 @@ impl CertifiedBessel {
     /// caller): natively in double-double where that certifies (`D` up to about
     /// 60), else at [`CERT_PREC`] bits in MP.
     pub(crate) fn new(a: f64, zeta: f64) -> Result<CertifiedBessel> {
+        match Self::native_only(a, zeta) {
+            Some(c) => Ok(c),
+            None => {
+                MP_CONTACTS.fetch_add(1, Ordering::Relaxed);
+                Self::new_mp(a, zeta)
+            }
+        }
+    }
+
+    /// The native per-contact data only (`None` where it does not certify;
+    /// the estimate paths then use the double-double Miller data instead).
+    pub(crate) fn native_only(a: f64, zeta: f64) -> Option<CertifiedBessel> {
         #[cfg(target_arch = "x86_64")]
         if has_fma() {
             // SAFETY: the CPU supports FMA (checked just above).
-            if let Some(c) = unsafe { native_fused(a, zeta) } {
-                return Ok(c);
-            }
-            return Self::new_mp(a, zeta);
+            return unsafe { native_fused(a, zeta) };
         }
-        match Self::native::<Dekker>(a, zeta) {
-            Some(c) => Ok(c),
-            None => Self::new_mp(a, zeta),
-        }
+        Self::native::<Dekker>(a, zeta)
     }
 
     /// The native per-contact data (`None` where it does not certify).
@@ -452,10 +560,11 @@ impl CertifiedBessel {
     fn eval_with<P: ExactProduct>(&self, a: f64, amp: f64, x: f64) -> Option<(Bounded, Bounded)> {
         let rm1 = BoundedDd { v: Dd::diff(x, a), e: 0.0 }; // x - a, exact
         let rp1 = BoundedDd { v: Dd::diff(x, -a), e: 0.0 }; // x + a, exact
-        let t = rm1.div(rp1)?.sqrt_p::<P>()?;
+        let t = div_p::<P>(rm1, rp1)?.sqrt_p::<P>()?;
         let acosh_r = two_atanh::<P>(t)?;
         let one_minus_t = BoundedDd::ONE.sub(t);
-        let q = one_minus_t.div(BoundedDd::ONE.add(t))?;
+        // q = (1 - t)/(1 + t) = (1 - t)^2/(1 - t^2) = (1 - t)^2 (x + a)/(2a)
+        let q = one_minus_t.mul_p::<P>(one_minus_t).mul_p::<P>(rp1).div_f64_p::<P>(2.0 * a);
         let q2 = q.mul_p::<P>(q);
         let arg = CompArg::new(q2);
         // Truncate the Horner sums where the remainder is negligible (|X| <= xa).
@@ -463,8 +572,11 @@ impl CertifiedBessel {
         let mut top = n - 1;
         let mut rem = 0.0f64;
         if arg.xa < 1.0 {
-            let mut pw = arg.xa;
-            for i in 0..n - 1 {
+            // first candidate from logarithms (xa^{i+1} suffix[0] <= tol), then checked
+            let guess = ((self.horner_tol / self.suffix[0]).ln() / arg.xa.ln()).floor() - 2.0;
+            let start = if guess.is_finite() && guess > 0.0 { (guess as usize).min(n - 1) } else { 0 };
+            let mut pw = arg.xa.powi(start as i32 + 1); // < 2^-40 relative error (covered below)
+            for i in start..n - 1 {
                 let r = pw * self.suffix[i + 1] * (1.0 + 1.0 / (1u64 << 40) as f64);
                 if r <= self.horner_tol {
                     top = i;
@@ -530,12 +642,29 @@ mod tests {
         }
     }
 
+    /// The native per-contact `J_n(D)` lie within their bounds of the 300-bit
+    /// values, on both sides of the switch to the forward recurrence (`D = 25`)
+    /// and across the model domain (`D` up to 33.5), and they certify there.
     #[test]
-    fn debug_native() {
-        for i in 1..=12 {
-            let a = 0.5 * i as f64;
-            let ok = CertifiedBessel::native::<Dekker>(a, 1.125);
-            eprintln!("a={a} D={} native={}", 2.0 * std::f64::consts::PI * a / 1.125, ok.is_some());
+    fn native_sequence_encloses_the_mp_values() {
+        let cases = [(0.5, 1.125), (3.0, 1.125), (4.4, 1.125), (4.5, 1.125), (6.0, 1.125), (3.0, 0.5), (0.1, 2.0)];
+        for &(a, zeta) in &cases {
+            let two_pi = BoundedDd { v: Dd::TWO_PI, e: TWO_PI_ERR };
+            let d = two_pi.mul_f64(a).div_f64_p::<Dekker>(zeta);
+            let half_up = (d.mag() + d.e) * 0.5 * (1.0 + 2.0 * U);
+            let (n, _, _) = bessel_tails(half_up, 84).unwrap();
+            let top = 2 * n.max(1) + 1;
+            let j = native_sequence::<Dekker>(d, top).unwrap();
+            let dm = Float::with_val(300, crate::special::exact(2.0 * a)) * Float::with_val(300, rug::float::Constant::Pi)
+                / Float::with_val(300, zeta);
+            let reference = bessel_j_sequence_mp(top as u64, &dm, 300).unwrap();
+            for (k, (v, r)) in j.iter().zip(reference.iter()).enumerate() {
+                let got = Float::with_val(300, v.v.hi) + v.v.lo;
+                let diff = Float::with_val(300, got - r.mid()).abs().to_f64();
+                assert!(diff <= v.e, "a={a} zeta={zeta}: J_{k}: diff {diff:e} > bound {:e}", v.e);
+                assert!(v.e <= NATIVE_J_ERR_MAX, "a={a} zeta={zeta}: J_{k}: bound {:e}", v.e);
+            }
+            assert!(CertifiedBessel::native::<Dekker>(a, zeta).is_some(), "a={a} zeta={zeta}");
         }
     }
 

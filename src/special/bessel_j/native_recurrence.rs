@@ -64,6 +64,30 @@ pub(crate) const MAX_RECURRENCE_ORDER: u64 = 10_000;
 /// `J_n(x)` from `(J_0, J_1)` for `n + 1 <= x`, `n <= MAX_RECURRENCE_ORDER`.
 #[inline(always)]
 pub(crate) fn forward<P: ExactProduct>(n: u64, x: f64, j0: BoundedDd, j1: BoundedDd) -> Option<BoundedDd> {
+    forward_visit::<P, _>(n, x, j0, j1, |_, _| {})
+}
+
+/// `J_0(x), ..., J_n(x)` from `(J_0, J_1)` for `n + 1 <= x` into `out[0..=n]`,
+/// each with the bound the module docs give for its own order (the norm at
+/// step `k` bounds `eps_{k+1}` the same way it bounds the last one).
+#[inline(always)]
+pub(crate) fn forward_sequence<P: ExactProduct>(n: u64, x: f64, j0: BoundedDd, j1: BoundedDd, out: &mut [BoundedDd]) -> Option<()> {
+    if out.len() <= n as usize {
+        return None;
+    }
+    out[0] = j0;
+    if n >= 1 {
+        out[1] = j1;
+    }
+    let last = forward_visit::<P, _>(n, x, j0, j1, |k, v| out[k] = v)?;
+    out[n as usize] = last;
+    Some(())
+}
+
+/// The recurrence of [`forward`]; `visit(k, J_k)` receives the orders
+/// `2..n` on the way (the last one is returned).
+#[inline(always)]
+fn forward_visit<P: ExactProduct, F: FnMut(usize, BoundedDd)>(n: u64, x: f64, j0: BoundedDd, j1: BoundedDd, mut visit: F) -> Option<BoundedDd> {
     if n == 0 {
         return Some(j0);
     }
@@ -94,6 +118,8 @@ pub(crate) fn forward<P: ExactProduct>(n: u64, x: f64, j0: BoundedDd, j1: Bounde
         norm += U * (5.1 * (U * (p.abs() + s.abs()) + cl.abs() * h.abs() + l_prev.abs()) + 6.1 * cf.abs() * l.abs())
             + g * (h.abs() + l.abs());
         if k + 1 < n {
+            let m = k as f64;
+            visit(k as usize + 1, BoundedDd { v: Dd { hi: s, lo: l_next }, e: norm * x / ((x - m) * (x + m)).sqrt() });
             norm *= 1.0 + 0.5 / (x - k as f64);
         }
         (h_prev, l_prev) = (h, l);
