@@ -12,7 +12,7 @@
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use maugis::contact::displacement::{du_wave_bounded, u_wave, u_wave_bounded, u_wave_mp, u_wave_series_mp, WaveBessel};
-use maugis::contact::wave_bounded::wave_bounded_fallbacks;
+use maugis::contact::wave_bounded::{wave_bounded_fallbacks, wave_bounded_mp_contacts};
 use maugis::contact::wave_quadrature::u_wave_quad;
 use maugis::special::exact;
 
@@ -79,7 +79,7 @@ fn domain_points() -> Vec<(f64, f64)> {
 /// Criterion reports elements per second: 64 values per iteration.
 fn bench_wave_f64_domain(c: &mut Criterion) {
     let pts = domain_points();
-    let before = wave_bounded_fallbacks();
+    let (before, before_contacts) = (wave_bounded_fallbacks(), wave_bounded_mp_contacts());
     let mut g = c.benchmark_group("wave_f64_domain");
     g.throughput(Throughput::Elements(pts.len() as u64));
     g.bench_function("u_wave/scratch", |b| {
@@ -102,7 +102,11 @@ fn bench_wave_f64_domain(c: &mut Criterion) {
         });
     }
     g.finish();
-    eprintln!("wave_f64_domain: MP fallbacks of the bounded path: {}", wave_bounded_fallbacks() - before);
+    eprintln!(
+        "wave_f64_domain: MP fallbacks of the bounded path: {} (per x), contact data built in MP: {}",
+        wave_bounded_fallbacks() - before,
+        wave_bounded_mp_contacts() - before_contacts
+    );
 }
 
 fn bench_quadrature(c: &mut Criterion) {

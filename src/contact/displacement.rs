@@ -592,9 +592,10 @@ impl WaveBessel {
         self.d.to_f64()
     }
 
-    /// `(u_w(x), du_w/dx)` for `x >= a` (double-double, rounded once; an
-    /// estimate: about `1e-16` of `max(|u_w|, |A|)`, see [`WaveBessel::eval_bounded`]
-    /// for a proven bound).
+    /// `(u_w(x), du_w/dx)` for `x >= a`: the values of [`WaveBessel::eval_bounded`]
+    /// (native double-double, rounded once; the certified data are built on the
+    /// first call) up to `x/a = 25/7`, beyond it the double-double Miller data.
+    /// An estimate: about `1e-16` of `max(|u_w|, |A|)`.
     ///
     /// Errors: `x` NaN or infinite, or `x < a` (the Bessel form is for the
     /// outside of the contact).

@@ -1,63 +1,115 @@
 //! The wave displacement `u_w(x)` and its gradient `du_w/dx` in f64 with a
 //! **proven** error bound: the Bessel form of [`super::displacement`] evaluated
-//! in double-double with a running error analysis.
+//! in double-double with a running error analysis, without MP on the model's
+//! domain.
 //!
 //! # Method
 //!
-//! With `D = 2 pi a/zeta`, `r = x/a >= 1` and `t = sqrt((r-1)/(r+1))` in `[0, 1)`
+//! With `D = 2 pi a/zeta`, `r = x/a >= 1` and `t = sqrt((x-a)/(x+a))` in `[0, 1)`
 //! (notes/model.md sec. 3; the module docs of [`super::displacement`]):
 //!
 //! ```text
-//! q = (1 - t)/(1 + t) = r - sqrt(r^2 - 1),        acosh(r) = 2 atanh(t),
+//! q = (1 - t)/(1 + t) = (1 - t)^2 (x + a)/(2a),      acosh(r) = 2 atanh(t),
 //! u_w     = A [1 - J0(D) + D J1(D) acosh(r) + 2 sum_{n=1}^{N} (-1)^{n+1} J_{2n}(D) q^{2n}],
 //! du_w/dx = (4A/a) (1 - t) sum_{n=1}^{N} (-1)^{n+1} n J_{2n}(D) geo_n,   geo_n = sum_{j<2n} q^j,
 //! ```
 //!
-//! (`(1 - q)/sqrt(r^2-1) = 1 - t`). Everything is a function of `t`, which is
-//! computed from the exact difference `x - a`, so nothing cancels at the contact
-//! edge. `atanh(t) = t + t^3/3 + t^5 P(t^2)`, `P(s) = sum_j s^j/(2j+5)`: the
-//! first two terms in double-double, `P` by Horner in f64 (its contribution is
-//! below `t^5/(5(1-t^2))`, so an f64 relative error there is ~1e-17 of the total).
+//! (`(1 - q)/sqrt(r^2-1) = 1 - t`). Everything is a function of `t`, computed
+//! from the exact `x - a` and `x + a`, so nothing cancels at the contact edge.
 //!
-//! **Per contact** ([`CertifiedBessel`]): `D` and `J_0(D), ..., J_{2N+1}(D)` as
-//! certified balls at [`CERT_PREC`] bits ([`bessel_j_sequence_mp`] at the midpoint
-//! of the ball `D`, widened by `rad(D)` since `|J_n'| <= 1` [DLMF 10.14.1]),
-//! each converted to a double-double with its conversion error added. `N` is
-//! chosen by the truncation bounds below.
+//! **Per contact** (`CertifiedBessel`, about 3-6 us): `D` as a bounded
+//! double-double (`Dd::TWO_PI`, error `< 3e-32`, times `a`, over `zeta`), `N`
+//! from the tail bounds below (`2^-64`; `N = 41` at `D = 33.5`), and
+//! `J_0(D), ..., J_{2N+1}(D)`:
+//!
+//! * `J_{2N}`, `J_{2N+1}` by the power series [DLMF 10.2.2] (`(D/2)^n` by binary
+//!   powering, `1/n!` from the table of `native_series.rs`, terms until
+//!   `2^-108` of the sum with ratio `<= 1/2`, tail `2 |t_K|`);
+//! * the orders down to the turning point by the recurrence
+//!   `J_{k-1} = (2k/D) J_k - J_{k+1}` [DLMF 10.6.1] run downward (where `J_k`
+//!   grows downward; the running triangle-inequality bound grows like
+//!   `e^{0.55 D}` over this stretch, `2^27` at `D = 33.5`);
+//! * below the turning point, for `D >= 25`, the forward recurrence of
+//!   `native_recurrence.rs` from Hankel's `J_0`, `J_1` at `x = fl(D)`, whose
+//!   energy-norm bound does not grow like the triangle inequality (which would
+//!   add `e^{0.47 D}`), moved to `D = x + delta` by Taylor:
+//!   `J_k(D) = J_k(x) + delta (J_{k-1}(x) - J_{k+1}(x))/2 + R`, `|R| <= delta^2/2`
+//!   (`|J_k''| <= 1` [DLMF 10.14.1]); for `D < 25` the downward recurrence runs to 0.
+//!
+//! Every step is a `BoundedDd` operation (the error model of
+//! `crate::ball::dd_bounded`); the data are accepted when every `J_k` is known
+//! to `2^-60` (over `a in [0.5, 6]`, `zeta = 9/8` the bounds are below `1e-19`;
+//! a unit test checks them against 300-bit values). Where not (`D` beyond
+//! about 60, where `2N+1` passes the `1/n!` table), the data come from MP at
+//! [`CERT_PREC`] bits ([`wave_bounded_mp_contacts`] counts it). The sums become
+//! polynomials in `X = q^2` (`u`: coefficients `(-1)^{m+1} J_{2m}`; gradient:
+//! `(1 + q) sum_m T_m X^m`, `T_m = sum_{n>m} (-1)^{n+1} n J_{2n}`), with the
+//! coefficients' bounds.
+//!
+//! **Per x** (about 0.4-0.5 us): `t^2 = (x-a)/(x+a)` (`div_p`: one division
+//! by the leading part and the double-double `1 - eps`, no long division),
+//! `t` by the double-double square root, `acosh(r) = 2 (atanh(t0) + atanh(w))`
+//! with `t0 = i/16` the nearest table point (`atanh(t0)` from 256-bit MPFR),
+//! `w = (t - t0)/(1 - t t0)`, `|w| <= 0.08`, and `atanh(w) = w + w^3/3 + w^5 P(w^2)`,
+//! `P(s) = sum_j s^j/(2j+5)`: the first two terms in double-double, `P` by
+//! Horner in f64 (about 9 terms). Then both sums by one compensated Horner
+//! loop, truncated at the first power `i` with `|X|^{i+1} sum_{i'>i} (|c_i'| + e_i') <= 2^-72 min(1, D)`
+//! (the remainder is added to the bound; at `x/a = 3` about 15 of 41 terms).
 //!
 //! # Error bound
 //!
-//! Every quantity is a [`BoundedDd`]: a double-double value and an f64 bound
+//! Every quantity is a `BoundedDd`: a double-double value and an f64 bound
 //! `e >= |exact - v|`, propagated through `+ - * / sqrt` by the error model
 //! written out in `crate::ball::dd_bounded` (`8 u^2` per addition and
 //! product, `16 u^2` per quotient and square root, `u = 2^-53`). On top of it:
 //!
+//! * **Compensated Horner** (`CompAcc`; Graillat, Langlois, Louvet, 2009, in
+//!   the unnormalised form of `native_recurrence.rs`): the accumulator is
+//!   `h + l`, the argument the double-double `X~ = xh + xl` with `|X~ - X| <= ex`,
+//!   the coefficient `c = c.hi + c.lo` with error `e_c`. One step forms
+//!   `p + pi = h xh` (exact product), `h' + sigma = p + c.hi` (exact sum), and
+//!   `l' = fl((pi + sigma) + (h xl + (l xh + c.lo)))`, which drops `l xl` and
+//!   rounds a sum in which each term passes at most four roundings, so
+//!   `|h' + l' - ((h + l) X~ + c)| <= gamma_4 (|pi| + |sigma| + |h xl| + |l xh| + |c.lo|) + |l xl|`
+//!   [Higham, *Accuracy and Stability*, Lemma 3.1], `gamma_4 = 4u/(1-4u) <= 4.0001 u`,
+//!   `|pi| <= u |p|`, `|sigma| <= u |h'|`. With `eps` the accumulator's error,
+//!   `eps' <= eps (|X~| + ex) + (|h| + |l|) ex + that rounding + e_c`
+//!   (the `|S| ex` term from `X~ - X`); this runs alongside in f64
+//!   (`xa = |xh| + |xl| + ex`, `kh = ex + gamma_4 |xl|`, `kl = ex + gamma_4 |xh| + |xl|`,
+//!   `gamma_4 |c.lo|` folded into the stored `e_c`).
+//! * `div_p`: `num/(H + L) = (num/H)(1 - eps) + r`, `eps = fl(L/H)`,
+//!   `|r| <= 2.01 u^2 |num/H|` (charged `3 u^2`), plus `|num/den| e_den/(|den| - e_den)`.
 //! * Horner in f64 for `P(s)` over `J` terms: Higham's running error bound
-//!   `u (2 mu - |p|)` [Higham, *Accuracy and Stability*, Alg. 5.1] (times 1.01 for
-//!   its second-order terms), plus `u P(|s|)` for the rounded coefficients, plus the truncation
+//!   `u (2 mu - |p|)` [Higham, Alg. 5.1] (times 1.01 for its second-order
+//!   terms), plus `u P(|s|)` for the rounded coefficients, plus the truncation
 //!   `s^J/((2J+5)(1-s))`, plus `e_s / (2 (1 - s)^2)` for the input error of `s`
-//!   (`P'(s) <= 1/(2(1-s)^2)`);
-//! * the truncated Bessel sums: `|J_{2n}(D)| <= (D/2)^{2n}/(2n)!` [DLMF 10.14.4],
+//!   (`P'(s) <= 1/(2(1-s)^2)`).
+//! * The truncated Bessel sums: `|J_{2n}(D)| <= (D/2)^{2n}/(2n)!` [DLMF 10.14.4],
 //!   `0 <= q <= 1`, `0 <= geo_n <= 2n`, so the neglected terms are at most
 //!   `tail0 = sum_{n>N} (D/2)^{2n}/(2n)!` and `2 tail2`, `tail2 = sum_{n>N} n^2 (D/2)^{2n}/(2n)!`
-//!   (computed rigorously in MP once per contact).
+//!   (f64 with each step's three roundings covered by `1 + 4u`, and the geometric
+//!   tail once the ratio is below 1/2; `bessel_tails`).
 //!
 //! The bound itself is evaluated in f64 and inflated by `1 + 2^-30` to cover
 //! its own roundings; the final rounding of `hi + lo` to f64 adds `u |value|`
-//! ([`BoundedDd::finish`]).
+//! (`BoundedDd::finish`).
 //!
 //! # Regions and fallback
 //!
-//! The native path certifies for `t <= T_MAX = 3/4`, i.e. `x/a <= 25/7 ~ 3.57`,
-//! which covers the model's range `x/a in [1, 3]`. Beyond it (and if a division
-//! or square root cannot be certified, which does not happen for valid inputs)
-//! the `*_bounded` entry points fall back to the certified MP Bessel form at 64
-//! bits; [`wave_bounded_fallbacks`] counts those calls (the benches report it).
+//! The native per-x path certifies for `t <= T_MAX = 3/4`, i.e. `x/a <= 25/7 ~ 3.57`,
+//! which covers the model's range `x/a in [1, 3]`. Beyond it the `*_bounded`
+//! entry points fall back to the certified MP Bessel form at 64 bits;
+//! [`wave_bounded_fallbacks`] counts those calls (the benches report both counters).
+//! Exact products are fused multiply-adds where the CPU has them (detected at
+//! run time, as in `native.rs`), else Dekker's; both are exact.
 //!
 //! References: seed paper Eq. 12 and Appendix B.11; notes/model.md sec. 3;
-//! DLMF 10.6.1, 10.12.4, 10.14.1, 10.14.4; Dekker (1971); Hida, Li, Bailey (2007);
+//! DLMF 10.2.2, 10.6.1, 10.12.4, 10.14.1, 10.14.4; Dekker (1971); Hida, Li, Bailey (2007);
 //! Joldes, Muller, Popescu, "Tight and rigorous error bounds for basic building
-//! blocks of double-word arithmetic", ACM TOMS 44 (2017).
+//! blocks of double-word arithmetic", ACM TOMS 44 (2017); Graillat, Langlois,
+//! Louvet, "Algorithms for accurate, validated and fast polynomial
+//! evaluation", Japan J. Indust. Appl. Math. 26 (2009); Higham, *Accuracy and
+//! Stability of Numerical Algorithms*, 2nd ed. (2002).
 
 use std::sync::atomic::{AtomicU64, Ordering};
 
@@ -665,6 +717,12 @@ mod tests {
                 assert!(v.e <= NATIVE_J_ERR_MAX, "a={a} zeta={zeta}: J_{k}: bound {:e}", v.e);
             }
             assert!(CertifiedBessel::native::<Dekker>(a, zeta).is_some(), "a={a} zeta={zeta}");
+        }
+        // the whole model domain a in [0.5, 6], zeta = 9/8 is native (no MP contact data)
+        for i in 0..=44 {
+            let a = 0.5 + 0.125 * i as f64;
+            assert!(CertifiedBessel::native::<Dekker>(a, 1.125).is_some(), "a={a}");
+            assert!(CertifiedBessel::native_only(a, 1.125).is_some(), "a={a}");
         }
     }
 
