@@ -95,6 +95,7 @@
 mod ball_input;
 mod choose;
 mod connection;
+mod gamma_f64;
 mod log_case;
 mod native;
 mod polynomial;
