@@ -535,7 +535,7 @@ pub fn meijer_g_k(k: u32, y: f64) -> Result<f64> {
 }
 
 /// `G(k, y)` in f64 with a proven error bound for the f64 `y` as given: native
-/// ([`crate::special::meijer_g_native`]) for `k <= 1000`, `y <= 0.9` or `y = 1`
+/// ([`crate::special::meijer_g_native`]) for `k <= 1000`, `y <= 0.97` or `y = 1`
 /// away from the zero of `G(k, .)`; else the certified MP value (counted by
 /// [`meijer_g_k_fallbacks`]).
 pub fn meijer_g_k_bounded(k: u32, y: f64) -> Result<Bounded> {
