@@ -20,8 +20,8 @@
 //!   products, each `e_k v^k` by an exact-f64 scaling.
 //! * **Tail** `k >= 4` in f64: `s_k = s_{k-1} (4nu^2 - (2k-1)^2) fl(v) fl(1/k)` from
 //!   `fl(s_3)`, five roundings a step (`fl(v)` and the table `fl(1/k)` included), so
-//!   `|fl(s_k) - s_k| <= (1 + 5.01 (k-3)) u |s_k|` (`k <= 200`), summed smallest
-//!   first with `u |partial sum|` per addition. At `x >= 25`, `|s_4| <= 3.7e-7`,
+//!   `|fl(s_k) - s_k| <= (1 + 5.01 (k-3)) u |s_k|` (`k <= 200`), summed
+//!   as they come (both `nu` in one loop) with `u |partial sum|` per addition. At `x >= 25`, `|s_4| <= 3.7e-7`,
 //!   so the tail's f64 error is below `3e-22`.
 //! * **Truncation** [DLMF 10.17.14 with 10.17.15, on the real axis, as in
 //!   `hankel.rs`]: after `l` terms the remainder of the complex sum is at most
@@ -120,8 +120,7 @@ pub(crate) fn bessel_j01<P: ExactProduct>(x: f64) -> Option<(BoundedDd, BoundedD
     let v = BoundedDd::ONE.div_f64_p::<P>(8.0 * x);
     let v2 = v.mul_p::<P>(v);
     let v3 = v2.mul_p::<P>(v);
-    let (p0, q0) = hankel_pq::<P>(t, [v, v2, v3], &E0, 0.0)?;
-    let (p1, q1) = hankel_pq::<P>(t, [v, v2, v3], &E1, 4.0)?;
+    let [(p0, q0), (p1, q1)] = hankel_pq01::<P>(t, [v, v2, v3])?;
     let (sin_w, cos_w) = sin_cos_phase::<P>(t, x)?;
     let amp = TWO_OVER_PI.div_f64_p::<P>(x).sqrt_p::<P>()?;
     let j0 = amp.mul_p::<P>(p0.mul_p::<P>(cos_w).sub(q0.mul_p::<P>(sin_w)));
@@ -129,49 +128,62 @@ pub(crate) fn bessel_j01<P: ExactProduct>(x: f64) -> Option<(BoundedDd, BoundedD
     Some((j0, j1))
 }
 
-/// `P_nu`, `Q_nu` with their bounds from `v = 1/(8x)` and its powers; the
-/// truncation remainder is added to both (it bounds the complex remainder).
+/// `P_nu`, `Q_nu` for `nu = 0, 1` with their bounds from `v = 1/(8x)` and its
+/// powers; the truncation remainder is added to both (it bounds the complex
+/// remainder). The two f64 tails run in one loop (independent chains), each
+/// stopping on its own, and are summed as they come with `u |partial sum|`
+/// per addition (recursive summation, valid in any order).
 #[inline(always)]
-fn hankel_pq<P: ExactProduct>(t: &Tables, [v, v2, v3]: [BoundedDd; 3], e: &[f64; HEAD + 1], four_nu2: f64) -> Option<(BoundedDd, BoundedDd)> {
-    let p = BoundedDd::ONE.add(v2.mul_f64_p::<P>(-e[2]));
-    let s_head = v3.mul_f64_p::<P>(-e[3]);
-    let q = v.mul_f64_p::<P>(e[1]).add(s_head);
-    // f64 tail from k = HEAD + 1, signed terms stored and summed smallest first.
+fn hankel_pq01<P: ExactProduct>(t: &Tables, [v, v2, v3]: [BoundedDd; 3]) -> Option<[(BoundedDd, BoundedDd); 2]> {
+    const FOUR_NU2: [f64; 2] = [0.0, 4.0];
+    let heads = [&E0, &E1].map(|e| {
+        let p = BoundedDd::ONE.add(v2.mul_f64_p::<P>(-e[2]));
+        let s_head = v3.mul_f64_p::<P>(-e[3]);
+        (p, v.mul_f64_p::<P>(e[1]).add(s_head), s_head.v.hi)
+    });
     let vf = v.v.hi;
-    let mut terms = [0.0f64; MAX_TERMS];
-    let mut s = -s_head.v.hi; // s_3 (e_3 v^3)
+    // s_3 = e_3 v^3 (the head's last term, sign restored), then the f64 tail from k = HEAD + 1.
+    let mut s = [-heads[0].2, -heads[1].2];
+    let (mut tail_p, mut tail_q, mut err) = ([0.0f64; 2], [0.0f64; 2], [0.0f64; 2]);
+    let mut remainder: [Option<f64>; 2] = [None, None];
     let mut k = HEAD + 1;
-    let mut term_err = 0.0f64;
-    let remainder = loop {
+    while remainder[0].is_none() || remainder[1].is_none() {
         let odd = (2 * k - 1) as f64;
-        let s_prev = s;
-        s = s * (four_nu2 - odd * odd) * vf * t.inv[k];
         let rel = U + 5.01 * (k - HEAD) as f64 * U;
-        let bound = REMAINDER_FACTOR * s.abs() * (1.0 + rel);
-        // The bound holds for every l: stop at the target or where the terms
-        // turn to grow (the least term, about 2e-23 at x = 25).
-        if bound <= HANKEL_TARGET || s.abs() >= s_prev.abs() {
-            break bound;
+        for nu in 0..2 {
+            if remainder[nu].is_some() {
+                continue;
+            }
+            let s_prev = s[nu];
+            s[nu] = s[nu] * (FOUR_NU2[nu] - odd * odd) * vf * t.inv[k];
+            let bound = REMAINDER_FACTOR * s[nu].abs() * (1.0 + rel);
+            // The bound holds for every l: stop at the target or where the terms
+            // turn to grow (the least term, about 2e-23 at x = 25).
+            if bound <= HANKEL_TARGET || s[nu].abs() >= s_prev.abs() {
+                remainder[nu] = Some(bound);
+                continue;
+            }
+            if k >= MAX_TERMS - 1 || !s[nu].is_finite() {
+                return None;
+            }
+            err[nu] += rel * s[nu].abs();
+            let term = if (k / 2) % 2 == 1 { -s[nu] } else { s[nu] };
+            if k % 2 == 0 {
+                tail_p[nu] += term;
+                err[nu] += U * tail_p[nu].abs();
+            } else {
+                tail_q[nu] += term;
+                err[nu] += U * tail_q[nu].abs();
+            }
         }
-        if k >= MAX_TERMS - 1 || !s.is_finite() {
-            return None;
-        }
-        term_err += rel * s.abs();
-        terms[k] = if (k / 2) % 2 == 1 { -s } else { s };
         k += 1;
-    };
-    let (mut tail_p, mut tail_q, mut sum_err) = (0.0f64, 0.0f64, 0.0f64);
-    for j in (HEAD + 1..k).rev() {
-        if j % 2 == 0 {
-            tail_p += terms[j];
-            sum_err += U * tail_p.abs();
-        } else {
-            tail_q += terms[j];
-            sum_err += U * tail_q.abs();
-        }
     }
-    let err = term_err + sum_err + remainder;
-    Some((p.add(BoundedDd { v: Dd::from_f64(tail_p), e: err }), q.add(BoundedDd { v: Dd::from_f64(tail_q), e: err })))
+    let out = |nu: usize| {
+        let e = err[nu] + remainder[nu].unwrap_or(f64::INFINITY);
+        let (p, q, _) = heads[nu];
+        (p.add(BoundedDd { v: Dd::from_f64(tail_p[nu]), e }), q.add(BoundedDd { v: Dd::from_f64(tail_q[nu]), e }))
+    };
+    Some([out(0), out(1)])
 }
 
 /// `(sin w, cos w)`, `w = x - pi/4`, with proven bounds (module docs).

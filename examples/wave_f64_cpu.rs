@@ -1,3 +1,12 @@
+//! CPU time per value of the f64 wave functions over the issue-8 domain
+//! (zeta = 9/8, x/a in [1, 3], 64 points per contact, a in {1, 3, 6}): from
+//! scratch (`u_wave_bounded`) and with the contact precomputed
+//! (`WaveBessel::eval_bounded`, `WaveBessel::eval`). Thread CPU time from
+//! /proc/thread-self/schedstat (Linux), so that a loaded machine inflates it
+//! less than wall time; criterion's `wave_f64_domain` group gives wall times.
+//!
+//!     cargo run --release --example wave_f64_cpu [s|p]    (s: scratch only, p: precomputed only)
+
 use maugis::contact::displacement::{u_wave_bounded, WaveBessel};
 fn cpu_ns() -> f64 {
     std::fs::read_to_string("/proc/thread-self/schedstat").unwrap().split_whitespace().next().unwrap().parse().unwrap()
