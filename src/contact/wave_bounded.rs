@@ -75,8 +75,10 @@
 //!   `|pi| <= u |p|`, `|sigma| <= u |h'|`. With `eps` the accumulator's error,
 //!   `eps' <= eps (|X~| + ex) + (|h| + |l|) ex + that rounding + e_c`
 //!   (the `|S| ex` term from `X~ - X`); this runs alongside in f64
-//!   (`xa = |xh| + |xl| + ex`, `kh = ex + gamma_4 |xl|`, `kl = ex + gamma_4 |xh| + |xl|`,
-//!   `gamma_4 |c.lo|` folded into the stored `e_c`).
+//!   (`xa = |xh| + |xl| + ex`, `kh = ex + gamma_4 (|xl| + 2.0001 u |xh|)`,
+//!   `kl = ex + gamma_4 |xh| + |xl|`, `gamma_4 (|c.lo| + 1.0001 u |c.hi|)` folded into
+//!   the stored `e_c`, from `|pi| + |sigma| <= u (|p| + |h'|)` and
+//!   `|p| + |h'| <= 2.0001 |h xh| + 1.0001 |c.hi|`).
 //! * `div_p`: `num/(H + L) = (num/H)(1 - eps) + r`, `eps = fl(L/H)`,
 //!   `|r| <= 2.01 u^2 |num/H|` (charged `3 u^2`), plus `|num/den| e_den/(|den| - e_den)`.
 //! * Horner in f64 for `P(s)` over `J` terms: Higham's running error bound
@@ -278,7 +280,14 @@ fn atanh_series<P: ExactProduct>(t: BoundedDd) -> Option<BoundedDd> {
     }
     // Terms until s^J/((2J+5)(1-s)) <= 2^-66 (relative to P(0) = 1/5): J from
     // an f64 estimate, then the truncation bound below is computed for that J.
-    let j_terms = if s_up <= 1e-300 { 1 } else { ((-45.75 / s_up.ln()).ceil().max(1.0) as usize).min(4000) };
+    // (after the table reduction s <= 0.0065, where J = 9 suffices: no logarithm)
+    let j_terms = if s_up <= 1e-300 {
+        1
+    } else if s_up <= 0.0065 {
+        9
+    } else {
+        ((-45.75 / s_up.ln()).ceil().max(1.0) as usize).min(4000)
+    };
     let sp = s_up.powi(j_terms as i32) * (1.0 + 1e-12); // powi: < 2 j_terms roundings
     // Horner with Higham's running error bound (Algorithm 5.1): u (2 mu - |p|).
     let mut p = 1.0 / (2 * (j_terms - 1) + 5) as f64;
@@ -318,7 +327,9 @@ struct CompArg {
     xl: f64,
     /// `|xh| + |xl| + ex`, which bounds `|X~|` and `|X|`.
     xa: f64,
-    /// `ex + gamma_4 |xl|`: multiplies `|h|`.
+    /// `ex + gamma_4 (|xl| + 2.0001 u |xh|)`: multiplies `|h|` (the last term is
+    /// the `u |p| + u |h'|` of the step, with `|p| + |h'| <= 2.0001 |h xh| + 1.0001 |c.hi|`;
+    /// the `|c.hi|` part is folded into the stored coefficient error).
     kh: f64,
     /// `ex + gamma_4 |xh| + |xl|`: multiplies `|l|`.
     kl: f64,
@@ -328,7 +339,8 @@ impl CompArg {
     #[inline(always)]
     fn new(x: BoundedDd) -> CompArg {
         let (xh, xl, ex) = (x.v.hi, x.v.lo, x.e);
-        CompArg { xh, xl, xa: xh.abs() + xl.abs() + ex, kh: ex + GAMMA4 * xl.abs(), kl: ex + GAMMA4 * xh.abs() + xl.abs() }
+        let kh = ex + GAMMA4 * (xl.abs() + 2.0001 * U * xh.abs());
+        CompArg { xh, xl, xa: xh.abs() + xl.abs() + ex, kh, kl: ex + GAMMA4 * xh.abs() + xl.abs() }
     }
 }
 
@@ -340,13 +352,13 @@ impl CompAcc {
 
     /// `S X + C`: `h' + sigma = fl(h xh) + pi + c.hi` exactly (two_prod, two_sum),
     /// `l' = fl((pi + sigma) + (h xl + (l xh + c.lo)))`; `ec` is the coefficient's
-    /// own error plus `gamma_4 |c.lo|` (precomputed).
+    /// own error plus `gamma_4 (|c.lo| + 1.0001 u |c.hi|)` (precomputed).
     #[inline(always)]
     fn step<P: ExactProduct>(self, x: CompArg, c: Dd, ec: f64) -> CompAcc {
         let (p, pi) = P::two_prod(self.h, x.xh);
         let (h, sigma) = two_sum(p, c.hi);
         let l = (pi + sigma) + (self.h * x.xl + (self.l * x.xh + c.lo));
-        let e = self.e * x.xa + self.h.abs() * x.kh + self.l.abs() * x.kl + GAMMA4 * U * (p.abs() + h.abs()) + ec;
+        let e = self.e * x.xa + self.h.abs() * x.kh + self.l.abs() * x.kl + ec;
         CompAcc { h, l, e }
     }
 
@@ -355,6 +367,17 @@ impl CompAcc {
         let (hi, lo) = two_sum(self.h, self.l);
         BoundedDd { v: Dd { hi, lo }, e: self.e }
     }
+}
+
+/// A cheap estimate of `ln(v)` for `0 < v < 1`, at most the true value
+/// (`log2(m) >= m - 1` on `[1, 2)`); it only picks where the checked truncation
+/// search starts, so its accuracy affects the speed, not the bound.
+#[inline(always)]
+fn ln_lower(v: f64) -> f64 {
+    let bits = v.to_bits();
+    let exp = ((bits >> 52) & 0x7ff) as f64 - 1023.0;
+    let mant = f64::from_bits((bits & ((1u64 << 52) - 1)) | (1023u64 << 52));
+    (exp + mant - 1.0) * std::f64::consts::LN_2
 }
 
 /// The certified per-contact data of the Bessel form.
@@ -376,6 +399,8 @@ pub(crate) struct CertifiedBessel {
     suffix: Vec<f64>,
     /// Tolerance of the Horner truncation, `2^-72 min(1, D)`.
     horner_tol: f64,
+    /// `ln(horner_tol / suffix[0])` (where the truncation search starts).
+    ln_tol_over_suffix: f64,
     n_terms: usize,
     /// `sum_{n>N} (D/2)^{2n}/(2n)!`, rounded up.
     tail0: f64,
@@ -573,7 +598,7 @@ impl CertifiedBessel {
             acc = acc.add(jt[2 * (i + 1)].mul_f64(sign(i + 1) * (i + 1) as f64));
             du[i] = acc;
         }
-        let err = |c: &BoundedDd| (c.e + GAMMA4 * c.v.lo.abs()) * (1.0 + 4.0 * U);
+        let err = |c: &BoundedDd| (c.e + GAMMA4 * (c.v.lo.abs() + 1.0001 * U * c.v.hi.abs())) * (1.0 + 4.0 * U);
         let mut suffix = vec![0.0f64; n_terms + 1];
         let (mut su, mut sd) = (0.0f64, 0.0f64);
         for i in (0..n_terms).rev() {
@@ -582,6 +607,8 @@ impl CertifiedBessel {
             suffix[i] = su.max(sd);
         }
         let d_lo = d.v.hi.abs() - d.v.lo.abs() - d.e;
+        let horner_tol = HORNER_TAIL_REL * d_lo.clamp(0.0, 1.0);
+        let ln_tol_over_suffix = (horner_tol / suffix[0]).ln();
         CertifiedBessel {
             d,
             j01: [jt[0], jt[1]],
@@ -590,7 +617,8 @@ impl CertifiedBessel {
             u_err: u.iter().map(err).collect(),
             du_err: du.iter().map(err).collect(),
             suffix,
-            horner_tol: HORNER_TAIL_REL * d_lo.clamp(0.0, 1.0),
+            horner_tol,
+            ln_tol_over_suffix,
             n_terms,
             tail0,
             tail2,
@@ -625,7 +653,7 @@ impl CertifiedBessel {
         let mut rem = 0.0f64;
         if arg.xa < 1.0 {
             // first candidate from logarithms (xa^{i+1} suffix[0] <= tol), then checked
-            let guess = ((self.horner_tol / self.suffix[0]).ln() / arg.xa.ln()).floor() - 2.0;
+            let guess = (self.ln_tol_over_suffix / ln_lower(arg.xa)).floor() - 1.0;
             let start = if guess.is_finite() && guess > 0.0 { (guess as usize).min(n - 1) } else { 0 };
             let mut pw = arg.xa.powi(start as i32 + 1); // < 2^-40 relative error (covered below)
             for i in start..n - 1 {
