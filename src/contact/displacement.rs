@@ -527,6 +527,9 @@ pub struct WaveBessel {
     amp: f64,
     /// Certified Bessel data for the `*_bounded` evaluations, built on first use.
     cert: OnceLock<Option<CertifiedBessel>>,
+    /// The native (double-double) certified data, built on first use by either
+    /// path; `None` where they do not certify (`D` beyond about 60).
+    native: OnceLock<Option<CertifiedBessel>>,
     d: Dd,
     n_terms: usize,
     j: Vec<Dd>,
@@ -584,7 +587,7 @@ impl WaveBessel {
         }
         let j_even_f64 = (0..=n_terms).map(|n| j[2 * n].to_f64()).collect();
         let (u_coef, du_coef) = horner_coefficients(&j, n_terms);
-        Ok(WaveBessel { a, zeta, amp, cert: OnceLock::new(), d, n_terms, j, conv, j_even_f64, u_coef, du_coef })
+        Ok(WaveBessel { a, zeta, amp, cert: OnceLock::new(), native: OnceLock::new(), d, n_terms, j, conv, j_even_f64, u_coef, du_coef })
     }
 
     /// `D = 2 pi a / zeta`.
@@ -603,15 +606,22 @@ impl WaveBessel {
         self.check_x(x)?;
         // The values of the proven-bound path where it runs natively (it is
         // also the faster one); beyond x/a = 25/7 the double-double Miller data.
-        if let Some((u, du)) = self.certified().and_then(|c| c.eval_bounded(self.a, self.amp, x)) {
+        if let Some((u, du)) = self.native_data().and_then(|c| c.eval_bounded(self.a, self.amp, x)) {
             return Ok((u.value, du.value));
         }
         Ok(self.eval_unchecked(x))
     }
 
-    /// The certified Bessel data, built on first use.
+    /// The native certified Bessel data, built on first use (never MP, so
+    /// that the estimate path stays cheap at any `D`).
+    fn native_data(&self) -> Option<&CertifiedBessel> {
+        self.native.get_or_init(|| CertifiedBessel::native_only(self.a, self.zeta)).as_ref()
+    }
+
+    /// The certified Bessel data: native where they certify, else built in MP
+    /// on first use.
     fn certified(&self) -> Option<&CertifiedBessel> {
-        self.cert.get_or_init(|| CertifiedBessel::new(self.a, self.zeta).ok()).as_ref()
+        self.native_data().or_else(|| self.cert.get_or_init(|| CertifiedBessel::new_mp_counted(self.a, self.zeta).ok()).as_ref())
     }
 
     /// [`WaveBessel::eval`] over a slice of `x` (one contact, many points: the

@@ -531,11 +531,14 @@ impl CertifiedBessel {
     pub(crate) fn new(a: f64, zeta: f64) -> Result<CertifiedBessel> {
         match Self::native_only(a, zeta) {
             Some(c) => Ok(c),
-            None => {
-                MP_CONTACTS.fetch_add(1, Ordering::Relaxed);
-                Self::new_mp(a, zeta)
-            }
+            None => Self::new_mp_counted(a, zeta),
         }
+    }
+
+    /// [`CertifiedBessel::new_mp`], counted by [`wave_bounded_mp_contacts`].
+    pub(crate) fn new_mp_counted(a: f64, zeta: f64) -> Result<CertifiedBessel> {
+        MP_CONTACTS.fetch_add(1, Ordering::Relaxed);
+        Self::new_mp(a, zeta)
     }
 
     /// The native per-contact data only (`None` where it does not certify;
