@@ -9,6 +9,8 @@
 //! * `approach_err`: max |Delta - Delta_model| on the model's datum
 //!   (`path::approach_on_model_datum`);
 //! * the fewest cohesive cells in the right Dugdale zone;
+//! * `unplaced_states`: states with a Dugdale zone whose ends could not be
+//!   placed within their cells (`State::zone_ends_placed`);
 //!
 //! and, for the cavitating case (lambda = 1/4), `cavitated_diff`: the largest
 //! load difference to the finest grid over the loading states (same approach)
@@ -40,7 +42,7 @@ struct Case {
 
 const STEPS_PER_LEG: usize = 100;
 
-fn run(case: &Case, cells: usize) -> (Vec<State>, Vec<State>, f64, f64, f64, usize) {
+fn run(case: &Case, cells: usize) -> (Vec<State>, Vec<State>, f64, f64, f64, usize, usize) {
     let params = Params::new(case.lambda, case.alpha, case.beta).expect("parameters");
     let grid = Grid::new(cells, suggested_half_width(params, case.amax).expect("half width")).expect("grid");
     let profile = Profile::wavy_cylinder(case.alpha, case.beta).expect("profile");
@@ -50,6 +52,7 @@ fn run(case: &Case, cells: usize) -> (Vec<State>, Vec<State>, f64, f64, f64, usi
     let c = cycle(&mut s, CycleOptions { amax: case.amax, steps_per_leg: STEPS_PER_LEG }, &mut |_, _| {}).expect("cycle");
     let secs = t.elapsed().as_secs_f64();
     let (mut load_err, mut approach_err, mut min_zone): (f64, f64, usize) = (0.0, 0.0, usize::MAX);
+    let unplaced = c.loading.iter().chain(&c.unloading).filter(|st| !st.zone.is_empty() && !st.zone_ends_placed).count();
     for leg in [&c.loading, &c.unloading] {
         let cmp = compare_with_model(params, s.datum(), leg);
         for (r, st) in cmp.iter().zip(leg.iter().filter(|st| st.abar > 0.0)) {
@@ -60,7 +63,7 @@ fn run(case: &Case, cells: usize) -> (Vec<State>, Vec<State>, f64, f64, f64, usi
             }
         }
     }
-    (c.loading, c.unloading, secs, load_err, approach_err, min_zone)
+    (c.loading, c.unloading, secs, load_err, approach_err, min_zone, unplaced)
 }
 
 fn main() {
@@ -71,23 +74,23 @@ fn main() {
     let cases = [
         Case { name: "smooth lambda=0.1", lambda: 0.1, alpha: 0.0, beta: 1.0, amax: 2.5, max_cells: 1 << 15 },
         Case { name: "smooth lambda=1", lambda: 1.0, alpha: 0.0, beta: 1.0, amax: 2.5, max_cells: 1 << 15 },
-        Case { name: "smooth lambda=10", lambda: 10.0, alpha: 0.0, beta: 1.0, amax: 2.5, max_cells: 1 << 14 },
+        Case { name: "smooth lambda=10", lambda: 10.0, alpha: 0.0, beta: 1.0, amax: 2.5, max_cells: 1 << 15 },
         Case { name: "Fig. 4c lambda=6", lambda: 6.0, alpha: fig4c.0, beta: fig4c.1, amax: 2.5, max_cells: 1 << 15 },
         Case { name: "Fig. 4c lambda=1/4", lambda: 0.25, alpha: fig4c.0, beta: fig4c.1, amax: 4.2, max_cells: 1 << 15 },
     ];
-    let mut csv = String::from("case,cells,dx,seconds,load_err,approach_err,min_zone_cells,cavitated_diff\n");
+    let mut csv = String::from("case,cells,dx,seconds,load_err,approach_err,min_zone_cells,cavitated_diff,unplaced_states\n");
     let mut series: Vec<(&str, Vec<(usize, f64)>)> = Vec::new();
     for case in &cases {
         let grids: Vec<usize> = (10..=15).map(|k| 1usize << k).filter(|&n| n <= case.max_cells.min(cap)).collect();
         let mut rows = Vec::new();
         for &n in &grids {
             let r = run(case, n);
-            eprintln!("{} cells {n}: {:.1} s, load err {:.2e}, approach err {:.2e}, min zone cells {}", case.name, r.2, r.3, r.4, r.5);
+            eprintln!("{} cells {n}: {:.1} s, load err {:.2e}, approach err {:.2e}, min zone cells {}, unplaced {}", case.name, r.2, r.3, r.4, r.5, r.6);
             rows.push((n, r));
         }
         let finest = &rows.last().expect("one grid").1 .0;
         let mut points = Vec::new();
-        for (n, (loading, _, secs, load_err, approach_err, min_zone)) in &rows {
+        for (n, (loading, _, secs, load_err, approach_err, min_zone, unplaced)) in &rows {
             let cav = loading
                 .iter()
                 .zip(finest)
@@ -95,7 +98,7 @@ fn main() {
                 .map(|(a, b)| (a.load - b.load).abs())
                 .fold(f64::NAN, f64::max);
             let dx = 2.0 * suggested_half_width(Params::new(case.lambda, case.alpha, case.beta).unwrap(), case.amax).unwrap() / *n as f64;
-            let _ = writeln!(csv, "{},{n},{dx:.4e},{secs:.2},{load_err:.4e},{approach_err:.4e},{min_zone},{cav:.4e}", case.name);
+            let _ = writeln!(csv, "{},{n},{dx:.4e},{secs:.2},{load_err:.4e},{approach_err:.4e},{min_zone},{cav:.4e},{unplaced}", case.name);
             points.push((*n, *load_err));
         }
         series.push((case.name, points));
@@ -109,9 +112,9 @@ fn main() {
 fn svg(series: &[(&str, Vec<(usize, f64)>)]) -> String {
     let (w, h, left, right, top, bottom) = (720.0, 460.0, 70.0, 190.0, 20.0, 50.0);
     let (x0, x1) = (10.0f64, 15.0f64); // log2 cells
-    let (y0, y1) = (-4.0f64, 0.0f64); // log10 error
+    let (y0, y1) = (-5.0f64, 0.0f64); // log10 error
     let px = |n: usize| left + ((n as f64).log2() - x0) / (x1 - x0) * (w - left - right);
-    let py = |e: f64| top + (y1 - e.max(1e-4).log10()) / (y1 - y0) * (h - top - bottom);
+    let py = |e: f64| top + (y1 - e.max(1e-5).log10()) / (y1 - y0) * (h - top - bottom);
     let colours = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e"];
     let mut s = format!(
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" font-family=\"sans-serif\" font-size=\"12\">\n\
@@ -121,7 +124,7 @@ fn svg(series: &[(&str, Vec<(usize, f64)>)]) -> String {
         let x = px(1 << k);
         let _ = writeln!(s, "<line x1=\"{x}\" y1=\"{top}\" x2=\"{x}\" y2=\"{}\" stroke=\"#ddd\"/><text x=\"{x}\" y=\"{}\" text-anchor=\"middle\">2^{k}</text>", h - bottom, h - bottom + 16.0);
     }
-    for e in -4..=0 {
+    for e in -5..=0 {
         let y = py(10f64.powi(e));
         let _ = writeln!(s, "<line x1=\"{left}\" y1=\"{y}\" x2=\"{}\" y2=\"{y}\" stroke=\"#ddd\"/><text x=\"{}\" y=\"{}\" text-anchor=\"end\">1e{e}</text>", w - right, left - 6.0, y + 4.0);
     }

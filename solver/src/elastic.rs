@@ -78,7 +78,7 @@ pub struct HalfPlane {
 }
 
 /// `F(t) = t ln|t| - t`, the antiderivative of `ln|t|`, with `F(0) = 0`.
-fn log_antiderivative(t: f64) -> f64 {
+pub(crate) fn log_antiderivative(t: f64) -> f64 {
     if t == 0.0 {
         0.0
     } else {

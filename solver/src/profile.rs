@@ -37,6 +37,22 @@ impl Profile {
     }
 
     /// The depth at every cell centre of `grid`.
+    /// The depth at any `x` of the grid's domain: exact for the wavy cylinder,
+    /// linear between the cell centres for a sampled profile (`samples` is
+    /// [`Profile::sample`] on the same grid).
+    pub fn depth_at(&self, x: f64, grid: &Grid, samples: &[f64]) -> f64 {
+        match self {
+            Profile::WavyCylinder { alpha, beta } => 0.5 * x * x + alpha * (1.0 - (2.0 * PI * x / beta).cos()),
+            Profile::Sampled(_) => {
+                let n = samples.len();
+                let u = ((x - grid.x(0)) / grid.dx()).clamp(0.0, (n - 1) as f64);
+                let j = (u.floor() as usize).min(n - 2);
+                let t = u - j as f64;
+                samples[j] * (1.0 - t) + samples[j + 1] * t
+            }
+        }
+    }
+
     pub fn sample(&self, grid: &Grid) -> Result<Vec<f64>> {
         match self {
             Profile::WavyCylinder { alpha, beta } => Ok(grid

@@ -46,3 +46,4 @@ fn smooth_lambda_1_load_control_snaps_in_at_zero_load_and_pulls_off_at_the_model
     eprintln!("pull-off {pull_off} (model {model_min}), load-control jumps on loading {:?}", up.jumps);
     assert!((pull_off - model_min).abs() <= 0.02, "pull-off {pull_off} vs model {model_min}");
 }
+
