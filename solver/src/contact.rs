@@ -448,7 +448,7 @@ impl ContactSolver {
             let saved_residual = res;
             if self.opts.sub_cell_ends {
                 let saved = self.snapshot();
-                for attempt in 0..2 {
+                for attempt in 0..3 {
                     match self.place_zone_ends(approach, sigma0, delta_c, None) {
                         Ok((cg, res)) => {
                             it += cg;
@@ -458,10 +458,15 @@ impl ContactSolver {
                         }
                         Err(SolverError::NoConvergence { iterations, .. }) => {
                             it += iterations;
-                            if attempt == 0 {
+                            if attempt < 2 {
                                 // No zone end in reach of the whole-cell state (it
-                                // is held by the grid past a jump): the zone on
-                                // whole cells again, from where the ends went.
+                                // is held by the grid past a jump, e.g. beyond
+                                // pull-off): the zone on whole cells again, first
+                                // from where the ends went, then from no contact
+                                // and no zone (the state the jump lands on).
+                                if attempt == 1 {
+                                    self.reset();
+                                }
                                 let (cg, updates, res) = self.relax_on_whole_cells(approach, sigma0)?;
                                 it += cg;
                                 zone_updates += updates;
