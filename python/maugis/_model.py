@@ -236,10 +236,12 @@ def simulate(lam, alpha=FIG4C_ALPHA, beta=FIG4C_BETA, *, amax=4.0, cells=4096, s
 
     ``cells`` is the grid (a power of two), ``steps`` the approach steps per
     leg. Returns a :class:`Record` with ``lambda``, ``alpha``, ``beta``,
-    ``cells``, ``half_width``, ``datum``, ``dissipated`` and ``states``: a
-    :class:`Table` with ``leg``, ``approach``, ``abar``, ``load``,
-    ``contact_intervals``, ``zone_cells``, ``model_load`` and ``model_valid``
-    (``None`` where the model has no state at that half-width).
+    ``cells``, ``half_width``, ``datum``, ``dissipated``, ``pull_off`` (the most
+    tensile load under load control) and ``states``: a :class:`Table` with
+    ``leg``, ``approach``, ``abar``, ``load``, ``contact_intervals``,
+    ``zone_cells``, ``model_load`` and ``model_valid`` (``None`` where the model
+    has no state at that half-width), and ``load_controlled`` (the state lies on
+    the path a load-controlled experiment follows).
     """
     lam, alpha, beta, amax = (
         _real_scalar(n, v) for n, v in (("lam", lam), ("alpha", alpha), ("beta", beta), ("amax", amax))
