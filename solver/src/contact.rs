@@ -258,7 +258,8 @@ impl ZoneEnd {
     /// first step uses the slope of the interpolated gap), limited to
     /// [`MAX_END_MOVE`] and kept inside a bracket of a sign change by bisection.
     fn next(&self, slope: f64) -> f64 {
-        let (c, f) = self.f.expect("recorded");
+        // Called after `record`; without a residual there is nothing to step on.
+        let Some((c, f)) = self.f else { return self.c };
         let mut step = match self.prev {
             Some((c0, f0)) if f != f0 && c != c0 => -f * (c - c0) / (f - f0),
             _ if slope != 0.0 => -f / slope,
