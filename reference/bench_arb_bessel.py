@@ -26,6 +26,8 @@ import time
 
 import flint
 
+from bench_table import footer, write_below_marker
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXAMPLE = os.path.join(ROOT, "target", "release", "examples", "bessel_grid")
 MIN_TIME = 0.02
@@ -85,18 +87,9 @@ def main():
     summary = ["", "| prec | maugis worst us | Arb worst us | maugis points < prec bits | Arb points < prec - 10 bits |", "|---:|---:|---:|---:|---:|"]
     for prec, (mw, aw, mb, ab) in sorted(worst.items()):
         summary.append("| %d | %.0f | %.0f | %d | %d |" % (prec, mw, aw, mb, ab))
-    load = "load average %.2f / %.2f / %.2f (1/5/15 min) on %d cores at the end of the run" % (os.getloadavg() + (os.cpu_count(),))
-    text = "\n".join(lines + summary + ["", "Measured by `reference/bench_arb_bessel.py` (wall time per call in one process, both libraries in the same session); " + load + "."]) + "\n"
+    text = "\n".join(lines + summary + ["", footer("bench_arb_bessel.py")]) + "\n"
     if args.write:
-        # Keep the prose above the marker line of an existing file; replace the rest.
-        prefix = ""
-        if os.path.exists(args.write):
-            with open(args.write) as fh:
-                old = fh.read()
-            if MARKER in old:
-                prefix = old[: old.index(MARKER) + len(MARKER)] + "\n\n"
-        with open(args.write, "w") as fh:
-            fh.write(prefix + text)
+        write_below_marker(args.write, MARKER, text)
     print(text)
 
 

@@ -28,6 +28,8 @@ import time
 
 import flint
 
+from bench_table import footer, write_below_marker
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXAMPLE = os.path.join(ROOT, "target", "release", "examples", "hyp1f2_grid")
 MIN_TIME = 0.02
@@ -87,17 +89,9 @@ def main():
     summary = ["", "| prec | points | maugis no slower | maugis points < prec bits | Arb points < prec bits |", "|---:|---:|---:|---:|---:|"]
     for prec, (n, faster, mb, ab) in sorted(tally.items()):
         summary.append("| %d | %d | %d | %d | %d |" % (prec, n, faster, mb, ab))
-    load = "load average %.2f / %.2f / %.2f (1/5/15 min) on %d cores at the end of the run" % (os.getloadavg() + (os.cpu_count(),))
-    text = "\n".join(lines + summary + ["", "Measured by `reference/bench_arb_hyp1f2.py` (wall time per call in one process, both libraries in the same session); " + load + "."]) + "\n"
+    text = "\n".join(lines + summary + ["", footer("bench_arb_hyp1f2.py")]) + "\n"
     if args.write:
-        prefix = ""
-        if os.path.exists(args.write):
-            with open(args.write) as fh:
-                old = fh.read()
-            if MARKER in old:
-                prefix = old[: old.index(MARKER) + len(MARKER)] + "\n\n"
-        with open(args.write, "w") as fh:
-            fh.write(prefix + text)
+        write_below_marker(args.write, MARKER, text)
     print(text)
 
 

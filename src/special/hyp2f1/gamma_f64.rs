@@ -50,6 +50,18 @@ pub(super) struct LnGamma {
 const STIRLING: [(f64, f64); 8] =
     [(1.0, 12.0), (-1.0, 360.0), (1.0, 1260.0), (-1.0, 1680.0), (1.0, 1188.0), (-691.0, 360360.0), (1.0, 156.0), (-3617.0, 122400.0)];
 
+/// The Stirling coefficients, each one correctly rounded division of exact
+/// integers (evaluated at compile time): `c_rel = u`.
+const STIRLING_COEFFICIENTS: [f64; 8] = {
+    let mut c = [0.0; 8];
+    let mut i = 0;
+    while i < 8 {
+        c[i] = STIRLING[i].0 / STIRLING[i].1;
+        i += 1;
+    }
+    c
+};
+
 /// Bound of the first neglected Stirling term at `y = 10`, scaled: `|R| <= R10 (10/y)^17`.
 const R10: f64 = 1.8e-18;
 
@@ -93,8 +105,7 @@ pub(super) fn ln_gamma_f64(x: Dw) -> Option<LnGamma> {
     // D = (1/y) S(1/y^2)
     let inv = 1.0 / y.hi;
     let inv2 = inv * inv;
-    let coeffs: [f64; 8] = std::array::from_fn(|i| STIRLING[i].0 / STIRLING[i].1);
-    let (sv, s_err, s_abs) = horner(&coeffs, inv2, U);
+    let (sv, s_err, s_abs) = horner(&STIRLING_COEFFICIENTS, inv2, U);
     let d = inv * sv;
     // 1/y_hi vs 1/y: |y_lo|/y^2; rounding of inv (u), inv2 (3u on S's argument: |S'| x <= |S|... bounded by s_abs)
     let err_d = (inv * (s_err + 3.01 * U * s_abs) + 2.01 * U * d.abs() + y.lo.abs() * inv2 * 0.1) * 1.0001 + R10 * (10.0 * inv).powi(17) * 1.0001;

@@ -104,10 +104,16 @@ fn exp_coefficients() -> &'static [f64; EXP_DEGREE + 1] {
 }
 
 /// `R(q) = sum_{k>=1} q^{k-1}/(2k+1)` coefficients `(1/(2k+3))_{k < LN_TERMS}`,
-/// each correctly rounded.
-fn ln_coefficients() -> [f64; LN_TERMS] {
-    std::array::from_fn(|k| 1.0 / (2 * k + 3) as f64)
-}
+/// each correctly rounded (IEEE division, evaluated at compile time).
+const LN_COEFFICIENTS: [f64; LN_TERMS] = {
+    let mut c = [0.0; LN_TERMS];
+    let mut k = 0;
+    while k < LN_TERMS {
+        c[k] = 1.0 / (2 * k + 3) as f64;
+        k += 1;
+    }
+    c
+};
 
 /// `ln(hi + lo)` for `hi > 0` normal and `|lo| <= ulp(hi)`: `(v_hi, v_lo, err)`
 /// with `|ln(hi + lo) - (v_hi + v_lo)| <= err`, an absolute error far below
@@ -132,7 +138,7 @@ pub(super) fn ln_f64(hi: f64, lo: f64) -> Option<(f64, f64, f64)> {
     let s = dw_div(Dw::new(m - 1.0), Dw { hi: dh, lo: dl });
     // ln m = 2 atanh s = 2 s + 2 s q R(q), q = s^2 <= 0.0295; the second part in f64.
     let q = s.hi * s.hi;
-    let (r, r_err, _) = horner(&ln_coefficients(), q, U);
+    let (r, r_err, _) = horner(&LN_COEFFICIENTS, q, U);
     let tail = q.powi(LN_TERMS as i32) / ((2 * LN_TERMS + 3) as f64 * (1.0 - q)) * 1.01;
     let h = q * r; // q R(q), two roundings
     // |q~ - s^2| <= (u + 70 u^2) s^2 moves qR(q) by at most 1.02 (u + 70u^2) |qR| (d(qR)/dq <= 1.02 R)
