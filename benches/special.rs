@@ -106,6 +106,18 @@ fn bench_meijer_domain(c: &mut Criterion) {
     });
     g.finish();
     eprintln!("meijer_g_k_f64_domain: MP fallbacks during the run: {}", meijer_g::meijer_g_k_fallbacks() - before);
+    // The double-double paths on their own: y > 0.97 (near-one expansion) and
+    // 1e-9 next to the zero of G(k, .) (direct formula in double words).
+    let near_one: Vec<(u32, f64)> = [0u32, 2, 100, 472, 1000].iter().flat_map(|&k| [(k, 0.9705), (k, 0.99), (k, 1.0 - 1e-9)]).collect();
+    let near_zero: Vec<(u32, f64)> = vec![(2, 0.807_135_927_66), (5, 0.637_762_065), (10, 0.571_703_529_38), (100, 0.507_463_152_53), (1000, 0.500_749_626_68)];
+    let before = meijer_g::meijer_g_k_fallbacks();
+    let mut g = c.benchmark_group("meijer_g_k_f64_dd_paths");
+    for (name, pts) in [("near_one", &near_one), ("next_to_zero", &near_zero)] {
+        g.throughput(criterion::Throughput::Elements(pts.len() as u64));
+        g.bench_function(name, |b| b.iter(|| pts.iter().map(|&(k, y)| meijer_g::meijer_g_k_bounded(k, black_box(y)).unwrap().value).sum::<f64>()));
+    }
+    g.finish();
+    eprintln!("meijer_g_k_f64_dd_paths: MP fallbacks during the run: {}", meijer_g::meijer_g_k_fallbacks() - before);
 }
 
 fn bench_hyp2f1(c: &mut Criterion) {

@@ -586,9 +586,14 @@ pub fn meijer_g_k(k: u32, y: f64) -> Result<f64> {
 }
 
 /// `G(k, y)` in f64 with a proven error bound for the f64 `y` as given: native
-/// ([`crate::special::meijer_g_native`]) for `k <= 1000`, `y <= 0.97` or `y = 1`
-/// away from the zero of `G(k, .)`; else the certified MP value (counted by
-/// [`meijer_g_k_fallbacks`]).
+/// ([`crate::special::meijer_g_native`]: f64 sums, double-double next to the
+/// zero of `G(k, .)` and for `y > 0.97`) for `k <= 1000`; else the certified MP
+/// value (counted by [`meijer_g_k_fallbacks`]): `k > 1000`, and the f64 `y`
+/// closest to a zero of `G(k, .)` (`|G| <~ 1e-16`). The bound is relative there
+/// too: natively `err <= 1e-14 |value|`, from MP about `2^-64 |value|` (the Ziv
+/// loop raises the precision until the ball is relative; only an exact zero,
+/// `G(1, 1) = 0`, returned as `0 +/- 0`, or an f64 `y` on a zero of `G`, which
+/// none of the tested `k` has, would end in `Error::PrecisionExhausted`).
 pub fn meijer_g_k_bounded(k: u32, y: f64) -> Result<Bounded> {
     crate::error::finite(y, "y")?;
     let ye = exact(y);

@@ -12,8 +12,11 @@
 //!   [`MeijerConstants::next`]), rounded to f64 with their errors, built once per
 //!   process on first use.
 //! * `S(y)`, `0 < y <= Y_NATIVE_MAX`: positive terms summed in f64. The computed
-//!   `r~_n = r_n (1 + theta_n)`, `|theta_n| <= gamma_{3n}` (three roundings per
-//!   step; `2k+2n-1`, `2k+2n+2` are exact integers), `v~_n = r~_n/n` one more;
+//!   terms `v_n = r_n/n` are recurred directly,
+//!   `v_n = v_{n-1} fl(fl(y A_n)/B_n)`, `A_n = (2k+2n-1) max(n-1, 1)`,
+//!   `B_n = (2k+2n+2) n` (exact integers below `2^53`; one division per term, off
+//!   the dependency chain of `v`): `v~_n = v_n (1 + theta_n)`, `|theta_n| <= gamma_{3n}`
+//!   (three roundings per step; the bound charges `gamma_{3n+1}`);
 //!   [Higham, *Accuracy and Stability*, 3.1]. The sum is compensated (TwoSum with
 //!   the errors collected, Ogita-Rump-Oishi *Sum2*): it adds at most
 //!   `u |S| + gamma_{N-1}^2 S` (all terms positive), not `N u S`.
@@ -28,20 +31,26 @@
 //!   propagated to first and second order. The bound is evaluated in f64 and
 //!   inflated by `1 + 2^-30` for its own roundings.
 //!
-//! The native value is returned when its bound is at most `rel_tol |G|`. It is
-//! not accepted near the zero of `G(k, .)` (`k >= 2`, where `B` cancels), for
-//! `y > Y_NATIVE_MAX` (slow convergence; the near-one expansion cancels), or
-//! `k > TABLE_K_MAX`; there the caller uses MP and counts it.
+//! The native value is returned when its bound is at most `rel_tol |G|`. Where
+//! the f64 sums miss that (next to the zero of `G(k, .)`, `k >= 2`, where `B`
+//! cancels) and for `Y_NATIVE_MAX < y < 1` (the direct series converges slowly;
+//! the near-one expansion cancels by `e^{k w}`), the double-double paths of
+//! [`super::meijer_g_dd`] run (0.5-4 us). Left to MP (counted by the caller):
+//! `k > TABLE_K_MAX`, and the one or two f64 `y` next to a zero of `G(k, .)`
+//! (`|G| <~ 1e-16`), where even the double-double bound (absolute, `~1e-30`)
+//! is not `1e-14` relative.
 
 use std::sync::OnceLock;
 
-use crate::ball::{Ball, Bounded};
+use crate::ball::{Ball, Bounded, BoundedDd, Dd};
+use crate::special::meijer_g_dd::{meijer_g_k_dd, DdConstants};
 use crate::special::meijer_g::MeijerConstants;
 
 /// Largest `k` of the constants table.
 pub const TABLE_K_MAX: u32 = 1000;
 
-/// Largest `y < 1` of the native series (about `ln(2^-60)/ln(y) = 1300` terms at 0.97).
+/// Largest `y < 1` of the f64 series (about `ln(2^-60)/ln(y) = 1300` terms at 0.97);
+/// above it the double-double near-one expansion runs.
 pub const Y_NATIVE_MAX: f64 = 0.97;
 
 /// Cap on the terms of the native series (`y = 0.97` needs about 1300).
@@ -57,30 +66,60 @@ struct Val {
     e: f64,
 }
 
-fn val_from_ball(b: &Ball) -> Val {
-    let v = b.mid().to_f64();
-    let diff = crate::special::exact_sub(b.mid(), &rug::Float::with_val(53, v));
-    let e = diff.abs().to_f64_round(rug::float::Round::Up) + b.rad_mag().to_f64_up();
-    Val { v, e: e.next_up() }
+/// A certified ball as a double-double whose bound covers the split and the radius.
+fn dd_from_ball(b: &Ball) -> BoundedDd {
+    let hi = b.mid().to_f64();
+    let rest = crate::special::exact_sub(b.mid(), &rug::Float::with_val(53, hi));
+    let lo = rest.to_f64();
+    let rest2 = crate::special::exact_sub(&rest, &rug::Float::with_val(53, lo));
+    let e = rest2.abs().to_f64_round(rug::float::Round::Up) + b.rad_mag().to_f64_up();
+    BoundedDd { v: Dd { hi, lo }, e: e.next_up() }
 }
 
-/// `(C_k, P_k, B_k(1))` for `k = 0..=TABLE_K_MAX`.
-fn table() -> Option<&'static Vec<[Val; 3]>> {
-    static TABLE: OnceLock<Option<Vec<[Val; 3]>>> = OnceLock::new();
+/// The leading double of a [`BoundedDd`] and its bound.
+fn val_from_dd(b: BoundedDd) -> Val {
+    Val { v: b.v.hi, e: (b.v.lo.abs() + b.e).next_up() }
+}
+
+/// The constants table: `(C_k, P_k, B_k(1))` for `k = 0..=TABLE_K_MAX`, `ln 2`, `2 sqrt(pi)`.
+struct Tables {
+    per_k: Vec<[BoundedDd; 3]>,
+    ln2: BoundedDd,
+    two_sqrt_pi: BoundedDd,
+}
+
+impl Tables {
+    fn dd_constants(&self, k: u32) -> DdConstants {
+        let [c, p, b1] = self.per_k[k as usize];
+        DdConstants { c, p, b1, ln2: self.ln2, two_sqrt_pi: self.two_sqrt_pi }
+    }
+}
+
+/// The constants for `k = 0..=TABLE_K_MAX` (certified 128-bit balls, built once).
+fn table() -> Option<&'static Tables> {
+    static TABLE: OnceLock<Option<Tables>> = OnceLock::new();
     TABLE
         .get_or_init(|| {
             let mut c = MeijerConstants::new(0, 128).ok()?;
-            let mut out = Vec::with_capacity(TABLE_K_MAX as usize + 1);
+            let mut per_k = Vec::with_capacity(TABLE_K_MAX as usize + 1);
             for k in 0..=TABLE_K_MAX {
                 let (ck, pk, bk) = c.parts();
-                out.push([val_from_ball(ck), val_from_ball(pk), val_from_ball(bk)]);
+                per_k.push([dd_from_ball(ck), dd_from_ball(pk), dd_from_ball(bk)]);
                 if k < TABLE_K_MAX {
                     c = c.next().ok()?;
                 }
             }
-            Some(out)
+            let ln2 = dd_from_ball(&Ball::from_i64(2, 128).ln().ok()?);
+            let two_sqrt_pi = dd_from_ball(&Ball::pi(128).sqrt().ok()?.mul_pow2(1));
+            Some(Tables { per_k, ln2, two_sqrt_pi })
         })
         .as_ref()
+}
+
+/// The double-double constants for `k <= TABLE_K_MAX` (tests of the dd paths).
+#[cfg(test)]
+pub(crate) fn dd_constants_for_tests(k: u32) -> DdConstants {
+    table().unwrap().dd_constants(k)
 }
 
 /// `ln y` for `0 < y <= 1` with a proven bound.
@@ -135,7 +174,7 @@ fn ln_bounded(y: f64) -> Option<Val> {
 /// terms: the bound of the plain sum was 2-5x too loose for `1e-14` at `y >= 3/4`).
 fn s_bounded(k: u32, y: f64) -> Option<Val> {
     let kf = k as f64;
-    let mut r = 1.0f64;
+    let mut vn = 1.0f64; // v_n = r_n/n (v_0 := 1 starts the recurrence)
     let mut s = 0.0f64;
     let mut c = 0.0f64; // collected TwoSum errors
     let mut weighted = 0.0f64; // sum (3n+1) v~_n: the term errors are gamma_{3n+1} v~_n
@@ -143,11 +182,11 @@ fn s_bounded(k: u32, y: f64) -> Option<Val> {
     let one_minus_y = 1.0 - y; // exact for y in [1/2, 1] (Sterbenz); for y < 1/2 rounded down below
     let one_minus_y = if y >= 0.5 { one_minus_y } else { one_minus_y * (1.0 - 2.0 * U) };
     loop {
-        let nf = n as f64;
-        r = r * y * (2.0 * kf + 2.0 * nf + 1.0) / (2.0 * kf + 2.0 * nf + 4.0);
         n += 1;
         let nf = n as f64;
-        let vn = r / nf;
+        let a = (2.0 * kf + 2.0 * nf - 1.0) * (nf - 1.0).max(1.0);
+        let b = (2.0 * kf + 2.0 * nf + 2.0) * nf;
+        vn *= y * a / b;
         // TwoSum(s, vn): new + err == s + vn exactly
         let new = s + vn;
         let bv = new - s;
@@ -162,8 +201,8 @@ fn s_bounded(k: u32, y: f64) -> Option<Val> {
         }
         // gamma_m/(1 - gamma_m) <= 1.0001 m u for m u <= 2^-30 (m <= 3 MAX_TERMS + 1)
         let g = 1.0001 * (3.0 * nf + 1.0) * U;
-        // tail after n: y r_n/((n+1)(1-y)) with r_n <= r~_n (1 + g)
-        let tail = y * r * (1.0 + g) / ((nf + 1.0) * one_minus_y) * (1.0 + 4.0 * U);
+        // tail after n: y r_n/((n+1)(1-y)) with r_n = n v_n <= n v~_n (1 + g)
+        let tail = y * nf * vn * (1.0 + g) / ((nf + 1.0) * one_minus_y) * (1.0 + 4.0 * U);
         if tail <= 0.05 * U * s {
             let total = s + c;
             let g_n = nf * U / (1.0 - nf * U);
@@ -177,26 +216,42 @@ fn s_bounded(k: u32, y: f64) -> Option<Val> {
 
 /// `G(k, y)` natively with a proven bound, if that bound is at most `rel_tol |G|`.
 /// Arguments are validated by the caller (`0 < y <= 1`).
+///
+/// Order: the f64 sums (`y <= Y_NATIVE_MAX`, or the value at `y = 1`); if their
+/// bound misses `rel_tol` (next to the zero of `G(k, .)`), the double-double
+/// direct formula; for `Y_NATIVE_MAX < y < 1` the double-double near-one
+/// expansion ([`super::meijer_g_dd`]).
 pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Option<Bounded> {
     if k > TABLE_K_MAX {
         return None;
     }
-    let [c, p, b1] = table()?[k as usize];
+    let tables = table()?;
+    let accept = |b: Bounded| (b.value.is_finite() && b.err <= rel_tol * b.value.abs()).then_some(b);
+    if y == 1.0 || y <= Y_NATIVE_MAX {
+        if let Some(b) = meijer_g_k_f64(tables, k, y).and_then(accept) {
+            return Some(b);
+        }
+    }
+    let consts = tables.dd_constants(k);
+    meijer_g_k_dd(k, y, &consts)?.finish().and_then(accept)
+}
+
+/// The f64 path: `C_k B` with `B` from the f64 sums (`y <= Y_NATIVE_MAX`) or `B_k(1)`.
+fn meijer_g_k_f64(tables: &Tables, k: u32, y: f64) -> Option<Bounded> {
+    let [c, p, b1] = tables.per_k[k as usize];
+    let (c, p) = (val_from_dd(c), val_from_dd(p));
     let b = if y == 1.0 {
-        b1
-    } else if y <= Y_NATIVE_MAX {
+        val_from_dd(b1)
+    } else {
         let l = ln_bounded(y)?;
         let s = s_bounded(k, y)?;
         let t1 = -l.v - s.v;
         let t2 = t1 + p.v;
         Val { v: 0.5 * t2, e: 0.5 * (l.e + s.e + p.e + U * t1.abs() + U * t2.abs()) }
-    } else {
-        return None;
     };
     let g = c.v * b.v;
     let e = (c.v.abs() * b.e + b.v.abs() * c.e + c.e * b.e + U * g.abs()) * BOUND_INFLATION;
-    let out = Bounded { value: g, err: e.next_up() };
-    (g.is_finite() && out.err <= rel_tol * g.abs()).then_some(out)
+    Some(Bounded { value: g, err: e.next_up() })
 }
 
 #[cfg(test)]
