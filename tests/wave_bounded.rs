@@ -63,6 +63,18 @@ fn bound_holds_on_the_model_grid_and_region_edges() {
     }
 }
 
+/// The contact edge to the last bit: `x` one ulp above `a` (and two), at both
+/// ends of the model's `a` range and in between.
+#[test]
+fn bound_holds_one_ulp_above_the_edge() {
+    for &a in &[0.5f64, 1.0, 2.2, 6.0] {
+        let x1 = f64::from_bits(a.to_bits() + 1);
+        let x2 = f64::from_bits(a.to_bits() + 2);
+        check_point(a, 1.125, 1.0, x1);
+        check_point(a, 1.125, -0.75, x2);
+    }
+}
+
 #[test]
 fn beyond_the_native_region_the_mp_fallback_answers_and_is_counted() {
     let before = wave_bounded_fallbacks();

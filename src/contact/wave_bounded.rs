@@ -9,13 +9,15 @@
 //! (notes/model.md sec. 3; the module docs of [`super::displacement`]):
 //!
 //! ```text
-//! q = (1 - t)/(1 + t) = (1 - t)^2 (x + a)/(2a),      acosh(r) = 2 atanh(t),
+//! q = (1 - t)/(1 + t) = (1 - t)^2 (x + a)/(2a),      acosh(r) = -ln q,
 //! u_w     = A [1 - J0(D) + D J1(D) acosh(r) + 2 sum_{n=1}^{N} (-1)^{n+1} J_{2n}(D) q^{2n}],
 //! du_w/dx = (4A/a) (1 - t) sum_{n=1}^{N} (-1)^{n+1} n J_{2n}(D) geo_n,   geo_n = sum_{j<2n} q^j,
 //! ```
 //!
 //! (`(1 - q)/sqrt(r^2-1) = 1 - t`). Everything is a function of `t`, computed
 //! from the exact `x - a` and `x + a`, so nothing cancels at the contact edge.
+//! With the gradient sum written as `(1 + q) S`, `(1 - t)(1 + q) = 2q`, so
+//! `du_w/dx = (8A/a) q S`.
 //!
 //! **Per contact** (`CertifiedBessel`, about 3-6 us): `D` as a bounded
 //! double-double (`Dd::TWO_PI`, error `< 3e-32`, times `a`, over `zeta`), `N`
@@ -46,15 +48,22 @@
 //! `(1 + q) sum_m T_m X^m`, `T_m = sum_{n>m} (-1)^{n+1} n J_{2n}`), with the
 //! coefficients' bounds.
 //!
-//! **Per x** (about 0.4-0.5 us): `t^2 = (x-a)/(x+a)` (`div_p`: one division
+//! **Per x** (about 0.2 us): `t^2 = (x-a)/(x+a)` (`div_p`: one division
 //! by the leading part and the double-double `1 - eps`, no long division),
-//! `t` by the double-double square root, `acosh(r) = 2 (atanh(t0) + atanh(w))`
-//! with `t0 = i/16` the nearest table point (`atanh(t0)` from 256-bit MPFR),
-//! `w = (t - t0)/(1 - t t0)`, `|w| <= 0.08`, and `atanh(w) = w + w^3/3 + w^5 P(w^2)`,
-//! `P(s) = sum_j s^j/(2j+5)`: the first two terms in double-double, `P` by
-//! Horner in f64 (about 9 terms). Then both sums by one compensated Horner
-//! loop, truncated at the first power `i` with `|X|^{i+1} sum_{i'>i} (|c_i'| + e_i') <= 2^-72 min(1, D)`
-//! (the remainder is added to the bound; at `x/a = 3` about 15 of 41 terms).
+//! `t` by the double-double square root, `q = (1 - t)^2 ((x + a)/(2a))` (the
+//! last factor with the per-contact `1/a`, off the critical path), `X = q^2`.
+//! **acosh** (`neg_ln`): `acosh(r) = -ln q`, `q in [1/7, 1]`, without a
+//! division: `q = 2^-b m`, `m in [1, 2)`, `c_j = 1 + j/64` the table point
+//! nearest to `m`, `r_j = fl(1/c_j)`, `f = m r_j - 1` (`|f| <= 0.0079`) as a
+//! double-double from one exact product, and
+//! `ln q = L_{b,j} + f + f^2 P(f)`, `L_{b,j} = ln(2^-b/r_j)` from 192-bit MPFR
+//! (a 4 x 65 table built on first use), `P(f) = sum_{k=2}^{10} (-1)^{k+1} f^{k-2}/k`
+//! by Horner in f64 (its errors enter multiplied by `f^2 <= 6.3e-5`). Then both
+//! sums by one compensated Horner loop (the two sums in the two lanes of one
+//! SSE register where the CPU has FMA), truncated at the first power `i` with
+//! `|X|^{i+1} sum_{i'>i} (|c_i'| + e_i') <= 2^-62 min(1, D)`, decided by cheap
+//! logarithm bounds against a per-contact table (the remainder is added to the
+//! bound; at `x/a = 3` about 13 of 41 terms).
 //!
 //! # Error bound
 //!
@@ -78,19 +87,30 @@
 //!   (`xa = |xh| + |xl| + ex`, `kh = ex + gamma_4 (|xl| + 2.0001 u |xh|)`,
 //!   `kl = ex + gamma_4 |xh| + |xl|`, `gamma_4 (|c.lo| + 1.0001 u |c.hi|)` folded into
 //!   the stored `e_c`, from `|pi| + |sigma| <= u (|p| + |h'|)` and
-//!   `|p| + |h'| <= 2.0001 |h xh| + 1.0001 |c.hi|`).
+//!   `|p| + |h'| <= 2.0001 |h xh| + 1.0001 |c.hi|`). Unrolled over the `k`
+//!   steps, `eps <= E + (H kh + L kl) G`: `E` is the Horner sum of the `e_c`
+//!   at `xa` (one multiply-add a step), `H`, `L` the largest `|h|`, `|l|` met
+//!   (running maxima over both sums), `G = k max(1, xa)^k`. The `l'` update may
+//!   be evaluated as `fl(l xh + fl(fl(pi + sigma) + fl(h xl + c.lo)))` with fused
+//!   multiply-adds, or with separate products; either way no term passes more
+//!   than four roundings.
+//! * `neg_ln`: `f` errs by `<= 6.1 u^2` (the rounding of `m.lo r_j + pe`,
+//!   `|m.lo| <= u |m|`, `|pe| <= u |p|`) plus `r_j 2^b e_q`; the f64 part
+//!   `g = fl(fl(y^2) P~(y))`, `y = f.hi`, errs by at most `10 u y^2` (Horner
+//!   `gamma_16` on `sum |c_k| |y|^k <= 0.5027`, the coefficients' rounding
+//!   `u 0.5027`, two final roundings), the truncation `|y|^11/(11 (1 - |y|)) < 7e-25`,
+//!   and `0.008 (|f.lo| + e_f)` for `f - y` (`|d/df (ln(1 + f) - f)| <= 0.008`);
+//!   the table entries carry `|rest| + 2^-180`.
 //! * `div_p`: `num/(H + L) = (num/H)(1 - eps) + r`, `eps = fl(L/H)`,
 //!   `|r| <= 2.01 u^2 |num/H|` (charged `3 u^2`), plus `|num/den| e_den/(|den| - e_den)`.
-//! * Horner in f64 for `P(s)` over `J` terms: Higham's running error bound
-//!   `u (2 mu - |p|)` [Higham, Alg. 5.1] (times 1.01 for its second-order
-//!   terms), plus `u P(|s|)` for the rounded coefficients, plus the truncation
-//!   `s^J/((2J+5)(1-s))`, plus `e_s / (2 (1 - s)^2)` for the input error of `s`
-//!   (`P'(s) <= 1/(2(1-s)^2)`).
 //! * The truncated Bessel sums: `|J_{2n}(D)| <= (D/2)^{2n}/(2n)!` [DLMF 10.14.4],
 //!   `0 <= q <= 1`, `0 <= geo_n <= 2n`, so the neglected terms are at most
 //!   `tail0 = sum_{n>N} (D/2)^{2n}/(2n)!` and `2 tail2`, `tail2 = sum_{n>N} n^2 (D/2)^{2n}/(2n)!`
 //!   (f64 with each step's three roundings covered by `1 + 4u`, and the geometric
-//!   tail once the ratio is below 1/2; `bessel_tails`).
+//!   tail once the ratio is below 1/2; `bessel_tails`). Both are added to the
+//!   Horner sums `S` before the final products: the `u` tail is `X` times a
+//!   sum bounded by `tail0` (`X <= 1`), and the gradient tail `T` enters as
+//!   `(1 - t) T = 2q (1 + t) T/2`, `(1 + t)/2 <= 1`.
 //!
 //! The bound itself is evaluated in f64 and inflated by `1 + 2^-30` to cover
 //! its own roundings; the final rounding of `hi + lo` to f64 adds `u |value|`
@@ -137,8 +157,10 @@ pub const T_MAX: f64 = 0.75;
 const BESSEL_TAIL_TARGET: f64 = 5.421_010_862_427_522e-20;
 
 /// The Horner sums in `q^2` stop at the first power whose rigorous remainder
-/// bound is below `2^-72 min(1, D)` (the remainder is added to the bound).
-const HORNER_TAIL_REL: f64 = 2.117_582_368_135_750_6e-22;
+/// bound is below `2^-62 min(1, D)` (the remainder is added to the bound; in
+/// `u_w` it weighs `2 |A| 2^-62`, in `du_w/dx` `8 |A| 2^-62 min(1, D)/a`,
+/// both far below the final rounding).
+const HORNER_TAIL_REL: f64 = 2.168_404_344_971_009e-19;
 
 /// The top series stop when the next term is below `2^-108` of the sum.
 const TAIL_REL_SERIES: f64 = 3.081_487_911_019_577e-33;
@@ -225,104 +247,103 @@ fn div_p<P: ExactProduct>(num: BoundedDd, den: BoundedDd) -> Option<BoundedDd> {
     Some(r)
 }
 
-/// Spacing of the table of `atanh(t0)`, `t0 = i/16`, `i = 0..=12` (up to `T_MAX`).
-const ATANH_TABLE_STEP: f64 = 0.0625;
+/// The reduction table of [`neg_ln`] has the points `c_j = 1 + j/LN_TABLE_STEPS`, `j = 0..=64`.
+const LN_TABLE_STEPS: usize = 64;
 
-/// `atanh(i/16)` for `i = 0..=12` as double-doubles with their errors (MPFR at
-/// 256 bits, correctly rounded, then split: error `<= |rest| + 2^-250 |v|`).
-fn atanh_table() -> &'static [BoundedDd] {
-    static TABLE: std::sync::OnceLock<Vec<BoundedDd>> = std::sync::OnceLock::new();
+/// Binades of `q` that [`neg_ln`] takes: `q in [2^-3, 2)` (`q >= 1/7` for `t <= T_MAX`).
+const LN_BINADES: usize = 4;
+
+/// Largest `|f| = |m r_j - 1|` [`neg_ln`] takes: `|m - c_j| <= 1/128`, `c_j >= 1`
+/// give `|m/c_j - 1| <= 1/128 = 0.0078125`, and `r_j = fl(1/c_j)` adds `< 2u`.
+const LN_F_MAX: f64 = 0.0079;
+
+/// `ln(1 + f) = f + f^2 P(f)`, `P(f) = sum_{k=2}^{10} (-1)^{k+1} f^{k-2}/k`: the
+/// coefficients `-1/2, 1/3, ..., -1/10`, each correctly rounded (relative error `<= u`).
+const LN_COEF: [f64; 9] =
+    [-1.0 / 2.0, 1.0 / 3.0, -1.0 / 4.0, 1.0 / 5.0, -1.0 / 6.0, 1.0 / 7.0, -1.0 / 8.0, 1.0 / 9.0, -1.0 / 10.0];
+
+/// Truncation of [`LN_COEF`] at `|f| <= LN_F_MAX`: `|f|^11/(11 (1 - |f|)) < 6.9e-25`
+/// (a unit test recomputes it).
+const LN_TRUNC: f64 = 7.0e-25;
+
+/// The reduction table of [`neg_ln`]: `r_j = fl(1/c_j)` and, for each binade
+/// `q in [2^-b, 2^{1-b})`, `L_{b,j} = ln(2^-b / r_j)` as a double-double with
+/// its error (MPFR at 192 bits, every operation correctly rounded, so the
+/// 192-bit value is within `2^-185` of the exact one; then split: error
+/// `<= |rest| + 2^-180`).
+struct LnTable {
+    r: [f64; LN_TABLE_STEPS + 1],
+    l: [[BoundedDd; LN_TABLE_STEPS + 1]; LN_BINADES],
+}
+
+fn ln_table() -> &'static LnTable {
+    static TABLE: std::sync::OnceLock<LnTable> = std::sync::OnceLock::new();
     TABLE.get_or_init(|| {
-        (0..=12)
-            .map(|i| {
-                let f = Float::with_val(256, i as f64 * ATANH_TABLE_STEP).atanh();
-                let hi = f.to_f64();
-                let rest = Float::with_val(256, &f - hi);
+        let r: [f64; LN_TABLE_STEPS + 1] =
+            std::array::from_fn(|j| 1.0 / (1.0 + j as f64 / LN_TABLE_STEPS as f64)); // c_j exact
+        let ln2 = Float::with_val(192, rug::float::Constant::Log2);
+        let l = std::array::from_fn(|b| {
+            std::array::from_fn(|j| {
+                let mut v = Float::with_val(192, r[j]).ln(); // ln r_j
+                v += Float::with_val(192, &ln2 * b as u32); // + b ln 2
+                let v = -v; // ln(2^-b / r_j)
+                let hi = v.to_f64();
+                let rest = Float::with_val(192, &v - hi);
                 let lo = rest.to_f64();
-                let rem = Float::with_val(256, &rest - lo).abs().to_f64_round(Round::Up);
-                BoundedDd { v: Dd { hi, lo }, e: (rem + hi.abs() * 5.5e-76).next_up() }
+                let rem = Float::with_val(192, &rest - lo).abs().to_f64_round(Round::Up);
+                BoundedDd { v: Dd { hi, lo }, e: (rem + 6.5e-55).next_up() } // 2^-180 < 6.5e-55
             })
-            .collect()
+        });
+        LnTable { r, l }
     })
 }
 
-/// `2 atanh(t) = acosh(r)` for `0 <= t <= T_MAX`: with `t0 = i/16` the table
-/// point nearest to `t`, `atanh(t) = atanh(t0) + atanh(w)`,
-/// `w = (t - t0)/(1 - t t0)`, `|w| <= 0.08`, and `atanh(w)` by [`atanh_series`].
+/// `-ln(q) = acosh(x/a)` for `q in [1/8, 2)` with a proven bound (module docs,
+/// "acosh"): `q = 2^-b m`, `m in [1, 2)`, `c_j` the table point nearest to `m`,
+/// `f = m r_j - 1` as a double-double from one exact product (no division:
+/// `p + pe = m.hi r_j`, `p - 1` exact by Sterbenz, `fl(m.lo r_j + pe)` off by
+/// `<= 2.01 u (2u + 1.01u) < 6.1 u^2`), and
+/// `ln q = L_{b,j} + f + f^2 P(f)`, the last term in f64 at `y = f.hi`: Horner
+/// over 9 coefficients, two roundings a step (`gamma_16`, on `sum |c_k| |y|^k <= 0.5027`),
+/// the coefficients' rounding (`u 0.5027`), `fl(fl(y^2) P~)` (`2.0001 u`):
+/// together `<= 10 u y^2`; plus [`LN_TRUNC`]; plus the move from `y` to the exact
+/// `f` (`|d/df (ln(1+f) - f)| = |f/(1+f)| <= 0.008`). `None` outside the table.
 #[inline(always)]
-fn two_atanh<P: ExactProduct>(t: BoundedDd) -> Option<BoundedDd> {
-    if !(t.mag() + t.e <= T_MAX) {
+fn neg_ln<P: ExactProduct>(q: BoundedDd) -> Option<BoundedDd> {
+    let (qh, ql) = (q.v.hi, q.v.lo);
+    let bits = qh.to_bits();
+    let b = 1023 - ((bits >> 52) & 0x7ff) as i64; // q.hi in [2^-b, 2^{1-b})
+    if !(0..LN_BINADES as i64).contains(&b) || qh <= 0.0 {
         return None;
     }
-    let i = (t.v.hi / ATANH_TABLE_STEP).round().clamp(0.0, 12.0) as usize;
-    if i == 0 {
-        return Some(atanh_series::<P>(t)?.mul_f64_p::<P>(2.0));
-    }
-    let t0 = i as f64 * ATANH_TABLE_STEP; // exact
-    let w = div_p::<P>(t.sub(BoundedDd::exact(t0)), BoundedDd::ONE.sub(t.mul_f64_p::<P>(t0)))?;
-    Some(atanh_table()[i].add(atanh_series::<P>(w)?).mul_f64_p::<P>(2.0))
-}
-
-/// `atanh(t) = t + t^3/3 + t^5 P(t^2)` for `|t| <= T_MAX`: the first two terms in
-/// double-double, `P` by Horner in f64 (module docs).
-#[inline(always)]
-fn atanh_series<P: ExactProduct>(t: BoundedDd) -> Option<BoundedDd> {
-    if !(t.mag() + t.e <= T_MAX) {
+    let scale = f64::from_bits(((1023 + b) as u64) << 52); // 2^b, exact scaling
+    let (mh, ml) = (qh * scale, ql * scale);
+    let j = ((mh - 1.0) * LN_TABLE_STEPS as f64).round() as usize; // 0..=64
+    let table = ln_table();
+    let r = table.r[j];
+    let (p, pe) = P::two_prod(mh, r);
+    let (fh, fl) = two_sum(p - 1.0, ml * r + pe);
+    if !(fh.abs() <= LN_F_MAX) {
         return None;
     }
-    let t2 = t.mul_p::<P>(t);
-    let t3 = t2.mul_p::<P>(t);
-    let lead = t.add(t3.div_f64_p::<P>(3.0));
-    let s = t2.v.to_f64();
-    let s_up = t2.mag() + t2.e + U; // upper bound of t^2 (covers the rounding of s)
-    if !(s_up < 1.0) {
-        return None;
+    let e_f = r * scale * q.e + 6.1 * U * U;
+    let mut pv = LN_COEF[8];
+    for &c in LN_COEF[..8].iter().rev() {
+        pv = pv * fh + c;
     }
-    // Terms until s^J/((2J+5)(1-s)) <= 2^-66 (relative to P(0) = 1/5): J from
-    // an f64 estimate, then the truncation bound below is computed for that J.
-    // (after the table reduction s <= 0.0065, where J = 9 suffices: no logarithm)
-    let j_terms = if s_up <= 1e-300 {
-        1
-    } else if s_up <= 0.0065 {
-        9
-    } else {
-        ((-45.75 / s_up.ln()).ceil().max(1.0) as usize).min(4000)
-    };
-    let sp = s_up.powi(j_terms as i32) * (1.0 + 1e-12); // powi: < 2 j_terms roundings
-    // Horner with Higham's running error bound (Algorithm 5.1): u (2 mu - |p|).
-    let mut p = 1.0 / (2 * (j_terms - 1) + 5) as f64;
-    let mut mu = p / 2.0;
-    for j in (0..j_terms - 1).rev() {
-        p = p * s + 1.0 / (2 * j + 5) as f64;
-        mu = s * mu + p.abs();
-    }
-    let p_abs = 1.0 / (5.0 * (1.0 - s_up)) * 1.25; // >= P(|s|) (P(s) <= 1/(5(1-s)))
-    let trunc = sp / ((2 * j_terms + 5) as f64 * (1.0 - s_up));
-    // running bound (with 1% for its own second-order terms) plus the
-    // rounding of the coefficients 1/(2j+5) (at most u P(|s|))
-    let horner = U * (2.0 * mu - p.abs()) * 1.01 + U * p_abs;
-    // P'(s) = sum_j j s^{j-1}/(2j+5) <= 1/(2 (1-s)^2)
-    let input = (t2.e + U * s_up) / ((1.0 - s_up) * (1.0 - s_up)) * 0.5;
-    let p_tr = BoundedDd { v: Dd::from_f64(p), e: horner + trunc + input };
-    let t5 = t3.mul_p::<P>(t2);
-    Some(lead.add(t5.mul_p::<P>(p_tr)))
-}
-
-/// One accumulator of the compensated Horner scheme: the value `h + l`
-/// (not renormalised) and the bound `e` on its distance to the exact
-/// polynomial at the exact argument (module docs, "Compensated Horner").
-#[derive(Clone, Copy)]
-struct CompAcc {
-    h: f64,
-    l: f64,
-    e: f64,
+    let y2 = fh * fh;
+    let g = y2 * pv;
+    let e_g = 10.0 * U * y2 + LN_TRUNC + 0.008 * (fl.abs() + e_f);
+    let f = BoundedDd { v: Dd { hi: fh, lo: fl }, e: e_f };
+    let ln_q = table.l[b as usize][j].add(f.add(BoundedDd { v: Dd::from_f64(g), e: e_g }));
+    Some(ln_q.neg())
 }
 
 /// The per-`x` constants of a compensated Horner step: the argument
 /// `X = xh + xl` (a double-double) with its error `ex`, and the multipliers of
-/// the running bound.
+/// the rounding bound.
 #[derive(Clone, Copy)]
-struct CompArg {
+pub(crate) struct CompArg {
     xh: f64,
     xl: f64,
     /// `|xh| + |xl| + ex`, which bounds `|X~|` and `|X|`.
@@ -344,63 +365,171 @@ impl CompArg {
     }
 }
 
-impl CompAcc {
-    #[inline(always)]
-    fn start(c: Dd, ec: f64) -> CompAcc {
-        CompAcc { h: c.hi, l: c.lo, e: ec }
+/// Both compensated Horner sums over `coef` (rows `[u.hi, T.hi, u.lo, T.lo, e_u, e_T]`,
+/// highest power last) at the argument `x`, in one loop (module docs,
+/// "Compensated Horner"). One step of an accumulator `h + l` forms
+/// `p + pi = h xh` (exact product), `h' + sigma = p + c.hi` (exact sum) and
+/// `l' = fl((pi + sigma) + (h xl + (l xh + c.lo)))`. Its error obeys
+/// `eps' <= eps xa + |h| kh + |l| kl + e_c`; unrolled over the `top` steps,
+/// `eps <= E + (H kh + L kl) G`, where `E` is the Horner sum of the `e_c` at `xa`
+/// (run alongside, one multiply-add per step), `H`, `L` the largest `|h|`, `|l|`
+/// over both sums and all steps (running maxima), and `G = sum_{k<top} xa^k
+/// <= top max(1, xa)^top`. (`kh ~ u^2`, `kl ~ u`, `L ~ u H`: that second part is
+/// `~ top u^2 H`, far below `E`.)
+#[inline(always)]
+fn comp_horner2<P: ExactProduct>(x: CompArg, coef: &[[f64; 6]]) -> (BoundedDd, BoundedDd) {
+    let (last, rest) = coef.split_last().expect("at least one coefficient");
+    let (mut uh, mut ul, mut ue) = (last[0], last[2], last[4]);
+    let (mut dh, mut dl, mut de) = (last[1], last[3], last[5]);
+    let (mut hmax, mut lmax) = (0.0f64, 0.0f64);
+    let big = |a: f64, b: f64| if a > b { a } else { b };
+    for c in rest.iter().rev() {
+        hmax = big(big(hmax, uh.abs()), dh.abs());
+        lmax = big(big(lmax, ul.abs()), dl.abs());
+        let (p, pi) = P::two_prod(uh, x.xh);
+        let (h, sigma) = two_sum(p, c[0]);
+        ul = ul * x.xh + ((pi + sigma) + (uh * x.xl + c[2]));
+        uh = h;
+        ue = ue * x.xa + c[4];
+        let (p, pi) = P::two_prod(dh, x.xh);
+        let (h, sigma) = two_sum(p, c[1]);
+        dl = dl * x.xh + ((pi + sigma) + (dh * x.xl + c[3]));
+        dh = h;
+        de = de * x.xa + c[5];
     }
+    horner2_finish(x, rest.len() as u32, hmax, lmax, [uh, ul, ue], [dh, dl, de])
+}
 
-    /// `S X + C`: `h' + sigma = fl(h xh) + pi + c.hi` exactly (two_prod, two_sum),
-    /// `l' = fl((pi + sigma) + (h xl + (l xh + c.lo)))`; `ec` is the coefficient's
-    /// own error plus `gamma_4 (|c.lo| + 1.0001 u |c.hi|)` (precomputed).
-    #[inline(always)]
-    fn step<P: ExactProduct>(self, x: CompArg, c: Dd, ec: f64) -> CompAcc {
-        let (p, pi) = P::two_prod(self.h, x.xh);
-        let (h, sigma) = two_sum(p, c.hi);
-        let l = (pi + sigma) + (self.h * x.xl + (self.l * x.xh + c.lo));
-        let e = self.e * x.xa + self.h.abs() * x.kh + self.l.abs() * x.kl + ec;
-        CompAcc { h, l, e }
+/// The end of [`comp_horner2`]: both accumulators as bounded double-doubles,
+/// with the `(H kh + L kl) G` part of the bound.
+#[inline(always)]
+fn horner2_finish(x: CompArg, steps: u32, hmax: f64, lmax: f64, u: [f64; 3], du: [f64; 3]) -> (BoundedDd, BoundedDd) {
+    let g = steps as f64 * if x.xa <= 1.0 { 1.0 } else { pow_int(x.xa, steps) * (1.0 + 1.0 / (1u64 << 40) as f64) };
+    let extra = (hmax * x.kh + lmax * x.kl) * g;
+    let fin = |[h, l, e]: [f64; 3]| {
+        let (hi, lo) = two_sum(h, l);
+        BoundedDd { v: Dd { hi, lo }, e: e + extra }
+    };
+    (fin(u), fin(du))
+}
+
+/// [`comp_horner2`] with both sums in the two lanes of one SSE register
+/// (`[u, T]`), fused multiply-adds for the exact products and the low parts
+/// (`l' = fl(l xh + fl(fl(pi + sigma) + fl(h xl + c.lo)))`: every term passes at
+/// most three roundings, within the `gamma_4` of the bound). Same bound.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "fma")]
+#[inline]
+fn comp_horner2_fma(x: CompArg, coef: &[[f64; 6]]) -> (BoundedDd, BoundedDd) {
+    use std::arch::x86_64::*;
+    let (last, rest) = coef.split_last().expect("at least one coefficient");
+    // SAFETY: each row has 6 f64; the unaligned loads read rows [0..2], [2..4], [4..6].
+    let load = |row: &[f64; 6], k: usize| unsafe { _mm_loadu_pd(row.as_ptr().add(k)) };
+    let (mut h, mut l, mut e) = (load(last, 0), load(last, 2), load(last, 4));
+    let (xh, xl, xa) = (_mm_set1_pd(x.xh), _mm_set1_pd(x.xl), _mm_set1_pd(x.xa));
+    let sign = _mm_set1_pd(-0.0);
+    let (mut hmax, mut lmax) = (_mm_setzero_pd(), _mm_setzero_pd());
+    for c in rest.iter().rev() {
+        hmax = _mm_max_pd(hmax, _mm_andnot_pd(sign, h));
+        lmax = _mm_max_pd(lmax, _mm_andnot_pd(sign, l));
+        let (ch, cl, ce) = (load(c, 0), load(c, 2), load(c, 4));
+        let p = _mm_mul_pd(h, xh);
+        let pi = _mm_fmsub_pd(h, xh, p);
+        let s = _mm_add_pd(p, ch);
+        let bb = _mm_sub_pd(s, p);
+        let sigma = _mm_add_pd(_mm_sub_pd(p, _mm_sub_pd(s, bb)), _mm_sub_pd(ch, bb));
+        l = _mm_fmadd_pd(l, xh, _mm_add_pd(_mm_add_pd(pi, sigma), _mm_fmadd_pd(h, xl, cl)));
+        h = s;
+        e = _mm_fmadd_pd(e, xa, ce);
     }
+    let mut out = [[0.0f64; 2]; 5];
+    // SAFETY: five 2-lane stores into arrays of two f64.
+    unsafe {
+        _mm_storeu_pd(out[0].as_mut_ptr(), h);
+        _mm_storeu_pd(out[1].as_mut_ptr(), l);
+        _mm_storeu_pd(out[2].as_mut_ptr(), e);
+        _mm_storeu_pd(out[3].as_mut_ptr(), hmax);
+        _mm_storeu_pd(out[4].as_mut_ptr(), lmax);
+    }
+    let hm = out[3][0].max(out[3][1]);
+    let lm = out[4][0].max(out[4][1]);
+    horner2_finish(x, rest.len() as u32, hm, lm, [out[0][0], out[1][0], out[2][0]], [out[0][1], out[1][1], out[2][1]])
+}
 
-    #[inline(always)]
-    fn finish(self) -> BoundedDd {
-        let (hi, lo) = two_sum(self.h, self.l);
-        BoundedDd { v: Dd { hi, lo }, e: self.e }
+/// The product strategy of the per-`x` path and its Horner kernel: scalar
+/// for Dekker's products, the two-lane SSE kernel with fused multiply-adds.
+pub(crate) trait WaveKernel: ExactProduct + Sized {
+    fn horner2(x: CompArg, coef: &[[f64; 6]]) -> (BoundedDd, BoundedDd) {
+        comp_horner2::<Self>(x, coef)
     }
 }
 
-/// A cheap estimate of `ln(v)` for `0 < v < 1`, at most the true value
-/// (`log2(m) >= m - 1` on `[1, 2)`); it only picks where the checked truncation
-/// search starts, so its accuracy affects the speed, not the bound.
+impl WaveKernel for Dekker {}
+
+impl WaveKernel for crate::ball::Fused {
+    #[inline(always)]
+    fn horner2(x: CompArg, coef: &[[f64; 6]]) -> (BoundedDd, BoundedDd) {
+        #[cfg(target_arch = "x86_64")]
+        if has_fma() {
+            // SAFETY: the CPU supports FMA (checked just above).
+            return unsafe { comp_horner2_fma(x, coef) };
+        }
+        comp_horner2::<Self>(x, coef)
+    }
+}
+
+/// `v = 2^e m`, `m in [1, 2)`, for a positive normal `v`.
 #[inline(always)]
-fn ln_lower(v: f64) -> f64 {
+fn exponent_mantissa(v: f64) -> (f64, f64) {
     let bits = v.to_bits();
     let exp = ((bits >> 52) & 0x7ff) as f64 - 1023.0;
-    let mant = f64::from_bits((bits & ((1u64 << 52) - 1)) | (1023u64 << 52));
-    (exp + mant - 1.0) * std::f64::consts::LN_2
+    (exp, f64::from_bits((bits & ((1u64 << 52) - 1)) | (1023u64 << 52)))
+}
+
+/// Slack on the cheap logarithm bounds below: covers their own f64 roundings
+/// (`|e| <= 1100` times `ln 2`'s rounding, a few `u` on values below 800).
+const LN_BOUND_SLACK: f64 = 1e-9;
+
+/// A lower bound of `ln(v)` for a positive normal `v` (`log2(m) >= m - 1` on
+/// `[1, 2)`, concavity; within 0.06 of the true value).
+#[inline(always)]
+fn ln_lower(v: f64) -> f64 {
+    let (exp, m) = exponent_mantissa(v);
+    (exp + m - 1.0) * std::f64::consts::LN_2 - LN_BOUND_SLACK
+}
+
+/// An upper bound of `ln(v)` for a positive normal `v`: `ln m` lies below its
+/// tangent at `3/2`, `ln(3/2) + (m - 3/2)/(3/2)` (within 0.072 on `[1, 2)`).
+#[inline(always)]
+fn ln_upper(v: f64) -> f64 {
+    let (exp, m) = exponent_mantissa(v);
+    exp * std::f64::consts::LN_2 + 0.405_465_108_108_164_4 + (m - 1.5) * (2.0 / 3.0) + LN_BOUND_SLACK
 }
 
 /// The certified per-contact data of the Bessel form.
 #[derive(Debug, Clone)]
 pub(crate) struct CertifiedBessel {
-    d: BoundedDd,
-    /// `J_0(D), J_1(D)`.
-    j01: [BoundedDd; 2],
-    /// `u_{i+1} = (-1)^i J_{2i+2}(D)`, `i = 0..N`: the `u` sum is `X sum_i u_{i+1} X^i`, `X = q^2`.
-    u_coef: Vec<Dd>,
-    /// `T_i = sum_{n=i+1}^{N} (-1)^{n+1} n J_{2n}(D)`, `i = 0..N`: the gradient sum
-    /// `sum_n (-1)^{n+1} n J_{2n} geo_n = (1 + q) sum_i T_i q^{2i}` (collecting the
-    /// powers `q^{2i}` and `q^{2i+1}` of `geo_n = sum_{j<2n} q^j`).
-    du_coef: Vec<Dd>,
-    /// Error bounds of the coefficients plus `gamma_4 |lo|` (the Horner step's share).
-    u_err: Vec<f64>,
-    du_err: Vec<f64>,
-    /// `max` over both sums of `sum_{i' >= i} (|c_i'| + err_i')`, rounded up; entry `N` is 0.
-    suffix: Vec<f64>,
-    /// Tolerance of the Horner truncation, `2^-72 min(1, D)`.
+    /// `1 - J_0(D)`.
+    one_minus_j0: BoundedDd,
+    /// `D J_1(D)`.
+    d_j1: BoundedDd,
+    /// `1/a` (one double-double quotient, with its bound).
+    inv_a: BoundedDd,
+    /// The Horner coefficients of both sums, interleaved (one load stream):
+    /// `[u.hi, T.hi, u.lo, T.lo, e_u, e_T]` for `i = 0..N`, where
+    /// `u_{i+1} = (-1)^i J_{2i+2}(D)` (the `u` sum is `X sum_i u_{i+1} X^i`, `X = q^2`),
+    /// `T_i = sum_{n=i+1}^{N} (-1)^{n+1} n J_{2n}(D)` (the gradient sum
+    /// `sum_n (-1)^{n+1} n J_{2n} geo_n = (1 + q) sum_i T_i q^{2i}`, collecting the
+    /// powers `q^{2i}` and `q^{2i+1}` of `geo_n = sum_{j<2n} q^j`), and `e_*` the
+    /// coefficient's error bound plus `gamma_4 (|lo| + 1.0001 u |hi|)` (the Horner step's share).
+    coef: Vec<[f64; 6]>,
+    /// `lambda_i <= ln(horner_tol / (suffix_{i+1} (1 + 2^-40)))`, `i = 0..N`, where
+    /// `suffix_i` bounds (rounded up) `sum_{i' >= i} (|c_i'| + err_i')` over both
+    /// sums (`+inf` for `i = N - 1`, where nothing is left): the Horner sums may stop
+    /// after power `i` once `(i + 1) ln|X| <= lambda_i` ([`CertifiedBessel::horner_top`]).
+    lambda: Vec<f64>,
+    /// Tolerance of the Horner truncation, `2^-62 min(1, D)`.
     horner_tol: f64,
-    /// `ln(horner_tol / suffix[0])` (where the truncation search starts).
-    ln_tol_over_suffix: f64,
     n_terms: usize,
     /// `sum_{n>N} (D/2)^{2n}/(2n)!`, rounded up.
     tail0: f64,
@@ -564,7 +693,7 @@ impl CertifiedBessel {
         if !j.iter().all(|v| v.e <= NATIVE_J_ERR_MAX) {
             return None;
         }
-        Some(Self::from_sequence(d, &j, n_terms, tail0, tail2))
+        Some(Self::from_sequence(a, d, &j, n_terms, tail0, tail2))
     }
 
     /// The MP route: `J_n(D)` as balls at [`CERT_PREC`] bits
@@ -583,6 +712,7 @@ impl CertifiedBessel {
         }
         let jt: Vec<BoundedDd> = j.iter().map(tr_from_ball).collect();
         Ok(Self::from_sequence(
+            a,
             tr_from_ball(&d),
             &jt,
             n_terms as usize,
@@ -592,7 +722,7 @@ impl CertifiedBessel {
     }
 
     /// The Horner coefficients and their bounds from `J_0, ..., J_{2N+1}`.
-    fn from_sequence(d: BoundedDd, jt: &[BoundedDd], n_terms: usize, tail0: f64, tail2: f64) -> CertifiedBessel {
+    fn from_sequence(a: f64, d: BoundedDd, jt: &[BoundedDd], n_terms: usize, tail0: f64, tail2: f64) -> CertifiedBessel {
         let sign = |n: usize| if n % 2 == 1 { 1.0 } else { -1.0 };
         let u: Vec<BoundedDd> = (0..n_terms).map(|i| jt[2 * i + 2].mul_f64(sign(i + 1))).collect();
         let mut du = vec![BoundedDd::ZERO; n_terms];
@@ -611,17 +741,24 @@ impl CertifiedBessel {
         }
         let d_lo = d.v.hi.abs() - d.v.lo.abs() - d.e;
         let horner_tol = HORNER_TAIL_REL * d_lo.clamp(0.0, 1.0);
-        let ln_tol_over_suffix = (horner_tol / suffix[0]).ln();
+        let ln_tol = ln_lower(horner_tol);
+        let lambda = (0..n_terms)
+            .map(|i| {
+                let s = suffix[i + 1] * (1.0 + 1.0 / (1u64 << 40) as f64);
+                if s > 0.0 {
+                    ln_tol - ln_upper(s)
+                } else {
+                    f64::INFINITY
+                }
+            })
+            .collect();
         CertifiedBessel {
-            d,
-            j01: [jt[0], jt[1]],
-            u_coef: u.iter().map(|c| c.v).collect(),
-            du_coef: du.iter().map(|c| c.v).collect(),
-            u_err: u.iter().map(err).collect(),
-            du_err: du.iter().map(err).collect(),
-            suffix,
+            one_minus_j0: BoundedDd::ONE.sub(jt[0]),
+            d_j1: d.mul(jt[1]),
+            inv_a: BoundedDd::ONE.div_f64_p::<Dekker>(a),
+            coef: u.iter().zip(du.iter()).map(|(c, t)| [c.v.hi, t.v.hi, c.v.lo, t.v.lo, err(c), err(t)]).collect(),
+            lambda,
             horner_tol,
-            ln_tol_over_suffix,
             n_terms,
             tail0,
             tail2,
@@ -640,57 +777,66 @@ impl CertifiedBessel {
     }
 
     #[inline(always)]
-    fn eval_with<P: ExactProduct>(&self, a: f64, amp: f64, x: f64) -> Option<(Bounded, Bounded)> {
+    fn eval_with<P: WaveKernel>(&self, a: f64, amp: f64, x: f64) -> Option<(Bounded, Bounded)> {
         let rm1 = BoundedDd { v: Dd::diff(x, a), e: 0.0 }; // x - a, exact
         let rp1 = BoundedDd { v: Dd::diff(x, -a), e: 0.0 }; // x + a, exact
+        // off the critical path: (x + a)/(2a) and the gradient's factor 8A/a
+        let half_ratio = rp1.mul_p::<P>(self.inv_a).mul_f64_p::<P>(0.5);
+        let du_scale = self.inv_a.mul_f64_p::<P>(8.0 * amp);
         let t = div_p::<P>(rm1, rp1)?.sqrt_p::<P>()?;
-        let acosh_r = two_atanh::<P>(t)?;
+        if !(t.mag() + t.e <= T_MAX) {
+            return None;
+        }
         let one_minus_t = BoundedDd::ONE.sub(t);
         // q = (1 - t)/(1 + t) = (1 - t)^2/(1 - t^2) = (1 - t)^2 (x + a)/(2a)
-        let q = one_minus_t.mul_p::<P>(one_minus_t).mul_p::<P>(rp1).div_f64_p::<P>(2.0 * a);
+        let q = one_minus_t.mul_p::<P>(one_minus_t).mul_p::<P>(half_ratio);
         let q2 = q.mul_p::<P>(q);
         let arg = CompArg::new(q2);
-        // Truncate the Horner sums where the remainder is negligible (|X| <= xa).
-        let n = self.n_terms;
-        let mut top = n - 1;
-        let mut rem = 0.0f64;
-        if arg.xa < 1.0 {
-            // first candidate from logarithms (xa^{i+1} suffix[0] <= tol), then checked
-            let guess = (self.ln_tol_over_suffix / ln_lower(arg.xa)).floor() - 1.0;
-            let start = if guess.is_finite() && guess > 0.0 { (guess as usize).min(n - 1) } else { 0 };
-            let mut pw = arg.xa.powi(start as i32 + 1); // < 2^-40 relative error (covered below)
-            for i in start..n - 1 {
-                let r = pw * self.suffix[i + 1] * (1.0 + 1.0 / (1u64 << 40) as f64);
-                if r <= self.horner_tol {
-                    top = i;
-                    rem = r;
-                    break;
-                }
-                pw *= arg.xa;
-            }
-        }
-        // Compensated Horner in q^2, the two sums interleaved.
-        let (mut su, mut sdu) =
-            (CompAcc::start(self.u_coef[top], self.u_err[top]), CompAcc::start(self.du_coef[top], self.du_err[top]));
-        for i in (0..top).rev() {
-            su = su.step::<P>(arg, self.u_coef[i], self.u_err[i]);
-            sdu = sdu.step::<P>(arg, self.du_coef[i], self.du_err[i]);
-        }
-        let (mut su, mut sdu) = (su.finish(), sdu.finish());
-        su.e += rem;
-        sdu.e += rem;
-        let mut su = su.mul_p::<P>(q2);
-        let mut sdu = sdu.mul_p::<P>(BoundedDd::ONE.add(q));
-        su.e += self.tail0;
-        sdu.e += 2.0 * self.tail2;
-        let inner = BoundedDd::ONE
-            .sub(self.j01[0])
-            .add(self.d.mul_p::<P>(self.j01[1]).mul_p::<P>(acosh_r))
-            .add(su.mul_f64_p::<P>(2.0));
+        let acosh_r = neg_ln::<P>(q)?; // acosh(x/a) = -ln q
+        let (top, rem) = self.horner_top(arg.xa);
+        let (mut su, mut sdu) = P::horner2(arg, &self.coef[..=top]);
+        su.e += rem + self.tail0;
+        sdu.e += rem + 2.0 * self.tail2;
+        let inner = self.one_minus_j0.add(self.d_j1.mul_p::<P>(acosh_r)).add(su.mul_p::<P>(q2).mul_f64_p::<P>(2.0));
         let u = inner.mul_f64_p::<P>(amp);
-        let du = one_minus_t.mul_p::<P>(sdu).mul_f64_p::<P>(4.0 * amp).div_f64_p::<P>(a);
+        // (1 - t)(1 + q) = 2q: du/dx = (4A/a)(1 - t)(1 + q) S = (8A/a) q S
+        let du = sdu.mul_p::<P>(q).mul_p::<P>(du_scale);
         Some((u.finish()?, du.finish()?))
     }
+
+    /// Where the Horner sums in `X = q^2` stop for `|X| <= xa`: the first power `i`
+    /// with `(i + 1) ln_upper(xa) <= lambda_i`, which implies
+    /// `xa^{i+1} suffix_{i+1} <= horner_tol` (the remainder bound, returned with `i`;
+    /// the product `(i + 1) L`, `L < 0`, is shrunk by `2^-50` against its rounding),
+    /// else all `N` terms (remainder 0).
+    #[inline(always)]
+    fn horner_top(&self, xa: f64) -> (usize, f64) {
+        let n = self.n_terms;
+        if !(xa < 1.0 && xa > f64::MIN_POSITIVE) {
+            return if xa == 0.0 { (0, 0.0) } else { (n - 1, 0.0) };
+        }
+        let l = ln_upper(xa) * (1.0 - 1.0 / (1u64 << 50) as f64);
+        for (i, &lam) in self.lambda.iter().enumerate() {
+            if (i + 1) as f64 * l <= lam {
+                return (i, if i + 1 < n { self.horner_tol } else { 0.0 });
+            }
+        }
+        (n - 1, 0.0)
+    }
+}
+
+/// `x^n` by binary powering (`n <= 127`: at most 14 roundings).
+#[inline(always)]
+fn pow_int(x: f64, mut n: u32) -> f64 {
+    let (mut acc, mut base) = (1.0f64, x);
+    while n > 0 {
+        if n & 1 == 1 {
+            acc *= base;
+        }
+        n >>= 1;
+        base *= base;
+    }
+    acc
 }
 
 /// [`CertifiedBessel::native`] compiled with the `fma` target feature.
@@ -711,18 +857,44 @@ unsafe fn eval_fused(c: &CertifiedBessel, a: f64, amp: f64, x: f64) -> Option<(B
 mod tests {
     use super::*;
 
+    /// `-ln q` along the per-x path (`q` from `x/a` as in `eval_with`) encloses
+    /// `acosh(x/a)`, including `x = a` and `x` one ulp above `a`.
     #[test]
-    fn two_atanh_encloses_acosh() {
-        for &r in &[1.0, 1.0 + 1e-12, 1.001, 1.35, 2.0, 3.0, 3.5] {
+    fn neg_ln_of_q_encloses_acosh() {
+        for &r in &[1.0, 1.0 + f64::EPSILON, 1.0 + 1e-12, 1.001, 1.35, 2.0, 3.0, 3.5] {
             let rm1 = BoundedDd { v: Dd::diff(r, 1.0), e: 0.0 };
             let rp1 = BoundedDd { v: Dd::diff(r, -1.0), e: 0.0 };
             let t = rm1.div(rp1).unwrap().sqrt().unwrap();
-            let v = two_atanh::<Dekker>(t).unwrap().finish().unwrap();
-            let exact = Float::with_val(200, r).acosh();
-            let diff = Float::with_val(200, &exact - v.value).abs().to_f64();
-            assert!(diff <= v.err, "r={r}: {v} vs {exact}");
-            assert!(v.err <= 4e-16 * v.value.abs().max(1e-300) || v.value == 0.0, "r={r}: {v}");
+            let one_minus_t = BoundedDd::ONE.sub(t);
+            let q = one_minus_t.mul(one_minus_t).mul(rp1.mul_f64(0.5));
+            let v = neg_ln::<Dekker>(q).unwrap();
+            let exact = Float::with_val(300, r).acosh();
+            let got = Float::with_val(300, v.v.hi) + v.v.lo;
+            let diff = Float::with_val(300, &exact - &got).abs().to_f64();
+            assert!(diff <= v.e, "r={r}: diff {diff:e} > bound {:e}", v.e);
+            assert!(v.e <= 1e-19, "r={r}: bound {:e}", v.e);
         }
+    }
+
+    /// `-ln q` on a dense grid over the table's range `[1/8, 1]` (every
+    /// table point and binade), against 300-bit MPFR; and the truncation constant.
+    #[test]
+    fn neg_ln_encloses_on_a_grid() {
+        for i in 0..=4000 {
+            let qh = 0.125 + 0.875 * (i as f64 / 4000.0);
+            let q = BoundedDd { v: Dd { hi: qh, lo: if i % 3 == 0 { 1e-17 * qh } else { 0.0 } }, e: 1e-31 };
+            let v = neg_ln::<Dekker>(q).unwrap();
+            let exact = -Float::with_val(300, Float::with_val(300, qh) + q.v.lo).ln();
+            let got = Float::with_val(300, v.v.hi) + v.v.lo;
+            let diff = Float::with_val(300, &exact - &got).abs().to_f64();
+            assert!(diff + 1e-31 * 8.01 <= v.e, "q={qh}: diff {diff:e}, bound {:e}", v.e);
+            assert!(v.e <= 1e-19, "q={qh}: bound {:e}", v.e);
+        }
+        assert!(neg_ln::<Dekker>(BoundedDd::exact(0.1)).is_none());
+        assert!(neg_ln::<Dekker>(BoundedDd::exact(2.0)).is_none());
+        let f = Float::with_val(100, LN_F_MAX);
+        let trunc = Float::with_val(100, rug::ops::Pow::pow(&f, 11u32)) / 11u32 / (1.0 - f);
+        assert!(trunc < LN_TRUNC, "{trunc}");
     }
 
     /// The native per-contact `J_n(D)` lie within their bounds of the 300-bit
@@ -757,9 +929,38 @@ mod tests {
         }
     }
 
+    /// Both product strategies (Dekker's scalar kernel and, where the CPU has
+    /// FMA, the two-lane fused kernel) enclose the 300-bit MP values.
+    #[test]
+    fn both_kernels_enclose_the_mp_values() {
+        use crate::contact::displacement::{du_wave_mp, u_wave_mp};
+        use crate::special::exact;
+        for &a in &[0.5, 3.0, 6.0] {
+            let c = CertifiedBessel::native::<Dekker>(a, 1.125).unwrap();
+            for &r in &[1.0, 1.0001, 1.5, 3.0] {
+                let x = a * r;
+                let (ae, ze, me, xe) = (exact(a), exact(1.125), exact(1.0), exact(x));
+                let u_ref = u_wave_mp(&ae, &ze, &me, &xe, 300).unwrap();
+                let du_ref = du_wave_mp(&ae, &ze, &me, &xe, 300).unwrap();
+                let mut results = vec![c.eval_with::<Dekker>(a, 1.0, x).unwrap()];
+                if has_fma() {
+                    results.push(c.eval_bounded(a, 1.0, x).unwrap());
+                }
+                for (u, du) in results {
+                    for (b, r) in [(u, &u_ref), (du, &du_ref)] {
+                        let diff = Float::with_val(300, r.mid() - b.value).abs().to_f64();
+                        assert!(diff <= b.err, "a={a} x={x}: {b} vs {:?}", r);
+                        assert!(b.err <= 2e-15, "a={a} x={x}: {b}");
+                    }
+                }
+            }
+        }
+    }
+
     #[test]
     fn refuses_beyond_t_max() {
-        let t = BoundedDd::exact(0.8);
-        assert!(two_atanh::<Dekker>(t).is_none());
+        let c = CertifiedBessel::native::<Dekker>(2.0, 1.125).unwrap();
+        assert!(c.eval_with::<Dekker>(2.0, 1.0, 2.0 * 3.5).is_some());
+        assert!(c.eval_with::<Dekker>(2.0, 1.0, 2.0 * 3.6).is_none());
     }
 }
