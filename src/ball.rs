@@ -156,6 +156,18 @@ impl Ball {
         rounded(mid, ord)
     }
 
+    /// A ball containing Euler's constant `gamma`.
+    pub(crate) fn euler_gamma(prec: u32) -> Ball {
+        let (mid, ord) = Float::with_val_round(prec, Constant::Euler, Round::Nearest);
+        rounded(mid, ord)
+    }
+
+    /// A ball containing `zeta(n)` (MPFR's correctly rounded Riemann zeta), `n >= 2`.
+    pub(crate) fn zeta_u(n: u32, prec: u32) -> Ball {
+        let (mid, ord) = Float::with_val_round(prec, Float::zeta_u(n), Round::Nearest);
+        rounded(mid, ord)
+    }
+
     /// A ball containing ln 2.
     pub fn ln2(prec: u32) -> Ball {
         let (mid, ord) = Float::with_val_round(prec, Constant::Log2, Round::Nearest);

@@ -63,10 +63,13 @@
 //! # Accuracy
 //!
 //! * MP: certified, `rad <= 2^-prec |mid|`.
-//! * f64 (`native.rs`, `power.rs`): the direct series for `-1/2 <= z <= 9/10`
-//!   (and every terminating case), Pfaff for `z < -1/2`, summed in f64 with a
-//!   running error bound, in double words where f64 cannot certify, with a
-//!   certified double-word `(1-z)^{-a}`. [`hyp2f1_bounded`] returns that proven
+//! * f64 (`native.rs`, `power_f64.rs`, `rgamma_f64.rs`): the direct series for
+//!   `-1/2 <= z <= 9/10` (and every terminating case), Pfaff for `z < -1/2`, the
+//!   connection formula in `1/(1-z)` for `z <= -1` (first for `z <= -3`), summed
+//!   in f64 with a proven a-priori bound, in double words where f64 cannot
+//!   certify, with certified f64 (table-driven) or double-word `(1-z)^{-a}` and
+//!   certified f64 reciprocal Gammas. The arguments are checked in f64; MPFR is
+//!   touched only on the fallback. [`hyp2f1_bounded`] returns that proven
 //!   bound when it is at most [`NATIVE_ACCEPT_REL`] relative, otherwise the
 //!   certified 64-bit MP value rounded with `err = |mid - value| + rad`. Over the
 //!   benchmark domain (`a, b in [-3, 3]`, `c in [0.5, 6]`, `z in [-5, 0.9]`) the
@@ -95,12 +98,12 @@
 mod ball_input;
 mod choose;
 mod connection;
-mod gamma_f64;
 mod log_case;
 mod native;
 mod polynomial;
 mod power;
 mod power_f64;
+mod rgamma_f64;
 mod series;
 mod transform;
 
@@ -164,6 +167,15 @@ fn pole_error(c: &Float) -> Error {
     }
 }
 
+fn branch_cut_error(z: f64) -> Error {
+    Error::Domain {
+        what: format!(
+            "2F1: z = {z} > 1 lies on the branch cut [1, inf) of the principal branch (complex values); \
+             only real z <= 1 is supported"
+        ),
+    }
+}
+
 // ----- public entry points ---------------------------------------------------------
 
 /// Checks the arguments: finite, `z <= 1`, `c` not a pole, `z = 1` convergent.
@@ -173,13 +185,7 @@ fn validate(a: &Float, b: &Float, c: &Float, z: &Float) -> Result<()> {
     check_finite(c, "c")?;
     check_finite(z, "z")?;
     if *z > 1 {
-        return Err(Error::Domain {
-            what: format!(
-                "2F1: z = {} > 1 lies on the branch cut [1, inf) of the principal branch (complex values); \
-                 only real z <= 1 is supported",
-                z.to_f64()
-            ),
-        });
+        return Err(branch_cut_error(z.to_f64()));
     }
     let deg = terminating_degree(a, b);
     if let Some(m) = nonpos_degree(c) {
@@ -227,14 +233,14 @@ pub const NATIVE_VALUE_REL: f64 = 1.0e-13;
 /// bound is at most [`NATIVE_ACCEPT_REL`] relative, otherwise the certified MP
 /// value rounded, with `err = |mid - value| + rad`.
 pub fn hyp2f1_bounded(a: f64, b: f64, c: f64, z: f64) -> Result<Bounded> {
-    let (ae, be, ce, ze) = validate_f64(a, b, c, z)?;
+    validate_f64(a, b, c, z)?;
     if z == 0.0 {
         return Ok(Bounded { value: 1.0, err: 0.0 });
     }
     if let Some(r) = native::hyp2f1_native(a, b, c, z, NATIVE_ACCEPT_REL) {
         return Ok(r);
     }
-    let ball = hyp2f1_mp(&ae, &be, &ce, &ze, F64_FALLBACK_PREC)?;
+    let ball = hyp2f1_mp(&exact(a), &exact(b), &exact(c), &exact(z), F64_FALLBACK_PREC)?;
     crate::special::bounded_from_ball("hyp2f1", &ball)
 }
 
@@ -249,15 +255,31 @@ pub fn hyp2f1_native_bounded(a: f64, b: f64, c: f64, z: f64, rel_tol: f64) -> Re
     Ok(native::hyp2f1_native(a, b, c, z, rel_tol))
 }
 
-/// Checks f64 arguments (as [`hyp2f1_mp`]) and returns them as exact floats.
-fn validate_f64(a: f64, b: f64, c: f64, z: f64) -> Result<(Float, Float, Float, Float)> {
+/// Checks f64 arguments as [`hyp2f1_mp`] does, in f64 arithmetic (no MPFR on
+/// the native path): finite, `z <= 1`, `c` not a pole, and at `z = 1` (rare)
+/// the exact sign of `c - a - b` through [`validate`].
+fn validate_f64(a: f64, b: f64, c: f64, z: f64) -> Result<()> {
     finite(a, "a")?;
     finite(b, "b")?;
     finite(c, "c")?;
     finite(z, "z")?;
-    let (ae, be, ce, ze) = (exact(a), exact(b), exact(c), exact(z));
-    validate(&ae, &be, &ce, &ze)?;
-    Ok((ae, be, ce, ze))
+    if z == 1.0 {
+        return validate(&exact(a), &exact(b), &exact(c), &exact(z));
+    }
+    if z > 1.0 {
+        return Err(branch_cut_error(z));
+    }
+    let degree = |x: f64| (x <= 0.0 && x == x.floor()).then(|| (-x) as u64);
+    let deg = match (degree(a), degree(b)) {
+        (Some(x), Some(y)) => Some(x.min(y)),
+        (x, y) => x.or(y),
+    };
+    if let Some(m) = degree(c) {
+        if deg.map_or(true, |d| d > m) {
+            return Err(pole_error(&exact(c)));
+        }
+    }
+    Ok(())
 }
 
 /// `2F1(a, b; c; z)` in f64 for real `z <= 1`: the value of [`hyp2f1_bounded`]
@@ -265,13 +287,14 @@ fn validate_f64(a: f64, b: f64, c: f64, z: f64) -> Result<(Float, Float, Float, 
 /// `1e-13` relative, measured error below `1e-14` over the benchmark domain, see
 /// `docs/special-functions.md`); otherwise the certified 64-bit MP value rounded.
 pub fn hyp2f1(a: f64, b: f64, c: f64, z: f64) -> Result<f64> {
-    let (ae, be, ce, ze) = validate_f64(a, b, c, z)?;
+    validate_f64(a, b, c, z)?;
     if z == 0.0 {
         return Ok(1.0);
     }
     if let Some(r) = native::hyp2f1_native(a, b, c, z, NATIVE_VALUE_REL) {
         return Ok(r.value);
     }
+    let (ae, be, ce, ze) = (exact(a), exact(b), exact(c), exact(z));
     let (alg, lost) = plan(&ae, &be, &ce, &ze, F64_FALLBACK_PREC + DEFAULT_GUARD_BITS);
     f64_from_mp("hyp2f1", DEFAULT_GUARD_BITS + lost, |wp| evaluate(alg, &ae, &be, &ce, &ze, wp))
 }

@@ -15,6 +15,17 @@ use crate::special::exact_add;
 use crate::special::gamma::xball;
 use crate::special::pfq::pfq_series;
 
+/// Deterministic uniform points (64-bit LCG, Knuth's constants), shared by the
+/// native-path tests.
+pub(super) struct Lcg(pub(super) u64);
+
+impl Lcg {
+    pub(super) fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        lo + (hi - lo) * ((self.0 >> 11) as f64 / (1u64 << 53) as f64)
+    }
+}
+
 const P: u32 = 128;
 /// Precision of the independently computed reference balls.
 const REF: u32 = 320;
