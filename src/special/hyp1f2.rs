@@ -25,7 +25,9 @@
 //!
 //! Eq. 12 of the seed paper uses `1F2(1/2; k+1, k+3/2; -(pi a/zeta)^2)` with
 //! `k <= 1000`; there the parameters grow with `k` and the cancellation shrinks
-//! (`~ 2 |z|^{1/2} / (k+1)` nats), so large `k` is cheap.
+//! (`sum |t_n|/|F| ~ e^{2s} s^{-2k-3/2}` at `z = -s^2`), so large `k` is cheap: the
+//! f64 series certifies `1e-14` for about `k >= s`, the double-word series
+//! ([`super::hyp1f2_dd`]) from `k >= 7` at `s = 35` (every `k` at `s <= 15`).
 //!
 //! # Accuracy
 //!
@@ -259,26 +261,33 @@ pub fn hyp1f2_native_bounded(a: f64, b1: f64, b2: f64, z: f64) -> Option<Bounded
 /// `1F2(a; b1, b2; z)` in f64, within `1e-14` relative: the native series where its
 /// proven bound is at most [`NATIVE_REL_TOL`] relative, else the pFq path.
 pub fn hyp1f2(a: f64, b1: f64, b2: f64, z: f64) -> Result<f64> {
-    if let Some(b) = hyp1f2_native_bounded(a, b1, b2, z) {
-        if b.err <= NATIVE_REL_TOL * b.value.abs() {
-            return Ok(b.value);
-        }
+    if let Some(b) = hyp1f2_native_or_dd(a, b1, b2, z) {
+        return Ok(b.value);
     }
     hyp_pfq(&[a], &[b1, b2], z)
 }
 
+/// The f64 series, else the double-double series ([`super::hyp1f2_dd`]), if
+/// either bound is at most [`NATIVE_REL_TOL`] relative.
+fn hyp1f2_native_or_dd(a: f64, b1: f64, b2: f64, z: f64) -> Option<Bounded> {
+    let accept = |b: Bounded| (b.value.is_finite() && b.err <= NATIVE_REL_TOL * b.value.abs()).then_some(b);
+    hyp1f2_native_bounded(a, b1, b2, z)
+        .and_then(accept)
+        .or_else(|| crate::special::hyp1f2_dd::hyp1f2_series_dd(a, b1, b2, z)?.finish().and_then(accept))
+}
+
 /// `1F2(a; b1, b2; z)` in f64 with a proven error bound for the f64 inputs as given:
 /// the native series ([`hyp1f2_native_bounded`]) when its bound is at most
-/// [`NATIVE_REL_TOL`] relative; otherwise (cancellation: large negative `z` against
-/// the parameters) the certified MP value at 64 bits, counted by [`hyp1f2_fallbacks`].
+/// [`NATIVE_REL_TOL`] relative, else the same series in double-double (cancellation:
+/// large negative `z` against the parameters; in the model family
+/// `1F2(1/2; k+1, k+3/2; -s^2)`, `s <= 35`, all `k >= 2`); otherwise (`k = 0, 1` at
+/// large `s`) the certified MP value at 64 bits, counted by [`hyp1f2_fallbacks`].
 pub fn hyp1f2_bounded(a: f64, b1: f64, b2: f64, z: f64) -> Result<Bounded> {
     for (v, what) in [(a, "a"), (b1, "b1"), (b2, "b2"), (z, "z")] {
         crate::error::finite(v, what)?;
     }
-    if let Some(b) = hyp1f2_native_bounded(a, b1, b2, z) {
-        if b.err <= NATIVE_REL_TOL * b.value.abs() {
-            return Ok(b);
-        }
+    if let Some(b) = hyp1f2_native_or_dd(a, b1, b2, z) {
+        return Ok(b);
     }
     NATIVE_FALLBACKS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     crate::special::bounded_from_ball("hyp1f2", &hyp1f2_mp_f64(a, b1, b2, z, crate::special::F64_FALLBACK_PREC)?)
