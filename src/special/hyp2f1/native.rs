@@ -17,8 +17,15 @@
 //!   not where `a - b` is within `0.05` of an integer (its two terms blow up).
 //!   Its bound is derived at [`connection_inv_one_minus_z`].
 //!
+//! * `7/10 < z < 1`: the connection formula in `x = 1 - z` [DLMF 15.8.4], two
+//!   f64 series in `x < 3/10` and six reciprocal Gammas, first (the direct
+//!   series needs 110 to 370 terms up to `z = 9/10`, and does not converge
+//!   usefully beyond); not where `c - a - b` is within `0.05` of an integer
+//!   (the log case). Its bound is derived at [`connection_one_minus_z`].
+//!
 //! When no f64 sum certifies (cancellation), the same series are summed in
-//! double words. Anything else (`z` in `(9/10, 1]`, more than
+//! double words. Anything else (`z = 1`, `z` in `(9/10, 1)` where the
+//! connection formula does not apply, more than
 //! [`MAX_NATIVE_TERMS`] terms, a bound above the caller's tolerance, values
 //! near the f64 range ends) returns `None`, and the callers fall back to the
 //! certified MP path.
@@ -47,7 +54,7 @@
 //! `pow_dw`; the product `P S` adds one rounding.
 
 use super::power::{dw_add, dw_div, dw_mul, pow_dw, Dw, U};
-use super::power_f64::{ln_f64, pow_f64, pow_from_ln, round_small};
+use super::power_f64::{ln_f64, pow_dw_exponent, pow_f64, pow_from_ln, round_small};
 use super::rgamma_f64::rgamma_dw;
 use crate::ball::two_sum;
 use crate::ball::Bounded;
@@ -66,9 +73,15 @@ const PFAFF_BELOW: f64 = -0.5;
 /// than Pfaff's one series at `w = z/(z-1) = 1 - 1/(1-z)`.
 const CONNECTION_FIRST_BELOW: f64 = -3.0;
 
-/// The connection formula needs `a - b` this far from an integer (closer,
-/// its two terms blow up and cancel; Pfaff takes over).
+/// The connection formulas need `a - b` (or `c - a - b`) this far from an
+/// integer (closer, their two terms blow up and cancel; Pfaff or the direct
+/// series takes over).
 const CONNECTION_MIN_FRAC: f64 = 0.05;
+
+/// Above this `z` the connection formula in `1 - z` goes first (two series in
+/// `1 - z < 0.3` and six reciprocal Gammas cost less than the direct series'
+/// 110 or more terms); above [`NATIVE_Z_MAX`] it is the only f64 path.
+const CONNECTION_ONE_MINUS_Z_ABOVE: f64 = 0.7;
 
 /// A series parameter `hi + lo` (`lo = 0` when it is an exact f64).
 #[derive(Clone, Copy, Debug)]
@@ -314,6 +327,47 @@ fn plus_one(p: Dw) -> Param {
     Param { hi, lo: lo * (1.0 + 4.0 * U) }
 }
 
+/// A reciprocal Gamma with its relative bound: `Some(None)` for an exact zero.
+fn rgamma_rel(x: Dw) -> Option<Option<(f64, f64)>> {
+    let (v, e) = rgamma_dw(x)?;
+    if v == 0.0 {
+        return (e == 0.0).then_some(None);
+    }
+    Some(Some((v, e / v.abs())))
+}
+
+/// `(1/G(n1)) (1/G(n2)) / ((1/G(d1)) (1/G(d2)))`, a connection coefficient, with
+/// its relative bound; `Some(None)` when a numerator vanishes exactly (the term
+/// is zero). Three roundings: with `r_*` the relative bounds of the four
+/// reciprocal Gammas, `|C~ - C| <= rho |C~|`, `rho = s (1 + s)`,
+/// `s = r_n1 + r_n2 + 1.01 (r_d1 + r_d2) + 3.01 u` (`e^s - 1 <= s (1 + s)`,
+/// `1/(1 - r) <= 1 + 1.01 r` for `r <= 1/100`).
+fn gamma_coefficient(num: [Dw; 2], den: [Dw; 2]) -> Option<Option<(f64, f64)>> {
+    let Some((n1, r1)) = rgamma_rel(num[0])? else { return Some(None) };
+    let Some((n2, r2)) = rgamma_rel(num[1])? else { return Some(None) };
+    let (d1, q1) = rgamma_rel(den[0])??;
+    let (d2, q2) = rgamma_rel(den[1])??;
+    let s = r1 + r2 + 1.01 * (q1 + q2) + 3.01 * U;
+    if !(s <= 0.01 && q1 <= 0.01 && q2 <= 0.01) {
+        return None;
+    }
+    Some(Some((n1 * n2 / (d1 * d2), s * (1.0 + s) * 1.0001)))
+}
+
+/// Adds the term `coef pw sum` of a connection formula to `(value, err)`:
+/// relative bounds `coef_rel`, `pw_rel`, the series' absolute `err_s`, two
+/// roundings for the products and one for the sum.
+fn add_connection_term(acc: (f64, f64), (coef, coef_rel): (f64, f64), (pw, pw_rel): (f64, f64), (sum, err_s): (f64, f64)) -> (f64, f64) {
+    let (value, err) = acc;
+    let pre = coef * pw;
+    // |pre~ - pre| <= pr |pre~|: the two relative bounds and one rounding
+    let pr = (coef_rel + pw_rel + coef_rel * pw_rel + U) * 1.0001;
+    let t = pre * sum;
+    let total = value + t;
+    let err = err + (pre.abs() * err_s * (1.0 + 2.0 * pr) + (1.01 * pr + U) * t.abs()) * (1.0 + 4.0 * U) + U * total.abs();
+    (total, err)
+}
+
 /// `2F1(a, b; c; z)` for `z <= -1` by the connection formula in `x = 1/(1-z)`
 /// [DLMF 15.8.3], for `a - b` at least [`CONNECTION_MIN_FRAC`] from an integer:
 ///
@@ -322,15 +376,9 @@ fn plus_one(p: Dw) -> Param {
 ///     Gamma(c) Gamma(q-p) / (Gamma(q) Gamma(c-p)) (1-z)^{-p} 2F1(p, c-q; p-q+1; x)
 /// ```
 ///
-/// `(value, err)` with a proven bound, or `None`. The reciprocal Gammas come
-/// from [`rgamma_dw`] (relative bounds, exact zeros at the poles: a term with
-/// `1/Gamma(q) = 0` or `1/Gamma(c-p) = 0` vanishes), both powers from one
-/// [`ln_f64`] of the exact double word `1 - z`; `x = fl(1/(1-z)_hi)` is within
-/// `2.01 u` relative. The coefficient `C = (1/G(q)) (1/G(c-p)) / ((1/G(c)) (1/G(q-p)))`
-/// has three roundings: with `r_*` the relative bounds of the four reciprocal
-/// Gammas, `|C~ - C| <= rho |C~|`, `rho = s (1 + s)`, `s = r_q + r_cp + 1.01 (r_c + r_qp) + 3.01 u`
-/// (`e^s - 1 <= s (1 + s)`, `1/(1 - r) <= 1 + 1.01 r` for `r <= 1/100`). The power
-/// adds its relative bound and one rounding; the series its own bound.
+/// `(value, err)` with a proven bound, or `None`. The coefficients from
+/// [`gamma_coefficient`], both powers from one [`ln_f64`] of the exact double
+/// word `1 - z`; `x = fl(1/(1-z)_hi)` is within `2.01 u` relative.
 fn connection_inv_one_minus_z(a: f64, b: f64, c: f64, z: f64) -> Option<(f64, f64)> {
     let amb = Dw::diff(a, b);
     if !(z <= -1.0) || (amb.hi - round_small(amb.hi)).abs() < CONNECTION_MIN_FRAC {
@@ -339,42 +387,57 @@ fn connection_inv_one_minus_z(a: f64, b: f64, c: f64, z: f64) -> Option<(f64, f6
     let omz = Dw::diff(1.0, z);
     let x = 1.0 / omz.hi; // |x - 1/(1-z)| <= 2.01 u x
     let ln_omz = ln_f64(omz.hi, omz.lo)?;
-    let (rg_c, e_c) = rgamma_dw(Dw::new(c))?;
-    if rg_c == 0.0 {
+    let mut acc = (0.0f64, 0.0f64);
+    for (p, q) in [(a, b), (b, a)] {
+        let Some(coef) = gamma_coefficient([Dw::new(q), Dw::diff(c, p)], [Dw::new(c), Dw::diff(q, p)])? else { continue };
+        let pw = pow_from_ln(ln_omz, -p)?;
+        let sum = series(Param::exact(p), Param::from_dw(Dw::diff(c, q)), plus_one(Dw::diff(p, q)), x, 2.01 * U)?;
+        acc = add_connection_term(acc, coef, pw, sum);
+    }
+    Some((acc.0, acc.1 * (1.0 + 4.0 * U)))
+}
+
+/// `2F1(a, b; c; z)` for `1/2 < z < 1` by the connection formula in `x = 1 - z`
+/// [DLMF 15.8.4, 15.10.21], for `s = c - a - b` at least [`CONNECTION_MIN_FRAC`]
+/// from an integer (closer, the log case):
+///
+/// ```text
+/// 2F1(a, b; c; z) = Gamma(c) Gamma(s) / (Gamma(c-a) Gamma(c-b)) 2F1(a, b; 1-s; x)
+///                 + x^s Gamma(c) Gamma(-s) / (Gamma(a) Gamma(b)) 2F1(c-a, c-b; 1+s; x)
+/// ```
+///
+/// `x = 1 - z` is exact (Sterbenz). `s` is the double word
+/// `two_sum(two_sum(c, -a).hi, -b)` with the low parts added once: it errs by
+/// at most `u |lo|`, below `2^-100 |s|`; that moves `1/Gamma(+-s)` by a relative
+/// `|psi| 2^-100 < 2^-90` (`|s + n| >= 0.05`) and the power by `|ln x| 2^-100`,
+/// both covered by the `2^-80` relative added to the coefficients. The series'
+/// parameters `1 -+ s` carry `|lo|` enlarged by `4u` (the perturbation bound of
+/// [`series`]).
+fn connection_one_minus_z(a: f64, b: f64, c: f64, z: f64) -> Option<(f64, f64)> {
+    if !(z > 0.5 && z < 1.0) {
         return None;
     }
-    let r_c = e_c / rg_c.abs();
-    let mut value = 0.0f64;
-    let mut err = 0.0f64;
-    for (p, q) in [(a, b), (b, a)] {
-        let (rg_q, e_q) = rgamma_dw(Dw::new(q))?;
-        let (rg_cp, e_cp) = rgamma_dw(Dw::diff(c, p))?;
-        if (rg_q == 0.0 && e_q == 0.0) || (rg_cp == 0.0 && e_cp == 0.0) {
-            continue; // an exact zero of 1/Gamma: the term vanishes
-        }
-        let (rg_qp, e_qp) = rgamma_dw(Dw::diff(q, p))?;
-        if rg_q == 0.0 || rg_cp == 0.0 || rg_qp == 0.0 {
-            return None;
-        }
-        let r_qp = e_qp / rg_qp.abs();
-        let s = e_q / rg_q.abs() + e_cp / rg_cp.abs() + 1.01 * (r_c + r_qp) + 3.01 * U;
-        if !(s <= 0.01 && r_c <= 0.01 && r_qp <= 0.01) {
-            return None;
-        }
-        let coef = rg_q * rg_cp / (rg_c * rg_qp);
-        let coef_rel = s * (1.0 + s) * 1.0001;
-        let (pw, pw_rel) = pow_from_ln(ln_omz, -p)?;
-        let (sum, err_s) = series(Param::exact(p), Param::from_dw(Dw::diff(c, q)), plus_one(Dw::diff(p, q)), x, 2.01 * U)?;
-        let pre = coef * pw;
-        // |pre~ - pre| <= pr |pre~|: the two relative bounds and one rounding
-        let pr = (coef_rel + pw_rel + coef_rel * pw_rel + U) * 1.0001;
-        let t = pre * sum;
-        err += (pre.abs() * err_s * (1.0 + 2.0 * pr) + (1.01 * pr + U) * t.abs()) * (1.0 + 4.0 * U);
-        let total = value + t;
-        err += U * total.abs();
-        value = total;
+    let (h1, l1) = two_sum(c, -a);
+    let (h2, l2) = two_sum(h1, -b);
+    let s = Dw { hi: h2, lo: l1 + l2 };
+    if (s.hi - round_small(s.hi)).abs() < CONNECTION_MIN_FRAC {
+        return None;
     }
-    Some((value, err * (1.0 + 4.0 * U)))
+    const S_SLACK: f64 = 8.271806125530277e-25; // 2^-80
+    let neg_s = Dw { hi: -s.hi, lo: -s.lo };
+    let x = 1.0 - z;
+    let mut acc = (0.0f64, 0.0f64);
+    let widen = |p: Param| Param { hi: p.hi, lo: p.lo.abs() * (1.0 + 4.0 * U) + 2.0 * U * s.lo.abs() };
+    if let Some((coef, rel)) = gamma_coefficient([Dw::diff(c, a), Dw::diff(c, b)], [Dw::new(c), s])? {
+        let sum = series(Param::exact(a), Param::exact(b), widen(plus_one(neg_s)), x, 0.0)?;
+        acc = add_connection_term(acc, (coef, rel + S_SLACK), (1.0, 0.0), sum);
+    }
+    if let Some((coef, rel)) = gamma_coefficient([Dw::new(a), Dw::new(b)], [Dw::new(c), neg_s])? {
+        let pw = pow_dw_exponent(ln_f64(x, 0.0)?, s)?;
+        let sum = series(Param::from_dw(Dw::diff(c, a)), Param::from_dw(Dw::diff(c, b)), widen(plus_one(s)), x, 0.0)?;
+        acc = add_connection_term(acc, (coef, rel + S_SLACK), (pw.0, pw.1 + S_SLACK), sum);
+    }
+    Some((acc.0, acc.1 * (1.0 + 4.0 * U)))
 }
 
 /// `2F1(a, b; c; z)` natively with a proven bound, accepted only when
@@ -385,6 +448,11 @@ pub(super) fn hyp2f1_native(a: f64, b: f64, c: f64, z: f64, rel_tol: f64) -> Opt
         (v.is_finite() && v.abs() > 1e-290 && v.abs() < 1e290 && err <= rel_tol * v.abs()).then_some(Bounded { value: v, err })
     };
     let terminating = Param::exact(a).nonpos_degree().is_some() || Param::exact(b).nonpos_degree().is_some();
+    if !terminating && z > CONNECTION_ONE_MINUS_Z_ABOVE {
+        if let Some(r) = connection_one_minus_z(a, b, c, z).and_then(|(v, err)| accept(v, err)) {
+            return Some(r);
+        }
+    }
     if terminating || (PFAFF_BELOW..=NATIVE_Z_MAX).contains(&z) {
         let (pa, pb, pc) = (Param::exact(a), Param::exact(b), Param::exact(c));
         if let Some(r) = series(pa, pb, pc, z, 0.0).and_then(|(v, err)| accept(v, err)) {
@@ -482,26 +550,51 @@ mod tests {
         assert!(accepted as f64 >= 0.97 * total as f64, "{accepted}/{total}");
     }
 
-    /// The connection formula on its own (z in [-1000, -1], a, b in [-3, 3],
-    /// c in [0.5, 6]): its bound holds at every point against the certified
-    /// 120-bit ball, and it answers at most points.
-    #[test]
-    fn connection_bound_holds() {
-        let mut rng = Lcg(0x1f2);
+    /// A connection formula on its own over 3000 random points (a, b in [-3, 3],
+    /// c in [0.5, 6], z from `z_of`): its bound holds at every point against
+    /// the certified 120-bit ball, and it answers at least 85% of them.
+    fn check_connection(form: fn(f64, f64, f64, f64) -> Option<(f64, f64)>, seed: u64, z_of: fn(&mut Lcg, u32) -> f64) {
+        let mut rng = Lcg(seed);
         let (mut answered, mut total, mut worst_bound) = (0u32, 0u32, 0.0f64);
         for i in 0..3000 {
             let (a, b, c) = (rng.uniform(-3.0, 3.0), rng.uniform(-3.0, 3.0), rng.uniform(0.5, 6.0));
-            let z = if i % 3 == 0 { -10f64.powf(rng.uniform(0.0, 3.0)) } else { rng.uniform(-5.0, -1.0) };
+            let z = z_of(&mut rng, i);
             total += 1;
-            let Some((v, err)) = connection_inv_one_minus_z(a, b, c, z) else { continue };
+            let Some((v, err)) = form(a, b, c, z) else { continue };
             answered += 1;
             let m = hyp2f1_mp(&exact(a), &exact(b), &exact(c), &exact(z), 120).unwrap();
             let diff_up = Float::with_val(200, m.mid() - v).abs().to_f64() + m.rad().to_f64();
             assert!(diff_up <= err, "connection form of 2F1({a}, {b}; {c}; {z}): |error| {diff_up:e} > bound {err:e}");
-            worst_bound = worst_bound.max(err / v.abs());
+            if v != 0.0 {
+                worst_bound = worst_bound.max(err / v.abs());
+            }
         }
         eprintln!("connection answered {answered}/{total}, worst rel bound {worst_bound:e}");
         assert!(answered as f64 >= 0.85 * total as f64, "{answered}/{total}");
+    }
+
+    /// DLMF 15.8.3, z in [-1000, -1].
+    #[test]
+    fn connection_bound_holds() {
+        check_connection(connection_inv_one_minus_z, 0x1f2, |rng, i| {
+            if i % 3 == 0 {
+                -10f64.powf(rng.uniform(0.0, 3.0))
+            } else {
+                rng.uniform(-5.0, -1.0)
+            }
+        });
+    }
+
+    /// DLMF 15.8.4, z in (1/2, 1), up to `1 - 10^-12`.
+    #[test]
+    fn connection_one_minus_z_bound_holds() {
+        check_connection(connection_one_minus_z, 0x1a2, |rng, i| {
+            if i % 3 == 0 {
+                1.0 - 10f64.powf(-rng.uniform(0.31, 12.0))
+            } else {
+                rng.uniform(0.5, 1.0)
+            }
+        });
     }
 
     #[test]
@@ -512,8 +605,10 @@ mod tests {
             let want = 1.0 - 2.0 * b * z / c + b * (b + 1.0) * z * z / (c * (c + 1.0));
             assert!((r.value - want).abs() <= r.err + 4.0 * f64::EPSILON * want.abs(), "{r:?} vs {want}");
         }
-        // Outside the native regions: None (MP takes over).
-        assert!(hyp2f1_native(0.3, 0.4, 1.5, 0.95, 1e-13).is_none());
+        // Beyond 9/10 only the connection formula: native unless c - a - b is
+        // (near) an integer (the log case); z = 1 is Gauss's sum in MP.
+        assert!(hyp2f1_native(0.3, 0.4, 1.5, 0.95, 1e-13).is_some());
+        assert!(hyp2f1_native(0.3, 0.7, 2.0, 0.95, 1e-13).is_none());
         assert!(hyp2f1_native(0.3, 0.4, 1.5, 1.0, 1e-13).is_none());
     }
 }

@@ -243,10 +243,22 @@ pub(super) fn pow_f64(x: Dw, p: f64) -> Option<(f64, f64)> {
 
 /// `x^p` from `ln x = l_hi + l_lo` (within `l_err`, as [`ln_f64`] returns it):
 /// the second half of [`pow_f64`], for several powers of one `x`.
-pub(super) fn pow_from_ln((l_hi, l_lo, l_err): (f64, f64, f64), p: f64) -> Option<(f64, f64)> {
-    let (y_hi, y_err) = two_prod(p, l_hi);
-    let y_lo = y_err + p * l_lo;
-    let dy = (p.abs() * l_err + U * ((p * l_lo).abs() + y_lo.abs())) * 1.0001;
+pub(super) fn pow_from_ln(ln_x: (f64, f64, f64), p: f64) -> Option<(f64, f64)> {
+    pow_dw_exponent(ln_x, Dw::new(p))
+}
+
+/// `x^p` from `ln x` (as [`pow_from_ln`]) for an exponent given as a double
+/// word `p = p_hi + p_lo` (`|p_lo| <= u |p_hi|`, e.g. `c - a - b`): the exponent
+/// `p ln x = two_prod(p_hi, l_hi) + (p_hi l_lo + p_lo l_hi)`, whose dropped and
+/// rounded parts (`|p| l_err`, `|p_lo l_lo|`, three roundings) go to `dy`.
+pub(super) fn pow_dw_exponent((l_hi, l_lo, l_err): (f64, f64, f64), p: Dw) -> Option<(f64, f64)> {
+    let (y_hi, y_err) = two_prod(p.hi, l_hi);
+    let cross = p.hi * l_lo + p.lo * l_hi;
+    let y_lo = y_err + cross;
+    let dy = ((p.hi.abs() + p.lo.abs()) * l_err
+        + (p.lo * l_lo).abs()
+        + U * ((p.hi * l_lo).abs() + (p.lo * l_hi).abs() + cross.abs() + y_lo.abs()))
+        * 1.0001;
     exp_f64(y_hi, y_lo, dy)
 }
 
