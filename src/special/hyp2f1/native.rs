@@ -53,11 +53,12 @@
 //! (covers `gamma_N` for `N <= 10^6`). The prefactor has the relative bound of
 //! `pow_dw`; the product `P S` adds one rounding.
 
-use super::power::{dw_add, dw_div, dw_mul, pow_dw, Dw, U};
+use super::power::{dw_add, dw_div, dw_div_p, dw_mul, dw_mul_p, pow_dw, Dw, U};
 use super::power_f64::{ln_f64, pow_dw_exponent, pow_f64, pow_from_ln, round_small};
 use super::rgamma_f64::rgamma_dw;
-use crate::ball::two_sum;
-use crate::ball::Bounded;
+#[cfg(target_arch = "x86_64")]
+use crate::ball::Fused;
+use crate::ball::{two_sum, Bounded, Dekker, ExactProduct};
 
 /// Cap on the terms of a native series (beyond it, MP).
 pub(super) const MAX_NATIVE_TERMS: u64 = 3000;
@@ -258,6 +259,25 @@ fn series(p1: Param, p2: Param, q: Param, x: f64, x_rel: f64) -> Option<(f64, f6
 /// `49 u^2`, charged `128 u^2`) and `3u^2 |s~_k|` per addition; parameters are
 /// exact double words (`theta` bounds the relative error of `x`).
 fn series_dw(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64) -> Option<(Dw, f64)> {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("fma") {
+        // SAFETY: the CPU supports FMA (checked just above).
+        return unsafe { series_dw_fused(p1, p2, q, x, x_rel) };
+    }
+    series_dw_with::<Dekker>(p1, p2, q, x, x_rel)
+}
+
+/// [`series_dw`] compiled with fused multiply-add for the exact products.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "fma")]
+unsafe fn series_dw_fused(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64) -> Option<(Dw, f64)> {
+    series_dw_with::<Fused>(p1, p2, q, x, x_rel)
+}
+
+/// [`series_dw`] with the exact product `P` (the result is bit-identical for
+/// every `P`: both products are exact).
+#[inline(always)]
+fn series_dw_with<P: ExactProduct>(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64) -> Option<(Dw, f64)> {
     let pa = Param::from_dw(p1);
     let pb = Param::from_dw(p2);
     let pq = Param::from_dw(q);
@@ -282,12 +302,12 @@ fn series_dw(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64) -> Option<(Dw, f64)> {
             break;
         }
         let nf = n as f64;
-        let num = dw_mul(dw_add(p1, Dw::new(nf)), dw_add(p2, Dw::new(nf)));
-        let den = dw_mul(dw_add(q, Dw::new(nf)), Dw::new(nf + 1.0));
+        let num = dw_mul_p::<P>(dw_add(p1, Dw::new(nf)), dw_add(p2, Dw::new(nf)));
+        let den = dw_mul_p::<P>(dw_add(q, Dw::new(nf)), Dw::new(nf + 1.0));
         if den.hi == 0.0 {
             return None;
         }
-        t = dw_mul(t, dw_div(dw_mul(num, x), den));
+        t = dw_mul_p::<P>(t, dw_div_p::<P>(dw_mul_p::<P>(num, x), den));
         n += 1;
         let nf = n as f64;
         if deg.is_none() && nf >= n_pos && t.hi.abs() <= STOP * s.hi.abs() {
@@ -571,6 +591,20 @@ mod tests {
         }
         eprintln!("connection answered {answered}/{total}, worst rel bound {worst_bound:e}");
         assert!(answered as f64 >= 0.85 * total as f64, "{answered}/{total}");
+    }
+
+    /// The double-word series with fused products (where the CPU has them) is
+    /// bit-identical to the portable one.
+    #[test]
+    fn double_word_series_fused_equals_portable() {
+        let mut rng = Lcg(0xf0a);
+        for _ in 0..500 {
+            let (a, b, c, x) = (rng.uniform(-3.0, 3.0), rng.uniform(-3.0, 3.0), rng.uniform(0.5, 6.0), rng.uniform(-0.9, 0.9));
+            let args = (Dw::new(a), Dw::diff(c, b), Dw::new(c), Dw::new(x));
+            let fast = series_dw(args.0, args.1, args.2, args.3, 0.0);
+            let portable = series_dw_with::<Dekker>(args.0, args.1, args.2, args.3, 0.0);
+            assert_eq!(fast, portable, "2F1({a}, {c} - {b}; {c}; {x})");
+        }
     }
 
     /// DLMF 15.8.3, z in [-1000, -1].

@@ -35,7 +35,7 @@
 //! Everything is refused (`None`) outside the ranges above (then the caller
 //! falls back to MP): no overflow, underflow or subnormal can occur inside.
 
-use crate::ball::{quick_two_sum, two_prod, two_sum};
+use crate::ball::{quick_two_sum, two_prod, two_sum, Dekker, ExactProduct};
 
 /// `u = 2^-53`, the unit roundoff of f64.
 pub(super) const U: f64 = f64::EPSILON / 2.0;
@@ -80,7 +80,13 @@ pub(super) fn dw_add(x: Dw, y: Dw) -> Dw {
 /// DWTimesDW1 [Joldes-Muller-Popescu 2017, Alg. 10]: relative error `<= 7u^2`.
 #[inline]
 pub(super) fn dw_mul(x: Dw, y: Dw) -> Dw {
-    let (ch, cl1) = two_prod(x.hi, y.hi);
+    dw_mul_p::<Dekker>(x, y)
+}
+
+/// [`dw_mul`] with the exact product `P` (bit-identical for every `P`).
+#[inline(always)]
+pub(super) fn dw_mul_p<P: ExactProduct>(x: Dw, y: Dw) -> Dw {
+    let (ch, cl1) = P::two_prod(x.hi, y.hi);
     let tl1 = x.hi * y.lo;
     let tl2 = x.lo * y.hi;
     let cl2 = tl1 + tl2;
@@ -95,9 +101,9 @@ pub(super) const LN2_C2: f64 = 5.497923018708371e-14;
 pub(super) const LN2_C3: f64 = 1.94704509238075e-31;
 
 /// DWTimesFP1 [Joldes-Muller-Popescu 2017, Alg. 7]: relative error `<= 2u^2`.
-#[inline]
-fn dw_mul_f64(x: Dw, y: f64) -> Dw {
-    let (ch, cl1) = two_prod(x.hi, y);
+#[inline(always)]
+fn dw_mul_f64_p<P: ExactProduct>(x: Dw, y: f64) -> Dw {
+    let (ch, cl1) = P::two_prod(x.hi, y);
     let cl2 = x.lo * y;
     let (th, tl1) = quick_two_sum(ch, cl2);
     let tl2 = tl1 + cl1;
@@ -109,8 +115,14 @@ fn dw_mul_f64(x: Dw, y: f64) -> Dw {
 /// (charged `32u^2` by the callers).
 #[inline]
 pub(super) fn dw_div(x: Dw, y: Dw) -> Dw {
+    dw_div_p::<Dekker>(x, y)
+}
+
+/// [`dw_div`] with the exact product `P` (bit-identical for every `P`).
+#[inline(always)]
+pub(super) fn dw_div_p<P: ExactProduct>(x: Dw, y: Dw) -> Dw {
     let th = x.hi / y.hi;
-    let r = dw_mul_f64(y, th);
+    let r = dw_mul_f64_p::<P>(y, th);
     let pi_h = x.hi - r.hi;
     let dl = x.lo - r.lo;
     let d = pi_h + dl;
@@ -253,7 +265,7 @@ mod tests {
             let m = Float::with_val(200, &fa * &fb);
             assert!(rel(dw_mul(a, b), &m) <= 7.0 * u2, "{a:?}*{b:?}");
             let m = Float::with_val(200, &fa * b.hi);
-            assert!(rel(dw_mul_f64(a, b.hi), &m) <= 2.0 * u2, "{a:?}*{}", b.hi);
+            assert!(rel(dw_mul_f64_p::<Dekker>(a, b.hi), &m) <= 2.0 * u2, "{a:?}*{}", b.hi);
             let s = Float::with_val(200, &fa + &fb);
             assert!(rel(dw_add(a, b), &s) <= 3.0 * u2 / (1.0 - 4.0 * U), "{a:?}+{b:?}");
         }
