@@ -118,6 +118,17 @@ fn bench_meijer_domain(c: &mut Criterion) {
     }
     g.finish();
     eprintln!("meijer_g_k_f64_dd_paths: MP fallbacks during the run: {}", meijer_g::meijer_g_k_fallbacks() - before);
+    // The whole family k = 0..=1000 at one y (elements: 1001 values per call).
+    let before = meijer_g::meijer_g_k_fallbacks();
+    let mut g = c.benchmark_group("meijer_g_k_family_f64");
+    g.throughput(criterion::Throughput::Elements(1001));
+    for &y in &[0.25, 0.5, 0.9, 0.99, 1.0 - 1e-9, 1.0] {
+        g.bench_with_input(BenchmarkId::new("kmax=1000", y), &y, |b, &y| {
+            b.iter(|| meijer_g::meijer_g_k_family_f64(1000, black_box(y)).unwrap().iter().map(|v| v.value).sum::<f64>())
+        });
+    }
+    g.finish();
+    eprintln!("meijer_g_k_family_f64: MP fallbacks during the run: {}", meijer_g::meijer_g_k_fallbacks() - before);
 }
 
 fn bench_hyp2f1(c: &mut Criterion) {

@@ -74,6 +74,8 @@
 
 use rug::Float;
 
+pub use crate::special::meijer_g_family::meijer_g_k_family_f64;
+
 use crate::ball::{Ball, Bounded, Mag, MAG_PREC};
 use crate::error::{Error, Result};
 use crate::special::pfq::pfq_series;

@@ -116,10 +116,10 @@ fn table() -> Option<&'static Tables> {
         .as_ref()
 }
 
-/// The double-double constants for `k <= TABLE_K_MAX` (tests of the dd paths).
-#[cfg(test)]
-pub(crate) fn dd_constants_for_tests(k: u32) -> DdConstants {
-    table().unwrap().dd_constants(k)
+/// The double-double constants for `k <= TABLE_K_MAX` (`None` beyond, or if the
+/// table could not be built).
+pub(crate) fn dd_constants(k: u32) -> Option<DdConstants> {
+    (k <= TABLE_K_MAX).then(|| table().map(|t| t.dd_constants(k))).flatten()
 }
 
 /// `ln y` for `0 < y <= 1` with a proven bound.
@@ -224,6 +224,10 @@ fn s_bounded(k: u32, y: f64) -> Option<Val> {
 pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Option<Bounded> {
     if k > TABLE_K_MAX {
         return None;
+    }
+    if y == 1.0 && k == 1 {
+        // B_1(1) = 0 exactly (module docs of `meijer_g`): the one exact zero
+        return Some(Bounded { value: 0.0, err: 0.0 });
     }
     let tables = table()?;
     let accept = |b: Bounded| (b.value.is_finite() && b.err <= rel_tol * b.value.abs()).then_some(b);

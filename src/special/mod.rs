@@ -46,6 +46,7 @@ pub(crate) mod hyp1f2_dd;
 pub mod hyp2f1;
 pub mod meijer_g;
 pub(crate) mod meijer_g_dd;
+pub(crate) mod meijer_g_family;
 pub mod meijer_g_native;
 pub mod pfq;
 
