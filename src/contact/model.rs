@@ -213,7 +213,7 @@ fn acosh_1p(z: f64) -> f64 {
 
 /// The Hertz gap function `(1+z) sqrt(z(2+z)) - acosh(1+z)`, `z >= 0`
 /// (`= 2 int_1^{1+z} sqrt(t^2-1) dt`; the Hertz gap at `x = (1+z) a` is
-/// `a^2/2` times it). Series below [`SERIES_Z`]:
+/// `a^2/2` times it). Series below `SERIES_Z`:
 /// `sqrt(2z) z (4/3 + z/5 - z^2/56 + z^3/288 - 5 z^4/5632 + 7 z^5/26624)`.
 pub fn hertz_gap_fn(z: f64) -> f64 {
     if z < SERIES_Z {
@@ -232,7 +232,7 @@ pub fn adhesive_gap_fn(z: f64) -> f64 {
 }
 
 /// The adhesive approach function `(1+z) acosh(1+z) - sqrt(z(2+z))`, `z >= 0`.
-/// Series below [`SERIES_Z`]:
+/// Series below `SERIES_Z`:
 /// `sqrt(2z) z (2/3 - z/30 + 3 z^2/560 - 5 z^3/4032 + 35 z^4/101376 - 63 z^5/585728)`.
 pub fn adhesive_approach_fn(z: f64) -> f64 {
     if z < SERIES_Z {

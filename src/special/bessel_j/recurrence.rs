@@ -11,7 +11,7 @@ use crate::special::check_finite;
 
 /// Certified `J_0(x), ..., J_nmax(x)` at working precision `wp` (`x > 0`).
 ///
-/// `J_nmax` and `J_{nmax+1}` are certified by [`bessel_j_mp`]; the rest follows
+/// `J_nmax` and `J_{nmax+1}` are certified by [`bessel_j_mp`](super::bessel_j_mp); the rest follows
 /// from the three-term recurrence run downward, `J_{n-1} = (2n/x) J_n - J_{n+1}`
 /// [DLMF 10.6.1], in ball arithmetic, so every entry is certified. Downward is the
 /// stable direction for `n > x` (J_n is the minimal solution there); below `x`
