@@ -86,6 +86,17 @@ fn bench_hyp1f2_domain(c: &mut Criterion) {
         pts.len(),
         hyp1f2::hyp1f2_fallbacks() - before
     );
+    // The whole family k = 0..=1000 at one z = -s^2 (elements: 1001 values per call).
+    let before = hyp1f2::hyp1f2_fallbacks();
+    let mut g = c.benchmark_group("hyp1f2_model_family_f64");
+    g.throughput(criterion::Throughput::Elements(1001));
+    for &s in &[0.5f64, 3.0, 10.0, 20.0, 35.0] {
+        g.bench_with_input(BenchmarkId::new("kmax=1000,s", s), &s, |b, &s| {
+            b.iter(|| hyp1f2::hyp1f2_model_family_f64(1000, black_box(-s * s)).unwrap().iter().map(|v| v.value).sum::<f64>())
+        });
+    }
+    g.finish();
+    eprintln!("hyp1f2_model_family_f64: MP fallbacks during the run: {}", hyp1f2::hyp1f2_fallbacks() - before);
 }
 
 /// `meijer_g_k_bounded(k, y)` over the issue-8 domain k <= 1000, y in (0, 1]

@@ -44,6 +44,8 @@
 //! Domain: finite real parameters with `b1, b2` not non-positive integers
 //! (unless the series terminates first), finite real `z`; `|z| <= 10^4` is tested.
 
+pub use crate::special::hyp1f2_family::{hyp1f2_model_family_f64, FAMILY_MAX_K};
+
 use rug::Float;
 
 use crate::ball::{Ball, Bounded};
