@@ -25,7 +25,7 @@
 //! series, double-word series, then MP), so every returned bound is proven and
 //! `1e-14` relative.
 
-use crate::ball::{Bounded, BoundedDd};
+use crate::ball::{Bounded, BoundedDd, ExactProduct};
 use crate::error::{Error, Result};
 use crate::special::hyp1f2::{hyp1f2_bounded, NATIVE_REL_TOL};
 use crate::special::hyp1f2_dd::hyp1f2_series_dd;
@@ -67,7 +67,24 @@ pub fn hyp1f2_model_family_f64(kmax: u32, z: f64) -> Result<Vec<Bounded>> {
 
 /// `Phi(m)` for `m = 0..=2 kmax + 4` by the downward recurrence; `None` below the
 /// index where the recurrence stopped (or everywhere if a start value failed).
+/// Exact products by fused multiply-add where the CPU has it (bit-identical).
 pub(crate) fn phi_downward(kmax: u32, z: f64) -> Vec<Option<BoundedDd>> {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("fma") {
+        // SAFETY: the CPU supports FMA (checked just above).
+        return unsafe { phi_fused(kmax, z) };
+    }
+    phi_with::<crate::ball::Dekker>(kmax, z)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "fma")]
+unsafe fn phi_fused(kmax: u32, z: f64) -> Vec<Option<BoundedDd>> {
+    phi_with::<crate::ball::Fused>(kmax, z)
+}
+
+#[inline(always)]
+fn phi_with<P: ExactProduct>(kmax: u32, z: f64) -> Vec<Option<BoundedDd>> {
     let top = 2 * kmax as usize + 1;
     let mut phi: Vec<Option<BoundedDd>> = vec![None; top + 4];
     for m in top..top + 4 {
@@ -84,8 +101,8 @@ pub(crate) fn phi_downward(kmax: u32, z: f64) -> Vec<Option<BoundedDd>> {
             _ => break,
         };
         let mf = m as f64;
-        let bracket = p2.div_f64_p::<crate::ball::Dekker>(mf + 2.0).sub(p3.div_f64_p::<crate::ball::Dekker>(mf + 3.0));
-        let v = p1.add(bracket.mul_f64(four_z).div_f64_p::<crate::ball::Dekker>(mf + 1.0));
+        let bracket = p2.div_f64_p::<P>(mf + 2.0).sub(p3.div_f64_p::<P>(mf + 3.0));
+        let v = p1.add(bracket.mul_f64_p::<P>(four_z).div_f64_p::<P>(mf + 1.0));
         if !(v.e <= RECURRENCE_MAX_REL * v.mag()) {
             break;
         }
@@ -138,5 +155,15 @@ mod tests {
         assert!(hyp1f2_model_family_f64(3, f64::NEG_INFINITY).is_err());
         assert!(hyp1f2_model_family_f64(FAMILY_MAX_K + 1, -1.0).is_err());
         assert_eq!(hyp1f2_model_family_f64(0, -4.0).unwrap().len(), 1);
+    }
+
+    #[test]
+    fn fused_and_portable_recurrences_agree_bit_for_bit() {
+        for &z in &[-0.25f64, -9.0, -100.0, -1225.0] {
+            let (a, b) = (phi_downward(300, z), phi_with::<crate::ball::Dekker>(300, z));
+            for (x, y) in a.iter().zip(b.iter()) {
+                assert_eq!(x.map(|v| (v.v.hi, v.v.lo, v.e)), y.map(|v| (v.v.hi, v.v.lo, v.e)), "z={z}");
+            }
+        }
     }
 }
