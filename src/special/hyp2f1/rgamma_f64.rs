@@ -34,11 +34,12 @@
 //! `sum d~_j delta^j (1 + theta_{2j+1})`, `|theta_n| <= gamma_n = nu/(1-nu)`, so
 //! `|p~ - 1/Gamma(x0)| <= sum_j beta_j |delta|^j + 32 |delta| T`, with
 //! `beta_j = gamma_{2j+1} |d~_j| + e_j` and the truncation
-//! `T = sum_{j>K} max|d_j| 32^-j` (every `|delta|^j <= 32 |delta| 32^-j`). The
-//! bound is itself a Horner sum of non-negative terms, evaluated in f64 and
-//! inflated by `1 + 2^-40` (its `2K` roundings are `< 2^-46` relative). At the
-//! centre `c = 0`, `d_0 = 0` and the bound is relative to `|delta| ~ |x0|`, so
-//! `1/Gamma` keeps its relative accuracy next to its zero.
+//! `T = sum_{j>K} max|d_j| 32^-j` (every `|delta|^j <= 32 |delta| 32^-j`), so
+//! `<= beta_0 + 32 |delta| B1`, `B1 = sum_{1<=j<=K} beta_j 32^-j + T`: two
+//! constants per centre (summed once, inflated by `1.001`), and the runtime
+//! bound is one product and one sum (inflated by `1 + 2^-40`). At the centre
+//! `c = 0`, `d_0 = 0 = beta_0` and the bound is relative to `|delta| ~ |x0|`,
+//! so `1/Gamma` keeps its relative accuracy next to its zero.
 //!
 //! **Shift** [DLMF 5.5.1]. For `x >= 3/2`, `x0 = x - m in [1/2, 3/2)` and
 //! `1/Gamma(x) = (1/Gamma(x0)) / prod_{j=1}^{m} (x - j)`; for `x < -1/2`,
@@ -93,13 +94,14 @@ const CAUCHY_M: f64 = 2e22;
 const CENTRE_MIN: i32 = -8;
 const CENTRE_MAX: i32 = 24;
 
-/// One centre: `d~_j`, `beta_j`, the Horner degree and the truncation `T`.
+/// One centre: `d~_j`, the Horner degree, and the bound's two constants:
+/// `beta_0` and `B1 = sum_{1<=j<=K} beta_j 32^-j + T` (module docs).
 #[derive(Clone, Debug)]
 struct Row {
     coeff: [f64; ORDERS],
-    beta: [f64; ORDERS],
     degree: usize,
-    tail: f64,
+    beta0: f64,
+    b1: f64,
 }
 
 /// The table, built on first use.
@@ -181,11 +183,9 @@ fn build_table() -> Vec<Row> {
             tail = t;
             degree = k - 1;
         }
-        let mut beta = [0.0; ORDERS];
-        for j in 0..=degree {
-            beta[j] = gamma_n(2 * j + 1) * coeff[j].abs() + err[j];
-        }
-        rows.push(Row { coeff, beta, degree, tail: tail * 1.001 });
+        let beta = |j: usize| gamma_n(2 * j + 1) * coeff[j].abs() + err[j];
+        let b1 = (1..=degree).map(|j| beta(j) * (1.0f64 / 32.0).powi(j as i32)).sum::<f64>() * 1.001 + tail * 1.001;
+        rows.push(Row { coeff, degree, beta0: beta(0) * 1.001, b1 });
     }
     rows
 }
@@ -203,12 +203,11 @@ fn reduced(x0: f64, lo: f64) -> Option<(f64, f64)> {
     }
     let k = row.degree;
     let mut p = row.coeff[k];
-    let mut e = row.beta[k];
     for j in (0..k).rev() {
         p = p * delta + row.coeff[j];
-        e = e * ad + row.beta[j];
     }
-    let mut err = (e + 32.0 * ad * row.tail) * (1.0 + 2f64.powi(-40));
+    // sum_j beta_j |delta|^j + 32 |delta| T <= beta_0 + 32 |delta| B1 (|delta| <= 1/32)
+    let mut err = (row.beta0 + 32.0 * ad * row.b1) * (1.0 + 2f64.powi(-40));
     if lo != 0.0 {
         // moving the argument by eta changes 1/Gamma by <= 1.01 |eta| Psi0 |1/Gamma|,
         // |psi(t)| <= 1/|t| + 1.97 on the segment (|t| >= |x0| - |lo| - |eta|)
