@@ -7,6 +7,8 @@ error bound, ``prec=`` returns certified arbitrary-precision balls)::
     hyp1f2(a, b1, b2, z)      1F2(a; b1, b2; z)
     hyp2f1(a, b, c, z)        2F1(a, b; c; z), z <= 1
     meijer_g_k(k, y)          the Eq. 12 Meijer-G factor, 0 < y <= 1
+    meijer_g_k_family(kmax, y), hyp1f2_model_family(kmax, z)
+                              all k = 0..kmax at one argument, float64 with bounds
     u_wave(a, zeta, amp, x)   wave displacement u_w (Eq. 12)
     du_wave(a, zeta, amp, x)  its gradient (Eq. 11b)
 
@@ -34,7 +36,7 @@ from ._model import (
     state,
     sweep,
 )
-from ._special import bessel_j, du_wave, hyp1f2, hyp2f1, meijer_g_k, u_wave
+from ._special import bessel_j, du_wave, hyp1f2, hyp1f2_model_family, hyp2f1, meijer_g_k, meijer_g_k_family, u_wave
 
 __version__ = "0.1.0"
 
@@ -50,6 +52,8 @@ __all__ = [
     "hyp1f2",
     "hyp2f1",
     "meijer_g_k",
+    "meijer_g_k_family",
+    "hyp1f2_model_family",
     "u_wave",
     "du_wave",
     "run_summary",

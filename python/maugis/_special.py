@@ -33,7 +33,7 @@ import numpy as np
 
 from . import _maugis as _ext
 
-__all__ = ["bessel_j", "hyp1f2", "hyp2f1", "meijer_g_k", "u_wave", "du_wave"]
+__all__ = ["bessel_j", "hyp1f2", "hyp2f1", "meijer_g_k", "u_wave", "du_wave", "hyp1f2_model_family", "meijer_g_k_family"]
 
 _INT64_MAX = np.iinfo(np.int64).max
 _LOG10_2 = math.log10(2.0)
@@ -187,6 +187,29 @@ def hyp2f1(a, b, c, z, *, bounded=False, prec=None, output="mpf", digits=None):
 def meijer_g_k(k, y, *, bounded=False, prec=None, output="mpf", digits=None):
     """The Eq. 12 Meijer-G factor ``Re G^{2,2}_{3,3}(-y | 0, 1/2-k, 1; 0, 0, -k-1)``, ``0 < y <= 1``."""
     return _call("meijer_g_k", ("k", "y"), ("int", "real"), (k, y), bounded, prec, output, digits, _ext.meijer_g_k_f64)
+
+
+def hyp1f2_model_family(kmax, z):
+    """The model family ``1F2(1/2; k+1, k+3/2; z)`` for ``k = 0..kmax`` at one float64 ``z``
+    (``z = -s**2`` in Eq. 12), in float64 with proven bounds.
+
+    Returns ``(value, err)`` float64 arrays of length ``kmax + 1`` with
+    ``|exact - value| <= err <= 1e-14 |value|`` for ``z`` as given; a downward
+    recurrence in k, each value it cannot certify recomputed on its own.
+    """
+    return _ext.family_f64("hyp1f2", _family_order(kmax), float(z))
+
+
+def meijer_g_k_family(kmax, y):
+    """The Eq. 12 Meijer-G factor ``G(k, y)`` for ``k = 0..kmax`` at one float64 ``0 < y <= 1``,
+    in float64 with proven bounds: ``(value, err)`` arrays as :func:`hyp1f2_model_family`."""
+    return _ext.family_f64("meijer_g_k", _family_order(kmax), float(y))
+
+
+def _family_order(kmax):
+    if isinstance(kmax, bool) or not isinstance(kmax, (int, np.integer)):
+        raise ValueError(f"kmax must be a non-negative integer (got {kmax!r})")
+    return int(kmax)
 
 
 def u_wave(a, zeta, amp, x, *, bounded=False, prec=None, output="mpf", digits=None):

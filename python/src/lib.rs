@@ -31,9 +31,9 @@ use maugis::ball::{eval_at_decimals, Decimal};
 use maugis::rug::{Float, Integer, Rational};
 use maugis_solver::run::{simulate, SimulationSpec};
 use maugis::special::bessel_j::{bessel_j, bessel_j_ball_mp, bessel_j_bounded};
-use maugis::special::hyp1f2::{hyp1f2, hyp1f2_ball_mp, hyp1f2_bounded};
+use maugis::special::hyp1f2::{hyp1f2, hyp1f2_ball_mp, hyp1f2_bounded, hyp1f2_model_family_f64};
 use maugis::special::hyp2f1::{hyp2f1, hyp2f1_ball_mp, hyp2f1_bounded};
-use maugis::special::meijer_g::{meijer_g_k, meijer_g_k_ball_mp, meijer_g_k_bounded};
+use maugis::special::meijer_g::{meijer_g_k, meijer_g_k_ball_mp, meijer_g_k_bounded, meijer_g_k_family_f64};
 use maugis::{Ball, Bounded, Error};
 
 /// Arrays shorter than this are evaluated on the calling thread: below it,
@@ -180,6 +180,23 @@ fn meijer_g_k_f64<'py>(py: Python<'py>, k: PyReadonlyArray1<'py, i64>, y: PyRead
         |i| meijer_g_k_bounded(order_u32(k[i])?, y[i]),
         |i| format!("meijer_g_k(k={}, y={:?})", k[i], y[i]),
     )
+}
+
+/// A model family over `k = 0..=kmax` at one argument (`"hyp1f2"`: the
+/// `1F2(1/2; k+1, k+3/2; z)` family; `"meijer_g_k"`: `G(k, y)`), as the
+/// `(value, err)` pair of float64 arrays, with the GIL released.
+#[pyfunction]
+fn family_f64<'py>(py: Python<'py>, function: &str, kmax: i64, arg: f64) -> PyResult<Bound<'py, PyAny>> {
+    let kmax = order_u32(kmax).map_err(lib_error)?;
+    let family = match function {
+        "hyp1f2" => hyp1f2_model_family_f64,
+        "meijer_g_k" => meijer_g_k_family_f64,
+        _ => return Err(PyValueError::new_err(format!("unknown family {function:?}"))),
+    };
+    let out = py.detach(|| family(kmax, arg)).map_err(lib_error)?;
+    let (v, err): (Vec<f64>, Vec<f64>) = out.into_iter().map(|b| (b.value, b.err)).unzip();
+    let pair = PyTuple::new(py, [PyArray1::from_vec(py, v).into_any(), PyArray1::from_vec(py, err).into_any()])?;
+    Ok(pair.into_any())
 }
 
 // ---------------------------------------------------------------- arbitrary precision
@@ -507,6 +524,7 @@ fn _maugis(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(bessel_j_f64, m)?)?;
     m.add_function(wrap_pyfunction!(real4_f64, m)?)?;
     m.add_function(wrap_pyfunction!(meijer_g_k_f64, m)?)?;
+    m.add_function(wrap_pyfunction!(family_f64, m)?)?;
     m.add_function(wrap_pyfunction!(eval_mp, m)?)?;
     m.add_function(wrap_pyfunction!(curve_summary_json, m)?)?;
     m.add_function(wrap_pyfunction!(states_json, m)?)?;

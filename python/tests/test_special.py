@@ -121,6 +121,41 @@ def test_meijer_g_k_vs_mpmath(k):
     assert np.all(err <= 1e-14 * scale)
 
 
+@pytest.mark.parametrize("z", [-0.25, -400.0, -1225.0])
+def test_hyp1f2_model_family_encloses_mpmath(z):
+    kmax = 300
+    val, err = maugis.hyp1f2_model_family(kmax, z)
+    assert val.shape == err.shape == (kmax + 1,)
+    assert np.all(err <= 1e-14 * np.abs(val))
+    for k in (0, 1, 6, 7, 50, kmax):
+        ref = mpmath.hyp1f2(mp(1) / 2, k + 1, k + mp(3) / 2, mp(z))
+        assert abs(mp(float(val[k])) - ref) <= mp(float(err[k])), (k, z)
+
+
+@pytest.mark.parametrize("y", [0.015625, 0.25, 0.875])
+def test_meijer_g_k_family_encloses_mpmath(y):
+    val, err = maugis.meijer_g_k_family(10, y)
+    assert val.shape == (11,) and np.all(err <= 1e-14 * np.abs(val))
+    for k in (0, 1, 3, 10):
+        assert abs(mp(float(val[k])) - meijer_ref(k, y)) <= mp(float(err[k])), (k, y)
+
+
+@pytest.mark.parametrize(
+    "call",
+    [
+        lambda: maugis.meijer_g_k_family(10, 0.0),
+        lambda: maugis.meijer_g_k_family(10, float("nan")),
+        lambda: maugis.meijer_g_k_family(-1, 0.5),
+        lambda: maugis.hyp1f2_model_family(1.5, -4.0),
+        lambda: maugis.hyp1f2_model_family(10, float("inf")),
+        lambda: maugis.hyp1f2_model_family(10**7, -4.0),
+    ],
+)
+def test_families_reject_bad_input(call):
+    with pytest.raises(ValueError):
+        call()
+
+
 # ---------------------------------------------------------------- wave displacement
 
 
