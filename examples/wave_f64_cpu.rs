@@ -1,7 +1,8 @@
 //! CPU time per value of the f64 wave functions over the issue-8 domain
 //! (zeta = 9/8, x/a in [1, 3], 64 points per contact, a in {1, 3, 6}): from
 //! scratch (`u_wave_bounded`) and with the contact precomputed
-//! (`WaveBessel::eval_bounded`, `WaveBessel::eval`). Thread CPU time from
+//! (`WaveBessel::eval_bounded`, `WaveBessel::eval`, and the batch
+//! `WaveBessel::eval_bounded_into` over the 64 points). Thread CPU time from
 //! /proc/thread-self/schedstat (Linux), so that a loaded machine inflates it
 //! less than wall time; criterion's `wave_f64_domain` group gives wall times.
 //!
@@ -30,6 +31,10 @@ fn main() {
             let t0 = cpu_ns();
             for _ in 0..4000 { for &x in &xs { let r = wb.eval(x).unwrap(); s += r.0; } }
             println!("a={a} precomp estimate {:.3} us/value (CPU)", (cpu_ns() - t0) / 256000.0 * 1e-3);
+            let mut out = wb.eval_bounded_many(&xs).unwrap();
+            let t0 = cpu_ns();
+            for _ in 0..4000 { wb.eval_bounded_into(&xs, &mut out).unwrap(); s += out[7].0.value; }
+            println!("a={a} precomp bounded, batch of 64 {:.3} us/value (CPU)", (cpu_ns() - t0) / 256000.0 * 1e-3);
         }
     }
     if s == 0.1 { println!("{s}"); }

@@ -110,6 +110,25 @@ fn batch_equals_one_by_one() {
     }
 }
 
+/// The into-slice batch: same results as one call per point, including a
+/// point beyond the native region (the MP fallback) and the contact edge;
+/// a length mismatch and a bad `x` are typed errors that write nothing.
+#[test]
+fn batch_into_a_slice() {
+    let wb = WaveBessel::new(6.0, 1.125, 0.5).unwrap();
+    let xs = [6.0, f64::from_bits(6.0f64.to_bits() + 1), 7.3, 12.0, 18.0, 6.0 * 4.0];
+    let mut out = vec![(Bounded { value: 0.0, err: 0.0 }, Bounded { value: 0.0, err: 0.0 }); xs.len()];
+    wb.eval_bounded_into(&xs, &mut out).unwrap();
+    for (i, &x) in xs.iter().enumerate() {
+        assert_eq!(out[i], wb.eval_bounded(x).unwrap(), "x={x}");
+    }
+    let mut short = vec![out[0]; 2];
+    assert!(wb.eval_bounded_into(&xs, &mut short).is_err());
+    let before = out.clone();
+    assert!(wb.eval_bounded_into(&[7.0, 5.0, 8.0, 9.0, 10.0, 11.0], &mut out).is_err());
+    assert_eq!(out, before);
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
 

@@ -512,6 +512,9 @@ fn ln_factorial(n: f64) -> f64 {
     n * n.ln() - n + 0.5 * (2.0 * std::f64::consts::PI * n).ln() + 1.0 / (12.0 * n)
 }
 
+/// Placeholder entries of the batch outputs (every one is overwritten).
+const UNSET_PAIR: (Bounded, Bounded) = (Bounded { value: 0.0, err: f64::INFINITY }, Bounded { value: 0.0, err: f64::INFINITY });
+
 /// The Bessel form at one contact size: `D = 2 pi a/zeta` and the sequence
 /// `J_n(D)` are computed once (double-double Miller recurrence), after which
 /// `u_w(x)`, `du_w/dx` and the wave-traction integral cost one short sum each.
@@ -625,9 +628,21 @@ impl WaveBessel {
     }
 
     /// [`WaveBessel::eval`] over a slice of `x` (one contact, many points: the
-    /// solver's case). Fails on the first invalid `x`, naming it.
+    /// solver's case), the same values as one call per point, computed in one
+    /// loop. Fails on the first invalid `x`, naming it.
     pub fn eval_many(&self, xs: &[f64]) -> Result<Vec<(f64, f64)>> {
-        xs.iter().map(|&x| self.eval(x)).collect()
+        xs.iter().try_for_each(|&x| self.check_x(x))?;
+        let Some(c) = self.native_data() else {
+            return Ok(xs.iter().map(|&x| self.eval_unchecked(x)).collect());
+        };
+        let mut out = vec![UNSET_PAIR; xs.len()];
+        let mut refused = Vec::new();
+        c.eval_bounded_batch(self.a, self.amp, xs, &mut out, &mut refused);
+        let mut values: Vec<(f64, f64)> = out.iter().map(|(u, du)| (u.value, du.value)).collect();
+        for i in refused {
+            values[i] = self.eval_unchecked(xs[i]);
+        }
+        Ok(values)
     }
 
     /// `(u_w(x), du_w/dx)` with proven error bounds for the f64 inputs as given
@@ -643,9 +658,38 @@ impl WaveBessel {
         wave_bounded_fallback(self.a, self.zeta, self.amp, x)
     }
 
-    /// [`WaveBessel::eval_bounded`] over a slice of `x`.
+    /// [`WaveBessel::eval_bounded`] over a slice of `x` (one contact, many
+    /// points: the solver's case), the same values and bounds as one call per
+    /// point, computed in one loop. Fails on the first invalid `x`, naming it.
     pub fn eval_bounded_many(&self, xs: &[f64]) -> Result<Vec<(Bounded, Bounded)>> {
-        xs.iter().map(|&x| self.eval_bounded(x)).collect()
+        let mut out = vec![UNSET_PAIR; xs.len()];
+        self.eval_bounded_into(xs, &mut out)?;
+        Ok(out)
+    }
+
+    /// [`WaveBessel::eval_bounded_many`] into the caller's slice, without
+    /// allocating (`out.len()` must equal `xs.len()`). Every `x` is checked
+    /// before anything is written; an error from the MP fallback (`x/a > 25/7`)
+    /// can leave `out` partly written.
+    pub fn eval_bounded_into(&self, xs: &[f64], out: &mut [(Bounded, Bounded)]) -> Result<()> {
+        if out.len() != xs.len() {
+            return Err(Error::Domain {
+                what: format!("eval_bounded_into: {} points but room for {} results (make the lengths equal)", xs.len(), out.len()),
+            });
+        }
+        xs.iter().try_for_each(|&x| self.check_x(x))?;
+        let Some(c) = self.certified() else {
+            for (o, &x) in out.iter_mut().zip(xs) {
+                *o = wave_bounded_fallback(self.a, self.zeta, self.amp, x)?;
+            }
+            return Ok(());
+        };
+        let mut refused = Vec::new();
+        c.eval_bounded_batch(self.a, self.amp, xs, out, &mut refused);
+        for i in refused {
+            out[i] = wave_bounded_fallback(self.a, self.zeta, self.amp, xs[i])?;
+        }
+        Ok(())
     }
 
     fn check_x(&self, x: f64) -> Result<()> {

@@ -776,6 +776,30 @@ impl CertifiedBessel {
         self.eval_with::<Dekker>(a, amp, x)
     }
 
+    /// [`CertifiedBessel::eval_bounded`] at every `x` of `xs` (each `>= a`, finite:
+    /// the caller's) into `out[i]`, in one loop compiled for the CPU's fused
+    /// multiply-add (no per-point dispatch). The indices where the native path
+    /// does not certify (`x/a > 25/7`) are pushed to `refused` (their `out`
+    /// entries are left as they were). `out.len() == xs.len()`.
+    pub(crate) fn eval_bounded_batch(&self, a: f64, amp: f64, xs: &[f64], out: &mut [(Bounded, Bounded)], refused: &mut Vec<usize>) {
+        #[cfg(target_arch = "x86_64")]
+        if has_fma() {
+            // SAFETY: the CPU supports FMA (checked just above).
+            return unsafe { eval_batch_fused(self, a, amp, xs, out, refused) };
+        }
+        self.eval_batch_with::<Dekker>(a, amp, xs, out, refused)
+    }
+
+    #[inline(always)]
+    fn eval_batch_with<P: WaveKernel>(&self, a: f64, amp: f64, xs: &[f64], out: &mut [(Bounded, Bounded)], refused: &mut Vec<usize>) {
+        for (i, (&x, o)) in xs.iter().zip(out.iter_mut()).enumerate() {
+            match self.eval_with::<P>(a, amp, x) {
+                Some(r) => *o = r,
+                None => refused.push(i),
+            }
+        }
+    }
+
     #[inline(always)]
     fn eval_with<P: WaveKernel>(&self, a: f64, amp: f64, x: f64) -> Option<(Bounded, Bounded)> {
         let rm1 = BoundedDd { v: Dd::diff(x, a), e: 0.0 }; // x - a, exact
@@ -844,6 +868,13 @@ fn pow_int(x: f64, mut n: u32) -> f64 {
 #[target_feature(enable = "fma")]
 unsafe fn native_fused(a: f64, zeta: f64) -> Option<CertifiedBessel> {
     CertifiedBessel::native::<crate::ball::Fused>(a, zeta)
+}
+
+/// [`CertifiedBessel::eval_bounded_batch`] compiled with the `fma` target feature.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "fma")]
+unsafe fn eval_batch_fused(c: &CertifiedBessel, a: f64, amp: f64, xs: &[f64], out: &mut [(Bounded, Bounded)], refused: &mut Vec<usize>) {
+    c.eval_batch_with::<crate::ball::Fused>(a, amp, xs, out, refused)
 }
 
 /// [`CertifiedBessel::eval_with`] compiled with the `fma` target feature.
@@ -964,3 +995,4 @@ mod tests {
         assert!(c.eval_with::<Dekker>(2.0, 1.0, 2.0 * 3.6).is_none());
     }
 }
+
