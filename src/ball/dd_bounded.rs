@@ -116,6 +116,29 @@ impl BoundedDd {
         BoundedDd { v: self.v.mul_p::<P>(o.v), e: ma * o.e + mb * self.e + self.e * o.e + C_MUL * ma * mb }
     }
 
+    /// `self * c - z` in one step (a three-term recurrence's update), with the
+    /// product strategy `P`: `p + pe = c.hi y.hi` exactly, `s + se = p - z.hi`
+    /// exactly, then the low parts `se + (pe + (c.hi y.lo + c.lo y.hi) - z.lo)`
+    /// summed in f64 and one quick_two_sum. Error, with `|c| = |c.hi| + |c.lo|`:
+    /// the dropped `c.lo y.lo` (`<= u^2 |c| |y|`), the two low products'
+    /// roundings (`<= 2 u^2 |c| |y|`), at most four additions on the five low
+    /// terms (`|se| <= u (|p| + |z.hi|)`, `|pe| <= u |p|`, the two products, `|z.lo|`:
+    /// in all `<= 1.0001 u (4 |c| |y| + 2 |z|)`, so `gamma_4` of that), and the final
+    /// quick_two_sum (`<= u^2 (|c| |y| + |z|)` when it is not exact): under
+    /// `20 u^2 |c| |y| + 9 u^2 |z|`, charged `24 u^2 |c| |y| + 16 u^2 |z|`; plus the propagated
+    /// `|c| e_y + |y| e_c + e_c e_y + e_z`.
+    #[inline(always)]
+    pub(crate) fn mul_sub_p<P: ExactProduct>(self, c: BoundedDd, z: BoundedDd) -> BoundedDd {
+        let (y, cv, zv) = (self.v, c.v, z.v);
+        let (p, pe) = P::two_prod(cv.hi, y.hi);
+        let (s, se) = super::double_double::two_sum(p, -zv.hi);
+        let lo = se + ((pe + (cv.hi * y.lo + cv.lo * y.hi)) - zv.lo);
+        let (hi, lo) = super::double_double::quick_two_sum(s, lo);
+        let (my, mc, mz) = (self.mag(), c.mag(), z.mag());
+        let e = mc * self.e + my * c.e + c.e * self.e + z.e + U2 * (24.0 * mc * my + 16.0 * mz);
+        BoundedDd { v: Dd { hi, lo }, e }
+    }
+
     /// `self * b` for an exact f64 `b`.
     #[inline]
     pub(crate) fn mul_f64(self, b: f64) -> BoundedDd {
@@ -204,6 +227,17 @@ mod tests {
         let s = r.div_f64_p::<Dekker>(7.0).mul_f64(-3.0).neg();
         let sf = Float::with_val(300, exact_of(r.v) * 3u32) / 7u32;
         assert!(holds(s, &sf));
+        // c y - z with and without cancellation
+        for &(cy, zz) in &[(1.0 / 3.0, 0.2), (0.1, 0.1 * (1.0 + 2f64.powi(-50)))] {
+            let c = BoundedDd::exact(cy).div_f64_p::<Dekker>(7.0);
+            let y = BoundedDd::exact(7.0 + 2f64.powi(-45)).div_f64_p::<Dekker>(3.0);
+            let z = BoundedDd::exact(zz).div_f64_p::<Dekker>(3.0);
+            let r = y.mul_sub_p::<Dekker>(c, z);
+            let exact = exact_of(c.v) * exact_of(y.v) - exact_of(z.v);
+            let slack = c.mag() * y.e + y.mag() * c.e + c.e * y.e + z.e;
+            let diff = Float::with_val(300, exact_of(r.v) - &exact).abs();
+            assert!(diff <= r.e && r.e <= slack + 1e-30, "{r:?}");
+        }
         let b = BoundedDd::exact(0.1).div_f64_p::<Dekker>(3.0).finish().unwrap();
         let e = Float::with_val(300, 0.1f64) / 3u32;
         assert!(Float::with_val(300, &e - b.value).abs() <= b.err);

@@ -36,7 +36,10 @@
 //!   energy-norm bound does not grow like the triangle inequality (which would
 //!   add `e^{0.47 D}`), moved to `D = x + delta` by Taylor:
 //!   `J_k(D) = J_k(x) + delta (J_{k-1}(x) - J_{k+1}(x))/2 + R`, `|R| <= delta^2/2`
-//!   (`|J_k''| <= 1` [DLMF 10.14.1]); for `D < 25` the downward recurrence runs to 0.
+//!   (`|J_k''| <= 1` [DLMF 10.14.1]; the Taylor term, below `ulp(D)`, in f64
+//!   with its rounding bounded); for `D < 25` the downward recurrence runs to 0.
+//!   The downward step `J_{k-1} = c_k J_k - J_{k+1}`, `c_k = 2k/D`, is one fused
+//!   `BoundedDd::mul_sub_p` (error model in `crate::ball::dd_bounded`).
 //!
 //! Every step is a `BoundedDd` operation (the error model of
 //! `crate::ball::dd_bounded`); the data are accepted when every `J_k` is known
@@ -633,21 +636,32 @@ fn native_sequence<P: ExactProduct>(d: BoundedDd, top: usize) -> Option<Vec<Boun
     }
     let inv = BoundedDd::ONE.div(d)?;
     for k in (nf + 1..=m).rev() {
-        y[k - 1] = y[k].mul_p::<P>(inv).mul_f64_p::<P>((2 * k) as f64).sub(y[k + 1]);
+        // the factor 2k/D off the recurrence's dependency chain
+        let c = inv.mul_f64_p::<P>((2 * k) as f64);
+        y[k - 1] = y[k].mul_sub_p::<P>(c, y[k + 1]);
     }
     if nf > 0 {
         let (j0, j1) = bessel_j01::<P>(x)?;
         let mut fw = vec![BoundedDd::ZERO; nf + 1];
         forward_sequence::<P>(nf as u64, x, j0, j1, &mut fw)?;
-        let delta = BoundedDd { v: Dd::from_f64(d.v.lo), e: d.e };
-        let delta_up = delta.mag() + delta.e;
-        let rem = 0.5 * delta_up * delta_up * (1.0 + 4.0 * U);
+        // D = x + delta + eps, delta = d.lo (an f64), |eps| <= e_D. The Taylor
+        // term is tiny (|delta| <= ulp(x)/2), so it is formed in f64:
+        // g = fl(fl(b.hi - c.hi) 0.5) with b = J_{k-1}(x) (J_{-1} = -J_1), c = J_{k+1}(x)
+        // errs from J_k'(x) = (b - c)/2 by E_g = (e_b + e_c + |b.lo| + |c.lo| + u |b.hi - c.hi|)/2,
+        // and corr = fl(delta g) from (delta + eps) J_k' by |delta| E_g + e_D + u |corr|
+        // (|J_k'| <= 1); the remainder adds (|delta| + e_D)^2/2.
+        let delta = d.v.lo;
+        let delta_up = delta.abs() + d.e;
+        let rem = 0.5 * delta_up * delta_up * (1.0 + 4.0 * U) + d.e;
         for k in 0..nf {
             let below = if k == 0 { fw[1].neg() } else { fw[k - 1] };
-            let deriv = below.sub(fw[k + 1]).mul_f64_p::<P>(0.5);
-            let mut v = fw[k].add(delta.mul_p::<P>(deriv));
-            v.e += rem;
-            y[k] = v;
+            let (b, c) = (below, fw[k + 1]);
+            let diff = b.v.hi - c.v.hi;
+            let g = diff * 0.5;
+            let e_g = (b.e + c.e + b.v.lo.abs() + c.v.lo.abs() + U * diff.abs()) * 0.5;
+            let corr = delta * g;
+            let e_corr = (delta.abs() * e_g + U * corr.abs() + rem) * (1.0 + 4.0 * U);
+            y[k] = fw[k].add(BoundedDd { v: Dd::from_f64(corr), e: e_corr });
         }
     }
     Some(y)
@@ -693,7 +707,7 @@ impl CertifiedBessel {
         if !j.iter().all(|v| v.e <= NATIVE_J_ERR_MAX) {
             return None;
         }
-        Some(Self::from_sequence(a, d, &j, n_terms, tail0, tail2))
+        Some(Self::from_sequence::<P>(a, d, &j, n_terms, tail0, tail2))
     }
 
     /// The MP route: `J_n(D)` as balls at [`CERT_PREC`] bits
@@ -711,7 +725,7 @@ impl CertifiedBessel {
             v.add_error_mag(d.rad_mag());
         }
         let jt: Vec<BoundedDd> = j.iter().map(tr_from_ball).collect();
-        Ok(Self::from_sequence(
+        Ok(Self::from_sequence::<Dekker>(
             a,
             tr_from_ball(&d),
             &jt,
@@ -721,42 +735,45 @@ impl CertifiedBessel {
         ))
     }
 
-    /// The Horner coefficients and their bounds from `J_0, ..., J_{2N+1}`.
-    fn from_sequence(a: f64, d: BoundedDd, jt: &[BoundedDd], n_terms: usize, tail0: f64, tail2: f64) -> CertifiedBessel {
-        let sign = |n: usize| if n % 2 == 1 { 1.0 } else { -1.0 };
-        let u: Vec<BoundedDd> = (0..n_terms).map(|i| jt[2 * i + 2].mul_f64(sign(i + 1))).collect();
-        let mut du = vec![BoundedDd::ZERO; n_terms];
-        let mut acc = BoundedDd::ZERO;
-        for i in (0..n_terms).rev() {
-            acc = acc.add(jt[2 * (i + 1)].mul_f64(sign(i + 1) * (i + 1) as f64));
-            du[i] = acc;
-        }
-        let err = |c: &BoundedDd| (c.e + GAMMA4 * (c.v.lo.abs() + 1.0001 * U * c.v.hi.abs())) * (1.0 + 4.0 * U);
-        let mut suffix = vec![0.0f64; n_terms + 1];
-        let (mut su, mut sd) = (0.0f64, 0.0f64);
-        for i in (0..n_terms).rev() {
-            su = (su + u[i].mag() + err(&u[i])) * (1.0 + 4.0 * U);
-            sd = (sd + du[i].mag() + err(&du[i])) * (1.0 + 4.0 * U);
-            suffix[i] = su.max(sd);
-        }
+    /// The Horner coefficients and their bounds from `J_0, ..., J_{2N+1}`, in
+    /// one pass from the top: `u_{i+1} = (-1)^i J_{2i+2}` (a sign flip, exact),
+    /// `T_i = T_{i+1} + (i + 1) u_{i+1}`, the suffix sums of `|c| + e` over both
+    /// sums, and from them the truncation table `lambda`.
+    #[inline(always)]
+    fn from_sequence<P: ExactProduct>(
+        a: f64,
+        d: BoundedDd,
+        jt: &[BoundedDd],
+        n_terms: usize,
+        tail0: f64,
+        tail2: f64,
+    ) -> CertifiedBessel {
+        let err = |c: BoundedDd| (c.e + GAMMA4 * (c.v.lo.abs() + 1.0001 * U * c.v.hi.abs())) * (1.0 + 4.0 * U);
         let d_lo = d.v.hi.abs() - d.v.lo.abs() - d.e;
         let horner_tol = HORNER_TAIL_REL * d_lo.clamp(0.0, 1.0);
         let ln_tol = ln_lower(horner_tol);
-        let lambda = (0..n_terms)
-            .map(|i| {
-                let s = suffix[i + 1] * (1.0 + 1.0 / (1u64 << 40) as f64);
-                if s > 0.0 {
-                    ln_tol - ln_upper(s)
-                } else {
-                    f64::INFINITY
-                }
-            })
-            .collect();
+        let mut coef = vec![[0.0f64; 6]; n_terms];
+        let mut lambda = vec![f64::INFINITY; n_terms];
+        let mut t_acc = BoundedDd::ZERO;
+        // suffix_{i+1} = max over both sums of sum_{i' > i} (|c_i'| + e_i'), rounded up
+        let (mut su, mut sd) = (0.0f64, 0.0f64);
+        for i in (0..n_terms).rev() {
+            let suffix = su.max(sd) * (1.0 + 1.0 / (1u64 << 40) as f64);
+            if suffix > 0.0 {
+                lambda[i] = ln_tol - ln_upper(suffix);
+            }
+            let c = if i % 2 == 0 { jt[2 * i + 2] } else { jt[2 * i + 2].neg() };
+            t_acc = t_acc.add(c.mul_f64_p::<P>((i + 1) as f64));
+            let (eu, et) = (err(c), err(t_acc));
+            coef[i] = [c.v.hi, t_acc.v.hi, c.v.lo, t_acc.v.lo, eu, et];
+            su = (su + c.mag() + eu) * (1.0 + 4.0 * U);
+            sd = (sd + t_acc.mag() + et) * (1.0 + 4.0 * U);
+        }
         CertifiedBessel {
             one_minus_j0: BoundedDd::ONE.sub(jt[0]),
-            d_j1: d.mul(jt[1]),
-            inv_a: BoundedDd::ONE.div_f64_p::<Dekker>(a),
-            coef: u.iter().zip(du.iter()).map(|(c, t)| [c.v.hi, t.v.hi, c.v.lo, t.v.lo, err(c), err(t)]).collect(),
+            d_j1: d.mul_p::<P>(jt[1]),
+            inv_a: BoundedDd::ONE.div_f64_p::<P>(a),
+            coef,
             lambda,
             horner_tol,
             n_terms,
@@ -995,4 +1012,5 @@ mod tests {
         assert!(c.eval_with::<Dekker>(2.0, 1.0, 2.0 * 3.6).is_none());
     }
 }
+
 
