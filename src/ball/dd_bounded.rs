@@ -139,7 +139,8 @@ impl BoundedDd {
         BoundedDd { v: Dd { hi, lo }, e }
     }
 
-    /// `self * b` for an exact f64 `b`.
+    /// `self * b` for an exact f64 `b` (Dekker's product; the tests' shorthand).
+    #[cfg(test)]
     #[inline]
     pub(crate) fn mul_f64(self, b: f64) -> BoundedDd {
         self.mul_f64_p::<Dekker>(b)

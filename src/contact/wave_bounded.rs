@@ -381,7 +381,9 @@ impl CompArg {
 /// `~ top u^2 H`, far below `E`.)
 #[inline(always)]
 fn comp_horner2<P: ExactProduct>(x: CompArg, coef: &[[f64; 6]]) -> (BoundedDd, BoundedDd) {
-    let (last, rest) = coef.split_last().expect("at least one coefficient");
+    let Some((last, rest)) = coef.split_last() else {
+        return (BoundedDd::exact(0.0), BoundedDd::exact(0.0)); // the empty sums
+    };
     let (mut uh, mut ul, mut ue) = (last[0], last[2], last[4]);
     let (mut dh, mut dl, mut de) = (last[1], last[3], last[5]);
     let (mut hmax, mut lmax) = (0.0f64, 0.0f64);
@@ -425,7 +427,9 @@ fn horner2_finish(x: CompArg, steps: u32, hmax: f64, lmax: f64, u: [f64; 3], du:
 #[inline]
 fn comp_horner2_fma(x: CompArg, coef: &[[f64; 6]]) -> (BoundedDd, BoundedDd) {
     use std::arch::x86_64::*;
-    let (last, rest) = coef.split_last().expect("at least one coefficient");
+    let Some((last, rest)) = coef.split_last() else {
+        return (BoundedDd::exact(0.0), BoundedDd::exact(0.0)); // the empty sums
+    };
     // SAFETY: each row has 6 f64; the unaligned loads read rows [0..2], [2..4], [4..6].
     let load = |row: &[f64; 6], k: usize| unsafe { _mm_loadu_pd(row.as_ptr().add(k)) };
     let (mut h, mut l, mut e) = (load(last, 0), load(last, 2), load(last, 4));
