@@ -27,7 +27,7 @@
 //! `k <= 1000`; there the parameters grow with `k` and the cancellation shrinks
 //! (`sum |t_n|/|F| ~ e^{2s} s^{-2k-3/2}` at `z = -s^2`), so large `k` is cheap: the
 //! f64 series certifies `1e-14` for about `k >= s`, the double-word series
-//! ([`super::hyp1f2_dd`]) from `k >= 7` at `s = 35` (every `k` at `s <= 15`).
+//! (`hyp1f2_dd.rs`) from `k >= 7` at `s = 35` (every `k` at `s <= 15`).
 //!
 //! # Accuracy
 //!
@@ -56,7 +56,7 @@ use crate::special::pfq::{hyp_pfq, hyp_pfq_mp};
 /// The seed's family `1F2(1/2; k+1, k+3/2; -s)` (Eq. 11b, 12, C.39) at working
 /// precision `wp`, for `s >= 0` given as a ball.
 ///
-/// It is `Phi(2k+1)` of [`model_phi_series`]: the term ratio is the rational
+/// It is `Phi(2k+1)` of `model_phi_series`: the term ratio is the rational
 /// `-s (2n+1)/((k+1+n)(2k+3+2n)(n+1))`, so each term costs one ball
 /// multiplication and two exact-integer scalings instead of the generic core's
 /// parameter arithmetic. **Tail bound**: the ratio's modulus decreases in `n`,
@@ -269,7 +269,7 @@ pub fn hyp1f2(a: f64, b1: f64, b2: f64, z: f64) -> Result<f64> {
     hyp_pfq(&[a], &[b1, b2], z)
 }
 
-/// The f64 series, else the double-double series ([`super::hyp1f2_dd`]), if
+/// The f64 series, else the double-double series (`hyp1f2_dd.rs`), if
 /// either bound is at most [`NATIVE_REL_TOL`] relative.
 fn hyp1f2_native_or_dd(a: f64, b1: f64, b2: f64, z: f64) -> Option<Bounded> {
     let accept = |b: Bounded| (b.value.is_finite() && b.err <= NATIVE_REL_TOL * b.value.abs()).then_some(b);

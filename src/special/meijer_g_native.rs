@@ -35,7 +35,7 @@
 //! the f64 sums miss that (next to the zero of `G(k, .)`, `k >= 2`, where `B`
 //! cancels) and for `Y_NATIVE_MAX < y < 1` (the direct series converges slowly;
 //! the near-one expansion cancels by `e^{k w}`), the double-double paths of
-//! [`super::meijer_g_dd`] run (0.5-4 us). Left to MP (counted by the caller):
+//! `meijer_g_dd.rs` run (0.5-4 us). Left to MP (counted by the caller):
 //! `k > TABLE_K_MAX`, and the one or two f64 `y` next to a zero of `G(k, .)`
 //! (`|G| <~ 1e-16`), where even the double-double bound (absolute, `~1e-30`)
 //! is not `1e-14` relative.
@@ -220,7 +220,7 @@ fn s_bounded(k: u32, y: f64) -> Option<Val> {
 /// Order: the f64 sums (`y <= Y_NATIVE_MAX`, or the value at `y = 1`); if their
 /// bound misses `rel_tol` (next to the zero of `G(k, .)`), the double-double
 /// direct formula; for `Y_NATIVE_MAX < y < 1` the double-double near-one
-/// expansion ([`super::meijer_g_dd`]).
+/// expansion (`meijer_g_dd.rs`).
 pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Option<Bounded> {
     if k > TABLE_K_MAX {
         return None;

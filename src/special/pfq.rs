@@ -514,14 +514,14 @@ pub(crate) fn contains_pole(x: &Ball, limit: Option<u64>) -> Option<i64> {
 /// Certified `pFq(a; b; z)` over balls of inputs (Arb's convention): the result
 /// contains the function at every point of the balls.
 ///
-/// **Argument.** [`pfq_series`] runs in ball arithmetic and its tail bound uses
+/// **Argument.** `pfq_series` runs in ball arithmetic and its tail bound uses
 /// the balls' upper ends of `|z|` and the numerators and the lower ends of the
 /// denominators, so it bounds the tail at every point of the balls; every term
 /// therefore encloses the term at every point, and so does the sum. Exact
 /// inputs go to [`hyp_pfq_mp`]. The inputs are rounded to the working precision
 /// first ([`Ball::set_prec`] adds the rounding to the radius). The working
 /// precision is raised while that still halves the radius
-/// ([`crate::special::ziv_ball_inputs`]); past that the input radius dominates
+/// (`crate::special::ziv_ball_inputs`); past that the input radius dominates
 /// and the (enclosing) ball is returned.
 ///
 /// **Edges.** A denominator ball that contains a non-positive integer the
