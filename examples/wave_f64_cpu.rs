@@ -8,7 +8,7 @@
 //!
 //!     cargo run --release --example wave_f64_cpu [s|p]    (s: scratch only, p: precomputed only)
 
-use maugis::contact::displacement::{u_wave_bounded, WaveBessel};
+use maugis::contact::displacement::{du_wave, u_wave, u_wave_bounded, WaveBessel};
 fn cpu_ns() -> f64 {
     std::fs::read_to_string("/proc/thread-self/schedstat").unwrap().split_whitespace().next().unwrap().parse().unwrap()
 }
@@ -18,6 +18,12 @@ fn main() {
     for &a in &[1.0, 3.0, 6.0] {
         let xs: Vec<f64> = (0..64).map(|i| a * (1.0 + 2.0 * (i as f64 * 0.754877666246693).fract())).collect();
         if mode != "p" {
+            let t0 = cpu_ns();
+            for _ in 0..3000 { for &x in &xs { s += u_wave(a, 1.125, 1.0, x).unwrap(); } }
+            println!("a={a} scratch u_wave {:.3} us/value (CPU)", (cpu_ns() - t0) / 192000.0 * 1e-3);
+            let t0 = cpu_ns();
+            for _ in 0..3000 { for &x in &xs { s += du_wave(a, 1.125, 1.0, x).unwrap(); } }
+            println!("a={a} scratch du_wave {:.3} us/value (CPU)", (cpu_ns() - t0) / 192000.0 * 1e-3);
             let t0 = cpu_ns();
             for _ in 0..300 { for &x in &xs { s += u_wave_bounded(a, 1.125, 1.0, x).unwrap().value; } }
             println!("a={a} scratch bounded {:.3} us/value (CPU)", (cpu_ns() - t0) / 19200.0 * 1e-3);

@@ -805,6 +805,9 @@ fn wave_bounded_pair(a: f64, zeta: f64, amp: f64, x: f64) -> Result<(Bounded, Bo
 /// route of [`WaveBessel`].
 fn wave_f64_pair(a: f64, zeta: f64, amp: f64, x: f64) -> Result<(f64, f64)> {
     check_wave_f64(a, zeta, amp, x)?;
+    if let Some(r) = crate::contact::wave_bounded::wave_value(a, zeta, amp, x) {
+        return Ok(r);
+    }
     if let Some((u, du)) = CertifiedBessel::native_only(a, zeta).and_then(|c| c.eval_bounded(a, amp, x)) {
         return Ok((u.value, du.value));
     }

@@ -179,6 +179,9 @@ const NATIVE_J_ERR_MAX: f64 = 8.673_617_379_884_035e-19; // 2^-60
 /// `|2 pi - Dd::TWO_PI|` is below `u |lo| < 2.8e-32`.
 const TWO_PI_ERR: f64 = 3.0e-32;
 
+mod value;
+pub(crate) use value::wave_value;
+
 static FALLBACKS: AtomicU64 = AtomicU64::new(0);
 
 /// How many `u_wave_bounded` / `du_wave_bounded` / `WaveBessel::eval_bounded`
