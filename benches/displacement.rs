@@ -11,7 +11,7 @@
 //! table is in docs/performance.md.
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use maugis::contact::displacement::{du_wave_bounded, u_wave, u_wave_bounded, u_wave_mp, u_wave_series_mp, WaveBessel};
+use maugis::contact::displacement::{du_wave, du_wave_bounded, u_wave, u_wave_bounded, u_wave_mp, u_wave_series_mp, WaveBessel};
 use maugis::contact::wave_bounded::{wave_bounded_fallbacks, wave_bounded_mp_contacts};
 use maugis::contact::wave_quadrature::u_wave_quad;
 use maugis::special::exact;
@@ -84,6 +84,9 @@ fn bench_wave_f64_domain(c: &mut Criterion) {
     g.throughput(Throughput::Elements(pts.len() as u64));
     g.bench_function("u_wave/scratch", |b| {
         b.iter(|| pts.iter().map(|&(a, x)| u_wave(a, BETA, 1.0, black_box(x)).unwrap()).sum::<f64>())
+    });
+    g.bench_function("du_wave/scratch", |b| {
+        b.iter(|| pts.iter().map(|&(a, x)| du_wave(a, BETA, 1.0, black_box(x)).unwrap()).sum::<f64>())
     });
     g.bench_function("u_wave_bounded/scratch", |b| {
         b.iter(|| pts.iter().map(|&(a, x)| u_wave_bounded(a, BETA, 1.0, black_box(x)).unwrap().value).sum::<f64>())

@@ -6,7 +6,8 @@
 //! /proc/thread-self/schedstat (Linux), so that a loaded machine inflates it
 //! less than wall time; criterion's `wave_f64_domain` group gives wall times.
 //!
-//!     cargo run --release --example wave_f64_cpu [s|p]    (s: scratch only, p: precomputed only)
+//!     cargo run --release --example wave_f64_cpu [s|p|v<a>]    (s: scratch only, p: precomputed only,
+//!     v<a>: 6400 calls of u_wave at contact size a, for callgrind)
 
 use maugis::contact::displacement::{du_wave, u_wave, u_wave_bounded, WaveBessel};
 fn cpu_ns() -> f64 {
@@ -14,6 +15,14 @@ fn cpu_ns() -> f64 {
 }
 fn main() {
     let mode = std::env::args().nth(1).unwrap_or_default();
+    if let Some(a) = mode.strip_prefix('v').and_then(|a| a.parse::<f64>().ok()) {
+        // `v<a>`: u_wave only, 64 points x 100 at one a (for callgrind)
+        let mut s = 0.0;
+        let xs: Vec<f64> = (0..64).map(|i| a * (1.0 + 2.0 * (i as f64 * 0.754877666246693).fract())).collect();
+        for _ in 0..100 { for &x in &xs { s += u_wave(a, 1.125, 1.0, x).unwrap(); } }
+        println!("{s}");
+        return;
+    }
     let mut s = 0.0;
     for &a in &[1.0, 3.0, 6.0] {
         let xs: Vec<f64> = (0..64).map(|i| a * (1.0 + 2.0 * (i as f64 * 0.754877666246693).fract())).collect();
