@@ -1021,3 +1021,76 @@ mod tests {
 }
 
 
+
+/// Where the from-scratch time of the bounded path goes: each part behind an
+/// `#[inline(never)]` wrapper, so that `valgrind --tool=callgrind` on
+/// `cargo test --release --lib wave_bounded::profile -- --ignored` lists
+/// their inclusive instruction counts (reported per call in the docs).
+#[cfg(test)]
+mod profile {
+    use super::*;
+    use std::hint::black_box;
+
+    #[inline(never)]
+    #[target_feature(enable = "fma")]
+    unsafe fn part_d(a: f64, zeta: f64) -> BoundedDd {
+        let two_pi = BoundedDd { v: Dd::TWO_PI, e: TWO_PI_ERR };
+        two_pi.mul_f64_p::<crate::ball::Fused>(a).div_f64_p::<crate::ball::Fused>(zeta)
+    }
+    #[inline(never)]
+    #[target_feature(enable = "fma")]
+    unsafe fn part_tails(d: BoundedDd) -> Option<(usize, f64, f64)> {
+        bessel_tails((d.mag() + d.e) * 0.5 * (1.0 + 2.0 * U), (MAX_TABLE_FACTORIAL as usize - 2) / 2)
+    }
+    #[inline(never)]
+    #[target_feature(enable = "fma")]
+    unsafe fn part_top_series(d: BoundedDd, top: usize) -> Option<(BoundedDd, BoundedDd)> {
+        let h = d.mul_f64_p::<crate::ball::Fused>(0.5);
+        let z = h.mul_p::<crate::ball::Fused>(h).neg();
+        Some((j_series::<crate::ball::Fused>(BoundedDd::ONE, z, top - 1)?, j_series::<crate::ball::Fused>(BoundedDd::ONE, z, top)?))
+    }
+    #[inline(never)]
+    #[target_feature(enable = "fma")]
+    unsafe fn part_sequence(d: BoundedDd, top: usize) -> Option<Vec<BoundedDd>> {
+        native_sequence::<crate::ball::Fused>(d, top)
+    }
+    #[inline(never)]
+    #[target_feature(enable = "fma")]
+    unsafe fn part_tables(a: f64, d: BoundedDd, j: &[BoundedDd], n: usize, t0: f64, t2: f64) -> CertifiedBessel {
+        CertifiedBessel::from_sequence::<crate::ball::Fused>(a, d, j, n, t0, t2)
+    }
+    #[inline(never)]
+    #[target_feature(enable = "fma")]
+    unsafe fn part_per_x(c: &CertifiedBessel, a: f64, x: f64) -> Option<(Bounded, Bounded)> {
+        c.eval_bounded(a, 1.0, x)
+    }
+    #[inline(never)]
+    #[target_feature(enable = "fma")]
+    unsafe fn part_value(a: f64, x: f64) -> Option<(f64, f64)> {
+        wave_value(a, 1.125, 1.0, x)
+    }
+
+    #[test]
+    #[ignore]
+    fn profile_parts() {
+        let a: f64 = std::env::var("PROFILE_A").ok().and_then(|v| v.parse().ok()).unwrap_or(6.0);
+        // SAFETY: the machine that runs this profile has FMA (asserted).
+        assert!(has_fma());
+        unsafe {
+            let x = 2.0 * a;
+            let mut acc = 0.0;
+            let iters: usize = std::env::var("PROFILE_N").ok().and_then(|v| v.parse().ok()).unwrap_or(1000);
+            for _ in 0..iters {
+                let d = part_d(black_box(a), 1.125);
+                let (n, t0, t2) = part_tails(d).unwrap();
+                let top = 2 * n.max(1) + 1;
+                acc += part_top_series(d, top).unwrap().0.v.hi;
+                let j = part_sequence(d, top).unwrap();
+                let c = part_tables(a, d, &j, n.max(1), t0, t2);
+                acc += part_per_x(&c, a, black_box(x)).unwrap().0.value;
+                acc += part_value(a, black_box(x)).unwrap().0;
+            }
+            eprintln!("a={a}: {acc}");
+        }
+    }
+}
