@@ -41,7 +41,7 @@
 //! Where it does not apply (no fused multiply-add, `x/a > 25/7`, `D` beyond
 //! the table) it returns `None` and the caller uses the previous route.
 
-use super::{div_p, has_fma, neg_ln, bessel_tails, T_MAX, TWO_PI_ERR};
+use super::{bessel_tails, div_p, has_fma, ln_upper, neg_ln, T_MAX, TWO_PI_ERR};
 use crate::ball::{two_sum, BoundedDd, Dd, Fused};
 
 /// The table of `N(D)` covers `D <= D_MAX_TABLE` in steps of `1/D_STEPS`.
@@ -147,7 +147,7 @@ fn wave_value_with(a: f64, zeta: f64, amp: f64, x: f64) -> Option<(f64, f64)> {
     // Horner start: X^{n_x} (N+1)^2 <= 2^-64, -ln X = 2 acosh(r)
     let top = n_terms + 1;
     let n_x = if acosh_r.hi > 0.0 {
-        let need = (64.0 * std::f64::consts::LN_2 + 2.0 * ((top + 1) as f64).ln()) / (2.0 * acosh_r.hi);
+        let need = (64.0 * std::f64::consts::LN_2 + 2.0 * ln_upper((top + 1) as f64)) / (2.0 * acosh_r.hi);
         if need < top as f64 { need.ceil() as usize } else { top }
     } else {
         top
@@ -162,35 +162,37 @@ fn wave_value_with(a: f64, zeta: f64, amp: f64, x: f64) -> Option<(f64, f64)> {
         uh = 1.0;
         sh = vh;
     }
-    let step = |k: usize, h0: f64, l0: f64, h1: f64, l1: f64| {
-        let kk = (2 * k) as f64;
+    // c + cl = kk/D, kk = 2k (the counters in f64: no integer conversions in the loop)
+    let step = |kk: f64, h0: f64, l0: f64, h1: f64, l1: f64| {
         let c = kk * inv_d.hi;
         let cl = kk.mul_add(inv_d.hi, -c) + kk * inv_d.lo;
         rec_step(c, cl, h0, l0, h1, l1)
     };
-    for n in (1..=top).rev() {
+    let n_x = n_x as f64;
+    let mut kk = 4.0 * top as f64; // 2k at k = 2n
+    let mut mf = top as f64 - 1.0; // m = n - 1
+    for _ in 0..top {
         // p_{2n} -> p_{2n-1} -> p_{2n-2}
-        let (ho, lo) = step(2 * n, h0, l0, h1, l1);
-        let (he, le) = step(2 * n - 1, ho, lo, h0, l0);
+        let (ho, lo) = step(kk, h0, l0, h1, l1);
+        let (he, le) = step(kk - 2.0, ho, lo, h0, l0);
         h1 = ho;
         l1 = lo;
         h0 = he;
         l0 = le;
-        let m = n - 1; // the even order 2m just formed
-        if m == 0 {
+        if mf == 0.0 {
             break;
         }
+        // the even order 2m just formed
         let (s, e) = two_sum(lam_h, he);
         lam_h = s;
         lam_l += e + le;
         // V_{m-1} = m p_{2m} - V_m
-        let mf = m as f64;
         let pm = mf * he;
         let pm_e = mf.mul_add(he, -pm);
         let (s, e) = two_sum(pm, -vh);
         vh = s;
         vl = mf.mul_add(le, pm_e + e) - vl;
-        if m <= n_x {
+        if mf <= n_x {
             let (a1, b1) = horner_step(uh, ul, yh, yl, he, le);
             uh = a1;
             ul = b1;
@@ -198,6 +200,8 @@ fn wave_value_with(a: f64, zeta: f64, amp: f64, x: f64) -> Option<(f64, f64)> {
             sh = a2;
             sl = b2;
         }
+        kk -= 4.0;
+        mf -= 1.0;
     }
     let (p0, p1) = (dd(h0, l0), dd(h1, l1));
     let lambda = p0 + dd(lam_h, lam_l).mul_f64_p::<Fused>(2.0);
