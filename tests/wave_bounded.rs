@@ -104,7 +104,9 @@ fn batch_equals_one_by_one() {
     for (i, &x) in xs.iter().enumerate() {
         assert_eq!(many[i], wb.eval(x).unwrap());
         assert_eq!(many_b[i], wb.eval_bounded(x).unwrap());
-        assert_eq!(many[i].0, u_wave(3.0, 1.125, 1.0, x).unwrap());
+        // u_wave from scratch (its own fast value path) agrees to the last bits
+        let u = u_wave(3.0, 1.125, 1.0, x).unwrap();
+        assert!((many[i].0 - u).abs() <= 2.0 * f64::EPSILON * u.abs().max(1.0), "x={x}: {} vs {u}", many[i].0);
         // the estimate path and the bounded path agree within the bound
         assert!(many_b[i].0.contains(many[i].0) || (many_b[i].0.value - many[i].0).abs() <= 4e-16 * 8.0);
     }
