@@ -28,28 +28,28 @@ fn main() {
         let xs: Vec<f64> = (0..64).map(|i| a * (1.0 + 2.0 * (i as f64 * 0.754877666246693).fract())).collect();
         if mode != "p" {
             let t0 = cpu_ns();
-            for _ in 0..3000 { for &x in &xs { s += u_wave(a, 1.125, 1.0, x).unwrap(); } }
-            println!("a={a} scratch u_wave {:.3} us/value (CPU)", (cpu_ns() - t0) / 192000.0 * 1e-3);
+            for _ in 0..15000 { for &x in &xs { s += u_wave(a, 1.125, 1.0, x).unwrap(); } }
+            println!("a={a} scratch u_wave {:.3} us/value (CPU)", (cpu_ns() - t0) / 960000.0 * 1e-3);
             let t0 = cpu_ns();
-            for _ in 0..3000 { for &x in &xs { s += du_wave(a, 1.125, 1.0, x).unwrap(); } }
-            println!("a={a} scratch du_wave {:.3} us/value (CPU)", (cpu_ns() - t0) / 192000.0 * 1e-3);
+            for _ in 0..15000 { for &x in &xs { s += du_wave(a, 1.125, 1.0, x).unwrap(); } }
+            println!("a={a} scratch du_wave {:.3} us/value (CPU)", (cpu_ns() - t0) / 960000.0 * 1e-3);
             let t0 = cpu_ns();
-            for _ in 0..300 { for &x in &xs { s += u_wave_bounded(a, 1.125, 1.0, x).unwrap().value; } }
-            println!("a={a} scratch bounded {:.3} us/value (CPU)", (cpu_ns() - t0) / 19200.0 * 1e-3);
+            for _ in 0..1500 { for &x in &xs { s += u_wave_bounded(a, 1.125, 1.0, x).unwrap().value; } }
+            println!("a={a} scratch bounded {:.3} us/value (CPU)", (cpu_ns() - t0) / 96000.0 * 1e-3);
         }
         if mode != "s" {
             let wb = WaveBessel::new(a, 1.125, 1.0).unwrap();
             wb.eval_bounded(a).unwrap();
             let t0 = cpu_ns();
-            for _ in 0..4000 { for &x in &xs { let r = wb.eval_bounded(x).unwrap(); s += r.0.value + r.0.err; } }
-            println!("a={a} precomp bounded {:.3} us/value (CPU)", (cpu_ns() - t0) / 256000.0 * 1e-3);
+            for _ in 0..20000 { for &x in &xs { let r = wb.eval_bounded(x).unwrap(); s += r.0.value + r.0.err; } }
+            println!("a={a} precomp bounded {:.3} us/value (CPU)", (cpu_ns() - t0) / 1280000.0 * 1e-3);
             let t0 = cpu_ns();
-            for _ in 0..4000 { for &x in &xs { let r = wb.eval(x).unwrap(); s += r.0; } }
-            println!("a={a} precomp estimate {:.3} us/value (CPU)", (cpu_ns() - t0) / 256000.0 * 1e-3);
+            for _ in 0..20000 { for &x in &xs { let r = wb.eval(x).unwrap(); s += r.0; } }
+            println!("a={a} precomp estimate {:.3} us/value (CPU)", (cpu_ns() - t0) / 1280000.0 * 1e-3);
             let mut out = wb.eval_bounded_many(&xs).unwrap();
             let t0 = cpu_ns();
-            for _ in 0..4000 { wb.eval_bounded_into(&xs, &mut out).unwrap(); s += out[7].0.value; }
-            println!("a={a} precomp bounded, batch of 64 {:.3} us/value (CPU)", (cpu_ns() - t0) / 256000.0 * 1e-3);
+            for _ in 0..20000 { wb.eval_bounded_into(&xs, &mut out).unwrap(); s += out[7].0.value; }
+            println!("a={a} precomp bounded, batch of 64 {:.3} us/value (CPU)", (cpu_ns() - t0) / 1280000.0 * 1e-3);
         }
     }
     if s == 0.1 { println!("{s}"); }

@@ -128,6 +128,14 @@
 //! Exact products are fused multiply-adds where the CPU has them (detected at
 //! run time, as in `native.rs`), else Dekker's; both are exact.
 //!
+//! # The value path (estimate)
+//!
+//! `u_wave` / `du_wave` from scratch do not build these certified data: the
+//! submodule `value` runs one compensated f64 Miller recurrence with both sums
+//! in the same loop (about 5x fewer instructions than the per-contact data
+//! here). Its error is an estimate, enforced by tests/wave_value.rs (method
+//! block in `value.rs`).
+//!
 //! References: seed paper Eq. 12 and Appendix B.11; notes/model.md sec. 3;
 //! DLMF 10.2.2, 10.6.1, 10.12.4, 10.14.1, 10.14.4; Dekker (1971); Hida, Li, Bailey (2007);
 //! Joldes, Muller, Popescu, "Tight and rigorous error bounds for basic building
