@@ -4,9 +4,10 @@
 //!
 //! Writes into `--out` (atomically, [`crate::output`]):
 //!
-//! * `simulate.csv`: `leg,approach,abar,load,contact_intervals,zone_cells,model_load,model_valid,load_controlled`
+//! * `simulate.csv`: `leg,approach,abar,load,contact_intervals,zone_cells,model_load,model_valid,load_controlled,zone_ends_placed`
 //!   (`load_controlled`: the state is on the load-controlled path of its leg,
-//!   `maugis_solver::path::load_controlled`);
+//!   `maugis_solver::path::load_controlled`; `zone_ends_placed`: `false` where the
+//!   Dugdale zone ends on cell edges, with the grid-pinning error);
 //! * `simulate.svg`: the simulated states over the semi-analytical curve (valid
 //!   stretches solid, invalid ones faded), and the load-controlled path of each
 //!   leg as a line (its jumps dashed).
@@ -90,11 +91,11 @@ pub fn run(a: SimulateArgs) -> Result<(), String> {
         let text = serde_json::to_string(&report).map_err(|e| e.to_string())?;
         return print_stdout(&(text + "\n"));
     }
-    let mut csv = String::from("leg,approach,abar,load,contact_intervals,zone_cells,model_load,model_valid,load_controlled\n");
+    let mut csv = String::from("leg,approach,abar,load,contact_intervals,zone_cells,model_load,model_valid,load_controlled,zone_ends_placed\n");
     for r in all {
         let _ = writeln!(
             csv,
-            "{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{}",
             r.leg,
             r.approach,
             r.abar,
@@ -103,7 +104,8 @@ pub fn run(a: SimulateArgs) -> Result<(), String> {
             r.zone_cells,
             r.model_load.map(|v| v.to_string()).unwrap_or_default(),
             r.model_valid.map(|v| v.to_string()).unwrap_or_default(),
-            r.load_controlled
+            r.load_controlled,
+            r.zone_ends_placed
         );
     }
     let svg = overlay_svg(params, a.amax, all)?;

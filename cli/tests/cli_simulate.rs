@@ -19,14 +19,17 @@ fn small_run_writes_csv_and_svg() {
     let csv = std::fs::read_to_string(dir.join("simulate.csv")).unwrap();
     let header = csv.lines().next().unwrap();
     assert!(header.starts_with("leg,approach,abar,load,contact_intervals"));
-    assert!(header.ends_with(",load_controlled"));
+    assert!(header.ends_with(",load_controlled,zone_ends_placed"));
+    // zone_ends_placed: a bool on every row, and the ends are placed on most states
+    let placed: Vec<bool> = csv.lines().skip(1).map(|l| l.rsplit(',').next().unwrap().parse().unwrap()).collect();
+    assert!(placed.iter().filter(|&&p| p).count() * 2 > placed.len(), "{placed:?}");
     assert!(csv.lines().any(|l| l.starts_with("unloading,")));
     // The load-controlled path: on loading its loads rise; some unloading
     // states are on it, and the unloading path's loads fall.
     for leg in ["loading,", "unloading,"] {
         let loads: Vec<f64> = csv
             .lines()
-            .filter(|l| l.starts_with(leg) && l.ends_with(",true"))
+            .filter(|l| l.starts_with(leg) && l.split(',').nth(8) == Some("true"))
             .map(|l| l.split(',').nth(3).unwrap().parse().unwrap())
             .collect();
         assert!(loads.len() >= 2, "{leg} {loads:?}");
@@ -48,6 +51,7 @@ fn json_carries_the_load_controlled_path_and_pull_off() {
     let pull_off = v["pull_off"].as_f64().expect("pull_off");
     let states = v["states"].as_array().unwrap();
     let on_path: Vec<&serde_json::Value> = states.iter().filter(|s| s["load_controlled"] == true).collect();
+    assert!(states.iter().all(|s| s["zone_ends_placed"].is_boolean()));
     assert!(on_path.len() >= 4 && on_path.len() < states.len());
     // Pull-off is the most tensile load of the unloading leg, and on the path.
     let min_unloading = states.iter().filter(|s| s["leg"] == "unloading").map(|s| s["load"].as_f64().unwrap()).fold(f64::INFINITY, f64::min);

@@ -240,8 +240,10 @@ def simulate(lam, alpha=FIG4C_ALPHA, beta=FIG4C_BETA, *, amax=4.0, cells=4096, s
     tensile load under load control) and ``states``: a :class:`Table` with
     ``leg``, ``approach``, ``abar``, ``load``, ``contact_intervals``,
     ``zone_cells``, ``model_load`` and ``model_valid`` (``None`` where the model
-    has no state at that half-width), and ``load_controlled`` (the state lies on
-    the path a load-controlled experiment follows).
+    has no state at that half-width), ``load_controlled`` (the state lies on
+    the path a load-controlled experiment follows) and ``zone_ends_placed``
+    (``False`` where the Dugdale zone ends on cell edges, with the grid-pinning
+    error).
     """
     lam, alpha, beta, amax = (
         _real_scalar(n, v) for n, v in (("lam", lam), ("alpha", alpha), ("beta", beta), ("amax", amax))

@@ -166,7 +166,7 @@ def test_simulate_equals_cli_json(maugis_cli):
     assert sim.half_width == cli["half_width"] and sim.datum == cli["datum"]
     s = sim.states
     assert s.nrows == len(cli["states"]) > 8
-    for key in ("approach", "abar", "load", "contact_intervals", "zone_cells"):
+    for key in ("approach", "abar", "load", "contact_intervals", "zone_cells", "zone_ends_placed"):
         np.testing.assert_array_equal(s[key], [r[key] for r in cli["states"]])
     assert list(s.leg) == [r["leg"] for r in cli["states"]]
     assert set(s.leg) == {"loading", "unloading"}

@@ -94,6 +94,7 @@ impl Simulation {
                     model_load: m.map(|r| r.model_load),
                     model_valid: m.map(|r| r.model_valid),
                     load_controlled: on_path[usize::from(unloading)][i],
+                    zone_ends_placed: s.zone_ends_placed,
                 });
             }
         }
@@ -136,6 +137,10 @@ pub struct StateRecord {
     /// visits it; between two such states of a leg with others in between, it
     /// jumps.
     pub load_controlled: bool,
+    /// Whether the Dugdale-zone ends were placed inside their cells
+    /// ([`crate::contact::State::zone_ends_placed`]); `false`: the zone ends on
+    /// cell edges and the state carries the grid-pinning error.
+    pub zone_ends_placed: bool,
 }
 
 /// A simulated cycle as a flat report.
