@@ -39,6 +39,8 @@ mod decimal;
 mod dd_bounded;
 mod double_double;
 pub(crate) use double_double::{quick_two_sum, two_prod, two_sum};
+mod lanes;
+pub(crate) use lanes::F64x2;
 mod mag;
 pub use bounded::Bounded;
 pub use decimal::{eval_at_decimals, eval_at_decimals_with_floor, Decimal, MAX_DECIMAL_DIGITS, MAX_DECIMAL_EXPONENT, MAX_DECIMAL_INPUT_PREC};

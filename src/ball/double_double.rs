@@ -61,6 +61,15 @@ pub(crate) fn two_prod(a: f64, b: f64) -> (f64, f64) {
 /// exact, so every result built on them is bit-identical either way.
 pub(crate) trait ExactProduct {
     fn two_prod(a: f64, b: f64) -> (f64, f64);
+
+    /// `a b + c` rounded once (fused) or twice (`fl(fl(a b) + c)`): an error
+    /// analysis that charges two roundings holds for both. Unlike
+    /// [`two_prod`](ExactProduct::two_prod), results differ between the two in
+    /// the last bits.
+    #[inline(always)]
+    fn mul_add(a: f64, b: f64, c: f64) -> f64 {
+        a * b + c
+    }
 }
 
 /// Dekker's splitting, [`two_prod`].
@@ -82,6 +91,11 @@ impl ExactProduct for Fused {
     fn two_prod(a: f64, b: f64) -> (f64, f64) {
         let p = a * b;
         (p, a.mul_add(b, -p))
+    }
+
+    #[inline(always)]
+    fn mul_add(a: f64, b: f64, c: f64) -> f64 {
+        a.mul_add(b, c)
     }
 }
 

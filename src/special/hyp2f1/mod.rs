@@ -269,7 +269,7 @@ fn validate_f64(a: f64, b: f64, c: f64, z: f64) -> Result<()> {
     if z > 1.0 {
         return Err(branch_cut_error(z));
     }
-    let degree = |x: f64| (x <= 0.0 && x == x.floor()).then(|| (-x) as u64);
+    let degree = |x: f64| (x <= 0.0 && x == power_f64::floor_any(x)).then(|| (-x) as u64);
     let deg = match (degree(a), degree(b)) {
         (Some(x), Some(y)) => Some(x.min(y)),
         (x, y) => x.or(y),

@@ -12,7 +12,7 @@
 //!   [`pow_dw`](super::power::pow_dw) for the double-word sums.
 //! * `z <= -1`: the connection formula in `x = 1/(1-z)` [DLMF 15.8.3], two f64
 //!   series in `x <= 1/2` and seven reciprocal Gammas
-//!   ([`rgamma_dw`](super::rgamma_f64)), first for `z <= -3` (where Pfaff's
+//!   ([`rgamma_batch`](super::rgamma_f64)), first for `z <= -3` (where Pfaff's
 //!   `w >= 3/4` needs more than 130 terms), after Pfaff for `-3 < z <= -1`;
 //!   not where `a - b` is within `0.05` of an integer (its two terms blow up).
 //!   Its bound is derived at [`connection_inv_one_minus_z`].
@@ -54,11 +54,11 @@
 //! `pow_dw`; the product `P S` adds one rounding.
 
 use super::power::{dw_add, dw_div, dw_div_p, dw_mul, dw_mul_p, pow_dw, Dw, U};
-use super::power_f64::{ln_f64, pow_dw_exponent, pow_f64, pow_from_ln, round_small};
-use super::rgamma_f64::rgamma_dw;
+use super::power_f64::{floor_any, ln_f64, pow_dw_exponent, pow_f64, pow_from_ln, round_small};
+use super::rgamma_f64::rgamma_batch;
 #[cfg(target_arch = "x86_64")]
 use crate::ball::Fused;
-use crate::ball::{two_sum, Bounded, Dekker, ExactProduct};
+use crate::ball::{two_sum, Bounded, Dekker, ExactProduct, F64x2};
 
 /// Cap on the terms of a native series (beyond it, MP).
 pub(super) const MAX_NATIVE_TERMS: u64 = 3000;
@@ -102,7 +102,7 @@ impl Param {
 
     /// `d` when the parameter is exactly `-d`, a non-positive integer.
     fn nonpos_degree(&self) -> Option<u64> {
-        (self.lo == 0.0 && self.hi <= 0.0 && self.hi == self.hi.floor() && self.hi > -1e15).then(|| (-self.hi) as u64)
+        (self.lo == 0.0 && self.hi <= 0.0 && self.hi == floor_any(self.hi) && self.hi > -1e15).then(|| (-self.hi) as u64)
     }
 
     /// Upper bound of `|lo| / min_{n >= 0} |p + n|` (0 for exact parameters);
@@ -115,7 +115,7 @@ impl Param {
         let dist = if p > 0.0 {
             p
         } else {
-            let f = p - p.floor();
+            let f = p - floor_any(p);
             f.min(1.0 - f)
         };
         let dist_lo = dist - 4.0 * U * (p.abs() + 1.0) - self.lo.abs();
@@ -142,7 +142,7 @@ fn first_positive_index(params: [f64; 3]) -> Option<f64> {
     let mut n_pos = 0.0f64;
     for p in params {
         if p <= 1e-9 {
-            n_pos = n_pos.max((-p).floor() + 2.0);
+            n_pos = n_pos.max(floor_any(-p) + 2.0);
         }
     }
     (n_pos <= MAX_NATIVE_TERMS as f64).then_some(n_pos)
@@ -160,6 +160,17 @@ fn pair_factor(p: &Param, q: &Param, n: f64) -> f64 {
 
 /// The series `2F1(p1, p2; q; x~)` with `x~ = x (1 + theta)`, `|theta| <= x_rel`,
 /// summed in f64: `(value, err)` with `|2F1(p1, p2; q; x) - value| <= err`.
+///
+/// Two terms a step, from one division: with `N_n = fl(fl(p1+n) fl(p2+n))`,
+/// `D_n = fl(fl(q+n) (n+1))` and `xq = fl(x / fl(D_n D_{n+1}))`, the ratios are
+/// `r_n = fl(fl(N_n D_{n+1}) xq)` and `r_{n+1} = fl(fl(N_{n+1} D_n) xq)` (the
+/// other denominator's roundings cancel exactly: the same computed value is in
+/// the numerator and in `D_n D_{n+1}`), so each ratio carries 9 roundings;
+/// `t_{n+1} = fl(t_n r_n)` and `t_{n+2} = fl(t_n fl(r_n r_{n+1}))` add one and
+/// two: 10 a term. The pair is added as `s += fl(t_{n+1} + t_{n+2})`, whose
+/// inner rounding (`<= u (|t_{n+1}| + |t_{n+2}|)`) is charged to the terms:
+/// `E = 13 u` a term covers all of it (module docs). The tail after the pair
+/// ending at `N >= n_pos` is `sum_{n>N} |t_n| <= |t_N| rho / (1 - rho)`.
 fn series(p1: Param, p2: Param, q: Param, x: f64, x_rel: f64, stop: f64) -> Option<(f64, f64)> {
     let deg = match (p1.nonpos_degree(), p2.nonpos_degree()) {
         (Some(d1), Some(d2)) => Some(d1.min(d2)),
@@ -178,76 +189,97 @@ fn series(p1: Param, p2: Param, q: Param, x: f64, x_rel: f64, stop: f64) -> Opti
     }
     let e_step = 13.0 * U + p1.perturbation()? + p2.perturbation()? + q.perturbation()? + x_rel;
     let n_pos = first_positive_index([p1.hi, p2.hi, q.hi])?;
-    let deg_limit = deg.unwrap_or(u64::MAX);
+    // Every denominator (q+n)(n+1) and product of two stays far inside the
+    // normal range: |q + n| >= dist(q, {0, -1, -2, ...}) > 1e-60 (no rounding
+    // takes a nonzero sum to zero), |q| < 1e30, n <= MAX_NATIVE_TERMS + 2.
+    let q_dist = if q.hi > 0.0 { q.hi } else { (q.hi - floor_any(q.hi)).min(floor_any(q.hi) + 1.0 - q.hi) };
+    if !(q_dist > 1e-60 && q.hi.abs() < 1e30) {
+        return None;
+    }
+    // Pairs while n + 2 <= limit; a polynomial's odd last term after the loop.
+    let limit = deg.unwrap_or(MAX_NATIVE_TERMS + 2);
+    let tail_from = if deg.is_some() { f64::INFINITY } else { n_pos };
+    let quarter_over_stop = 0.25 / stop;
     let mut t = 1.0f64;
     let mut s = 1.0f64;
     let mut sum_abs_s = 0.0f64; // sum_k |s~_k| over the additions
-    let mut sum_nt = 0.0f64; // sum_n n |t~_n|
-    let mut tail = 0.0f64;
+    let mut tail = None;
     let mut n = 0u64;
-    // The tail bound after the term t~ of index nf, if it is below stop |s~|.
-    let tail_bound = |t: f64, s: f64, nf: f64| -> Option<f64> {
-        if deg.is_some() || nf < n_pos || t.abs() > stop * s.abs() {
-            return None;
-        }
-        let rho_a = pair_factor(&p1, &q, nf) * pair_factor(&p2, &Param::exact(1.0), nf);
-        let rho_b = pair_factor(&p2, &q, nf) * pair_factor(&p1, &Param::exact(1.0), nf);
-        let rho = x.abs() * (1.0 + x_rel) * rho_a.min(rho_b) * (1.0 + 4.0 * U);
-        if !(rho < 1.0) {
-            return None;
-        }
-        let bound = t.abs() * (1.0 + 1.01 * nf * e_step) / ((1.0 - rho) * (1.0 - 2.0 * U)) * (1.0 + 4.0 * U);
-        (bound <= stop * s.abs()).then_some(bound)
-    };
-    while n < deg_limit {
-        let nf = n as f64;
-        let num0 = (p1.hi + nf) * (p2.hi + nf);
-        let den0 = (q.hi + nf) * (nf + 1.0);
-        if n + 1 == deg_limit {
-            // the last term of a polynomial, alone (8 roundings, within e_step)
-            if den0 == 0.0 {
-                return None;
-            }
-            t *= num0 * x / den0;
-            s += t;
-            sum_abs_s += s.abs();
-            sum_nt += (nf + 1.0) * t.abs();
-            n += 1;
-            break;
-        }
-        // Two terms with one division: r0 = num0 x den1 / (den0 den1),
-        // r1 = num1 x den0 / (den0 den1); 12 roundings in each ratio, one in
-        // the update of t (the e_step of 13 u).
-        let num1 = (p1.hi + (nf + 1.0)) * (p2.hi + (nf + 1.0));
-        let den1 = (q.hi + (nf + 1.0)) * (nf + 2.0);
-        let dd = den0 * den1;
-        if !(dd.abs() > 1e-150 && dd.abs() < 1e150) {
-            return None;
-        }
-        let inv = 1.0 / dd;
-        let t1 = t * ((num0 * x) * (den1 * inv));
-        let t2 = t1 * ((num1 * x) * (den0 * inv));
+    // rho/((1 - rho)(1 - 2u)) with rho bounding every ratio |t_{n+1}/t_n|
+    // from the index it was computed at on (so it stays valid later)
+    let mut tail_factor = f64::INFINITY;
+    // The pair (n, n+1) in two lanes: each lane rounds as the scalar formula
+    // of the doc comment (`ball::F64x2`).
+    let (v1, v2, vq) = (F64x2::splat(p1.hi), F64x2::splat(p2.hi), F64x2::splat(q.hi));
+    let (one, two) = (F64x2::splat(1.0), F64x2::splat(2.0));
+    let mut idx = F64x2::new(0.0, 1.0); // (n, n + 1)
+    let mut sum_nt2 = F64x2::splat(0.0); // sum_n n |t~_n|, odd and even n in two lanes
+    while n + 2 <= limit {
+        let idx1 = idx.add(one); // (n + 1, n + 2)
+        let num = v1.add(idx).mul(v2.add(idx)); // (N_n, N_{n+1})
+        let den = vq.add(idx).mul(idx1); // (D_n, D_{n+1})
+        let den_swapped = den.swap();
+        let xq = x / den.mul(den_swapped).lo();
+        let r = num.mul(den_swapped).mul(F64x2::splat(xq)); // (r_n, r_{n+1})
+        let (r0, r1) = (r.lo(), r.hi());
+        let t1 = t * r0;
+        t *= r0 * r1;
+        s += t1 + t;
+        sum_abs_s += s.abs();
+        sum_nt2 = sum_nt2.add(idx1.mul(F64x2::new(t1, t).abs()));
         n += 2;
-        s += t1;
-        sum_abs_s += s.abs();
-        sum_nt += (nf + 1.0) * t1.abs();
-        if let Some(b) = tail_bound(t2, s, nf + 2.0) {
-            tail = b;
-            break;
-        }
-        s += t2;
-        sum_abs_s += s.abs();
-        sum_nt += (nf + 2.0) * t2.abs();
-        t = t2;
-        if n > MAX_NATIVE_TERMS || !s.is_finite() || !t.is_finite() {
-            return None;
+        idx = idx.add(two);
+        let nf = idx.lo();
+        if nf >= tail_from && t.abs() * quarter_over_stop <= s.abs() {
+            if let Some(b) = series_tail(&p1, &p2, &q, x, x_rel, e_step, nf, t, s, stop, &mut tail_factor) {
+                tail = Some(b);
+                break;
+            }
         }
     }
-    if (n as f64) * e_step > 0.01 {
+    let nf = idx.lo();
+    let mut sum_nt = sum_nt2.lo() + sum_nt2.hi();
+    if deg.is_some() {
+        if n + 1 == limit {
+            // the last term of a polynomial, alone (8 roundings, within e_step)
+            let n1 = nf + 1.0;
+            t *= (p1.hi + nf) * (p2.hi + nf) * x / ((q.hi + nf) * n1);
+            s += t;
+            sum_abs_s += s.abs();
+            sum_nt += n1 * t.abs();
+            n += 1;
+        }
+        tail = Some(0.0);
+    }
+    let tail = tail?;
+    if !(s.is_finite() && sum_abs_s.is_finite() && sum_nt.is_finite()) || (n as f64) * e_step > 0.01 {
         return None;
     }
     let err = (1.01 * (e_step * sum_nt + U * sum_abs_s)) * 1.001 + tail;
     Some((s, err * (1.0 + 8.0 * U)))
+}
+
+/// The tail bound of [`series`] after the term `t~_N` (`N = nf >= n_pos`),
+/// `|t~_N| (1 + 1.01 N E) rho / (1 - rho)`, if it is at most `stop |s~|`.
+/// `rho` is computed once (at the first `N` asked for) and kept in
+/// `tail_factor`: it bounds every later ratio too.
+#[cold]
+#[inline(never)]
+#[allow(clippy::too_many_arguments)]
+fn series_tail(
+    p1: &Param, p2: &Param, q: &Param, x: f64, x_rel: f64, e_step: f64, nf: f64, t: f64, s: f64, stop: f64,
+    tail_factor: &mut f64,
+) -> Option<f64> {
+    if !(*tail_factor < f64::INFINITY) {
+        let rho_a = pair_factor(p1, q, nf) * pair_factor(p2, &Param::exact(1.0), nf);
+        let rho_b = pair_factor(p2, q, nf) * pair_factor(p1, &Param::exact(1.0), nf);
+        let rho = x.abs() * (1.0 + x_rel) * rho_a.min(rho_b) * (1.0 + 4.0 * U);
+        if rho < 1.0 {
+            *tail_factor = rho / ((1.0 - rho) * (1.0 - 2.0 * U)) * (1.0 + 4.0 * U);
+        }
+    }
+    let bound = t.abs() * (1.0 + 1.01 * nf * e_step) * *tail_factor * (1.0 + 2.0 * U);
+    (bound <= stop * s.abs()).then_some(bound)
 }
 
 /// The series `2F1(p1, p2; q; x)` summed in double-word arithmetic, for the
@@ -280,7 +312,7 @@ fn series_dw_with<P: ExactProduct>(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64) -> 
     let pa = Param::from_dw(p1);
     let pb = Param::from_dw(p2);
     let pq = Param::from_dw(q);
-    let exact_int = |p: &Dw| p.lo == 0.0 && p.hi <= 0.0 && p.hi == p.hi.floor();
+    let exact_int = |p: &Dw| p.lo == 0.0 && p.hi <= 0.0 && p.hi == floor_any(p.hi);
     let deg = [p1, p2].iter().filter(|p| exact_int(p)).map(|p| (-p.hi) as u64).min();
     if exact_int(&q) && deg.map_or(true, |d| d > (-q.hi) as u64) {
         return None;
@@ -346,9 +378,10 @@ fn plus_one(p: Dw) -> Param {
     Param { hi, lo: lo * (1.0 + 4.0 * U) }
 }
 
-/// A reciprocal Gamma with its relative bound: `Some(None)` for an exact zero.
-fn rgamma_rel(x: Dw) -> Option<Option<(f64, f64)>> {
-    let (v, e) = rgamma_dw(x)?;
+/// A reciprocal Gamma (as [`rgamma_batch`] returns it) with its relative
+/// bound: `Some(None)` for an exact zero.
+fn rgamma_rel(r: Option<(f64, f64)>) -> Option<Option<(f64, f64)>> {
+    let (v, e) = r?;
     if v == 0.0 {
         return (e == 0.0).then_some(None);
     }
@@ -356,12 +389,12 @@ fn rgamma_rel(x: Dw) -> Option<Option<(f64, f64)>> {
 }
 
 /// `(1/G(n1)) (1/G(n2)) / ((1/G(d1)) (1/G(d2)))`, a connection coefficient, with
-/// its relative bound; `Some(None)` when a numerator vanishes exactly (the term
-/// is zero). Three roundings: with `r_*` the relative bounds of the four
-/// reciprocal Gammas, `|C~ - C| <= rho |C~|`, `rho = s (1 + s)`,
-/// `s = r_n1 + r_n2 + 1.01 (r_d1 + r_d2) + 3.01 u` (`e^s - 1 <= s (1 + s)`,
-/// `1/(1 - r) <= 1 + 1.01 r` for `r <= 1/100`).
-fn gamma_coefficient(num: [Dw; 2], den: [Dw; 2]) -> Option<Option<(f64, f64)>> {
+/// its relative bound, from the four reciprocal Gammas; `Some(None)` when a
+/// numerator vanishes exactly (the term is zero). Three roundings: with `r_*`
+/// the relative bounds of the four reciprocal Gammas, `|C~ - C| <= rho |C~|`,
+/// `rho = s (1 + s)`, `s = r_n1 + r_n2 + 1.01 (r_d1 + r_d2) + 3.01 u`
+/// (`e^s - 1 <= s (1 + s)`, `1/(1 - r) <= 1 + 1.01 r` for `r <= 1/100`).
+fn gamma_coefficient(num: [Option<(f64, f64)>; 2], den: [Option<(f64, f64)>; 2]) -> Option<Option<(f64, f64)>> {
     let Some((n1, r1)) = rgamma_rel(num[0])? else { return Some(None) };
     let Some((n2, r2)) = rgamma_rel(num[1])? else { return Some(None) };
     let (d1, q1) = rgamma_rel(den[0])??;
@@ -406,9 +439,12 @@ fn connection_inv_one_minus_z(a: f64, b: f64, c: f64, z: f64, stop: f64) -> Opti
     let omz = Dw::diff(1.0, z);
     let x = 1.0 / omz.hi; // |x - 1/(1-z)| <= 2.01 u x
     let ln_omz = ln_f64(omz.hi, omz.lo)?;
+    // the seven reciprocal Gammas at once (interleaved Horner sums)
+    let [g_c, g_a, g_b, g_ca, g_cb, g_amb, g_bma] =
+        rgamma_batch([Dw::new(c), Dw::new(a), Dw::new(b), Dw::diff(c, a), Dw::diff(c, b), amb, Dw::diff(b, a)]);
     let mut acc = (0.0f64, 0.0f64);
-    for (p, q) in [(a, b), (b, a)] {
-        let Some(coef) = gamma_coefficient([Dw::new(q), Dw::diff(c, p)], [Dw::new(c), Dw::diff(q, p)])? else { continue };
+    for (p, q, num, den) in [(a, b, [g_b, g_ca], [g_c, g_bma]), (b, a, [g_a, g_cb], [g_c, g_amb])] {
+        let Some(coef) = gamma_coefficient(num, den)? else { continue };
         let pw = pow_from_ln(ln_omz, -p)?;
         let sum = series(Param::exact(p), Param::from_dw(Dw::diff(c, q)), plus_one(Dw::diff(p, q)), x, 2.01 * U, stop)?;
         acc = add_connection_term(acc, coef, pw, sum);
@@ -447,11 +483,14 @@ fn connection_one_minus_z(a: f64, b: f64, c: f64, z: f64, stop: f64) -> Option<(
     let x = 1.0 - z;
     let mut acc = (0.0f64, 0.0f64);
     let widen = |p: Param| Param { hi: p.hi, lo: p.lo.abs() * (1.0 + 4.0 * U) + 2.0 * U * s.lo.abs() };
-    if let Some((coef, rel)) = gamma_coefficient([Dw::diff(c, a), Dw::diff(c, b)], [Dw::new(c), s])? {
+    // the seven reciprocal Gammas at once (interleaved Horner sums)
+    let [g_ca, g_cb, g_c, g_s, g_a, g_b, g_neg_s] =
+        rgamma_batch([Dw::diff(c, a), Dw::diff(c, b), Dw::new(c), s, Dw::new(a), Dw::new(b), neg_s]);
+    if let Some((coef, rel)) = gamma_coefficient([g_ca, g_cb], [g_c, g_s])? {
         let sum = series(Param::exact(a), Param::exact(b), widen(plus_one(neg_s)), x, 0.0, stop)?;
         acc = add_connection_term(acc, (coef, rel + S_SLACK), (1.0, 0.0), sum);
     }
-    if let Some((coef, rel)) = gamma_coefficient([Dw::new(a), Dw::new(b)], [Dw::new(c), neg_s])? {
+    if let Some((coef, rel)) = gamma_coefficient([g_a, g_b], [g_c, g_neg_s])? {
         let pw = pow_dw_exponent(ln_f64(x, 0.0)?, s)?;
         let sum = series(Param::from_dw(Dw::diff(c, a)), Param::from_dw(Dw::diff(c, b)), widen(plus_one(s)), x, 0.0, stop)?;
         acc = add_connection_term(acc, (coef, rel + S_SLACK), (pw.0, pw.1 + S_SLACK), sum);

@@ -149,7 +149,7 @@ pub(super) fn exp_dw(y: Dw) -> Option<Dw> {
     if !(y.hi.abs() <= EXP_MAX_ARG) {
         return None;
     }
-    let k = (y.hi * std::f64::consts::LOG2_E).round();
+    let k = super::power_f64::round_small(y.hi * std::f64::consts::LOG2_E);
     // r = y - k ln 2: k c1 is exact (|k| < 2^10, c1 has 42 bits), k c2 exact as a DW.
     let r = dw_add(y, Dw::new(-k * LN2_C1));
     let (p2, e2) = two_prod(k, LN2_C2);

@@ -29,9 +29,13 @@
 //!
 //! **Evaluation** at an exact f64 `x0 in [-1/2, 3/2]`: `c` the nearest centre,
 //! `delta = x0 - c` is exact (`|delta| <= 1/32 <= |x0|` or `c = 0`, and `delta`
-//! is a multiple of `ulp(x0)`), Horner `p = sum_{j<=K} d~_j delta^j` in f64. By
+//! is a multiple of `ulp(x0)`), Horner `p = sum_{j<=K} d~_j delta^j` in f64
+//! (`K <= 16`; the rows are zero-padded to 16, and a zero top keeps `p = 0`
+//! exactly until the row's own degree). By
 //! [Higham, *Accuracy and Stability*, 2nd ed., eq. 5.3] the computed value is
-//! `sum d~_j delta^j (1 + theta_{2j+1})`, `|theta_n| <= gamma_n = nu/(1-nu)`, so
+//! `sum d~_j delta^j (1 + theta_{2j+1})`, `|theta_n| <= gamma_n = nu/(1-nu)`
+//! (with a fused multiply-add per step, `theta_{j+1}`: fewer roundings, the
+//! same bound), so
 //! `|p~ - 1/Gamma(x0)| <= sum_j beta_j |delta|^j + 32 |delta| T`, with
 //! `beta_j = gamma_{2j+1} |d~_j| + e_j` and the truncation
 //! `T = sum_{j>K} max|d_j| 32^-j` (every `|delta|^j <= 32 |delta| 32^-j`), so
@@ -62,6 +66,11 @@
 //! and `S = psi(x) - psi(x0) < (E + 1) ln 2 + 1.97` for `x >= 3/2` (`psi(t) < ln t`,
 //! `t < 2^(E+1)`) [DLMF 5.5.2, 5.15.1].
 //!
+//! **Batches.** The connection formulas need six or seven reciprocal Gammas
+//! at once; [`rgamma_batch`] runs their Horner sums interleaved, so the
+//! latency of one dependency chain (16 steps) hides behind the others, and
+//! with fused multiply-adds where the CPU has them (run-time detection).
+//!
 //! Outside `|x| < MAX_ABS_ARG`, or where a product leaves the normal range,
 //! the function returns `None` and the caller takes another path.
 //!
@@ -72,7 +81,9 @@ use std::sync::OnceLock;
 
 use super::power::{Dw, U};
 use super::power_f64::{floor_small, round_small};
-use crate::ball::Ball;
+use crate::ball::{Ball, Dekker, ExactProduct};
+#[cfg(target_arch = "x86_64")]
+use crate::ball::Fused;
 
 /// Largest `|x|` accepted (the shift products stay far from overflow).
 const MAX_ABS_ARG: f64 = 60.0;
@@ -90,6 +101,10 @@ const TABLE_PREC: u32 = 128;
 /// `M`: `|1/Gamma(z)| < M` for `|z| <= 8` (module docs).
 const CAUCHY_M: f64 = 2e22;
 
+/// Largest Horner degree (a row whose truncation would need more carries the
+/// dropped terms in its bound); rows are zero-padded to it.
+const MAX_DEGREE: usize = 16;
+
 /// Centres `i/16`, `i = CENTRE_MIN..=CENTRE_MAX`.
 const CENTRE_MIN: i32 = -8;
 const CENTRE_MAX: i32 = 24;
@@ -98,7 +113,7 @@ const CENTRE_MAX: i32 = 24;
 /// `beta_0` and `B1 = sum_{1<=j<=K} beta_j 32^-j + T` (module docs).
 #[derive(Clone, Debug)]
 struct Row {
-    coeff: [f64; ORDERS],
+    horner: [f64; MAX_DEGREE + 1],
     degree: usize,
     beta0: f64,
     b1: f64,
@@ -169,45 +184,71 @@ fn build_table() -> Vec<Row> {
             err[j] = e + truncation;
         }
         // Horner degree: the smallest K whose truncation is below 2^-66 of the
-        // smallest |1/Gamma| near the centre (bounded below by |d_0| - 1/16 sum).
+        // smallest |1/Gamma| near the centre (bounded below by |d_0| - 1/16 sum),
+        // at most MAX_DEGREE; the truncation T covers every order above K.
         let cauchy = geometric_tail(1.0 / (32.0 * 6.5), ORDERS - 1);
-        let mut degree = ORDERS - 1;
-        let mut tail = cauchy;
+        let tail_above = |k: usize| cauchy + (k + 1..ORDERS).map(|j| (coeff[j].abs() + err[j]) * (1.0f64 / 32.0).powi(j as i32)).sum::<f64>();
         let floor = if i == 0 { 1.0 / 32.0 } else { coeff[0].abs() * 0.5 };
-        for k in (1..ORDERS).rev() {
-            // tail if the degree were k - 1
-            let t = tail + (coeff[k].abs() + err[k]) * (1.0f64 / 32.0).powi(k as i32);
-            if t > floor * 2f64.powi(-66) {
-                break;
-            }
-            tail = t;
-            degree = k - 1;
-        }
+        let degree = (0..ORDERS).find(|&k| tail_above(k) <= floor * 2f64.powi(-66)).unwrap_or(ORDERS - 1).min(MAX_DEGREE);
+        let tail = tail_above(degree);
         let beta = |j: usize| gamma_n(2 * j + 1) * coeff[j].abs() + err[j];
         let b1 = (1..=degree).map(|j| beta(j) * (1.0f64 / 32.0).powi(j as i32)).sum::<f64>() * 1.001 + tail * 1.001;
-        rows.push(Row { coeff, degree, beta0: beta(0) * 1.001, b1 });
+        let mut horner = [0.0; MAX_DEGREE + 1];
+        horner[..=degree].copy_from_slice(&coeff[..=degree]);
+        rows.push(Row { horner, degree, beta0: beta(0) * 1.001, b1 });
     }
     rows
 }
 
-/// `1/Gamma(x0 + lo)` for an exact `x0 in [-1/2, 3/2]` and a tiny `lo`
-/// (`|lo| <= 2^-40`): `(value, error bound)`, or `None` next to the pole at 0.
-fn reduced(x0: f64, lo: f64) -> Option<(f64, f64)> {
-    let i = round_small(x0 * 16.0);
-    let row = &table()[(i as i32 - CENTRE_MIN) as usize];
-    // delta = x0 - c exactly; with lo, delta~ = fl(delta + lo), |eta| <= u |delta~|
-    let delta = (x0 - i / 16.0) + lo;
+/// The shift of `hi` into the table's range: `x0 = hi -+ m` and the product
+/// `P` of the exact factors (`1/Gamma(hi) = (1/Gamma(x0)) / P` when `divide`,
+/// `(1/Gamma(x0)) P` otherwise).
+#[derive(Clone, Copy, Debug)]
+struct Shift {
+    x0: f64,
+    m: f64,
+    prod: f64,
+    divide: bool,
+}
+
+impl Shift {
+    const NONE: Shift = Shift { x0: 0.0, m: 0.0, prod: 1.0, divide: false };
+
+    #[inline(always)]
+    fn of(hi: f64) -> Shift {
+        if hi >= 1.5 {
+            let m = floor_small(hi - 0.5);
+            let mut prod = 1.0f64;
+            let mut j = 1.0;
+            while j <= m {
+                prod *= hi - j;
+                j += 1.0;
+            }
+            Shift { x0: hi - m, m, prod, divide: true }
+        } else if hi < -0.5 {
+            let m = floor_small(0.5 - hi);
+            let mut prod = 1.0f64;
+            let mut j = 0.0;
+            while j < m {
+                prod *= hi + j;
+                j += 1.0;
+            }
+            Shift { x0: hi + m, m, prod, divide: false }
+        } else {
+            Shift { x0: hi, ..Shift::NONE }
+        }
+    }
+}
+
+/// The bound of the Horner value `p ~ 1/Gamma(x0 + lo)` at `delta~` (module
+/// docs), then of the shifted value: `Some((value, err))`, or `None` next to
+/// the pole at 0 or where the argument's low word moves too much.
+#[inline(always)]
+fn finish(x: Dw, sh: &Shift, row: &Row, delta: f64, p: f64) -> Option<(f64, f64)> {
+    let (x0, lo) = (sh.x0, x.lo);
     let ad = delta.abs();
-    if !(ad <= (1.0 / 32.0) * (1.0 + 1e-10)) {
-        return None;
-    }
-    let k = row.degree;
-    let mut p = row.coeff[k];
-    for j in (0..k).rev() {
-        p = p * delta + row.coeff[j];
-    }
     // sum_j beta_j |delta|^j + 32 |delta| T <= beta_0 + 32 |delta| B1 (|delta| <= 1/32)
-    let mut err = (row.beta0 + 32.0 * ad * row.b1) * (1.0 + 2f64.powi(-40));
+    let mut err_p = (row.beta0 + 32.0 * ad * row.b1) * (1.0 + 2f64.powi(-40));
     if lo != 0.0 {
         // moving the argument by eta changes 1/Gamma by <= 1.01 |eta| Psi0 |1/Gamma|,
         // |psi(t)| <= 1/|t| + 1.97 on the segment (|t| >= |x0| - |lo| - |eta|)
@@ -220,65 +261,104 @@ fn reduced(x0: f64, lo: f64) -> Option<(f64, f64)> {
         if !(h <= 0.01) {
             return None;
         }
-        err += 1.01 * h * (p.abs() + err);
+        err_p += 1.01 * h * (p.abs() + err_p);
     }
-    Some((p, err))
-}
-
-/// Certified `1/Gamma(x)` for a double word `x = hi + lo`, `|hi| < 60`:
-/// `Some((value, err))` with `|1/Gamma(x) - value| <= err`, or `None` (module docs).
-pub(super) fn rgamma_dw(x: Dw) -> Option<(f64, f64)> {
-    let hi = x.hi;
-    if !(hi.abs() < MAX_ABS_ARG) || !(x.lo.abs() <= 2f64.powi(-40)) {
-        return None;
-    }
-    // shift to x0 in [-1/2, 3/2]; product of the exact factors
-    let (x0, m, prod, divide) = if hi >= 1.5 {
-        let m = floor_small(hi - 0.5);
-        let mut prod = 1.0f64;
-        let mut j = 1.0;
-        while j <= m {
-            prod *= hi - j;
-            j += 1.0;
-        }
-        (hi - m, m, prod, true)
-    } else if hi < -0.5 {
-        let m = floor_small(0.5 - hi);
-        let mut prod = 1.0f64;
-        let mut j = 0.0;
-        while j < m {
-            prod *= hi + j;
-            j += 1.0;
-        }
-        (hi + m, m, prod, false)
-    } else {
-        (hi, 0.0, 1.0, false)
-    };
-    if !(prod.abs() > 1e-280 && prod.abs() < 1e280) {
-        return None;
-    }
-    let (p, err_p) = reduced(x0, x.lo)?;
+    let m = sh.m;
     let g = if m >= 2.0 { gamma_n(m as usize - 1) } else { 0.0 };
-    let (v, scaled) = if divide { (p / prod, err_p / prod.abs()) } else { (p * prod, err_p * prod.abs()) };
+    let (v, scaled) = if sh.divide { (p / sh.prod, err_p / sh.prod.abs()) } else { (p * sh.prod, err_p * sh.prod.abs()) };
     let mut err = 1.02 * (U + g) * v.abs() + scaled * (1.0 + 1.01 * g);
-    if x.lo != 0.0 && m > 0.0 {
+    if lo != 0.0 && m > 0.0 {
         // the shift factors are x + j, not hi + j: relative change <= 1.01 |lo| S,
         // S = sum 1/|x + j| over the factors
-        let s = if divide {
+        let s = if sh.divide {
             // sum_{i<m} 1/(x0 + i) = psi(x) - psi(x0) < ln x + 1.97 < (E + 1) ln 2 + 1.97
-            let top = (hi + 2.0 * x.lo.abs()) * (1.0 + 4.0 * U);
+            let top = (x.hi + 2.0 * lo.abs()) * (1.0 + 4.0 * U);
             let e = ((top.to_bits() >> 52) & 0x7ff) as f64 - 1022.0;
             e * std::f64::consts::LN_2 + 1.97
         } else {
             2.01 * m // every |x + j| >= 1/2 - |lo|
         } * (1.0 + 4.0 * U);
-        let h = x.lo.abs() * s;
+        let h = lo.abs() * s;
         if !(h <= 0.01) {
             return None;
         }
         err += 1.01 * h * (v.abs() + err);
     }
     Some((v, err * (1.0 + 8.0 * U)))
+}
+
+/// Certified `1/Gamma(x)` for a double word `x = hi + lo`, `|hi| < 60`:
+/// `Some((value, err))` with `|1/Gamma(x) - value| <= err`, or `None` (module docs).
+#[cfg(test)]
+pub(super) fn rgamma_dw(x: Dw) -> Option<(f64, f64)> {
+    rgamma_batch([x])[0]
+}
+
+/// [`rgamma_dw`] at `N` arguments at once: the `N` Horner sums run
+/// interleaved (independent dependency chains, so the latency of one chain
+/// hides behind the others), with fused multiply-adds where the CPU has them.
+pub(super) fn rgamma_batch<const N: usize>(xs: [Dw; N]) -> [Option<(f64, f64)>; N] {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("fma") {
+        // SAFETY: the CPU supports FMA (checked just above).
+        return unsafe { rgamma_batch_fused(xs) };
+    }
+    rgamma_batch_with::<Dekker, N>(xs)
+}
+
+/// [`rgamma_batch`] compiled with fused multiply-add.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "fma")]
+unsafe fn rgamma_batch_fused<const N: usize>(xs: [Dw; N]) -> [Option<(f64, f64)>; N] {
+    rgamma_batch_with::<Fused, N>(xs)
+}
+
+/// [`rgamma_batch`] with the Horner step `P::mul_add` (one rounding where
+/// fused, two otherwise; the bound counts two).
+#[inline(always)]
+fn rgamma_batch_with<P: ExactProduct, const N: usize>(xs: [Dw; N]) -> [Option<(f64, f64)>; N] {
+    let table = table();
+    let mut rows: [&Row; N] = [&table[0]; N];
+    let mut shifts = [Shift::NONE; N];
+    let mut delta = [0.0f64; N];
+    let mut ok = [false; N];
+    let mut degree = 0;
+    for i in 0..N {
+        let x = xs[i];
+        if !(x.hi.abs() < MAX_ABS_ARG) || !(x.lo.abs() <= 2f64.powi(-40)) {
+            continue;
+        }
+        let sh = Shift::of(x.hi);
+        if !(sh.prod.abs() > 1e-280 && sh.prod.abs() < 1e280) {
+            continue;
+        }
+        // x0 in [-1/2, 3/2]: c = i/16 the nearest centre, delta = x0 - c exactly;
+        // with lo, delta~ = fl(delta + lo), |eta| <= u |delta~|
+        let c = round_small(sh.x0 * 16.0);
+        let d = (sh.x0 - c / 16.0) + x.lo;
+        if !(d.abs() <= (1.0 / 32.0) * (1.0 + 1e-10)) {
+            continue;
+        }
+        rows[i] = &table[(c as i32 - CENTRE_MIN) as usize];
+        degree = degree.max(rows[i].degree);
+        shifts[i] = sh;
+        delta[i] = d;
+        ok[i] = true;
+    }
+    // Horner over the zero-padded rows: p stays exactly 0 above a row's degree
+    let mut p = [0.0f64; N];
+    for j in (0..=degree).rev() {
+        for i in 0..N {
+            p[i] = P::mul_add(p[i], delta[i], rows[i].horner[j]);
+        }
+    }
+    let mut out = [None; N];
+    for i in 0..N {
+        if ok[i] {
+            out[i] = finish(xs[i], &shifts[i], rows[i], delta[i], p[i]);
+        }
+    }
+    out
 }
 
 #[cfg(test)]
@@ -288,15 +368,45 @@ mod tests {
     use rug::Float;
 
     /// `|1/Gamma(x) - value| <= err` against MPFR at 200 bits, relative error
-    /// of the bound itself small.
+    /// of the bound itself small; the portable (two roundings per Horner step)
+    /// variant is checked too.
     fn check(x: Dw) -> Option<f64> {
+        let portable = rgamma_batch_with::<Dekker, 1>([x])[0];
+        if let Some((v, err)) = portable {
+            check_against_mpfr(x, v, err);
+        }
         let (v, err) = rgamma_dw(x)?;
+        assert!(portable.is_some(), "1/Gamma({} + {}): the portable variant refused", x.hi, x.lo);
+        check_against_mpfr(x, v, err);
+        Some(if v == 0.0 { 0.0 } else { err / v.abs() })
+    }
+
+    fn check_against_mpfr(x: Dw, v: f64, err: f64) {
         // (&a + &b evaluates at 200 bits; owned a + b would round to a's 53 bits)
         let xf = Float::with_val(200, &exact(x.hi) + &exact(x.lo));
         let exact_v = if xf.is_integer() && xf <= 0 { Float::new(200) } else { Float::with_val(200, xf.gamma_ref()).recip() };
         let diff = Float::with_val(200, &exact_v - v).abs().to_f64();
         assert!(diff <= err, "1/Gamma({} + {}): |error| {diff:e} > bound {err:e} (value {v:e})", x.hi, x.lo);
-        Some(if v == 0.0 { 0.0 } else { err / v.abs() })
+    }
+
+    /// A batch answers as its elements one by one (the same Horner steps, only
+    /// interleaved), refusals included, for a batch mixing every shift.
+    #[test]
+    fn batch_equals_one_by_one() {
+        let mut rng = Lcg(0xba7c);
+        for _ in 0..2000 {
+            let c = rng.uniform(0.5, 6.0);
+            let (a, b) = (rng.uniform(-3.0, 3.0), rng.uniform(-3.0, 3.0));
+            let xs = [Dw::new(c), Dw::new(a), Dw::new(b), Dw::diff(c, a), Dw::diff(c, b), Dw::diff(a, b), Dw::new(-(b.round())), Dw::new(70.0)];
+            let batch = rgamma_batch(xs);
+            for (x, got) in xs.iter().zip(batch) {
+                assert_eq!(got, rgamma_dw(*x), "1/Gamma({} + {})", x.hi, x.lo);
+            }
+            let portable = rgamma_batch_with::<Dekker, 8>(xs);
+            for (x, got) in xs.iter().zip(portable) {
+                assert_eq!(got, rgamma_batch_with::<Dekker, 1>([*x])[0], "portable 1/Gamma({} + {})", x.hi, x.lo);
+            }
+        }
     }
 
     use super::super::tests::Lcg;

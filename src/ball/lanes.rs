@@ -1,0 +1,133 @@
+//! Two f64 lanes for the native f64 kernels: SSE2 on x86-64 (part of the
+//! baseline target, so no run-time detection), two plain f64 elsewhere.
+//!
+//! Every operation rounds each lane exactly as the scalar operation would
+//! (IEEE 754, round to nearest), so an error analysis written for the scalar
+//! code holds lane by lane, and both builds give bit-identical results.
+
+#[cfg(target_arch = "x86_64")]
+use std::arch::x86_64::{
+    __m128d, _mm_add_pd, _mm_andnot_pd, _mm_cvtsd_f64, _mm_mul_pd, _mm_set1_pd, _mm_set_pd, _mm_shuffle_pd, _mm_unpackhi_pd,
+};
+
+/// Lanes `(lo, hi)`.
+#[cfg(target_arch = "x86_64")]
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct F64x2(__m128d);
+
+/// Lanes `(lo, hi)`.
+#[cfg(not(target_arch = "x86_64"))]
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct F64x2([f64; 2]);
+
+// SAFETY (every `unsafe` block below): SSE2 is part of the x86-64 baseline,
+// and the intrinsics only read and write their register operands.
+#[cfg(target_arch = "x86_64")]
+impl F64x2 {
+    #[inline(always)]
+    pub(crate) fn new(lo: f64, hi: f64) -> F64x2 {
+        F64x2(unsafe { _mm_set_pd(hi, lo) })
+    }
+
+    #[inline(always)]
+    pub(crate) fn splat(x: f64) -> F64x2 {
+        F64x2(unsafe { _mm_set1_pd(x) })
+    }
+
+    #[inline(always)]
+    pub(crate) fn add(self, o: F64x2) -> F64x2 {
+        F64x2(unsafe { _mm_add_pd(self.0, o.0) })
+    }
+
+    #[inline(always)]
+    pub(crate) fn mul(self, o: F64x2) -> F64x2 {
+        F64x2(unsafe { _mm_mul_pd(self.0, o.0) })
+    }
+
+    /// `(hi, lo)`.
+    #[inline(always)]
+    pub(crate) fn swap(self) -> F64x2 {
+        F64x2(unsafe { _mm_shuffle_pd::<1>(self.0, self.0) })
+    }
+
+    #[inline(always)]
+    pub(crate) fn abs(self) -> F64x2 {
+        F64x2(unsafe { _mm_andnot_pd(_mm_set1_pd(-0.0), self.0) })
+    }
+
+    #[inline(always)]
+    pub(crate) fn lo(self) -> f64 {
+        unsafe { _mm_cvtsd_f64(self.0) }
+    }
+
+    #[inline(always)]
+    pub(crate) fn hi(self) -> f64 {
+        unsafe { _mm_cvtsd_f64(_mm_unpackhi_pd(self.0, self.0)) }
+    }
+}
+
+#[cfg(not(target_arch = "x86_64"))]
+impl F64x2 {
+    #[inline(always)]
+    pub(crate) fn new(lo: f64, hi: f64) -> F64x2 {
+        F64x2([lo, hi])
+    }
+
+    #[inline(always)]
+    pub(crate) fn splat(x: f64) -> F64x2 {
+        F64x2([x, x])
+    }
+
+    #[inline(always)]
+    pub(crate) fn add(self, o: F64x2) -> F64x2 {
+        F64x2([self.0[0] + o.0[0], self.0[1] + o.0[1]])
+    }
+
+    #[inline(always)]
+    pub(crate) fn mul(self, o: F64x2) -> F64x2 {
+        F64x2([self.0[0] * o.0[0], self.0[1] * o.0[1]])
+    }
+
+    #[inline(always)]
+    pub(crate) fn swap(self) -> F64x2 {
+        F64x2([self.0[1], self.0[0]])
+    }
+
+    #[inline(always)]
+    pub(crate) fn abs(self) -> F64x2 {
+        F64x2([self.0[0].abs(), self.0[1].abs()])
+    }
+
+    #[inline(always)]
+    pub(crate) fn lo(self) -> f64 {
+        self.0[0]
+    }
+
+    #[inline(always)]
+    pub(crate) fn hi(self) -> f64 {
+        self.0[1]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::F64x2;
+
+    /// Each lane rounds as the scalar operation does (bit for bit).
+    #[test]
+    fn lanes_round_as_scalars() {
+        let xs = [0.1, -3.7, 1e300, -1e-300, 7.0 / 3.0, -0.0, 2.5e-310];
+        for &a in &xs {
+            for &b in &xs {
+                let (va, vb) = (F64x2::new(a, b), F64x2::new(b, a));
+                assert_eq!(va.add(vb).lo().to_bits(), (a + b).to_bits());
+                assert_eq!(va.add(vb).hi().to_bits(), (b + a).to_bits());
+                assert_eq!(va.mul(vb).lo().to_bits(), (a * b).to_bits());
+                assert_eq!(va.mul(F64x2::splat(a)).hi().to_bits(), (b * a).to_bits());
+                assert_eq!(va.swap().lo().to_bits(), b.to_bits());
+                assert_eq!(va.abs().lo().to_bits(), a.abs().to_bits());
+                assert_eq!(va.abs().hi().to_bits(), b.abs().to_bits());
+            }
+        }
+    }
+}
