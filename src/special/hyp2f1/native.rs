@@ -216,52 +216,35 @@ fn series_from(p1: Param, p2: Param, q: Param, x: f64, x_rel: f64, stop: f64, st
     }
     // Pairs while n + 2 <= limit; a polynomial's odd last term after the loop.
     let limit = deg.unwrap_or(MAX_NATIVE_TERMS + 2);
-    let mut tail_from = if deg.is_some() { f64::INFINITY } else { n_pos };
     // The tail test runs (cold) when |t~| tail_mult <= |s~|: first with
-    // tail_mult = 1/(4 stop); once rho < 1 is known, tail_mult bounds the tail
-    // factor over every later index, and the test succeeds at its first call.
-    let mut tail_mult = 0.25 / stop;
-    let mut t = start.t;
-    let mut s = start.s;
-    let mut sum_abs_s = 0.0f64; // sum_k |s~_k| over the additions
+    // tail_mult = 1/(4 stop) (never for a polynomial); once rho < 1 is known,
+    // tail_mult bounds the tail factor over every later index, and the test
+    // succeeds at its first call.
+    let mut tail_mult = if deg.is_some() { f64::INFINITY } else { 0.25 / stop };
+    let mut tail_factor = f64::INFINITY; // rho/(1 - rho) with margins, once known
     let mut tail = None;
-    let mut n = start.n;
-    if n > limit {
+    if start.n > limit {
         return None;
     }
-    // The pair (n, n+1) in two lanes: each lane rounds as the scalar formula
-    // of the doc comment (`ball::F64x2`).
-    let (v1, v2, vq) = (F64x2::splat(p1.hi), F64x2::splat(p2.hi), F64x2::splat(q.hi));
-    let (one, two) = (F64x2::splat(1.0), F64x2::splat(2.0));
-    let mut idx = F64x2::new(n as f64, n as f64 + 1.0); // (n, n + 1)
-    let mut sum_nt2 = F64x2::splat(0.0); // sum_n n |t~_n|, odd and even n in two lanes
-    while n + 2 <= limit {
-        let idx1 = idx.add(one); // (n + 1, n + 2)
-        let num = v1.add(idx).mul(v2.add(idx)); // (N_n, N_{n+1})
-        let den = vq.add(idx).mul(idx1); // (D_n, D_{n+1})
-        let den_swapped = den.swap();
-        let xq = x / den.mul(den_swapped).lo();
-        let r = num.mul(den_swapped).mul(F64x2::splat(xq)); // (r_n, r_{n+1})
-        let (r0, r1) = (r.lo(), r.hi());
-        let t1 = t * r0;
-        t *= r0 * r1;
-        s += t1 + t;
-        sum_abs_s += s.abs();
-        sum_nt2 = sum_nt2.add(idx1.mul(F64x2::new(t1, t).abs()));
-        n += 2;
-        idx = idx.add(two);
-        let nf = idx.lo();
-        if nf >= tail_from && t.abs() * tail_mult <= s.abs() {
-            match series_tail(&p1, &p2, &q, x, x_rel, e_step, nf, t, s, stop) {
-                TailTest::Done(b) => {
-                    tail = Some(b);
-                    break;
-                }
-                TailTest::Later(mult) => tail_mult = mult,
-                TailTest::RetryFrom(m) => tail_from = m,
+    let mut st = PairState {
+        t: start.t,
+        s: start.s,
+        sum_abs_s: 0.0,
+        sum_nt2: F64x2::splat(0.0),
+        idx: F64x2::new(start.n as f64, start.n as f64 + 1.0),
+        n: start.n,
+    };
+    let params = [F64x2::splat(p1.hi), F64x2::splat(p2.hi), F64x2::splat(q.hi)];
+    while sum_pairs(&mut st, params, x, limit, tail_mult) {
+        match series_tail(&p1, &p2, &q, x, x_rel, e_step, n_pos, st.idx.lo(), st.t, st.s, stop, &mut tail_factor) {
+            TailTest::Done(b) => {
+                tail = Some(b);
+                break;
             }
+            TailTest::Later(mult) => tail_mult = mult,
         }
     }
+    let PairState { mut t, mut s, mut sum_abs_s, sum_nt2, idx, mut n } = st;
     let nf = idx.lo();
     let mut sum_nt = sum_nt2.lo() + sum_nt2.hi();
     if deg.is_some() {
@@ -284,32 +267,88 @@ fn series_from(p1: Param, p2: Param, q: Param, x: f64, x_rel: f64, stop: f64, st
     Some((s, err * (1.0 + 8.0 * U)))
 }
 
+/// The running state of [`series_from`]'s two-lane loop.
+#[derive(Clone, Copy, Debug)]
+struct PairState {
+    t: f64,
+    s: f64,
+    sum_abs_s: f64,       // sum_k |s~_k| over the additions
+    sum_nt2: F64x2,       // sum_n n |t~_n|, odd and even n in two lanes
+    idx: F64x2,           // (n, n + 1)
+    n: u64,
+}
+
+/// [`series_from`]'s loop: pairs of terms while `n + 2 <= limit`, each lane
+/// rounding as the scalar formula of [`series`]; `true` when it stopped for
+/// the tail test (`|t~| tail_mult <= |s~|`). On its own (no call inside, and
+/// few live values), so that the state stays in registers.
+#[inline(never)]
+fn sum_pairs(st: &mut PairState, [v1, v2, vq]: [F64x2; 3], x: f64, limit: u64, tail_mult: f64) -> bool {
+    let PairState { mut t, mut s, mut sum_abs_s, mut sum_nt2, mut idx, mut n } = *st;
+    let (one, two) = (F64x2::splat(1.0), F64x2::splat(2.0));
+    let mut test = false;
+    while n + 2 <= limit {
+        let idx1 = idx.add(one); // (n + 1, n + 2)
+        let num = v1.add(idx).mul(v2.add(idx)); // (N_n, N_{n+1})
+        let den = vq.add(idx).mul(idx1); // (D_n, D_{n+1})
+        let den_swapped = den.swap();
+        let xq = x / den.mul(den_swapped).lo();
+        let r = num.mul(den_swapped).mul(F64x2::splat(xq)); // (r_n, r_{n+1})
+        let (r0, r1) = (r.lo(), r.hi());
+        let t1 = t * r0;
+        t *= r0 * r1;
+        s += t1 + t;
+        sum_abs_s += s.abs();
+        sum_nt2 = sum_nt2.add(idx1.mul(F64x2::new(t1, t).abs()));
+        n += 2;
+        idx = idx.add(two);
+        if t.abs() * tail_mult <= s.abs() {
+            test = true;
+            break;
+        }
+    }
+    *st = PairState { t, s, sum_abs_s, sum_nt2, idx, n };
+    test
+}
+
 /// What [`series_tail`] found.
 enum TailTest {
     /// The tail bound, at most `stop |s~|`: the sum ends here.
     Done(f64),
-    /// Not yet: test again when `|t~| mult <= |s~|` (then `Done` for sure).
+    /// Not yet: test again when `|t~| mult <= |s~|` (`Done` for sure then,
+    /// once `rho < 1` is known; before, `mult` grows 16-fold a call).
     Later(f64),
-    /// `rho >= 1` at this index: test again from this index on.
-    RetryFrom(f64),
 }
 
 /// The tail test of [`series`] after the term `t~_N` (`N = nf >= n_pos`): the
 /// tail is at most `|t~_N| (1 + 1.01 N E) rho / (1 - rho)`, with
 /// `rho` bounding every ratio `|t_{n+1}/t_n|` from `N` on (so it stays valid at
 /// every later index, where `1 + 1.01 N E <= 1.0101`: the sum is refused
-/// when `N E > 1/100`).
+/// when `N E > 1/100`). The factor `rho / (1 - rho)` (with margins) is kept
+/// in `factor` (infinite until known) for the later calls.
 #[cold]
 #[inline(never)]
 #[allow(clippy::too_many_arguments)]
-fn series_tail(p1: &Param, p2: &Param, q: &Param, x: f64, x_rel: f64, e_step: f64, nf: f64, t: f64, s: f64, stop: f64) -> TailTest {
-    let rho_a = pair_factor(p1, q, nf) * pair_factor(p2, &Param::exact(1.0), nf);
-    let rho_b = pair_factor(p2, q, nf) * pair_factor(p1, &Param::exact(1.0), nf);
-    let rho = x.abs() * (1.0 + x_rel) * rho_a.min(rho_b) * (1.0 + 4.0 * U);
-    if !(rho < 1.0) {
-        return TailTest::RetryFrom(nf * 1.25 + 8.0);
+fn series_tail(
+    p1: &Param, p2: &Param, q: &Param, x: f64, x_rel: f64, e_step: f64, n_pos: f64, nf: f64, t: f64, s: f64, stop: f64,
+    factor: &mut f64,
+) -> TailTest {
+    if !(*factor < f64::INFINITY) {
+        // not yet valid (a shifted parameter still negative) or rho >= 1:
+        // test again once the term is 16 times smaller next to the sum
+        let retry = TailTest::Later(16.0 * (s.abs() / t.abs()).min(1e300));
+        if nf < n_pos {
+            return retry;
+        }
+        let rho_a = pair_factor(p1, q, nf) * pair_factor(p2, &Param::exact(1.0), nf);
+        let rho_b = pair_factor(p2, q, nf) * pair_factor(p1, &Param::exact(1.0), nf);
+        let rho = x.abs() * (1.0 + x_rel) * rho_a.min(rho_b) * (1.0 + 4.0 * U);
+        if !(rho < 1.0) {
+            return retry;
+        }
+        *factor = rho / ((1.0 - rho) * (1.0 - 2.0 * U)) * (1.0 + 4.0 * U) * (1.0 + 2.0 * U);
     }
-    let tail_factor = rho / ((1.0 - rho) * (1.0 - 2.0 * U)) * (1.0 + 4.0 * U) * (1.0 + 2.0 * U);
+    let tail_factor = *factor;
     let bound = t.abs() * (1.0 + 1.01 * nf * e_step) * tail_factor;
     if bound <= stop * s.abs() {
         return TailTest::Done(bound);

@@ -51,7 +51,9 @@
 //! Every factor and `x0` are exact in f64 (integers added to `x` with a result
 //! no larger than `|x|`, on `ulp(x)`'s grid), so the product has `m - 1`
 //! roundings and the final product or quotient one:
-//! `|v - 1/Gamma(x)| <= 1.02 (u + gamma_{m-1}) |v| + err_p |P~|^{+-1} (1 + 1.01 gamma_{m-1})`.
+//! `|v - 1/Gamma(x)| <= 1.02 (k u + gamma_{m-1}) |v| + err_p |P~|^{+-1} (1 + 1.01 gamma_{m-1})`,
+//! `k = 1` for the product and `k = 2` for the quotient, formed as
+//! `p fl(1/P~)` (one division a value); `gamma_{m-1} <= 1.0002 (m-1) u` for `m <= 60`.
 //!
 //! **A double-word argument** `x = hi + lo` (e.g. the exact `c - a`,
 //! `|lo| <= 2^-40`). The reduced argument is `x0 + lo`: Horner runs at
@@ -214,29 +216,39 @@ struct Shift {
 impl Shift {
     const NONE: Shift = Shift { x0: 0.0, m: 0.0, prod: 1.0, divide: false };
 
+    /// The shifts of `N` arguments at once, without data-dependent branches
+    /// (the factors `hi - j`, or `hi + j`, run to the largest `m` of the
+    /// batch, a factor 1 exactly where an argument needs fewer).
     #[inline(always)]
-    fn of(hi: f64) -> Shift {
-        if hi >= 1.5 {
-            let m = floor_small(hi - 0.5);
-            let mut prod = 1.0f64;
-            let mut j = 1.0;
-            while j <= m {
-                prod *= hi - j;
-                j += 1.0;
-            }
-            Shift { x0: hi - m, m, prod, divide: true }
-        } else if hi < -0.5 {
-            let m = floor_small(0.5 - hi);
-            let mut prod = 1.0f64;
-            let mut j = 0.0;
-            while j < m {
-                prod *= hi + j;
-                j += 1.0;
-            }
-            Shift { x0: hi + m, m, prod, divide: false }
-        } else {
-            Shift { x0: hi, ..Shift::NONE }
+    fn of_batch<const N: usize>(his: [f64; N]) -> [Shift; N] {
+        let mut out = [Shift::NONE; N];
+        let mut m_max = 0.0f64;
+        for (sh, &hi) in out.iter_mut().zip(&his) {
+            // arguments out of range (refused by the caller) take no shift
+            let in_range = hi.abs() < MAX_ABS_ARG;
+            let up = in_range && hi >= 1.5;
+            let down = in_range && hi < -0.5;
+            let m = if up {
+                floor_small(hi - 0.5)
+            } else if down {
+                floor_small(0.5 - hi)
+            } else {
+                0.0
+            };
+            // up: x0 = hi - m in [1/2, 3/2); down: x0 = hi + m in (-1/2, 1/2]
+            *sh = Shift { x0: if up { hi - m } else { hi + m }, m, prod: 1.0, divide: up };
+            m_max = m_max.max(m);
         }
+        let mut j = 0.0;
+        while j < m_max {
+            for (sh, &hi) in out.iter_mut().zip(&his) {
+                // up: factors hi - 1, ..., hi - m; down: hi, hi + 1, ..., hi + m - 1
+                let factor = if sh.divide { hi - (j + 1.0) } else { hi + j };
+                sh.prod *= if j < sh.m { factor } else { 1.0 };
+            }
+            j += 1.0;
+        }
+        out
     }
 }
 
@@ -257,16 +269,25 @@ fn finish(x: Dw, sh: &Shift, row: &Row, delta: f64, p: f64) -> Option<(f64, f64)
         if !(t_min > 0.0) {
             return None;
         }
-        let h = eta * (1.0 / t_min + 1.97) * (1.0 + 4.0 * U);
+        // an upper bound of 1/t_min without a division away from 0
+        let inv_t = if t_min >= 0.25 { 4.0 } else { 1.0 / t_min };
+        let h = eta * (inv_t + 1.97) * (1.0 + 4.0 * U);
         if !(h <= 0.01) {
             return None;
         }
         err_p += 1.01 * h * (p.abs() + err_p);
     }
     let m = sh.m;
-    let g = if m >= 2.0 { gamma_n(m as usize - 1) } else { 0.0 };
-    let (v, scaled) = if sh.divide { (p / sh.prod, err_p / sh.prod.abs()) } else { (p * sh.prod, err_p * sh.prod.abs()) };
-    let mut err = 1.02 * (U + g) * v.abs() + scaled * (1.0 + 1.01 * g);
+    // gamma_{m-1} <= 1.0002 (m - 1) u for m <= 60
+    let g = if m >= 2.0 { (m - 1.0) * U * 1.0002 } else { 0.0 };
+    // the quotient as p fl(1/P~): two roundings (|fl(1/P~)| >= |1/P~| (1 - u))
+    let (v, scaled, roundings) = if sh.divide {
+        let inv = 1.0 / sh.prod;
+        (p * inv, err_p * inv.abs() * (1.0 + 2.0 * U), 2.0 * U)
+    } else {
+        (p * sh.prod, err_p * sh.prod.abs(), U)
+    };
+    let mut err = 1.02 * (roundings + g) * v.abs() + scaled * (1.0 + 1.01 * g);
     if lo != 0.0 && m > 0.0 {
         // the shift factors are x + j, not hi + j: relative change <= 1.01 |lo| S,
         // S = sum 1/|x + j| over the factors
@@ -319,7 +340,7 @@ unsafe fn rgamma_batch_fused<const N: usize>(xs: [Dw; N]) -> [Option<(f64, f64)>
 fn rgamma_batch_with<P: ExactProduct, const N: usize>(xs: [Dw; N]) -> [Option<(f64, f64)>; N] {
     let table = table();
     let mut rows: [&Row; N] = [&table[0]; N];
-    let mut shifts = [Shift::NONE; N];
+    let shifts = Shift::of_batch(xs.map(|x| x.hi));
     let mut delta = [0.0f64; N];
     let mut ok = [false; N];
     let mut degree = 0;
@@ -328,7 +349,7 @@ fn rgamma_batch_with<P: ExactProduct, const N: usize>(xs: [Dw; N]) -> [Option<(f
         if !(x.hi.abs() < MAX_ABS_ARG) || !(x.lo.abs() <= 2f64.powi(-40)) {
             continue;
         }
-        let sh = Shift::of(x.hi);
+        let sh = shifts[i];
         if !(sh.prod.abs() > 1e-280 && sh.prod.abs() < 1e280) {
             continue;
         }
@@ -341,7 +362,6 @@ fn rgamma_batch_with<P: ExactProduct, const N: usize>(xs: [Dw; N]) -> [Option<(f
         }
         rows[i] = &table[(c as i32 - CENTRE_MIN) as usize];
         degree = degree.max(rows[i].degree);
-        shifts[i] = sh;
         delta[i] = d;
         ok[i] = true;
     }
