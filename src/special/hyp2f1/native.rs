@@ -148,14 +148,71 @@ fn first_positive_index(params: [f64; 3]) -> Option<f64> {
     (n_pos <= MAX_NATIVE_TERMS as f64).then_some(n_pos)
 }
 
-/// Upper bound of `max(1, (p+n)/(q+n))` for `q + n > 0`; infinity otherwise.
-fn pair_factor(p: &Param, q: &Param, n: f64) -> f64 {
-    let num = p.upper_plus(n);
-    let den = q.lower_plus(n);
-    if !(den > 0.0) || num < 0.0 {
+/// Upper bound `rho` of every ratio `|t_{m+1}/t_m| = |x| |(p1+m)(p2+m)| /
+/// ((q+m)(m+1))` for `m >= n` (every shifted parameter positive there), with
+/// `x_abs` an upper bound of `|x|`; infinity where it cannot be bounded.
+/// Each factor `max(1, (p+m)/(q+m))` is non-increasing in `m`, and pairing
+/// `p1` or `p2` with `q` gives two bounds with one denominator:
+/// `rho = x_abs min(max(q+n, p1+n) max(1+n, p2+n), max(q+n, p2+n) max(1+n, p1+n)) / ((q+n)(1+n))`,
+/// numerators from upper bounds of the sums, the denominator from a lower
+/// bound (one division).
+fn ratio_bound(p1: &Param, p2: &Param, q: &Param, x_abs: f64, n: f64) -> f64 {
+    let (xnum, den) = ratio_parts(p1, p2, q, x_abs, n);
+    xnum / den * (1.0 + 2.0 * U)
+}
+
+/// [`ratio_bound`], tightened where a parameter is large (for the hybrid
+/// sum's switch, tested once every 8 double-word terms): with
+/// `A = p1 + p2 - q - 1` and `B = p1 p2 - q`, the factor of the ratio is
+/// `r(m) = 1 + (A m + B) / ((m+q)(m+1))`, and for `m >= n >= 1`
+/// `(m+q)(m+1) >= m (m+1) k`, `k = 1` for `q >= 0` and `k = (n+q)/n` otherwise
+/// (`(m+q)/m` grows with `m`), so `r(m) <= 1 + (A+ + B+/n) / ((n+1) k)`
+/// (`A+ = max(A, 0)`; the right side decreases in `m`). Every operation is
+/// bounded upward (`up`, `dn`: one rounding's worth).
+fn ratio_bound_tight(p1: &Param, p2: &Param, q: &Param, x_abs: f64, n: f64) -> f64 {
+    let by_pairs = ratio_bound(p1, p2, q, x_abs, n);
+    if !(n >= 1.0) {
+        return by_pairs;
+    }
+    let up = |v: f64| v + (2.0 * U * v.abs() + f64::MIN_POSITIVE);
+    let dn = |v: f64| v - (2.0 * U * v.abs() + f64::MIN_POSITIVE);
+    let hi = |p: &Param| up(p.hi + p.lo.abs());
+    let lo = |p: &Param| dn(p.hi - p.lo.abs());
+    let q_dn = lo(q);
+    let a_up = up(up(up(hi(p1) + hi(p2)) - q_dn) - 1.0).max(0.0);
+    let corners = [lo(p1) * lo(p2), lo(p1) * hi(p2), hi(p1) * lo(p2), hi(p1) * hi(p2)];
+    let b_up = up(up(corners.iter().fold(f64::NEG_INFINITY, |m, &c| m.max(c))) - q_dn).max(0.0);
+    let k = if q_dn >= 0.0 { 1.0 } else { dn(dn(n + q_dn) / n) };
+    if !(k > 0.0 && b_up.is_finite()) {
+        return by_pairs;
+    }
+    let excess = up(up(up(a_up + up(b_up / n)) / (1.0 + n)) / k);
+    by_pairs.min(up(x_abs * up(1.0 + excess)))
+}
+
+/// An upper bound of `x_abs num` and a lower bound of `den` (positive, or
+/// `xnum` infinite), `rho = x_abs num / den` as in [`ratio_bound`].
+#[inline(always)]
+fn ratio_parts(p1: &Param, p2: &Param, q: &Param, x_abs: f64, n: f64) -> (f64, f64) {
+    let (u1, u2, uq) = (p1.upper_plus(n), p2.upper_plus(n), q.upper_plus(n));
+    let den = q.lower_plus(n) * (1.0 + n) * (1.0 - 2.0 * U);
+    if !(den > 0.0) || !(u1 >= 0.0 && u2 >= 0.0) {
+        return (f64::INFINITY, 1.0);
+    }
+    let one_n = 1.0 + n; // exact
+    let num = (u1.max(uq) * u2.max(one_n)).min(u2.max(uq) * u1.max(one_n)) * (1.0 + 2.0 * U);
+    (x_abs * num * (1.0 + 2.0 * U), den)
+}
+
+/// Upper bound of `rho / (1 - rho)` for `rho` of [`ratio_bound`], as
+/// `x num / (den - x num)` (one division); infinity unless `rho < 1`.
+fn tail_factor_bound(p1: &Param, p2: &Param, q: &Param, x_abs: f64, n: f64) -> f64 {
+    let (xnum, den) = ratio_parts(p1, p2, q, x_abs, n);
+    let gap = (den - xnum) * (1.0 - 2.0 * U); // lower bound of den - x num
+    if !(gap > 0.0) {
         return f64::INFINITY;
     }
-    (num / den * (1.0 + 2.0 * U)).max(1.0)
+    xnum / gap * (1.0 + 2.0 * U)
 }
 
 /// The series `2F1(p1, p2; q; x~)` with `x~ = x (1 + theta)`, `|theta| <= x_rel`,
@@ -220,7 +277,14 @@ fn series_from(p1: Param, p2: Param, q: Param, x: f64, x_rel: f64, stop: f64, st
     // tail_mult = 1/(4 stop) (never for a polynomial); once rho < 1 is known,
     // tail_mult bounds the tail factor over every later index, and the test
     // succeeds at its first call.
-    let mut tail_mult = if deg.is_some() { f64::INFINITY } else { 0.25 / stop };
+    // (rho >= |x|, so the tail test cannot succeed before |t~| |x| / (1 - |x|)
+    // <= stop |s~|: the first call waits for that, at least for |t~| <= 4 stop |s~|)
+    let quarter_over_stop = 0.25 / stop;
+    // (a trigger only, any positive value is sound: 4|x|/(1 - |x|) <= 4|x|(1 + 2|x|)
+    // for |x| <= 1/2, without a division)
+    let ax = x.abs();
+    let asymptotic = if ax <= 0.5 { 4.0 * ax * (1.0 + 2.0 * ax) } else { 4.0 * ax / (1.0 - ax) };
+    let mut tail_mult = if deg.is_some() { f64::INFINITY } else { quarter_over_stop * asymptotic.max(1.0) };
     let mut tail_factor = f64::INFINITY; // rho/(1 - rho) with margins, once known
     let mut tail = None;
     if start.n > limit {
@@ -236,7 +300,7 @@ fn series_from(p1: Param, p2: Param, q: Param, x: f64, x_rel: f64, stop: f64, st
     };
     let params = [F64x2::splat(p1.hi), F64x2::splat(p2.hi), F64x2::splat(q.hi)];
     while sum_pairs(&mut st, params, x, limit, tail_mult) {
-        match series_tail(&p1, &p2, &q, x, x_rel, e_step, n_pos, st.idx.lo(), st.t, st.s, stop, &mut tail_factor) {
+        match series_tail(&p1, &p2, &q, x, x_rel, e_step, n_pos, st.idx.lo(), st.t, st.s, stop, quarter_over_stop, &mut tail_factor) {
             TailTest::Done(b) => {
                 tail = Some(b);
                 break;
@@ -283,7 +347,25 @@ struct PairState {
 /// the tail test (`|t~| tail_mult <= |s~|`). On its own (no call inside, and
 /// few live values), so that the state stays in registers.
 #[inline(never)]
-fn sum_pairs(st: &mut PairState, [v1, v2, vq]: [F64x2; 3], x: f64, limit: u64, tail_mult: f64) -> bool {
+fn sum_pairs(st: &mut PairState, params: [F64x2; 3], x: f64, limit: u64, tail_mult: f64) -> bool {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx") {
+        // SAFETY: the CPU supports AVX (checked just above).
+        return unsafe { sum_pairs_avx(st, params, x, limit, tail_mult) };
+    }
+    sum_pairs_with(st, params, x, limit, tail_mult)
+}
+
+/// [`sum_pairs`] compiled for AVX: the same operations (no fused
+/// multiply-add, so bit-identical), in three-operand form (no register copies).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+unsafe fn sum_pairs_avx(st: &mut PairState, params: [F64x2; 3], x: f64, limit: u64, tail_mult: f64) -> bool {
+    sum_pairs_with(st, params, x, limit, tail_mult)
+}
+
+#[inline(always)]
+fn sum_pairs_with(st: &mut PairState, [v1, v2, vq]: [F64x2; 3], x: f64, limit: u64, tail_mult: f64) -> bool {
     let PairState { mut t, mut s, mut sum_abs_s, mut sum_nt2, mut idx, mut n } = *st;
     let (one, two) = (F64x2::splat(1.0), F64x2::splat(2.0));
     let mut test = false;
@@ -326,34 +408,33 @@ enum TailTest {
 /// every later index, where `1 + 1.01 N E <= 1.0101`: the sum is refused
 /// when `N E > 1/100`). The factor `rho / (1 - rho)` (with margins) is kept
 /// in `factor` (infinite until known) for the later calls.
-#[cold]
-#[inline(never)]
+#[inline]
 #[allow(clippy::too_many_arguments)]
 fn series_tail(
     p1: &Param, p2: &Param, q: &Param, x: f64, x_rel: f64, e_step: f64, n_pos: f64, nf: f64, t: f64, s: f64, stop: f64,
-    factor: &mut f64,
+    quarter_over_stop: f64, factor: &mut f64,
 ) -> TailTest {
+    // 1/stop = 4 fl(1/(4 stop)) within u: covered by the 6u margin of the multiplier
+    let inv_stop = 4.0 * quarter_over_stop;
     if !(*factor < f64::INFINITY) {
         // not yet valid (a shifted parameter still negative) or rho >= 1:
         // test again once the term is 16 times smaller next to the sum
-        let retry = TailTest::Later(16.0 * (s.abs() / t.abs()).min(1e300));
+        let retry = || TailTest::Later(16.0 * (s.abs() / t.abs()).min(1e300));
         if nf < n_pos {
-            return retry;
+            return retry();
         }
-        let rho_a = pair_factor(p1, q, nf) * pair_factor(p2, &Param::exact(1.0), nf);
-        let rho_b = pair_factor(p2, q, nf) * pair_factor(p1, &Param::exact(1.0), nf);
-        let rho = x.abs() * (1.0 + x_rel) * rho_a.min(rho_b) * (1.0 + 4.0 * U);
-        if !(rho < 1.0) {
-            return retry;
+        let tf = tail_factor_bound(p1, p2, q, x.abs() * (1.0 + x_rel) * (1.0 + 2.0 * U), nf);
+        if !(tf < f64::INFINITY) {
+            return retry();
         }
-        *factor = rho / ((1.0 - rho) * (1.0 - 2.0 * U)) * (1.0 + 4.0 * U) * (1.0 + 2.0 * U);
+        *factor = tf * (1.0 + 4.0 * U);
     }
     let tail_factor = *factor;
     let bound = t.abs() * (1.0 + 1.01 * nf * e_step) * tail_factor;
     if bound <= stop * s.abs() {
         return TailTest::Done(bound);
     }
-    TailTest::Later(tail_factor * 1.0102 / stop * (1.0 + 4.0 * U))
+    TailTest::Later(tail_factor * 1.0102 * inv_stop * (1.0 + 6.0 * U))
 }
 
 /// `t_{n+1} = t_n x (p1+n)(p2+n) / ((q+n)(n+1))` in double words (the step
@@ -424,9 +505,7 @@ fn series_dw_with<P: ExactProduct>(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64) -> 
         n += 1;
         let nf = n as f64;
         if deg.is_none() && nf >= n_pos && t.hi.abs() <= STOP * s.hi.abs() {
-            let rho_a = pair_factor(&pa, &pq, nf) * pair_factor(&pb, &Param::exact(1.0), nf);
-            let rho_b = pair_factor(&pb, &pq, nf) * pair_factor(&pa, &Param::exact(1.0), nf);
-            let rho = x.hi.abs() * (1.0 + 2.0 * U) * (1.0 + x_rel) * rho_a.min(rho_b) * (1.0 + 4.0 * U);
+            let rho = ratio_bound(&pa, &pb, &pq, x.hi.abs() * (1.0 + 2.0 * U) * (1.0 + x_rel) * (1.0 + 2.0 * U), nf);
             if rho < 1.0 {
                 let bound = t.hi.abs() * (1.0 + 2.0 * U) * (1.0 + 1.01 * nf * e_step) / ((1.0 - rho) * (1.0 - 2.0 * U))
                     * (1.0 + 4.0 * U);
@@ -454,7 +533,9 @@ fn series_dw_with<P: ExactProduct>(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64) -> 
 /// The series `2F1(p1, p2; q; x)` with its head in double words and the rest
 /// in f64, for a sum whose first terms cancel (where the f64 sum cannot
 /// certify) but whose later terms are small: [`series_dw`]'s loop until the
-/// term `t_K` (`K >= n_pos`) is below `2^-8 |s| / (K + 1)` (or `K = 96`), then
+/// term `t_K` (`K >= n_pos`) is small enough that the f64 rest's rounding
+/// bound, about `13 u |t_K| (K + 1) / (1 - rho)^2`, is below an eighth of the
+/// target `512 stop |s|` (or `K = 96`), then
 /// [`series_from`] with `t~_K = fl(t_K.hi + t_K.lo)` and the partial sum's
 /// high word, and the low word added at the end.
 ///
@@ -489,6 +570,13 @@ fn series_hybrid_with<P: ExactProduct>(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64,
     }
     let e_dw = 128.0 * U * U + x_rel;
     let n_pos = first_positive_index([p1.hi, p2.hi, q.hi])?;
+    let (pa, pb, pq) = (Param::from_dw(p1), Param::from_dw(p2), Param::from_dw(q));
+    // The switch: once every later ratio is below rho < 1, the f64 rest
+    // charges about 13 u sum_{n>K} n |t_n| <= 13 u |t_K| (K + 1) / (1 - rho)^2;
+    // the head ends when that is below 1/8 of the target 512 stop |s|
+    // (|t_K| (K + 1) w <= |s| with w = 16 u / (64 stop (1 - rho)^2)).
+    let mut w_switch = f64::INFINITY;
+    let mut rho_tried_at = -1.0f64;
     let mut t = Dw::new(1.0);
     let mut s = Dw::new(1.0);
     let (mut sum_abs_s, mut sum_nt) = (0.0f64, 0.0f64);
@@ -503,8 +591,22 @@ fn series_hybrid_with<P: ExactProduct>(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64,
         if !s.hi.is_finite() || !t.hi.is_finite() {
             return None;
         }
-        if n >= MAX_HEAD || (nf >= n_pos && t.hi.abs() * (nf + 1.0) * 256.0 <= s.hi.abs()) {
+        if n >= MAX_HEAD {
             break;
+        }
+        let weighted = t.hi.abs() * (nf + 1.0);
+        if nf >= n_pos && weighted <= s.hi.abs() {
+            if w_switch == f64::INFINITY && nf >= rho_tried_at + 8.0 {
+                // rho once (it bounds every later ratio); again 8 terms on if >= 1
+                rho_tried_at = nf;
+                let rho = ratio_bound_tight(&pa, &pb, &pq, x.hi.abs() * (1.0 + 2.0 * U) * (1.0 + x_rel) * (1.0 + 2.0 * U), nf);
+                if rho < 1.0 {
+                    w_switch = 16.0 * U / (64.0 * stop * (1.0 - rho) * (1.0 - rho));
+                }
+            }
+            if weighted * w_switch <= s.hi.abs() {
+                break;
+            }
         }
     }
     let head_err = (1.01 * (e_dw * sum_nt * (1.0 + 2.0 * U) + 3.1 * U * U * sum_abs_s * (1.0 + 2.0 * U))) * 1.001;
@@ -704,14 +806,10 @@ pub(super) fn hyp2f1_native(a: f64, b: f64, c: f64, z: f64, rel_tol: f64) -> Opt
             return Some(r);
         }
     }
-    // ... then the connection formula where it did not go first (cheaper than
-    // the double-word sums, and its cancellation is a different one) ...
-    if z > CONNECTION_FIRST_BELOW {
-        if let Some(r) = connection_inv_one_minus_z(a, b, c, z, stop).and_then(|(v, err)| accept(v, err)) {
-            return Some(r);
-        }
-    }
-    // ... then a double-word head (w to 32 u^2) where the first terms cancel ...
+    // ... then a double-word head (w to 32 u^2) where the first terms cancel
+    // (not the connection formula where it did not go first: over random
+    // points where the first f64 sum fails, it certifies only 23% of those the
+    // second one does not, at the cost of two series and seven Gammas) ...
     let w = dw_div(Dw::new(-z), omz);
     for (p, q) in candidates {
         if let Some(r) = series_hybrid(Dw::new(p), q, Dw::new(c), w, 32.0 * U * U, stop).and_then(|sum| pfaff(p, sum)) {
@@ -881,3 +979,4 @@ mod tests {
         assert!(hyp2f1_native(0.3, 0.4, 1.5, 1.0, 1e-13).is_none());
     }
 }
+

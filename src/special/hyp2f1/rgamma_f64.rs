@@ -254,58 +254,44 @@ impl Shift {
 
 /// The bound of the Horner value `p ~ 1/Gamma(x0 + lo)` at `delta~` (module
 /// docs), then of the shifted value: `Some((value, err))`, or `None` next to
-/// the pole at 0 or where the argument's low word moves too much.
+/// the pole at 0 or where the argument's low word moves too much. Written
+/// without data-dependent branches (the sign of the argument and whether its
+/// low word is zero vary from call to call): both sides are computed, the
+/// right one selected, and the validity tested once at the end.
 #[inline(always)]
 fn finish(x: Dw, sh: &Shift, row: &Row, delta: f64, p: f64) -> Option<(f64, f64)> {
     let (x0, lo) = (sh.x0, x.lo);
-    let ad = delta.abs();
+    let (ad, lo_abs) = (delta.abs(), lo.abs());
+    let has_lo = lo != 0.0;
     // sum_j beta_j |delta|^j + 32 |delta| T <= beta_0 + 32 |delta| B1 (|delta| <= 1/32)
     let mut err_p = (row.beta0 + 32.0 * ad * row.b1) * (1.0 + 2f64.powi(-40));
-    if lo != 0.0 {
-        // moving the argument by eta changes 1/Gamma by <= 1.01 |eta| Psi0 |1/Gamma|,
-        // |psi(t)| <= 1/|t| + 1.97 on the segment (|t| >= |x0| - |lo| - |eta|)
-        let eta = U * ad;
-        let t_min = (x0.abs() - lo.abs() - eta) * (1.0 - 4.0 * U);
-        if !(t_min > 0.0) {
-            return None;
-        }
-        // an upper bound of 1/t_min without a division away from 0
-        let inv_t = if t_min >= 0.25 { 4.0 } else { 1.0 / t_min };
-        let h = eta * (inv_t + 1.97) * (1.0 + 4.0 * U);
-        if !(h <= 0.01) {
-            return None;
-        }
-        err_p += 1.01 * h * (p.abs() + err_p);
-    }
-    let m = sh.m;
+    // With lo: moving the argument by eta changes 1/Gamma by <= 1.01 |eta| Psi0
+    // |1/Gamma|, |psi(t)| <= 1/|t| + 1.97 on the segment (|t| >= |x0| - |lo| - |eta|).
+    let eta = U * ad;
+    let t_min = (x0.abs() - lo_abs - eta) * (1.0 - 4.0 * U);
+    let h_arg = eta * (1.0 / t_min + 1.97) * (1.0 + 4.0 * U);
+    let arg_ok = !has_lo | ((t_min > 0.0) & (h_arg <= 0.01));
+    err_p += if has_lo { 1.01 * h_arg * (p.abs() + err_p) } else { 0.0 };
     // gamma_{m-1} <= 1.0002 (m - 1) u for m <= 60
-    let g = if m >= 2.0 { (m - 1.0) * U * 1.0002 } else { 0.0 };
+    let m = sh.m;
+    let g = (m - 1.0).max(0.0) * U * 1.0002;
     // the quotient as p fl(1/P~): two roundings (|fl(1/P~)| >= |1/P~| (1 - u))
-    let (v, scaled, roundings) = if sh.divide {
-        let inv = 1.0 / sh.prod;
-        (p * inv, err_p * inv.abs() * (1.0 + 2.0 * U), 2.0 * U)
-    } else {
-        (p * sh.prod, err_p * sh.prod.abs(), U)
-    };
-    let mut err = 1.02 * (roundings + g) * v.abs() + scaled * (1.0 + 1.01 * g);
-    if lo != 0.0 && m > 0.0 {
-        // the shift factors are x + j, not hi + j: relative change <= 1.01 |lo| S,
-        // S = sum 1/|x + j| over the factors
-        let s = if sh.divide {
-            // sum_{i<m} 1/(x0 + i) = psi(x) - psi(x0) < ln x + 1.97 < (E + 1) ln 2 + 1.97
-            let top = (x.hi + 2.0 * lo.abs()) * (1.0 + 4.0 * U);
-            let e = ((top.to_bits() >> 52) & 0x7ff) as f64 - 1022.0;
-            e * std::f64::consts::LN_2 + 1.97
-        } else {
-            2.01 * m // every |x + j| >= 1/2 - |lo|
-        } * (1.0 + 4.0 * U);
-        let h = lo.abs() * s;
-        if !(h <= 0.01) {
-            return None;
-        }
-        err += 1.01 * h * (v.abs() + err);
-    }
-    Some((v, err * (1.0 + 8.0 * U)))
+    let inv = 1.0 / sh.prod;
+    let (factor, factor_bound, roundings) =
+        if sh.divide { (inv, inv.abs() * (1.0 + 2.0 * U), 2.0 * U) } else { (sh.prod, sh.prod.abs(), U) };
+    let v = p * factor;
+    let mut err = 1.02 * (roundings + g) * v.abs() + err_p * factor_bound * (1.0 + 1.01 * g);
+    // The shift factors are x + j, not hi + j: relative change <= 1.01 |lo| S,
+    // S = sum 1/|x + j| over the factors (0 without lo or without factors):
+    // up, sum_{i<m} 1/(x0 + i) = psi(x) - psi(x0) < ln x + 1.97 < (E + 1) ln 2 + 1.97;
+    // down, every |x + j| >= 1/2 - |lo|, S <= 2.01 m.
+    let top = (x.hi + 2.0 * lo_abs) * (1.0 + 4.0 * U);
+    let e = ((top.to_bits() >> 52) & 0x7ff) as f64 - 1022.0;
+    let s_up = e * std::f64::consts::LN_2 + 1.97;
+    let h_shift = lo_abs * if sh.divide { s_up } else { 2.01 * m } * (1.0 + 4.0 * U);
+    let shift_ok = h_shift <= 0.01;
+    err += 1.01 * h_shift * (v.abs() + err);
+    (arg_ok & shift_ok).then_some((v, err * (1.0 + 8.0 * U)))
 }
 
 /// Certified `1/Gamma(x)` for a double word `x = hi + lo`, `|hi| < 60`:
