@@ -7,7 +7,8 @@
 
 #[cfg(target_arch = "x86_64")]
 use std::arch::x86_64::{
-    __m128d, _mm_add_pd, _mm_andnot_pd, _mm_cvtsd_f64, _mm_mul_pd, _mm_set1_pd, _mm_set_pd, _mm_shuffle_pd, _mm_unpackhi_pd,
+    __m128d, _mm_add_pd, _mm_andnot_pd, _mm_cmple_pd, _mm_cvtsd_f64, _mm_div_pd, _mm_movemask_pd, _mm_mul_pd, _mm_set1_pd,
+    _mm_set_pd, _mm_shuffle_pd, _mm_unpackhi_pd,
 };
 
 /// Lanes `(lo, hi)`.
@@ -42,6 +43,17 @@ impl F64x2 {
     #[inline(always)]
     pub(crate) fn mul(self, o: F64x2) -> F64x2 {
         F64x2(unsafe { _mm_mul_pd(self.0, o.0) })
+    }
+
+    #[inline(always)]
+    pub(crate) fn div(self, o: F64x2) -> F64x2 {
+        F64x2(unsafe { _mm_div_pd(self.0, o.0) })
+    }
+
+    /// Bit 0 set when `lo <= o.lo`, bit 1 when `hi <= o.hi` (false with a NaN).
+    #[inline(always)]
+    pub(crate) fn le_mask(self, o: F64x2) -> u32 {
+        unsafe { _mm_movemask_pd(_mm_cmple_pd(self.0, o.0)) as u32 }
     }
 
     /// `(hi, lo)`.
@@ -89,6 +101,17 @@ impl F64x2 {
     }
 
     #[inline(always)]
+    pub(crate) fn div(self, o: F64x2) -> F64x2 {
+        F64x2([self.0[0] / o.0[0], self.0[1] / o.0[1]])
+    }
+
+    /// Bit 0 set when `lo <= o.lo`, bit 1 when `hi <= o.hi` (false with a NaN).
+    #[inline(always)]
+    pub(crate) fn le_mask(self, o: F64x2) -> u32 {
+        (self.0[0] <= o.0[0]) as u32 | ((self.0[1] <= o.0[1]) as u32) << 1
+    }
+
+    #[inline(always)]
     pub(crate) fn swap(self) -> F64x2 {
         F64x2([self.0[1], self.0[0]])
     }
@@ -116,13 +139,20 @@ mod tests {
     /// Each lane rounds as the scalar operation does (bit for bit).
     #[test]
     fn lanes_round_as_scalars() {
-        let xs = [0.1, -3.7, 1e300, -1e-300, 7.0 / 3.0, -0.0, 2.5e-310];
+        let xs = [0.1, -3.7, 1e300, -1e-300, 7.0 / 3.0, -0.0, 2.5e-310, f64::NAN];
         for &a in &xs {
             for &b in &xs {
                 let (va, vb) = (F64x2::new(a, b), F64x2::new(b, a));
+                if a.is_nan() || b.is_nan() {
+                    assert_eq!(va.le_mask(vb), 0);
+                    continue;
+                }
                 assert_eq!(va.add(vb).lo().to_bits(), (a + b).to_bits());
                 assert_eq!(va.add(vb).hi().to_bits(), (b + a).to_bits());
                 assert_eq!(va.mul(vb).lo().to_bits(), (a * b).to_bits());
+                assert_eq!(va.div(vb).lo().to_bits(), (a / b).to_bits());
+                assert_eq!(va.div(vb).hi().to_bits(), (b / a).to_bits());
+                assert_eq!(va.le_mask(vb), (a <= b) as u32 | ((b <= a) as u32) << 1);
                 assert_eq!(va.mul(F64x2::splat(a)).hi().to_bits(), (b * a).to_bits());
                 assert_eq!(va.swap().lo().to_bits(), b.to_bits());
                 assert_eq!(va.abs().lo().to_bits(), a.abs().to_bits());

@@ -267,8 +267,7 @@ fn series_from(p1: Param, p2: Param, q: Param, x: f64, x_rel: f64, stop: f64, st
     // Every denominator (q+n)(n+1) and product of two stays far inside the
     // normal range: |q + n| >= dist(q, {0, -1, -2, ...}) > 1e-60 (no rounding
     // takes a nonzero sum to zero), |q| < 1e30, n <= MAX_NATIVE_TERMS + 2.
-    let q_dist = if q.hi > 0.0 { q.hi } else { (q.hi - floor_any(q.hi)).min(floor_any(q.hi) + 1.0 - q.hi) };
-    if !(q_dist > 1e-60 && q.hi.abs() < 1e30) {
+    if !denominators_safe(&q) {
         return None;
     }
     // Pairs while n + 2 <= limit; a polynomial's odd last term after the loop.
@@ -329,6 +328,136 @@ fn series_from(p1: Param, p2: Param, q: Param, x: f64, x_rel: f64, stop: f64, st
     }
     let err = (1.01 * (e_step * sum_nt + U * sum_abs_s)) * 1.001 + tail;
     Some((s, err * (1.0 + 8.0 * U)))
+}
+
+/// Whether every denominator `(q+n)(n+1)` of a series, and a product of two,
+/// stays far inside the normal range: `|q + n| >= dist(q, {0, -1, -2, ...})
+/// > 1e-60` (no rounding takes a nonzero sum to zero), `|q| < 1e30`,
+/// `n <= MAX_NATIVE_TERMS + 2`.
+fn denominators_safe(q: &Param) -> bool {
+    let q_dist = if q.hi > 0.0 { q.hi } else { (q.hi - floor_any(q.hi)).min(floor_any(q.hi) + 1.0 - q.hi) };
+    q_dist > 1e-60 && q.hi.abs() < 1e30
+}
+
+/// Two series `2F1(p1, p2; q; x~)` with one argument (those of a connection
+/// formula), one in each lane: `[(value, err); 2]` with the bound of
+/// [`series`] each, or `None` where either is a polynomial, has a pole, or does
+/// not converge here (the caller then sums them one by one).
+///
+/// One term a step in each lane: `r_n = fl(fl(N_n x) / D_n)` with
+/// `N_n = fl(fl(p1+n) fl(p2+n))`, `D_n = fl(fl(q+n) (n+1))`, and
+/// `t_{n+1} = fl(t_n r_n)`: six roundings on the numerator's side, two on the
+/// denominator's, so `E = 9 u` a term (for the `13 u` of [`series`]), and the
+/// sum `s += t` adds `u |s~_k|` a term. Each lane stops at its own tail test
+/// ([`series_tail`]); the other runs on.
+fn series_two(lanes: [[Param; 3]; 2], x: f64, x_rel: f64, stop: f64) -> Option<[(f64, f64); 2]> {
+    if !(x.abs() < 1.0) {
+        return None;
+    }
+    let mut e_step = [0.0; 2];
+    let mut n_pos = [0.0; 2];
+    for (l, [p1, p2, q]) in lanes.iter().enumerate() {
+        if p1.nonpos_degree().is_some() || p2.nonpos_degree().is_some() || q.nonpos_degree().is_some() || !denominators_safe(q) {
+            return None;
+        }
+        e_step[l] = 9.0 * U + p1.perturbation()? + p2.perturbation()? + q.perturbation()? + x_rel;
+        n_pos[l] = first_positive_index([p1.hi, p2.hi, q.hi])?;
+    }
+    let quarter_over_stop = 0.25 / stop;
+    let ax = x.abs();
+    let asymptotic = if ax <= 0.5 { 4.0 * ax * (1.0 + 2.0 * ax) } else { 4.0 * ax / (1.0 - ax) };
+    let mut mult = [quarter_over_stop * asymptotic.max(1.0); 2];
+    let mut factor = [f64::INFINITY; 2];
+    // per lane when done: (sum, sum |s~_k|, sum n |t~_n|, last index, tail)
+    let mut done: [Option<(f64, f64, f64, f64, f64)>; 2] = [None; 2];
+    let mut st = TwoState { t: F64x2::splat(1.0), s: F64x2::splat(1.0), sum_abs_s: F64x2::splat(0.0), sum_nt: F64x2::splat(0.0), idx: F64x2::splat(0.0) };
+    let params = [0, 1, 2].map(|k| F64x2::new(lanes[0][k].hi, lanes[1][k].hi));
+    let n_max = MAX_NATIVE_TERMS as f64;
+    while done.iter().any(Option::is_none) {
+        let lanes_hit = sum_two(&mut st, params, x, n_max, F64x2::new(mult[0], mult[1]));
+        if lanes_hit == 0 {
+            return None; // n_max reached
+        }
+        let nf = st.idx.lo();
+        for l in 0..2 {
+            if lanes_hit & (1 << l) == 0 || done[l].is_some() {
+                continue;
+            }
+            let pick = |v: F64x2| if l == 0 { v.lo() } else { v.hi() };
+            let [p1, p2, q] = &lanes[l];
+            let (t, s) = (pick(st.t), pick(st.s));
+            match series_tail(p1, p2, q, x, x_rel, e_step[l], n_pos[l], nf, t, s, stop, quarter_over_stop, &mut factor[l]) {
+                TailTest::Done(b) => {
+                    done[l] = Some((s, pick(st.sum_abs_s), pick(st.sum_nt), nf, b));
+                    mult[l] = f64::INFINITY;
+                }
+                TailTest::Later(m) => mult[l] = m,
+            }
+        }
+    }
+    let mut out = [(0.0, 0.0); 2];
+    for l in 0..2 {
+        let (s, sum_abs_s, sum_nt, nf, tail) = done[l]?;
+        if !(s.is_finite() && sum_abs_s.is_finite() && sum_nt.is_finite()) || nf * e_step[l] > 0.01 {
+            return None;
+        }
+        let err = (1.01 * (e_step[l] * sum_nt + U * sum_abs_s)) * 1.001 + tail;
+        out[l] = (s, err * (1.0 + 8.0 * U));
+    }
+    Some(out)
+}
+
+/// The running state of [`series_two`]'s loop (lane `l` is series `l`).
+#[derive(Clone, Copy, Debug)]
+struct TwoState {
+    t: F64x2,
+    s: F64x2,
+    sum_abs_s: F64x2, // sum_k |s~_k|
+    sum_nt: F64x2,    // sum_n n |t~_n|
+    idx: F64x2,       // (n, n): the index of the last term added
+}
+
+/// [`series_two`]'s loop: one term a lane a step until a lane's term passes
+/// its trigger (`|t~| mult <= |s~|`: the mask of those lanes) or the index
+/// reaches `n_max` (0). On its own, as [`sum_pairs`].
+#[inline(never)]
+fn sum_two(st: &mut TwoState, params: [F64x2; 3], x: f64, n_max: f64, mult: F64x2) -> u32 {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx") {
+        // SAFETY: the CPU supports AVX (checked just above).
+        return unsafe { sum_two_avx(st, params, x, n_max, mult) };
+    }
+    sum_two_with(st, params, x, n_max, mult)
+}
+
+/// [`sum_two`] compiled for AVX (no fused multiply-add: bit-identical).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+unsafe fn sum_two_avx(st: &mut TwoState, params: [F64x2; 3], x: f64, n_max: f64, mult: F64x2) -> u32 {
+    sum_two_with(st, params, x, n_max, mult)
+}
+
+#[inline(always)]
+fn sum_two_with(st: &mut TwoState, [v1, v2, vq]: [F64x2; 3], x: f64, n_max: f64, mult: F64x2) -> u32 {
+    let TwoState { mut t, mut s, mut sum_abs_s, mut sum_nt, mut idx } = *st;
+    let (one, vx) = (F64x2::splat(1.0), F64x2::splat(x));
+    let mut hit = 0;
+    while idx.lo() < n_max {
+        let idx1 = idx.add(one);
+        let num = v1.add(idx).mul(v2.add(idx));
+        let den = vq.add(idx).mul(idx1);
+        t = t.mul(num.mul(vx).div(den));
+        s = s.add(t);
+        sum_abs_s = sum_abs_s.add(s.abs());
+        sum_nt = sum_nt.add(idx1.mul(t.abs()));
+        idx = idx1;
+        hit = t.abs().mul(mult).le_mask(s.abs());
+        if hit != 0 {
+            break;
+        }
+    }
+    *st = TwoState { t, s, sum_abs_s, sum_nt, idx };
+    hit
 }
 
 /// The running state of [`series_from`]'s two-lane loop.
@@ -690,11 +819,18 @@ fn connection_inv_one_minus_z(a: f64, b: f64, c: f64, z: f64, stop: f64) -> Opti
     // the seven reciprocal Gammas at once (interleaved Horner sums)
     let [g_c, g_a, g_b, g_ca, g_cb, g_amb, g_bma] =
         rgamma_batch([Dw::new(c), Dw::new(a), Dw::new(b), Dw::diff(c, a), Dw::diff(c, b), amb, Dw::diff(b, a)]);
+    let lanes = [(a, b), (b, a)].map(|(p, q)| [Param::exact(p), Param::from_dw(Dw::diff(c, q)), plus_one(Dw::diff(p, q))]);
+    // both series in one two-lane loop where it applies, else one by one
+    let both = series_two(lanes, x, 2.01 * U, stop);
     let mut acc = (0.0f64, 0.0f64);
-    for (p, q, num, den) in [(a, b, [g_b, g_ca], [g_c, g_bma]), (b, a, [g_a, g_cb], [g_c, g_amb])] {
+    for (i, (p, num, den)) in [(a, [g_b, g_ca], [g_c, g_bma]), (b, [g_a, g_cb], [g_c, g_amb])].into_iter().enumerate() {
         let Some(coef) = gamma_coefficient(num, den)? else { continue };
         let pw = pow_from_ln(ln_omz, -p)?;
-        let sum = series(Param::exact(p), Param::from_dw(Dw::diff(c, q)), plus_one(Dw::diff(p, q)), x, 2.01 * U, stop)?;
+        let [p1, p2, q] = lanes[i];
+        let sum = match both {
+            Some(sums) => sums[i],
+            None => series(p1, p2, q, x, 2.01 * U, stop)?,
+        };
         acc = add_connection_term(acc, coef, pw, sum);
     }
     Some((acc.0, acc.1 * (1.0 + 4.0 * U)))
@@ -734,14 +870,22 @@ fn connection_one_minus_z(a: f64, b: f64, c: f64, z: f64, stop: f64) -> Option<(
     // the seven reciprocal Gammas at once (interleaved Horner sums)
     let [g_ca, g_cb, g_c, g_s, g_a, g_b, g_neg_s] =
         rgamma_batch([Dw::diff(c, a), Dw::diff(c, b), Dw::new(c), s, Dw::new(a), Dw::new(b), neg_s]);
+    let lanes = [
+        [Param::exact(a), Param::exact(b), widen(plus_one(neg_s))],
+        [Param::from_dw(Dw::diff(c, a)), Param::from_dw(Dw::diff(c, b)), widen(plus_one(s))],
+    ];
+    // both series in one two-lane loop where it applies, else one by one
+    let both = series_two(lanes, x, 0.0, stop);
+    let sum = |i: usize| match both {
+        Some(sums) => Some(sums[i]),
+        None => series(lanes[i][0], lanes[i][1], lanes[i][2], x, 0.0, stop),
+    };
     if let Some((coef, rel)) = gamma_coefficient([g_ca, g_cb], [g_c, g_s])? {
-        let sum = series(Param::exact(a), Param::exact(b), widen(plus_one(neg_s)), x, 0.0, stop)?;
-        acc = add_connection_term(acc, (coef, rel + S_SLACK), (1.0, 0.0), sum);
+        acc = add_connection_term(acc, (coef, rel + S_SLACK), (1.0, 0.0), sum(0)?);
     }
     if let Some((coef, rel)) = gamma_coefficient([g_a, g_b], [g_c, g_neg_s])? {
         let pw = pow_dw_exponent(ln_f64(x, 0.0)?, s)?;
-        let sum = series(Param::from_dw(Dw::diff(c, a)), Param::from_dw(Dw::diff(c, b)), widen(plus_one(s)), x, 0.0, stop)?;
-        acc = add_connection_term(acc, (coef, rel + S_SLACK), (pw.0, pw.1 + S_SLACK), sum);
+        acc = add_connection_term(acc, (coef, rel + S_SLACK), (pw.0, pw.1 + S_SLACK), sum(1)?);
     }
     Some((acc.0, acc.1 * (1.0 + 4.0 * U)))
 }
@@ -979,4 +1123,5 @@ mod tests {
         assert!(hyp2f1_native(0.3, 0.4, 1.5, 1.0, 1e-13).is_none());
     }
 }
+
 
