@@ -8,7 +8,7 @@
 #[cfg(target_arch = "x86_64")]
 use std::arch::x86_64::{
     __m128d, _mm_add_pd, _mm_andnot_pd, _mm_cmple_pd, _mm_cvtsd_f64, _mm_div_pd, _mm_movemask_pd, _mm_mul_pd, _mm_set1_pd,
-    _mm_set_pd, _mm_shuffle_pd, _mm_unpackhi_pd,
+    _mm_set_pd, _mm_unpackhi_pd,
 };
 
 /// Lanes `(lo, hi)`.
@@ -54,12 +54,6 @@ impl F64x2 {
     #[inline(always)]
     pub(crate) fn le_mask(self, o: F64x2) -> u32 {
         unsafe { _mm_movemask_pd(_mm_cmple_pd(self.0, o.0)) as u32 }
-    }
-
-    /// `(hi, lo)`.
-    #[inline(always)]
-    pub(crate) fn swap(self) -> F64x2 {
-        F64x2(unsafe { _mm_shuffle_pd::<1>(self.0, self.0) })
     }
 
     #[inline(always)]
@@ -112,11 +106,6 @@ impl F64x2 {
     }
 
     #[inline(always)]
-    pub(crate) fn swap(self) -> F64x2 {
-        F64x2([self.0[1], self.0[0]])
-    }
-
-    #[inline(always)]
     pub(crate) fn abs(self) -> F64x2 {
         F64x2([self.0[0].abs(), self.0[1].abs()])
     }
@@ -154,7 +143,6 @@ mod tests {
                 assert_eq!(va.div(vb).hi().to_bits(), (b / a).to_bits());
                 assert_eq!(va.le_mask(vb), (a <= b) as u32 | ((b <= a) as u32) << 1);
                 assert_eq!(va.mul(F64x2::splat(a)).hi().to_bits(), (b * a).to_bits());
-                assert_eq!(va.swap().lo().to_bits(), b.to_bits());
                 assert_eq!(va.abs().lo().to_bits(), a.abs().to_bits());
                 assert_eq!(va.abs().hi().to_bits(), b.abs().to_bits());
             }

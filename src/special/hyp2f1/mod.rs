@@ -73,7 +73,7 @@
 //!   bound when it is at most [`NATIVE_ACCEPT_REL`] relative, otherwise the
 //!   certified 64-bit MP value rounded with `err = |mid - value| + rad`. Over the
 //!   benchmark domain (`a, b in [-3, 3]`, `c in [0.5, 6]`, `z in [-5, 0.9]`) the
-//!   native path certifies every one of 4000 random points (unit test
+//!   native path certifies every one of 10000 random points (unit test
 //!   `bound_holds_on_the_benchmark_domain`); MP remains for `9/10 < z <= 1`,
 //!   `z < -1/2` beyond 3000 terms, and cancellation beyond double words.
 //!
@@ -225,8 +225,10 @@ pub const NATIVE_ACCEPT_REL: f64 = 1.0e-14;
 
 /// Relative bound under which [`hyp2f1`] accepts the native f64 value. The
 /// bound is a worst case over every rounding; the measured error of the values
-/// it accepts stays below `1e-14` relative (`docs/special-functions.md`).
-pub const NATIVE_VALUE_REL: f64 = 1.0e-13;
+/// it accepts stays below `1e-14` relative (0 of 40000 random points of the
+/// benchmark domain at or above `1e-14`, 17 above `5e-15`;
+/// `docs/special-functions.md`). At `1e-13` the worst measured was `1.1e-14`.
+pub const NATIVE_VALUE_REL: f64 = 5.0e-14;
 
 /// `2F1(a, b; c; z)` in f64 with a proven error bound for the f64 inputs as given:
 /// the native f64 series with its running error bound (`native.rs`) where that
@@ -284,7 +286,7 @@ fn validate_f64(a: f64, b: f64, c: f64, z: f64) -> Result<()> {
 
 /// `2F1(a, b; c; z)` in f64 for real `z <= 1`: the value of [`hyp2f1_bounded`]
 /// with the acceptance threshold [`NATIVE_VALUE_REL`] (proven bound at most
-/// `1e-13` relative, measured error below `1e-14` over the benchmark domain, see
+/// `5e-14` relative, measured error below `1e-14` over the benchmark domain, see
 /// `docs/special-functions.md`); otherwise the certified 64-bit MP value rounded.
 pub fn hyp2f1(a: f64, b: f64, c: f64, z: f64) -> Result<f64> {
     validate_f64(a, b, c, z)?;
