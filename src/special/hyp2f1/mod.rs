@@ -65,9 +65,11 @@
 //! * MP: certified, `rad <= 2^-prec |mid|`.
 //! * f64 (`native.rs`, `power_f64.rs`, `rgamma_f64.rs`): the direct series for
 //!   `-1/2 <= z <= 9/10` (and every terminating case), Pfaff for `z < -1/2`, the
-//!   connection formula in `1/(1-z)` for `z <= -1` (first for `z <= -3`), summed
-//!   in f64 with a proven a-priori bound, in double words where f64 cannot
-//!   certify, with certified f64 (table-driven) or double-word `(1-z)^{-a}` and
+//!   connection formula in `1/(1-z)` for `z <= -4` (before Pfaff), summed
+//!   in f64 with a proven a-priori bound (two lanes at a time), with a
+//!   double-word head where the first terms cancel, in double words
+//!   throughout where that cannot certify, with certified f64 (table-driven)
+//!   or double-word `(1-z)^{-a}` and
 //!   certified f64 reciprocal Gammas. The arguments are checked in f64; MPFR is
 //!   touched only on the fallback. [`hyp2f1_bounded`] returns that proven
 //!   bound when it is at most [`NATIVE_ACCEPT_REL`] relative, otherwise the

@@ -8,14 +8,15 @@
 //!   `(1-z)^{-b} 2F1(c-a, b; c; w)`, `w = z/(z-1) in (1/3, 1)`; the candidate
 //!   with fewer negative numerators first, the other if the first cannot certify.
 //!   `c - b` is a double word (exact); the prefactor is
-//!   [`pow_f64`](super::power_f64) for the f64 sums (a bound of a few `u`) and
+//!   [`pow_from_ln`](super::power_f64) for the f64 sums (a bound of a few `u`) and
 //!   [`pow_dw`](super::power::pow_dw) for the double-word sums.
-//! * `z <= -1`: the connection formula in `x = 1/(1-z)` [DLMF 15.8.3], two f64
-//!   series in `x <= 1/2` and seven reciprocal Gammas
-//!   ([`rgamma_batch`](super::rgamma_f64)), first for `z <= -3` (where Pfaff's
-//!   `w >= 3/4` needs more than 130 terms), after Pfaff for `-3 < z <= -1`;
-//!   not where `a - b` is within `0.05` of an integer (its two terms blow up).
-//!   Its bound is derived at [`connection_inv_one_minus_z`].
+//! * `z <= -4`: the connection formula in `x = 1/(1-z)` [DLMF 15.8.3], two f64
+//!   series in `x <= 1/5` and seven reciprocal Gammas
+//!   ([`rgamma_batch`](super::rgamma_f64)), first (Pfaff's `w >= 4/5` needs
+//!   more than 150 terms); not where `a - b` is within `0.05` of an integer
+//!   (its two terms blow up). Its bound is derived at
+//!   [`connection_inv_one_minus_z`]. Between `-4` and `-1/2`, Pfaff goes first
+//!   (measured crossover, `hyp2f1_regions`).
 //!
 //! * `7/10 < z < 1`: the connection formula in `x = 1 - z` [DLMF 15.8.4], two
 //!   f64 series in `x < 3/10` and six reciprocal Gammas, first (the direct
@@ -69,7 +70,7 @@
 //! instead of the double-word sum throughout.
 
 use super::power::{dw_add, dw_div, dw_div_p, dw_mul, dw_mul_p, pow_dw, Dw, U};
-use super::power_f64::{floor_any, ln_f64, pow_dw_exponent, pow_f64, pow_from_ln, round_small};
+use super::power_f64::{floor_any, ln_f64, pow_dw_exponent, pow_from_ln, round_small};
 use super::rgamma_f64::rgamma_batch;
 #[cfg(target_arch = "x86_64")]
 use crate::ball::Fused;
@@ -86,8 +87,9 @@ const PFAFF_BELOW: f64 = -0.5;
 
 /// Below this `z` the connection formula in `1/(1-z)` goes first: its two
 /// series (argument at most `1/(1-z)`) and seven reciprocal Gammas cost less
-/// than Pfaff's one series at `w = z/(z-1) = 1 - 1/(1-z)`.
-const CONNECTION_FIRST_BELOW: f64 = -3.0;
+/// than Pfaff's one series at `w = z/(z-1) = 1 - 1/(1-z)` (measured over the
+/// benchmark domain: `-4` beats `-3` and `-4.5`).
+const CONNECTION_FIRST_BELOW: f64 = -4.0;
 
 /// The connection formulas need `a - b` (or `c - a - b`) this far from an
 /// integer (closer, their two terms blow up and cancel; Pfaff or the direct
@@ -952,14 +954,18 @@ pub(super) fn hyp2f1_native(a: f64, b: f64, c: f64, z: f64, rel_tol: f64) -> Opt
     // f64 sums first (w rounded twice: relative error <= 2.01 u) ...
     let w = -z / omz.hi;
     // |P - P~| <= pre_rel |P~| (power_f64); one more rounding for the product.
-    let pfaff = |p: f64, (s, err_s): (f64, f64)| -> Option<Bounded> {
-        let (pre, pre_rel) = pow_f64(omz, -p)?;
+    let pfaff = |(pre, pre_rel): (f64, f64), (s, err_s): (f64, f64)| -> Option<Bounded> {
         let v = pre * s;
         let pr = pre_rel * 1.0001;
         accept(v, (pre.abs() * err_s * (1.0 + 2.0 * pr) + (1.01 * pr + U) * v.abs()) * (1.0 + 4.0 * U))
     };
+    // ln(1 - z) once; each power before its sum (independent work the CPU
+    // overlaps with the sum's start)
+    let ln_omz = ln_f64(omz.hi, omz.lo);
     for (p, q) in candidates {
-        if let Some(r) = series(Param::exact(p), Param::from_dw(q), Param::exact(c), w, 2.01 * U, stop).and_then(|sum| pfaff(p, sum)) {
+        let pre = ln_omz.and_then(|l| pow_from_ln(l, -p));
+        let sum = series(Param::exact(p), Param::from_dw(q), Param::exact(c), w, 2.01 * U, stop);
+        if let Some(r) = pre.zip(sum).and_then(|(pre, sum)| pfaff(pre, sum)) {
             return Some(r);
         }
     }
@@ -969,7 +975,8 @@ pub(super) fn hyp2f1_native(a: f64, b: f64, c: f64, z: f64, rel_tol: f64) -> Opt
     // second one does not, at the cost of two series and seven Gammas) ...
     let w = dw_div(Dw::new(-z), omz);
     for (p, q) in candidates {
-        if let Some(r) = series_hybrid(Dw::new(p), q, Dw::new(c), w, 32.0 * U * U, stop).and_then(|sum| pfaff(p, sum)) {
+        let pre = ln_omz.and_then(|l| pow_from_ln(l, -p));
+        if let Some(r) = pre.zip(series_hybrid(Dw::new(p), q, Dw::new(c), w, 32.0 * U * U, stop)).and_then(|(pre, sum)| pfaff(pre, sum)) {
             return Some(r);
         }
     }

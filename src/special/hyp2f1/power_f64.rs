@@ -254,7 +254,9 @@ pub(crate) fn floor_any(x: f64) -> f64 {
 /// `x^p` for `x = hi + lo > 0` (a double word) and an f64 `p`:
 /// `(value, rel)` with `|x^p - value| <= rel |value|`. The exponent `p ln x`
 /// is carried as `y_hi + y_lo` (`two_prod`), so its error is `|p|` times that
-/// of [`ln_f64`] plus roundings far below `u`.
+/// of [`ln_f64`] plus roundings far below `u`. (The native `2F1` computes
+/// `ln x` once and calls [`pow_from_ln`]; this form is the one tested.)
+#[cfg(test)]
 pub(super) fn pow_f64(x: Dw, p: f64) -> Option<(f64, f64)> {
     pow_from_ln(ln_f64(x.hi, x.lo)?, p)
 }
