@@ -294,7 +294,7 @@ fn series_from(p1: Param, p2: Param, q: Param, x: f64, x_rel: f64, stop: f64, st
     // succeeds at its first call.
     // (rho >= |x|, so the tail test cannot succeed before |t~| |x| / (1 - |x|)
     // <= stop |s~|: the first call waits for that, at least for |t~| <= 4 stop |s~|)
-    let quarter_over_stop = 0.25 / stop;
+    let quarter_over_stop = quarter_over(stop);
     // (a trigger only, any positive value is sound: 4|x|/(1 - |x|) <= 4|x|(1 + 2|x|)
     // for |x| <= 1/2, without a division)
     let ax = x.abs();
@@ -308,7 +308,6 @@ fn series_from(p1: Param, p2: Param, q: Param, x: f64, x_rel: f64, stop: f64, st
     let mut st = PairState {
         t: start.t,
         s: start.s,
-        sum_abs_s: 0.0,
         sum_nt2: F64x2::splat(0.0),
         idx: F64x2::new(start.n as f64, start.n as f64 + 1.0),
         n: start.n,
@@ -323,9 +322,10 @@ fn series_from(p1: Param, p2: Param, q: Param, x: f64, x_rel: f64, stop: f64, st
             TailTest::Later(mult) => tail_mult = mult,
         }
     }
-    let PairState { mut t, mut s, mut sum_abs_s, sum_nt2, idx, mut n } = st;
+    let PairState { mut t, mut s, sum_nt2, idx, mut n } = st;
     let nf = idx.lo();
     let mut sum_nt = sum_nt2.lo() + sum_nt2.hi();
+    let mut additions = (n - start.n) / 2;
     if deg.is_some() {
         if n + 1 == limit {
             // the last term of a polynomial, alone (8 roundings; with the
@@ -333,18 +333,51 @@ fn series_from(p1: Param, p2: Param, q: Param, x: f64, x_rel: f64, stop: f64, st
             let n1 = nf + 1.0;
             t *= (p1.hi + nf) * (p2.hi + nf) * x / ((q.hi + nf) * n1);
             s += t;
-            sum_abs_s += s.abs();
             sum_nt += n1 * t.abs();
             n += 1;
+            additions += 1;
         }
         tail = Some(0.0);
     }
     let tail = tail?;
-    if !(s.is_finite() && sum_abs_s.is_finite() && sum_nt.is_finite()) || (n as f64) * e_step > 0.01 {
+    if !(s.is_finite() && sum_nt.is_finite()) || (n as f64) * e_step > 0.01 {
         return None;
     }
+    // The additions' rounding, u sum_k |s~_k| over the K additions, without
+    // summing |s~_k| in the loop: s~_k = s~_K - (the later pairs) - (their
+    // roundings), a pair term of index n is in at most n/2 of them, so
+    // (1 - u K) sum_k |s~_k| <= K |s~_K| + (1 + u)/2 sum_n n |t~_n|, and u K <= 1/2000
+    // (n E <= 1/100, E >= 10 u): sum_k |s~_k| <= 1.001 (K |s~_K| + 0.5001 sum_n n |t~_n|).
+    let sum_abs_s = 1.001 * (additions as f64 * s.abs() + 0.5001 * sum_nt);
     let err = (1.01 * (e_step * sum_nt + U * sum_abs_s)) * 1.001 + tail;
     Some((s, err * (1.0 + 8.0 * U)))
+}
+
+/// The largest power of two at most `x` (a positive normal `x`).
+fn pow2_floor(x: f64) -> f64 {
+    f64::from_bits(x.to_bits() & 0x7ff0_0000_0000_0000)
+}
+
+/// Where the f64 series of [`hyp2f1_native`] stop: once their tail bound is
+/// below `rel_tol/256` of the sum (it is part of the returned bound), rounded
+/// down to a power of two (so the sums form `1/stop` exactly, without a
+/// division): `2^-53` for `hyp2f1`, `2^-55` for `hyp2f1_bounded`, never above
+/// `2^-46` or below `2^-56`.
+fn stop_for(rel_tol: f64) -> f64 {
+    pow2_floor((rel_tol / 256.0).clamp(1.3877787807814457e-17, 1.4210854715202004e-14))
+}
+
+/// `1/(4 stop)`: exact, without a division, for `stop` a power of two in the
+/// normal range (as [`hyp2f1_native`] makes it); a division otherwise.
+#[inline]
+fn quarter_over(stop: f64) -> f64 {
+    let bits = stop.to_bits();
+    if bits & 0x000f_ffff_ffff_ffff == 0 && stop > 1e-300 && stop < 1.0 {
+        // 2^e -> 2^(-e-2): exponent field 1023 + e -> 1023 - e - 2
+        f64::from_bits((2044 - (bits >> 52)) << 52)
+    } else {
+        0.25 / stop
+    }
 }
 
 /// Whether every denominator `(q+n)(n+1)` of a series, and a product of two,
@@ -364,8 +397,8 @@ fn denominators_safe(q: &Param) -> bool {
 /// One term a step in each lane: `r_n = fl(fl(N_n x) / D_n)` with
 /// `N_n = fl(fl(p1+n) fl(p2+n))`, `D_n = fl(fl(q+n) (n+1))`, and
 /// `t_{n+1} = fl(t_n r_n)`: six roundings on the numerator's side, two on the
-/// denominator's, so `E = 9 u` a term (for the `13 u` of [`series`]), and the
-/// sum `s += t` adds `u |s~_k|` a term. Each lane stops at its own tail test
+/// denominator's, so `E = 9 u` a term (for the `10 u` of [`series`]), and the
+/// sum `s += t` adds `u |s~_k|` a term (bounded at the end, as in [`series_from`]). Each lane stops at its own tail test
 /// ([`series_tail`]); the other runs on.
 fn series_two(lanes: [[Param; 3]; 2], x: f64, x_rel: f64, stop: f64) -> Option<[(f64, f64); 2]> {
     if !(x.abs() < 1.0) {
@@ -380,14 +413,14 @@ fn series_two(lanes: [[Param; 3]; 2], x: f64, x_rel: f64, stop: f64) -> Option<[
         e_step[l] = 9.0 * U + p1.perturbation()? + p2.perturbation()? + q.perturbation()? + x_rel;
         n_pos[l] = first_positive_index([p1.hi, p2.hi, q.hi])?;
     }
-    let quarter_over_stop = 0.25 / stop;
+    let quarter_over_stop = quarter_over(stop);
     let ax = x.abs();
     let asymptotic = if ax <= 0.5 { 4.0 * ax * (1.0 + 2.0 * ax) } else { 4.0 * ax / (1.0 - ax) };
     let mut mult = [quarter_over_stop * asymptotic.max(1.0); 2];
     let mut factor = [f64::INFINITY; 2];
-    // per lane when done: (sum, sum |s~_k|, sum n |t~_n|, last index, tail)
-    let mut done: [Option<(f64, f64, f64, f64, f64)>; 2] = [None; 2];
-    let mut st = TwoState { t: F64x2::splat(1.0), s: F64x2::splat(1.0), sum_abs_s: F64x2::splat(0.0), sum_nt: F64x2::splat(0.0), idx: F64x2::splat(0.0) };
+    // per lane when done: (sum, sum n |t~_n|, last index, tail)
+    let mut done: [Option<(f64, f64, f64, f64)>; 2] = [None; 2];
+    let mut st = TwoState { t: F64x2::splat(1.0), s: F64x2::splat(1.0), sum_nt: F64x2::splat(0.0), idx: F64x2::splat(0.0) };
     let params = [0, 1, 2].map(|k| F64x2::new(lanes[0][k].hi, lanes[1][k].hi));
     let n_max = MAX_NATIVE_TERMS as f64;
     while done.iter().any(Option::is_none) {
@@ -405,7 +438,7 @@ fn series_two(lanes: [[Param; 3]; 2], x: f64, x_rel: f64, stop: f64) -> Option<[
             let (t, s) = (pick(st.t), pick(st.s));
             match series_tail(p1, p2, q, x, x_rel, e_step[l], n_pos[l], nf, t, s, stop, quarter_over_stop, &mut factor[l]) {
                 TailTest::Done(b) => {
-                    done[l] = Some((s, pick(st.sum_abs_s), pick(st.sum_nt), nf, b));
+                    done[l] = Some((s, pick(st.sum_nt), nf, b));
                     mult[l] = f64::INFINITY;
                 }
                 TailTest::Later(m) => mult[l] = m,
@@ -414,10 +447,14 @@ fn series_two(lanes: [[Param; 3]; 2], x: f64, x_rel: f64, stop: f64) -> Option<[
     }
     let mut out = [(0.0, 0.0); 2];
     for l in 0..2 {
-        let (s, sum_abs_s, sum_nt, nf, tail) = done[l]?;
-        if !(s.is_finite() && sum_abs_s.is_finite() && sum_nt.is_finite()) || nf * e_step[l] > 0.01 {
+        let (s, sum_nt, nf, tail) = done[l]?;
+        if !(s.is_finite() && sum_nt.is_finite()) || nf * e_step[l] > 0.01 {
             return None;
         }
+        // the additions' rounding as in series_from, with one addition a term
+        // (a term of index n is in at most n - 1 later partial sums):
+        // sum_k |s~_k| <= 1.001 (N |s~_N| + 1.0001 sum_n n |t~_n|)
+        let sum_abs_s = 1.001 * (nf * s.abs() + 1.0001 * sum_nt);
         let err = (1.01 * (e_step[l] * sum_nt + U * sum_abs_s)) * 1.001 + tail;
         out[l] = (s, err * (1.0 + 8.0 * U));
     }
@@ -429,7 +466,6 @@ fn series_two(lanes: [[Param; 3]; 2], x: f64, x_rel: f64, stop: f64) -> Option<[
 struct TwoState {
     t: F64x2,
     s: F64x2,
-    sum_abs_s: F64x2, // sum_k |s~_k|
     sum_nt: F64x2,    // sum_n n |t~_n|
     idx: F64x2,       // (n, n): the index of the last term added
 }
@@ -456,7 +492,7 @@ unsafe fn sum_two_avx(st: &mut TwoState, params: [F64x2; 3], x: f64, n_max: f64,
 
 #[inline(always)]
 fn sum_two_with(st: &mut TwoState, [v1, v2, vq]: [F64x2; 3], x: f64, n_max: f64, mult: F64x2) -> u32 {
-    let TwoState { mut t, mut s, mut sum_abs_s, mut sum_nt, mut idx } = *st;
+    let TwoState { mut t, mut s, mut sum_nt, mut idx } = *st;
     let (one, vx) = (F64x2::splat(1.0), F64x2::splat(x));
     let mut hit = 0;
     while idx.lo() < n_max {
@@ -465,7 +501,6 @@ fn sum_two_with(st: &mut TwoState, [v1, v2, vq]: [F64x2; 3], x: f64, n_max: f64,
         let den = vq.add(idx).mul(idx1);
         t = t.mul(num.mul(vx).div(den));
         s = s.add(t);
-        sum_abs_s = sum_abs_s.add(s.abs());
         sum_nt = sum_nt.add(idx1.mul(t.abs()));
         idx = idx1;
         hit = t.abs().mul(mult).le_mask(s.abs());
@@ -473,7 +508,7 @@ fn sum_two_with(st: &mut TwoState, [v1, v2, vq]: [F64x2; 3], x: f64, n_max: f64,
             break;
         }
     }
-    *st = TwoState { t, s, sum_abs_s, sum_nt, idx };
+    *st = TwoState { t, s, sum_nt, idx };
     hit
 }
 
@@ -482,7 +517,6 @@ fn sum_two_with(st: &mut TwoState, [v1, v2, vq]: [F64x2; 3], x: f64, n_max: f64,
 struct PairState {
     t: f64,
     s: f64,
-    sum_abs_s: f64,       // sum_k |s~_k| over the additions
     sum_nt2: F64x2,       // sum_n n |t~_n|, odd and even n in two lanes
     idx: F64x2,           // (n, n + 1)
     n: u64,
@@ -512,28 +546,38 @@ unsafe fn sum_pairs_avx(st: &mut PairState, params: [F64x2; 3], x: f64, limit: u
 
 #[inline(always)]
 fn sum_pairs_with(st: &mut PairState, [v1, v2, vq]: [F64x2; 3], x: f64, limit: u64, tail_mult: f64) -> bool {
-    let PairState { mut t, mut s, mut sum_abs_s, mut sum_nt2, mut idx, mut n } = *st;
+    let PairState { mut t, mut s, mut sum_nt2, mut idx, mut n } = *st;
     let (one, two, vx) = (F64x2::splat(1.0), F64x2::splat(2.0), F64x2::splat(x));
-    let mut test = false;
-    while n + 2 <= limit {
+    // one pair: the terms n + 1 and n + 2
+    let pair = |t: &mut f64, s: &mut f64, sum_nt2: &mut F64x2, idx: &mut F64x2| {
         let idx1 = idx.add(one); // (n + 1, n + 2)
-        let num = v1.add(idx).mul(v2.add(idx)); // (N_n, N_{n+1})
-        let den = vq.add(idx).mul(idx1); // (D_n, D_{n+1})
+        let num = v1.add(*idx).mul(v2.add(*idx)); // (N_n, N_{n+1})
+        let den = vq.add(*idx).mul(idx1); // (D_n, D_{n+1})
         let r = num.mul(vx).div(den); // (r_n, r_{n+1})
         let (r0, r1) = (r.lo(), r.hi());
-        let t1 = t * r0;
-        t *= r0 * r1;
-        s += t1 + t;
-        sum_abs_s += s.abs();
-        sum_nt2 = sum_nt2.add(idx1.mul(F64x2::new(t1, t).abs()));
-        n += 2;
-        idx = idx.add(two);
+        let t1 = *t * r0;
+        *t *= r0 * r1;
+        *s += t1 + *t;
+        *sum_nt2 = sum_nt2.add(idx1.mul(F64x2::new(t1, *t).abs()));
+        *idx = idx.add(two);
+    };
+    let mut test = false;
+    // two pairs a step, the trigger tested once
+    while n + 4 <= limit {
+        pair(&mut t, &mut s, &mut sum_nt2, &mut idx);
+        pair(&mut t, &mut s, &mut sum_nt2, &mut idx);
+        n += 4;
         if t.abs() * tail_mult <= s.abs() {
             test = true;
             break;
         }
     }
-    *st = PairState { t, s, sum_abs_s, sum_nt2, idx, n };
+    if !test && n + 2 <= limit {
+        pair(&mut t, &mut s, &mut sum_nt2, &mut idx);
+        n += 2;
+        test = t.abs() * tail_mult <= s.abs();
+    }
+    *st = PairState { t, s, sum_nt2, idx, n };
     test
 }
 
@@ -912,10 +956,7 @@ pub(super) fn hyp2f1_native(a: f64, b: f64, c: f64, z: f64, rel_tol: f64) -> Opt
     let accept = |v: f64, err: f64| -> Option<Bounded> {
         (v.is_finite() && v.abs() > 1e-290 && v.abs() < 1e290 && err <= rel_tol * v.abs()).then_some(Bounded { value: v, err })
     };
-    // The f64 series stop once their tail bound is below rel_tol/512 of the sum
-    // (it is part of the returned bound): about 2^-52 for hyp2f1, 2^-56 for
-    // hyp2f1_bounded, never above 2^-46 or below 2^-56.
-    let stop = (rel_tol / 512.0).clamp(1.3877787807814457e-17, 1.4210854715202004e-14);
+    let stop = stop_for(rel_tol);
     let terminating = Param::exact(a).nonpos_degree().is_some() || Param::exact(b).nonpos_degree().is_some();
     if !terminating && z > CONNECTION_ONE_MINUS_Z_ABOVE {
         if let Some(r) = connection_one_minus_z(a, b, c, z, stop).and_then(|(v, err)| accept(v, err)) {
@@ -1055,6 +1096,22 @@ mod tests {
         assert!(answered as f64 >= 0.85 * total as f64, "{answered}/{total}");
     }
 
+    /// The stops are powers of two, and `1/(4 stop)` is exact without a division.
+    #[test]
+    fn stops_are_powers_of_two() {
+        for e in -60..-1 {
+            let s = 2f64.powi(e);
+            assert_eq!(quarter_over(s), 0.25 / s);
+            assert_eq!(pow2_floor(s * 1.7), s);
+        }
+        assert_eq!(quarter_over(3e-17), 0.25 / 3e-17);
+        for rel in [super::super::NATIVE_ACCEPT_REL, super::super::NATIVE_VALUE_REL, 1e-20, 1.0] {
+            let stop = stop_for(rel);
+            assert_eq!(pow2_floor(stop), stop);
+            assert!(stop <= (rel / 256.0).max(1.3877787807814457e-17), "{rel:e}: {stop:e}");
+        }
+    }
+
     /// The double-word series with fused products (where the CPU has them) is
     /// bit-identical to the portable one.
     #[test]
@@ -1082,8 +1139,8 @@ mod tests {
             let (a, b, c) = (rng.uniform(-3.0, 3.0), rng.uniform(-3.0, 3.0), rng.uniform(0.5, 6.0));
             let x = if i % 2 == 0 { rng.uniform(1.0 / 3.0, 0.85) } else { rng.uniform(-0.5, 0.85) };
             let p2 = if i % 2 == 0 { c - b } else { b };
-            // the stops of hyp2f1_bounded and hyp2f1 (rel_tol / 512, clamped)
-            let stop = if i % 4 < 2 { 1.3877787807814457e-17 } else { super::super::NATIVE_VALUE_REL / 512.0 };
+            // the stops of hyp2f1_bounded and hyp2f1
+            let stop = stop_for(if i % 4 < 2 { super::super::NATIVE_ACCEPT_REL } else { super::super::NATIVE_VALUE_REL });
             let f64_sum = series(Param::exact(a), Param::exact(p2), Param::exact(c), x, 0.0, stop);
             if f64_sum.is_some_and(|(v, err)| err <= 1e-13 * v.abs()) {
                 continue;
@@ -1143,6 +1200,7 @@ mod tests {
         assert!(hyp2f1_native(0.3, 0.4, 1.5, 1.0, 1e-13).is_none());
     }
 }
+
 
 
 
