@@ -16,6 +16,17 @@ It times scipy.special.hyp2f1 on the whole vector (best of 7), computes SciPy's
 worst relative error against mpmath at 120 bits, and prints one table with the
 maugis time per value read from criterion's estimates.
 
+By band of z (`--regions`, 20000 points by default): build the example first
+(`cargo build --release --example hyp2f1_regions`), then
+
+    python3 reference/bench_scipy.py --regions
+
+In one run, on the same 20000 points (the example's LCG is this one, same seed
+and order): scipy.special.hyp2f1 per band of z and on the whole vector in the
+drawn order (best of 7 each), and the Rust example as a subprocess (maugis
+hyp2f1 per band and in the drawn order, best of 5; hyp2f1_bounded beside it),
+in one table with the ratio SciPy / maugis.
+
 J_n (issue 8: integer n <= 60, x <= 150, uniform): build the example first
 (`cargo build --release --example bessel_f64`), then
 
@@ -137,16 +148,62 @@ def bench_bessel(points, accuracy_points, exe):
         print(rust.rstrip())
 
 
+REGION_BANDS = [(-5.0, -4.0), (-4.0, -3.0), (-3.0, -2.0), (-2.0, -1.0), (-1.0, -0.5), (-0.5, 0.0), (0.0, 0.5),
+                (0.5, 0.75), (0.75, 0.9)]
+
+
+def bench_regions(n_points, exe):
+    """SciPy and maugis (examples/hyp2f1_regions) per band of z, in one run."""
+    if not exe.exists():
+        raise SystemExit("build the Rust side first: cargo build --release --example hyp2f1_regions")
+    if n_points != 20000:
+        raise SystemExit("--regions uses the example's 20000 points")
+    p = points(n_points)
+    points_array = p
+    load = os.getloadavg()
+    scipy_us = {}
+    for key in REGION_BANDS + ["all"]:
+        sel = points_array if key == "all" else p[(p[:, 3] >= key[0]) & (p[:, 3] < key[1])]
+        a, b, c, z = (np.ascontiguousarray(sel[:, i]) for i in range(4))
+        wall, _ = best_of(7, lambda: scipy.special.hyp2f1(a, b, c, z))
+        scipy_us[key] = wall / len(sel) * 1e6
+    rust = subprocess.run([str(exe)], capture_output=True, text=True, check=True).stdout
+    ours = {}
+    for line in rust.splitlines():
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if len(cells) != 4 or not cells[1].isdigit():
+            continue
+        if cells[0].startswith("["):
+            lo, hi = (float(v) for v in cells[0].strip("[)").split(","))
+            ours[(lo, hi)] = (float(cells[2]), float(cells[3]), int(cells[1]))
+        elif cells[0] == "all, drawn order":
+            ours["all"] = (float(cells[2]), float(cells[3]), int(cells[1]))
+    print("points: %d (a, b in [-3, 3], c in [0.5, 6], z in [-5, 0.9]); scipy %s, numpy %s; load average %.1f %.1f %.1f"
+          % (n_points, scipy.__version__, np.__version__, *load))
+    print("| z band | points | scipy.special.hyp2f1 | maugis hyp2f1 | SciPy / maugis | maugis hyp2f1_bounded |")
+    print("|---|---|---|---|---|---|")
+    for key in REGION_BANDS + ["all"]:
+        v, bounded, n = ours[key]
+        name = "all, drawn order" if key == "all" else "[%g, %g)" % key
+        print("| %s | %d | %.3f us | %.3f us | %.2f | %.3f us |" % (name, n, scipy_us[key], v, scipy_us[key] / v, bounded))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--points", type=int, default=None)
     ap.add_argument("--bessel", action="store_true", help="J_n instead of 2F1")
+    ap.add_argument("--regions", action="store_true", help="2F1 by band of z, both sides in one run")
+    ap.add_argument("--regions-example", type=Path, default=ROOT / "target" / "release" / "examples" / "hyp2f1_regions",
+                    help="the built examples/hyp2f1_regions binary")
     ap.add_argument("--accuracy-points", type=int, default=20000)
     ap.add_argument("--rust-example", type=Path, default=ROOT / "target" / "release" / "examples" / "bessel_f64",
                     help="the built examples/bessel_f64 binary")
     args = ap.parse_args()
     if args.bessel:
         bench_bessel(args.points or 100000, args.accuracy_points, args.rust_example)
+        return
+    if args.regions:
+        bench_regions(args.points or 20000, args.regions_example)
         return
     args.points = args.points or 1000
     p = points(args.points)

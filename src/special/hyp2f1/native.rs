@@ -103,6 +103,11 @@ const CONNECTION_MIN_FRAC: f64 = 0.05;
 /// formula first from `z = 0.7`).
 const CONNECTION_ONE_MINUS_Z_ABOVE: f64 = 0.9;
 
+/// Above this `z` the connection formula in `1 - z` is the fallback when the
+/// direct series cannot certify (before the double-word head): at
+/// `hyp2f1_bounded`'s `1e-14` that happens often near `z = 0.9`.
+const CONNECTION_ONE_MINUS_Z_FALLBACK_ABOVE: f64 = 0.7;
+
 /// A series parameter `hi + lo` (`lo = 0` when it is an exact f64).
 #[derive(Clone, Copy, Debug)]
 struct Param {
@@ -970,7 +975,14 @@ pub(super) fn hyp2f1_native(a: f64, b: f64, c: f64, z: f64, rel_tol: f64) -> Opt
         if let Some(r) = series(pa, pb, pc, z, 0.0, stop).and_then(|(v, err)| accept(v, err)) {
             return Some(r);
         }
-        // A double-word head where the first terms cancel, then f64 ...
+        // Above 0.7 the connection formula in 1 - z (its series in 1 - z < 0.3
+        // are short, and its cancellation a different one) ...
+        if !terminating && z > CONNECTION_ONE_MINUS_Z_FALLBACK_ABOVE {
+            if let Some(r) = connection_one_minus_z(a, b, c, z, stop).and_then(|(v, err)| accept(v, err)) {
+                return Some(r);
+            }
+        }
+        // ... a double-word head where the first terms cancel, then f64 ...
         if let Some(r) = series_hybrid(Dw::new(a), Dw::new(b), Dw::new(c), Dw::new(z), 0.0, stop).and_then(|(v, err)| accept(v, err)) {
             return Some(r);
         }
