@@ -729,15 +729,16 @@ fn series_dw_with<P: ExactProduct>(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64) -> 
 /// in f64, for a sum whose first terms cancel (where the f64 sum cannot
 /// certify) but whose later terms are small: [`series_dw`]'s loop until the
 /// term `t_K` (`K >= n_pos`) is small enough that the f64 rest's rounding
-/// bound, about `13 u |t_K| (K + 1) / (1 - rho)^2`, is below an eighth of the
-/// target `512 stop |s|` (or `K = 96`), then
+/// bound, about `E |t_K| (K + 1) / (1 - rho)^2` (`E` = 10 u and the
+/// parameters' perturbations), is below an eighth of the target
+/// `rel_tol |s| >= 256 stop |s|` (or `K = 96`), then
 /// [`series_from`] with `t~_K = fl(t_K.hi + t_K.lo)` and the partial sum's
 /// high word, and the low word added at the end.
 ///
 /// Error: the head as in [`series_dw`] (per step `E_dw = 128 u^2 + x_rel`,
 /// `3.1 u^2 |s_k|` per addition); `t~_K` errs by at most `1.01 K E_dw + 1.01 u`
 /// relative, below the `K E` that [`series_from`]'s absolute-index weights
-/// already charge (`E >= 13 u`); the f64 argument `x.hi` errs by
+/// already charge (`E >= 10 u`, `K >= 1`); the f64 argument `x.hi` errs by
 /// `theta = 1.01 (|x.lo| + x_rel |x|) / |x.hi|` relative, passed as its
 /// `x_rel`; the final `fl(s_f + s_K.lo)` adds `u |v|`.
 fn series_hybrid(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64, stop: f64) -> Option<(f64, f64)> {
@@ -766,10 +767,11 @@ fn series_hybrid_with<P: ExactProduct>(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64,
     let e_dw = 128.0 * U * U + x_rel;
     let n_pos = first_positive_index([p1.hi, p2.hi, q.hi])?;
     let (pa, pb, pq) = (Param::from_dw(p1), Param::from_dw(p2), Param::from_dw(q));
-    // The switch: once every later ratio is below rho < 1, the f64 rest
-    // charges about 13 u sum_{n>K} n |t_n| <= 13 u |t_K| (K + 1) / (1 - rho)^2;
-    // the head ends when that is below 1/8 of the target 512 stop |s|
-    // (|t_K| (K + 1) w <= |s| with w = 16 u / (64 stop (1 - rho)^2)).
+    // The switch (a cost decision only; the bound is the final one): once
+    // every later ratio is below rho < 1, the f64 rest charges about
+    // E sum_{n>K} n |t_n| <= E |t_K| (K + 1) / (1 - rho)^2, E ~ 10 u to 16 u;
+    // the head ends when that is below 1/8 of the target 256 stop |s|
+    // (|t_K| (K + 1) w <= |s| with w = 16 u / (32 stop (1 - rho)^2)).
     let mut w_switch = f64::INFINITY;
     let mut rho_tried_at = -1.0f64;
     let mut t = Dw::new(1.0);
@@ -796,7 +798,7 @@ fn series_hybrid_with<P: ExactProduct>(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64,
                 rho_tried_at = nf;
                 let rho = ratio_bound_tight(&pa, &pb, &pq, x.hi.abs() * (1.0 + 2.0 * U) * (1.0 + x_rel) * (1.0 + 2.0 * U), nf);
                 if rho < 1.0 {
-                    w_switch = 16.0 * U / (64.0 * stop * (1.0 - rho) * (1.0 - rho));
+                    w_switch = 16.0 * U / (32.0 * stop * (1.0 - rho) * (1.0 - rho));
                 }
             }
             if weighted * w_switch <= s.hi.abs() {
