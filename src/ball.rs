@@ -46,7 +46,7 @@ pub use bounded::Bounded;
 pub use decimal::{eval_at_decimals, eval_at_decimals_with_floor, Decimal, MAX_DECIMAL_DIGITS, MAX_DECIMAL_EXPONENT, MAX_DECIMAL_INPUT_PREC};
 pub use double_double::Dd;
 pub(crate) use dd_bounded::{div_f64_p, mag, BoundedDd, BOUND_INFLATION, C_ADD, U, U2};
-pub(crate) use double_double::{Dekker, ExactProduct, Fused};
+pub(crate) use double_double::{cpu_dispatch, Dekker, ExactProduct, Fused};
 pub use mag::Mag;
 
 /// Precision (bits) of the radius-sized `Float` values handed out by

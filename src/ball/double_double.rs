@@ -99,6 +99,55 @@ impl ExactProduct for Fused {
     }
 }
 
+/// Defines `fn $name(args) -> ret` that runs `$with` compiled for a CPU
+/// feature where the CPU has it (checked at run time; `std` caches the check)
+/// and the portable build otherwise:
+///
+/// * `=> $with` (fused multiply-add): `$with::<Fused>` inside a function
+///   compiled with `fma`, else `$with::<Dekker>` (both exact products, so the
+///   results are bit-identical);
+/// * `=> avx $with`: `$with` inside a function compiled with `avx` (the same
+///   operations in three-operand form: bit-identical), else `$with`.
+///
+/// `$with` must be `#[inline(always)]`, so that the feature reaches its body.
+macro_rules! cpu_dispatch {
+    ($(#[$attr:meta])* $vis:vis fn $name:ident($($arg:ident: $ty:ty),* $(,)?) -> $ret:ty => $with:ident) => {
+        $(#[$attr])*
+        $vis fn $name($($arg: $ty),*) -> $ret {
+            #[cfg(target_arch = "x86_64")]
+            {
+                #[target_feature(enable = "fma")]
+                unsafe fn fused($($arg: $ty),*) -> $ret {
+                    $with::<$crate::ball::Fused>($($arg),*)
+                }
+                if std::arch::is_x86_feature_detected!("fma") {
+                    // SAFETY: the CPU supports FMA (checked just above).
+                    return unsafe { fused($($arg),*) };
+                }
+            }
+            $with::<$crate::ball::Dekker>($($arg),*)
+        }
+    };
+    ($(#[$attr:meta])* $vis:vis fn $name:ident($($arg:ident: $ty:ty),* $(,)?) -> $ret:ty => avx $with:ident) => {
+        $(#[$attr])*
+        $vis fn $name($($arg: $ty),*) -> $ret {
+            #[cfg(target_arch = "x86_64")]
+            {
+                #[target_feature(enable = "avx")]
+                unsafe fn with_avx($($arg: $ty),*) -> $ret {
+                    $with($($arg),*)
+                }
+                if std::arch::is_x86_feature_detected!("avx") {
+                    // SAFETY: the CPU supports AVX (checked just above).
+                    return unsafe { with_avx($($arg),*) };
+                }
+            }
+            $with($($arg),*)
+        }
+    };
+}
+pub(crate) use cpu_dispatch;
+
 impl Dd {
     /// Zero.
     pub const ZERO: Dd = Dd { hi: 0.0, lo: 0.0 };

@@ -24,6 +24,7 @@
 //! References: DLMF 16.2.1 (the series); Joldes, Muller, Popescu, ACM TOMS 44
 //! (2017) for the double-word operations.
 
+use crate::ball::cpu_dispatch;
 use crate::ball::{two_sum, BoundedDd, Dd, ExactProduct};
 
 /// Stop when the tail is at most this fraction of the sum (`2^-70`).
@@ -39,29 +40,18 @@ fn shifted(x: f64, n: f64) -> BoundedDd {
     BoundedDd { v: Dd { hi, lo }, e: 0.0 }
 }
 
-/// The series of `1F2(a; b1, b2; z)` in double-double with its proven bound
-/// (`None`: `b1, b2 <= 0`, no convergence within the cap, or overflow). Exact
-/// products by fused multiply-add where the CPU has it (detected at run time;
-/// bit-identical to Dekker's splitting).
-pub(crate) fn hyp1f2_series_dd(a: f64, b1: f64, b2: f64, z: f64) -> Option<BoundedDd> {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("fma") {
-        // SAFETY: the CPU supports FMA (checked just above).
-        return unsafe { series_fused(a, b1, b2, z) };
-    }
-    series_with::<crate::ball::Dekker>(a, b1, b2, z)
+cpu_dispatch! {
+    /// The series of `1F2(a; b1, b2; z)` in double-double with its proven bound
+    /// (`None`: `b1, b2 <= 0`, no convergence within the cap, or overflow). Exact
+    /// products by fused multiply-add where the CPU has it (detected at run time;
+    /// bit-identical to Dekker's splitting).
+    pub(crate) fn hyp1f2_series_dd(a: f64, b1: f64, b2: f64, z: f64) -> Option<BoundedDd> => series_with
 }
 
 /// [`hyp1f2_series_dd`] with Dekker's products (tests compare the two).
 #[cfg(test)]
 pub(crate) fn hyp1f2_series_dd_portable(a: f64, b1: f64, b2: f64, z: f64) -> Option<BoundedDd> {
     series_with::<crate::ball::Dekker>(a, b1, b2, z)
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "fma")]
-unsafe fn series_fused(a: f64, b1: f64, b2: f64, z: f64) -> Option<BoundedDd> {
-    series_with::<crate::ball::Fused>(a, b1, b2, z)
 }
 
 #[inline(always)]

@@ -25,6 +25,7 @@
 //! series, double-word series, then MP), so every returned bound is proven and
 //! `1e-14` relative.
 
+use crate::ball::cpu_dispatch;
 use crate::ball::{Bounded, BoundedDd, ExactProduct};
 use crate::error::{Error, Result};
 use crate::special::hyp1f2::{hyp1f2_bounded, NATIVE_REL_TOL};
@@ -65,22 +66,11 @@ pub fn hyp1f2_model_family_f64(kmax: u32, z: f64) -> Result<Vec<Bounded>> {
         .collect()
 }
 
-/// `Phi(m)` for `m = 0..=2 kmax + 4` by the downward recurrence; `None` below the
-/// index where the recurrence stopped (or everywhere if a start value failed).
-/// Exact products by fused multiply-add where the CPU has it (bit-identical).
-pub(crate) fn phi_downward(kmax: u32, z: f64) -> Vec<Option<BoundedDd>> {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("fma") {
-        // SAFETY: the CPU supports FMA (checked just above).
-        return unsafe { phi_fused(kmax, z) };
-    }
-    phi_with::<crate::ball::Dekker>(kmax, z)
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "fma")]
-unsafe fn phi_fused(kmax: u32, z: f64) -> Vec<Option<BoundedDd>> {
-    phi_with::<crate::ball::Fused>(kmax, z)
+cpu_dispatch! {
+    /// `Phi(m)` for `m = 0..=2 kmax + 4` by the downward recurrence; `None` below the
+    /// index where the recurrence stopped (or everywhere if a start value failed).
+    /// Exact products by fused multiply-add where the CPU has it (bit-identical).
+    pub(crate) fn phi_downward(kmax: u32, z: f64) -> Vec<Option<BoundedDd>> => phi_with
 }
 
 #[inline(always)]

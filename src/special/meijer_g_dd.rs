@@ -54,6 +54,7 @@
 //! References: DLMF 4.6.1 (atanh series), 15.8.4 (the connection formula behind
 //! the near-one expansion); Joldes, Muller, Popescu, ACM TOMS 44 (2017).
 
+use crate::ball::cpu_dispatch;
 use crate::ball::{two_sum, BoundedDd, Dd, ExactProduct};
 use crate::special::meijer_g_native::Y_NATIVE_MAX;
 
@@ -82,29 +83,18 @@ pub(crate) struct DdConstants {
     pub two_sqrt_pi: BoundedDd,
 }
 
-/// `G(k, y)` in double-double: [`near_one_dd`] for `Y_NATIVE_MAX < y < 1`, else
-/// [`direct_dd`] (`Y_DD_MIN <= y <= Y_NATIVE_MAX`); `None` elsewhere. Exact
-/// products by fused multiply-add where the CPU has it (detected at run time),
-/// else Dekker's splitting: both exact, so the results are bit-identical.
-pub(crate) fn meijer_g_k_dd(k: u32, y: f64, c: &DdConstants) -> Option<BoundedDd> {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("fma") {
-        // SAFETY: the CPU supports FMA (checked just above).
-        return unsafe { dd_fused(k, y, c) };
-    }
-    dd_with::<crate::ball::Dekker>(k, y, c)
+cpu_dispatch! {
+    /// `G(k, y)` in double-double: [`near_one_dd`] for `Y_NATIVE_MAX < y < 1`, else
+    /// [`direct_dd`] (`Y_DD_MIN <= y <= Y_NATIVE_MAX`); `None` elsewhere. Exact
+    /// products by fused multiply-add where the CPU has it (detected at run time),
+    /// else Dekker's splitting: both exact, so the results are bit-identical.
+    pub(crate) fn meijer_g_k_dd(k: u32, y: f64, c: &DdConstants) -> Option<BoundedDd> => dd_with
 }
 
 /// [`meijer_g_k_dd`] with Dekker's products on every CPU (tests compare the two).
 #[cfg(test)]
 pub(crate) fn meijer_g_k_dd_portable(k: u32, y: f64, c: &DdConstants) -> Option<BoundedDd> {
     dd_with::<crate::ball::Dekker>(k, y, c)
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "fma")]
-unsafe fn dd_fused(k: u32, y: f64, c: &DdConstants) -> Option<BoundedDd> {
-    dd_with::<crate::ball::Fused>(k, y, c)
 }
 
 #[inline(always)]

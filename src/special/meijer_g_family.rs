@@ -44,6 +44,7 @@
 //! Cost: `~8` double-word operations per `k` (`~0.1 us`) plus the two start
 //! series (`~ 75/(-ln y)` terms each, or `~k w + 40` near one).
 
+use crate::ball::cpu_dispatch;
 use crate::ball::{BoundedDd, Bounded, ExactProduct};
 use crate::error::{Error, Result};
 use crate::special::meijer_g::{meijer_g_k_bounded, NATIVE_REL_TOL};
@@ -86,21 +87,10 @@ pub fn meijer_g_k_family_f64(kmax: u32, y: f64) -> Result<Vec<Bounded>> {
     Ok(out)
 }
 
-/// The swept family in double words for `k = 0..=top` (`top <= TABLE_K_MAX`), or
-/// `None` where the start values are not available (`y < Y_DD_MIN`).
-pub(crate) fn family_dd(top: u32, y: f64) -> Option<Vec<BoundedDd>> {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("fma") {
-        // SAFETY: the CPU supports FMA (checked just above).
-        return unsafe { family_fused(top, y) };
-    }
-    family_with::<crate::ball::Dekker>(top, y)
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "fma")]
-unsafe fn family_fused(top: u32, y: f64) -> Option<Vec<BoundedDd>> {
-    family_with::<crate::ball::Fused>(top, y)
+cpu_dispatch! {
+    /// The swept family in double words for `k = 0..=top` (`top <= TABLE_K_MAX`), or
+    /// `None` where the start values are not available (`y < Y_DD_MIN`).
+    pub(crate) fn family_dd(top: u32, y: f64) -> Option<Vec<BoundedDd>> => family_with
 }
 
 #[inline(always)]

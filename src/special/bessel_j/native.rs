@@ -24,6 +24,7 @@
 //! (`n > 10^4` on the recurrence, `x > 2^40`), and where the series' prefactor
 //! underflows.
 
+use crate::ball::cpu_dispatch;
 use crate::ball::{Bounded, Dekker, ExactProduct};
 
 use super::native_hankel::{bessel_j01, HANKEL_MAX_X, HANKEL_MIN_X};
@@ -52,31 +53,18 @@ pub fn choose_native(n: u64, x: f64) -> NativeMethod {
     }
 }
 
-/// `J_n(x)` by one native method, with its proven bound (`None` where it
-/// cannot run; tests call each method on its own). Exact products use the
-/// CPU's fused multiply-add where it has one (detected once at run time),
-/// else Dekker's splitting; both are exact, so the results are bit-identical.
-pub fn bessel_j_native(method: NativeMethod, n: u64, x: f64) -> Option<Bounded> {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("fma") {
-        // SAFETY: the CPU supports FMA (checked just above).
-        return unsafe { native_fused(method, n, x) };
-    }
-    native_with::<Dekker>(method, n, x)
+cpu_dispatch! {
+    /// `J_n(x)` by one native method, with its proven bound (`None` where it
+    /// cannot run; tests call each method on its own). Exact products use the
+    /// CPU's fused multiply-add where it has one (detected once at run time),
+    /// else Dekker's splitting; both are exact, so the results are bit-identical.
+    pub fn bessel_j_native(method: NativeMethod, n: u64, x: f64) -> Option<Bounded> => native_with
 }
 
 /// [`bessel_j_native`] with Dekker's exact products on every CPU (tests
 /// compare it with the fused path bit for bit).
 pub fn bessel_j_native_portable(method: NativeMethod, n: u64, x: f64) -> Option<Bounded> {
     native_with::<Dekker>(method, n, x)
-}
-
-/// The native methods compiled with the `fma` target feature, so that the
-/// inlined `Fused` products are single instructions.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "fma")]
-unsafe fn native_fused(method: NativeMethod, n: u64, x: f64) -> Option<Bounded> {
-    native_with::<crate::ball::Fused>(method, n, x)
 }
 
 #[inline(always)]

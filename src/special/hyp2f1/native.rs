@@ -72,9 +72,7 @@
 use super::power::{dw_add, dw_div, dw_div_p, dw_mul, dw_mul_p, pow_dw, Dw, U};
 use super::power_f64::{floor_any, ln_f64, pow_dw_exponent, pow_from_ln, round_small};
 use super::rgamma_f64::rgamma_batch;
-#[cfg(target_arch = "x86_64")]
-use crate::ball::Fused;
-use crate::ball::{two_sum, Bounded, Dekker, ExactProduct, F64x2};
+use crate::ball::{cpu_dispatch, two_sum, Bounded, ExactProduct, F64x2};
 
 /// Cap on the terms of a native series (beyond it, MP).
 pub(super) const MAX_NATIVE_TERMS: u64 = 3000;
@@ -477,24 +475,12 @@ struct TwoState {
     idx: F64x2,       // (n, n): the index of the last term added
 }
 
-/// [`series_two`]'s loop: one term a lane a step until a lane's term passes
-/// its trigger (`|t~| mult <= |s~|`: the mask of those lanes) or the index
-/// reaches `n_max` (0). On its own, as [`sum_pairs`].
-#[inline(never)]
-fn sum_two(st: &mut TwoState, params: [F64x2; 3], x: f64, n_max: f64, mult: F64x2) -> u32 {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx") {
-        // SAFETY: the CPU supports AVX (checked just above).
-        return unsafe { sum_two_avx(st, params, x, n_max, mult) };
-    }
-    sum_two_with(st, params, x, n_max, mult)
-}
-
-/// [`sum_two`] compiled for AVX (no fused multiply-add: bit-identical).
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-unsafe fn sum_two_avx(st: &mut TwoState, params: [F64x2; 3], x: f64, n_max: f64, mult: F64x2) -> u32 {
-    sum_two_with(st, params, x, n_max, mult)
+cpu_dispatch! {
+    /// [`series_two`]'s loop: one term a lane a step until a lane's term passes
+    /// its trigger (`|t~| mult <= |s~|`: the mask of those lanes) or the index
+    /// reaches `n_max` (0). On its own, as [`sum_pairs`].
+    #[inline(never)]
+    fn sum_two(st: &mut TwoState, params: [F64x2; 3], x: f64, n_max: f64, mult: F64x2) -> u32 => avx sum_two_with
 }
 
 #[inline(always)]
@@ -529,26 +515,13 @@ struct PairState {
     n: u64,
 }
 
-/// [`series_from`]'s loop: pairs of terms while `n + 2 <= limit`, each lane
-/// rounding as the scalar formula of [`series`]; `true` when it stopped for
-/// the tail test (`|t~| tail_mult <= |s~|`). On its own (no call inside, and
-/// few live values), so that the state stays in registers.
-#[inline(never)]
-fn sum_pairs(st: &mut PairState, params: [F64x2; 3], x: f64, limit: u64, tail_mult: f64) -> bool {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx") {
-        // SAFETY: the CPU supports AVX (checked just above).
-        return unsafe { sum_pairs_avx(st, params, x, limit, tail_mult) };
-    }
-    sum_pairs_with(st, params, x, limit, tail_mult)
-}
-
-/// [`sum_pairs`] compiled for AVX: the same operations (no fused
-/// multiply-add, so bit-identical), in three-operand form (no register copies).
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-unsafe fn sum_pairs_avx(st: &mut PairState, params: [F64x2; 3], x: f64, limit: u64, tail_mult: f64) -> bool {
-    sum_pairs_with(st, params, x, limit, tail_mult)
+cpu_dispatch! {
+    /// [`series_from`]'s loop: pairs of terms while `n + 2 <= limit`, each lane
+    /// rounding as the scalar formula of [`series`]; `true` when it stopped for
+    /// the tail test (`|t~| tail_mult <= |s~|`). On its own (no call inside, and
+    /// few live values), so that the state stays in registers.
+    #[inline(never)]
+    fn sum_pairs(st: &mut PairState, params: [F64x2; 3], x: f64, limit: u64, tail_mult: f64) -> bool => avx sum_pairs_with
 }
 
 #[inline(always)]
@@ -646,27 +619,15 @@ fn dw_next_term<P: ExactProduct>(p1: Dw, p2: Dw, q: Dw, x: Dw, t: Dw, n: u64) ->
     Some(dw_mul_p::<P>(t, dw_div_p::<P>(dw_mul_p::<P>(num, x), den)))
 }
 
-/// The series `2F1(p1, p2; q; x)` summed in double-word arithmetic, for the
-/// cases where the f64 sum cannot certify (cancellation, many terms). Same
-/// argument as [`series`] with the per-step relative error
-/// `E = 128 u^2 + theta` (three DW additions `3u^2`, two DW products `7u^2`, the
-/// product by `x` `7u^2`, one DW division `15u^2 + 56u^3`, the update `7u^2`:
-/// `49 u^2`, charged `128 u^2`) and `3u^2 |s~_k|` per addition; parameters are
-/// exact double words (`theta` bounds the relative error of `x`).
-fn series_dw(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64) -> Option<(Dw, f64)> {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("fma") {
-        // SAFETY: the CPU supports FMA (checked just above).
-        return unsafe { series_dw_fused(p1, p2, q, x, x_rel) };
-    }
-    series_dw_with::<Dekker>(p1, p2, q, x, x_rel)
-}
-
-/// [`series_dw`] compiled with fused multiply-add for the exact products.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "fma")]
-unsafe fn series_dw_fused(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64) -> Option<(Dw, f64)> {
-    series_dw_with::<Fused>(p1, p2, q, x, x_rel)
+cpu_dispatch! {
+    /// The series `2F1(p1, p2; q; x)` summed in double-word arithmetic, for the
+    /// cases where the f64 sum cannot certify (cancellation, many terms). Same
+    /// argument as [`series`] with the per-step relative error
+    /// `E = 128 u^2 + theta` (three DW additions `3u^2`, two DW products `7u^2`, the
+    /// product by `x` `7u^2`, one DW division `15u^2 + 56u^3`, the update `7u^2`:
+    /// `49 u^2`, charged `128 u^2`) and `3u^2 |s~_k|` per addition; parameters are
+    /// exact double words (`theta` bounds the relative error of `x`).
+    fn series_dw(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64) -> Option<(Dw, f64)> => series_dw_with
 }
 
 /// [`series_dw`] with the exact product `P` (the result is bit-identical for
@@ -725,36 +686,24 @@ fn series_dw_with<P: ExactProduct>(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64) -> 
     Some((s, err * (1.0 + 8.0 * U)))
 }
 
-/// The series `2F1(p1, p2; q; x)` with its head in double words and the rest
-/// in f64, for a sum whose first terms cancel (where the f64 sum cannot
-/// certify) but whose later terms are small: [`series_dw`]'s loop until the
-/// term `t_K` (`K >= n_pos`) is small enough that the f64 rest's rounding
-/// bound, about `E |t_K| (K + 1) / (1 - rho)^2` (`E` = 10 u and the
-/// parameters' perturbations), is below an eighth of the target
-/// `rel_tol |s| >= 256 stop |s|` (or `K = 96`), then
-/// [`series_from`] with `t~_K = fl(t_K.hi + t_K.lo)` and the partial sum's
-/// high word, and the low word added at the end.
-///
-/// Error: the head as in [`series_dw`] (per step `E_dw = 128 u^2 + x_rel`,
-/// `3.1 u^2 |s_k|` per addition); `t~_K` errs by at most `1.01 K E_dw + 1.01 u`
-/// relative, below the `K E` that [`series_from`]'s absolute-index weights
-/// already charge (`E >= 10 u`, `K >= 1`); the f64 argument `x.hi` errs by
-/// `theta = 1.01 (|x.lo| + x_rel |x|) / |x.hi|` relative, passed as its
-/// `x_rel`; the final `fl(s_f + s_K.lo)` adds `u |v|`.
-fn series_hybrid(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64, stop: f64) -> Option<(f64, f64)> {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("fma") {
-        // SAFETY: the CPU supports FMA (checked just above).
-        return unsafe { series_hybrid_fused(p1, p2, q, x, x_rel, stop) };
-    }
-    series_hybrid_with::<Dekker>(p1, p2, q, x, x_rel, stop)
-}
-
-/// [`series_hybrid`] compiled with fused multiply-add for the exact products.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "fma")]
-unsafe fn series_hybrid_fused(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64, stop: f64) -> Option<(f64, f64)> {
-    series_hybrid_with::<Fused>(p1, p2, q, x, x_rel, stop)
+cpu_dispatch! {
+    /// The series `2F1(p1, p2; q; x)` with its head in double words and the rest
+    /// in f64, for a sum whose first terms cancel (where the f64 sum cannot
+    /// certify) but whose later terms are small: [`series_dw`]'s loop until the
+    /// term `t_K` (`K >= n_pos`) is small enough that the f64 rest's rounding
+    /// bound, about `E |t_K| (K + 1) / (1 - rho)^2` (`E` = 10 u and the
+    /// parameters' perturbations), is below an eighth of the target
+    /// `rel_tol |s| >= 256 stop |s|` (or `K = 96`), then
+    /// [`series_from`] with `t~_K = fl(t_K.hi + t_K.lo)` and the partial sum's
+    /// high word, and the low word added at the end.
+    ///
+    /// Error: the head as in [`series_dw`] (per step `E_dw = 128 u^2 + x_rel`,
+    /// `3.1 u^2 |s_k|` per addition); `t~_K` errs by at most `1.01 K E_dw + 1.01 u`
+    /// relative, below the `K E` that [`series_from`]'s absolute-index weights
+    /// already charge (`E >= 10 u`, `K >= 1`); the f64 argument `x.hi` errs by
+    /// `theta = 1.01 (|x.lo| + x_rel |x|) / |x.hi|` relative, passed as its
+    /// `x_rel`; the final `fl(s_f + s_K.lo)` adds `u |v|`.
+    fn series_hybrid(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64, stop: f64) -> Option<(f64, f64)> => series_hybrid_with
 }
 
 #[inline(always)]
@@ -1055,6 +1004,7 @@ pub(super) fn hyp2f1_native(a: f64, b: f64, c: f64, z: f64, rel_tol: f64) -> Opt
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ball::Dekker;
     use crate::special::exact;
     use crate::special::hyp2f1::hyp2f1_mp;
     use rug::Float;
