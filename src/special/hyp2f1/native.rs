@@ -226,17 +226,6 @@ fn ratio_parts(p1: &Param, p2: &Param, q: &Param, x_abs: f64, n: f64) -> (f64, f
     (x_abs * num * (1.0 + 2.0 * U), den)
 }
 
-/// Upper bound of `rho / (1 - rho)` for `rho` of [`ratio_bound`], as
-/// `x num / (den - x num)` (one division); infinity unless `rho < 1`.
-fn tail_factor_bound(p1: &Param, p2: &Param, q: &Param, x_abs: f64, n: f64) -> f64 {
-    let (xnum, den) = ratio_parts(p1, p2, q, x_abs, n);
-    let gap = (den - xnum) * (1.0 - 2.0 * U); // lower bound of den - x num
-    if !(gap > 0.0) {
-        return f64::INFINITY;
-    }
-    xnum / gap * (1.0 + 2.0 * U)
-}
-
 /// The series `2F1(p1, p2; q; x~)` with `x~ = x (1 + theta)`, `|theta| <= x_rel`,
 /// summed in f64: `(value, err)` with `|2F1(p1, p2; q; x) - value| <= err`.
 ///
@@ -591,11 +580,20 @@ fn series_tail(
         if nf < n_pos {
             return retry();
         }
-        let tf = tail_factor_bound(p1, p2, q, x.abs() * (1.0 + x_rel) * (1.0 + 2.0 * U), nf);
-        if !(tf < f64::INFINITY) {
+        let (xnum, den) = ratio_parts(p1, p2, q, x.abs() * (1.0 + x_rel) * (1.0 + 2.0 * U), nf);
+        let gap = (den - xnum) * (1.0 - 2.0 * U); // lower bound of den - x num
+        if !(gap > 0.0) {
             return retry();
         }
-        *factor = tf * (1.0 + 4.0 * U);
+        // The common case without a division: the tail |t_N| (1 + 1.01 N E)
+        // x num / (den - x num) is at most stop |s~| when the products (upward
+        // and downward margins) say so; the tail is then bounded by stop |s~|.
+        let lhs = t.abs() * (1.0 + 1.01 * nf * e_step) * xnum * (1.0 + 16.0 * U);
+        let rhs = stop * s.abs() * gap * (1.0 - 4.0 * U);
+        if lhs <= rhs {
+            return TailTest::Done(stop * s.abs() * (1.0 + 2.0 * U));
+        }
+        *factor = xnum / gap * (1.0 + 2.0 * U) * (1.0 + 4.0 * U);
     }
     let tail_factor = *factor;
     let bound = t.abs() * (1.0 + 1.01 * nf * e_step) * tail_factor;
