@@ -16,10 +16,9 @@ use std::arch::x86_64::{
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct F64x2(__m128d);
 
-/// Lanes `(lo, hi)`.
+/// The portable lanes on other targets (`portable::F64x2`).
 #[cfg(not(target_arch = "x86_64"))]
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct F64x2([f64; 2]);
+pub(crate) use portable::F64x2;
 
 // SAFETY (every `unsafe` block below): SSE2 is part of the x86-64 baseline,
 // and the intrinsics only read and write their register operands.
@@ -72,58 +71,82 @@ impl F64x2 {
     }
 }
 
-#[cfg(not(target_arch = "x86_64"))]
-impl F64x2 {
-    #[inline(always)]
-    pub(crate) fn new(lo: f64, hi: f64) -> F64x2 {
-        F64x2([lo, hi])
-    }
+/// Two plain f64: the lanes on targets without SSE2, compiled (and tested
+/// against the SSE2 lanes) on every target.
+#[cfg_attr(target_arch = "x86_64", allow(dead_code))]
+pub(crate) mod portable {
+    /// Lanes `(lo, hi)`.
+    #[derive(Clone, Copy, Debug)]
+    pub(crate) struct F64x2([f64; 2]);
 
-    #[inline(always)]
-    pub(crate) fn splat(x: f64) -> F64x2 {
-        F64x2([x, x])
-    }
+    impl F64x2 {
+        #[inline(always)]
+        pub(crate) fn new(lo: f64, hi: f64) -> F64x2 {
+            F64x2([lo, hi])
+        }
 
-    #[inline(always)]
-    pub(crate) fn add(self, o: F64x2) -> F64x2 {
-        F64x2([self.0[0] + o.0[0], self.0[1] + o.0[1]])
-    }
+        #[inline(always)]
+        pub(crate) fn splat(x: f64) -> F64x2 {
+            F64x2([x, x])
+        }
 
-    #[inline(always)]
-    pub(crate) fn mul(self, o: F64x2) -> F64x2 {
-        F64x2([self.0[0] * o.0[0], self.0[1] * o.0[1]])
-    }
+        #[inline(always)]
+        pub(crate) fn add(self, o: F64x2) -> F64x2 {
+            F64x2([self.0[0] + o.0[0], self.0[1] + o.0[1]])
+        }
 
-    #[inline(always)]
-    pub(crate) fn div(self, o: F64x2) -> F64x2 {
-        F64x2([self.0[0] / o.0[0], self.0[1] / o.0[1]])
-    }
+        #[inline(always)]
+        pub(crate) fn mul(self, o: F64x2) -> F64x2 {
+            F64x2([self.0[0] * o.0[0], self.0[1] * o.0[1]])
+        }
 
-    /// Bit 0 set when `lo <= o.lo`, bit 1 when `hi <= o.hi` (false with a NaN).
-    #[inline(always)]
-    pub(crate) fn le_mask(self, o: F64x2) -> u32 {
-        (self.0[0] <= o.0[0]) as u32 | ((self.0[1] <= o.0[1]) as u32) << 1
-    }
+        #[inline(always)]
+        pub(crate) fn div(self, o: F64x2) -> F64x2 {
+            F64x2([self.0[0] / o.0[0], self.0[1] / o.0[1]])
+        }
 
-    #[inline(always)]
-    pub(crate) fn abs(self) -> F64x2 {
-        F64x2([self.0[0].abs(), self.0[1].abs()])
-    }
+        /// Bit 0 set when `lo <= o.lo`, bit 1 when `hi <= o.hi` (false with a NaN).
+        #[inline(always)]
+        pub(crate) fn le_mask(self, o: F64x2) -> u32 {
+            (self.0[0] <= o.0[0]) as u32 | ((self.0[1] <= o.0[1]) as u32) << 1
+        }
 
-    #[inline(always)]
-    pub(crate) fn lo(self) -> f64 {
-        self.0[0]
-    }
+        #[inline(always)]
+        pub(crate) fn abs(self) -> F64x2 {
+            F64x2([self.0[0].abs(), self.0[1].abs()])
+        }
 
-    #[inline(always)]
-    pub(crate) fn hi(self) -> f64 {
-        self.0[1]
+        #[inline(always)]
+        pub(crate) fn lo(self) -> f64 {
+            self.0[0]
+        }
+
+        #[inline(always)]
+        pub(crate) fn hi(self) -> f64 {
+            self.0[1]
+        }
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::F64x2;
+
+    /// The portable lanes give the same bits as these (on x86-64: SSE2).
+    #[test]
+    fn portable_lanes_equal_these() {
+        use super::portable::F64x2 as P;
+        let xs = [0.1, -3.7, 1e300, -1e-300, 7.0 / 3.0, -0.0, 2.5e-310, f64::NAN, f64::INFINITY];
+        for &a in &xs {
+            for &b in &xs {
+                let (v, w, pv, pw) = (F64x2::new(a, b), F64x2::new(b, 1.5), P::new(a, b), P::new(b, 1.5));
+                let same = |x: F64x2, y: P| x.lo().to_bits() == y.lo().to_bits() && x.hi().to_bits() == y.hi().to_bits();
+                assert!(same(v.add(w), pv.add(pw)) && same(v.mul(w), pv.mul(pw)) && same(v.div(w), pv.div(pw)), "{a} {b}");
+                assert!(same(v.abs(), pv.abs()) && same(F64x2::splat(a), P::splat(a)), "{a} {b}");
+                assert_eq!(v.le_mask(w), pv.le_mask(pw), "{a} {b}");
+            }
+        }
+    }
 
     /// Each lane rounds as the scalar operation does (bit for bit).
     #[test]
