@@ -3,8 +3,9 @@
 //! domain, as properties (proptest) and at the hard places of the native path:
 //! its crossovers (`z = -4`, `-1/2`, `0.7`, `0.9`, one ulp either side), `a - b`
 //! and `c - a - b` at the connection formulas' `0.05` cut-off and near integers,
-//! and next to zeros of `2F1` (where the sums cancel and the double-word head
-//! takes over). The reference is the certified 120-bit ball.
+//! next to zeros of `2F1` (where the sums cancel and the double-word head
+//! takes over), next to `z = 1` and with `c` next to the poles. The reference is
+//! the certified 120-bit ball.
 
 use maugis::special::{exact, hyp2f1};
 use proptest::prelude::*;
@@ -146,4 +147,33 @@ fn bound_holds_next_to_zeros() {
         }
     }
     assert!(found >= 3, "zeros found: {found}");
+}
+
+/// Next to `z = 1` (the 1-z connection formula above 9/10, one and eight ulps
+/// below 1, and `z = 1` itself, Gauss's sum) with `c - a - b > 0`, and `c` next
+/// to the poles `0, -1, -2` of the series, from both sides.
+#[test]
+fn bound_holds_next_to_one_and_the_poles() {
+    let mut rng = Lcg(0x1e1);
+    for _ in 0..40 {
+        let (a, b) = (rng.uniform(-3.0, 3.0), rng.uniform(-3.0, 3.0));
+        let c = a + b + rng.uniform(0.1, 3.0);
+        if c == c.floor() && c <= 0.0 {
+            continue;
+        }
+        for z in [1.0, ulps(1.0, -1), ulps(1.0, -8), 1.0 - 1e-12, 1.0 - 1e-6, 0.95] {
+            assert_bound(a, b, c, z);
+        }
+    }
+    for k in 0..3 {
+        for d in [1e-12, 1e-6, 1e-3] {
+            for side in [-1.0, 1.0] {
+                let c = -(k as f64) + side * d;
+                for z in [-4.5, -2.0, -0.7, 0.3, 0.8] {
+                    let (a, b) = (rng.uniform(-3.0, 3.0), rng.uniform(-3.0, 3.0));
+                    assert_bound(a, b, c, z);
+                }
+            }
+        }
+    }
 }

@@ -1078,6 +1078,11 @@ mod profile {
         wave_value(a, 1.125, 1.0, x)
     }
 
+    // Ignored: a profiling harness for callgrind, not a check. It loops over each
+    // part of the from-scratch path (PROFILE_N times, at PROFILE_A) so that
+    // `valgrind --tool=callgrind` can attribute instructions per part; it
+    // asserts nothing about the results, and needs a CPU with FMA. Run by hand:
+    // `cargo test --release --lib profile_parts -- --ignored`.
     #[test]
     #[ignore]
     fn profile_parts() {

@@ -284,18 +284,11 @@ fn series_from(p1: Param, p2: Param, q: Param, x: f64, x_rel: f64, stop: f64, st
     }
     // Pairs while n + 2 <= limit; a polynomial's odd last term after the loop.
     let limit = deg.unwrap_or(MAX_NATIVE_TERMS + 2);
-    // The tail test runs (cold) when |t~| tail_mult <= |s~|: first with
-    // tail_mult = 1/(4 stop) (never for a polynomial); once rho < 1 is known,
-    // tail_mult bounds the tail factor over every later index, and the test
-    // succeeds at its first call.
-    // (rho >= |x|, so the tail test cannot succeed before |t~| |x| / (1 - |x|)
-    // <= stop |s~|: the first call waits for that, at least for |t~| <= 4 stop |s~|)
+    // The tail test runs when |t~| tail_mult <= |s~|: first from first_trigger
+    // (never for a polynomial); once rho < 1 is known, tail_mult bounds the tail
+    // factor over every later index, and the test succeeds at its first call.
     let quarter_over_stop = quarter_over(stop);
-    // (a trigger only, any positive value is sound: 4|x|/(1 - |x|) <= 4|x|(1 + 2|x|)
-    // for |x| <= 1/2, without a division)
-    let ax = x.abs();
-    let asymptotic = if ax <= 0.5 { 4.0 * ax * (1.0 + 2.0 * ax) } else { 4.0 * ax / (1.0 - ax) };
-    let mut tail_mult = if deg.is_some() { f64::INFINITY } else { quarter_over_stop * asymptotic.max(1.0) };
+    let mut tail_mult = if deg.is_some() { f64::INFINITY } else { first_trigger(x, quarter_over_stop) };
     let mut tail_factor = f64::INFINITY; // rho/(1 - rho) with margins, once known
     let mut tail = None;
     if start.n > limit {
@@ -345,8 +338,7 @@ fn series_from(p1: Param, p2: Param, q: Param, x: f64, x_rel: f64, stop: f64, st
     // (1 - u K) sum_k |s~_k| <= K |s~_K| + (1 + u)/2 sum_n n |t~_n|, and u K <= 1/2000
     // (n E <= 1/100, E >= 10 u): sum_k |s~_k| <= 1.001 (K |s~_K| + 0.5001 sum_n n |t~_n|).
     let sum_abs_s = 1.001 * (additions as f64 * s.abs() + 0.5001 * sum_nt);
-    let err = (1.01 * (e_step * sum_nt + U * sum_abs_s)) * 1.001 + tail;
-    Some((s, err * (1.0 + 8.0 * U)))
+    Some((s, f64_sum_error(e_step, sum_nt, sum_abs_s, tail)))
 }
 
 /// The largest power of two at most `x` (a positive normal `x`).
@@ -374,6 +366,24 @@ fn quarter_over(stop: f64) -> f64 {
     } else {
         0.25 / stop
     }
+}
+
+/// The first value of the loops' trigger `|t~| mult <= |s~|` for the tail
+/// test: `rho >= |x|`, so the test cannot succeed before `|t~| |x| / (1 - |x|)
+/// <= stop |s~|`; the first call waits for that, at least for `|t~| <= 4 stop
+/// |s~|`. A trigger only (any positive value is sound); `4|x|/(1 - |x|) <=
+/// 4|x|(1 + 2|x|)` for `|x| <= 1/2`, without a division.
+fn first_trigger(x: f64, quarter_over_stop: f64) -> f64 {
+    let ax = x.abs();
+    let asymptotic = if ax <= 0.5 { 4.0 * ax * (1.0 + 2.0 * ax) } else { 4.0 * ax / (1.0 - ax) };
+    quarter_over_stop * asymptotic.max(1.0)
+}
+
+/// The bound of an f64 sum (module docs): `1.01 (E sum n |t~_n| + u sum |s~_k|)`
+/// inflated by `1.001` for the rounding of those sums, plus the tail, plus
+/// `8u` for the rounding of this expression.
+fn f64_sum_error(e_step: f64, sum_nt: f64, sum_abs_s: f64, tail: f64) -> f64 {
+    ((1.01 * (e_step * sum_nt + U * sum_abs_s)) * 1.001 + tail) * (1.0 + 8.0 * U)
 }
 
 /// Whether every denominator `(q+n)(n+1)` of a series, and a product of two,
@@ -410,9 +420,7 @@ fn series_two(lanes: [[Param; 3]; 2], x: f64, x_rel: f64, stop: f64) -> Option<[
         n_pos[l] = first_positive_index([p1.hi, p2.hi, q.hi])?;
     }
     let quarter_over_stop = quarter_over(stop);
-    let ax = x.abs();
-    let asymptotic = if ax <= 0.5 { 4.0 * ax * (1.0 + 2.0 * ax) } else { 4.0 * ax / (1.0 - ax) };
-    let mut mult = [quarter_over_stop * asymptotic.max(1.0); 2];
+    let mut mult = [first_trigger(x, quarter_over_stop); 2];
     let mut factor = [f64::INFINITY; 2];
     // per lane when done: (sum, sum n |t~_n|, last index, tail)
     let mut done: [Option<(f64, f64, f64, f64)>; 2] = [None; 2];
@@ -451,8 +459,7 @@ fn series_two(lanes: [[Param; 3]; 2], x: f64, x_rel: f64, stop: f64) -> Option<[
         // (a term of index n is in at most n - 1 later partial sums):
         // sum_k |s~_k| <= 1.001 (N |s~_N| + 1.0001 sum_n n |t~_n|)
         let sum_abs_s = 1.001 * (nf * s.abs() + 1.0001 * sum_nt);
-        let err = (1.01 * (e_step[l] * sum_nt + U * sum_abs_s)) * 1.001 + tail;
-        out[l] = (s, err * (1.0 + 8.0 * U));
+        out[l] = (s, f64_sum_error(e_step[l], sum_nt, sum_abs_s, tail));
     }
     Some(out)
 }
