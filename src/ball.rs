@@ -35,6 +35,8 @@ use rug::Float;
 use crate::error::{Error, Result};
 
 mod bounded;
+mod complex;
+pub use complex::CBall;
 mod decimal;
 mod dd_bounded;
 mod double_double;
