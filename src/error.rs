@@ -48,6 +48,8 @@ pub enum Error {
         /// Where.
         what: String,
     },
+    /// An integrand expression that does not parse ([`crate::quad::expr`]).
+    Expression(crate::quad::expr::ExprError),
     /// An internal invariant failed. This is a bug; please report it.
     Internal {
         /// What failed.
@@ -75,6 +77,7 @@ impl fmt::Display for Error {
             }
             Error::DivisionByZero => write!(f, "division by a ball containing zero"),
             Error::Overflow { what } => write!(f, "overflow in {what}: the result exceeds the exponent range"),
+            Error::Expression(e) => write!(f, "{e}"),
             Error::Internal { what } => write!(f, "internal error (please report): {what}"),
         }
     }

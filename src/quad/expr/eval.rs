@@ -1,0 +1,116 @@
+//! Evaluating a tree in any number type that has the operations it needs.
+
+use super::tree::{Expr, Function};
+use crate::ball::Decimal;
+
+/// The operations an [`Expr`] is evaluated with.
+///
+/// Implemented for `f64` (ordinary floating point: a quick look, plots, tests)
+/// and for [`CBall`](crate::ball::CBall) (certified complex balls, with the
+/// branch-cut functions in their analytic forms, for the certified integrator).
+/// Arithmetic never fails: a value that is not defined is whatever the type uses
+/// for that (NaN for `f64`, the indeterminate ball for `CBall`).
+pub trait ExprValue: Clone {
+    /// `self + other`.
+    fn add(&self, other: &Self) -> Self;
+    /// `self - other`.
+    fn sub(&self, other: &Self) -> Self;
+    /// `self * other`.
+    fn mul(&self, other: &Self) -> Self;
+    /// `self / other`.
+    fn div(&self, other: &Self) -> Self;
+    /// `-self`.
+    fn neg(&self) -> Self;
+    /// `self^n` by integer powering (defined for every `self` but zero when `n < 0`).
+    fn pow_int(&self, n: i64) -> Self;
+    /// `self^e`, the general power `exp(e log self)`.
+    fn pow(&self, e: &Self) -> Self;
+    /// `f(self)` for a one-argument function.
+    fn apply(&self, f: Function) -> Self;
+    /// `J_n(self)`.
+    fn bessel_j(&self, n: i64) -> Self;
+    /// The constant pi, in the kind (precision) of `like`.
+    fn pi(like: &Self) -> Self;
+    /// A value that contains the decimal `d` exactly, in the kind of `like`
+    /// (a ball for ball types, the nearest double for `f64`).
+    fn from_decimal(d: &Decimal, like: &Self) -> Self;
+}
+
+impl Expr {
+    /// The value at `x`, computed in the type of `x` (constants take its precision).
+    pub fn eval<V: ExprValue>(&self, x: &V) -> V {
+        let go = |e: &Expr| e.eval(x);
+        match self {
+            Expr::X => x.clone(),
+            Expr::Pi => V::pi(x),
+            Expr::Number(d) => V::from_decimal(d, x),
+            Expr::Neg(a) => go(a).neg(),
+            Expr::Add(a, b) => go(a).add(&go(b)),
+            Expr::Sub(a, b) => go(a).sub(&go(b)),
+            Expr::Mul(a, b) => go(a).mul(&go(b)),
+            Expr::Div(a, b) => go(a).div(&go(b)),
+            Expr::PowInt(a, n) => go(a).pow_int(*n),
+            Expr::Pow(a, b) => go(a).pow(&go(b)),
+            Expr::Call(f, a) => go(a).apply(*f),
+            Expr::BesselJ(n, a) => go(a).bessel_j(*n),
+        }
+    }
+
+    /// The value at `x` in f64 (no bound: for a quick look and plots).
+    pub fn eval_f64(&self, x: f64) -> f64 {
+        self.eval(&x)
+    }
+}
+
+/// Plain floating point: `log` and `sqrt` of negative numbers are NaN, `besselj`
+/// is [`bessel_j`](crate::special::bessel_j::bessel_j) (NaN where it returns an error).
+impl ExprValue for f64 {
+    fn add(&self, other: &f64) -> f64 {
+        self + other
+    }
+    fn sub(&self, other: &f64) -> f64 {
+        self - other
+    }
+    fn mul(&self, other: &f64) -> f64 {
+        self * other
+    }
+    fn div(&self, other: &f64) -> f64 {
+        self / other
+    }
+    fn neg(&self) -> f64 {
+        -self
+    }
+    fn pow_int(&self, n: i64) -> f64 {
+        match i32::try_from(n) {
+            Ok(n) => self.powi(n),
+            Err(_) => self.powf(n as f64),
+        }
+    }
+    fn pow(&self, e: &f64) -> f64 {
+        self.powf(*e)
+    }
+    fn apply(&self, f: Function) -> f64 {
+        let x = *self;
+        match f {
+            Function::Sqrt => x.sqrt(),
+            Function::Exp => x.exp(),
+            Function::Log => x.ln(),
+            Function::Sin => x.sin(),
+            Function::Cos => x.cos(),
+            Function::Tan => x.tan(),
+            Function::Sinh => x.sinh(),
+            Function::Cosh => x.cosh(),
+            Function::Tanh => x.tanh(),
+            Function::Atan => x.atan(),
+        }
+    }
+    fn bessel_j(&self, n: i64) -> f64 {
+        crate::special::bessel_j::bessel_j(n, *self).unwrap_or(f64::NAN)
+    }
+    fn pi(_: &f64) -> f64 {
+        std::f64::consts::PI
+    }
+    fn from_decimal(d: &Decimal, _: &f64) -> f64 {
+        d.to_f64()
+    }
+}

@@ -1,0 +1,300 @@
+use super::*;
+use crate::ball::Decimal;
+use crate::special::bessel_j::bessel_j;
+
+fn p(text: &str) -> Expr {
+    match Expr::parse(text) {
+        Ok(e) => e,
+        Err(e) => panic!("{text:?} should parse: {e}"),
+    }
+}
+
+fn err(text: &str) -> ExprError {
+    match Expr::parse(text) {
+        Err(crate::Error::Expression(e)) => e,
+        other => panic!("{text:?} should be an expression error, got {other:?}"),
+    }
+}
+
+fn num(text: &str) -> Box<Expr> {
+    Box::new(Expr::Number(Decimal::parse(text).unwrap()))
+}
+
+fn close(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 4.0 * f64::EPSILON * b.abs().max(1e-300)
+}
+
+#[test]
+fn precedence_and_associativity() {
+    let x = || Box::new(Expr::X);
+    assert_eq!(p("-x^2"), Expr::Neg(Box::new(Expr::PowInt(x(), 2))));
+    assert_eq!(p("(-x)^2"), Expr::PowInt(Box::new(Expr::Neg(x())), 2));
+    assert_eq!(p("1 - x - 2"), Expr::Sub(Box::new(Expr::Sub(num("1"), x())), num("2")));
+    assert_eq!(p("x/2/3"), Expr::Div(Box::new(Expr::Div(x(), num("2"))), num("3")));
+    assert_eq!(p("1 + 2*x"), Expr::Add(num("1"), Box::new(Expr::Mul(num("2"), x()))));
+    // ^ is right-associative; only a literal integer exponent is an integer power
+    assert_eq!(p("2^3^2"), Expr::Pow(num("2"), Box::new(Expr::PowInt(num("3"), 2))));
+    assert_eq!(p("x^-2"), Expr::PowInt(x(), -2));
+    assert_eq!(p("x^(-2)"), Expr::PowInt(x(), -2));
+    assert_eq!(p("x ^ +3"), Expr::PowInt(x(), 3));
+    assert_eq!(p("x^2.0"), Expr::PowInt(x(), 2));
+    assert_eq!(p("x^1e2"), Expr::PowInt(x(), 100));
+    assert_eq!(p("x^0.5"), Expr::Pow(x(), num("0.5")));
+    assert_eq!(p("x^(1/2)"), Expr::Pow(x(), Box::new(Expr::Div(num("1"), num("2")))));
+    // the minus in an exponent takes a power, not a product: 2^-x*3 = (2^-x)*3
+    assert_eq!(p("2^-x*3"), Expr::Mul(Box::new(Expr::Pow(num("2"), Box::new(Expr::Neg(x())))), num("3")));
+    assert_eq!(p("--x"), Expr::X);
+    assert_eq!(p("- + -x"), Expr::X);
+    assert_eq!(p("x*-1"), Expr::Mul(x(), Box::new(Expr::Neg(num("1")))));
+    let f64_cases: [(&str, f64); 8] = [
+        ("-2^2", -4.0),
+        ("(-2)^2", 4.0),
+        ("2^3^2", 512.0),
+        ("2^-1*3", 1.5),
+        ("1 - 2 - 3", -4.0),
+        ("8/2/2", 2.0),
+        ("2*3 + 4*5", 26.0),
+        ("-3^-2", -1.0 / 9.0),
+    ];
+    for (text, want) in f64_cases {
+        assert!(close(p(text).eval_f64(0.0), want), "{text}");
+    }
+}
+
+#[test]
+fn literals_and_names() {
+    for (text, want) in [("0.1", "1/10"), (".5", "1/2"), ("2.", "2"), ("2.5e-3", "1/400"), ("1E6", "1000000"), ("7e+1", "70")] {
+        match p(text) {
+            Expr::Number(d) => assert_eq!(d.as_rational().to_string(), want, "{text}"),
+            other => panic!("{text}: {other:?}"),
+        }
+    }
+    assert_eq!(p("pi"), Expr::Pi);
+    assert_eq!(p("π"), Expr::Pi);
+    assert_eq!(p(" \t x \n"), Expr::X);
+    assert!(!p("pi*2 + sin(1)").depends_on_x());
+    assert!(p("besselj(0, 1 + x)").depends_on_x());
+    assert_eq!(p("besselj(-3, x)"), Expr::BesselJ(-3, Box::new(Expr::X)));
+    assert_eq!(p("besselj( +2 , x)"), Expr::BesselJ(2, Box::new(Expr::X)));
+    assert_eq!(p("besselj(1, besselj(2, x))").size(), 3);
+    assert_eq!("sqrt(x)".parse::<Expr>().unwrap(), Expr::Call(Function::Sqrt, Box::new(Expr::X)));
+}
+
+#[test]
+fn printing_parses_back_to_the_same_tree() {
+    let cases = [
+        "-x^2",
+        "(-x)^2",
+        "1 - (x - 2)",
+        "1 - x - 2",
+        "x/(2*x)",
+        "x/2*x",
+        "2^3^2",
+        "(2^3)^2",
+        "x^-2",
+        "x^(1/2)",
+        "x^-x",
+        "2^-x*3",
+        "-(x*2)",
+        "-x*2",
+        "x + -1",
+        "x - -1",
+        "x*-(-x)",
+        "-sin(x)^2",
+        "sqrt(x)*cos(x)",
+        "exp(-x^2)/(1 + x^2)",
+        "besselj(-2, 3*x)*log(1 + x)",
+        "atan(tanh(sinh(cosh(tan(x)))))",
+        "0.1 + .5 + 2.5e-3 + 1E6 + 3e-40 + 1e99999 + 12345.678",
+        "pi*x",
+        "((x))",
+    ];
+    for text in cases {
+        let e = p(text);
+        let printed = e.to_string();
+        assert_eq!(p(&printed), e, "{text} printed as {printed}");
+    }
+    assert_eq!(p("-x^2").to_string(), "-x^2");
+    assert_eq!(p("(-x)^2").to_string(), "(-x)^2");
+    assert_eq!(p("1-(x-2)").to_string(), "1 - (x - 2)");
+    assert_eq!(p("x^(-1/2)*cos(x)").to_string(), "x^(-1/2)*cos(x)");
+    assert_eq!(p("0.10 + 2.5e-3 + 1E6 + 3e-40").to_string(), "0.1 + 0.0025 + 1000000 + 3e-40");
+    // a hand-made double negation prints with parentheses and parses back
+    let nn = Expr::Neg(Box::new(Expr::Neg(Box::new(Expr::X))));
+    assert_eq!(nn.to_string(), "-(-x)");
+    assert_eq!(p(&nn.to_string()), nn);
+}
+
+#[test]
+fn each_function_in_f64() {
+    let x = 0.7_f64;
+    let cases: [(&str, f64); 14] = [
+        ("sqrt(x)", x.sqrt()),
+        ("exp(x)", x.exp()),
+        ("log(x)", x.ln()),
+        ("sin(x)", x.sin()),
+        ("cos(x)", x.cos()),
+        ("tan(x)", x.tan()),
+        ("sinh(x)", x.sinh()),
+        ("cosh(x)", x.cosh()),
+        ("tanh(x)", x.tanh()),
+        ("atan(x)", x.atan()),
+        ("besselj(0, x)", bessel_j(0, x).unwrap()),
+        ("besselj(3, 2*x)", bessel_j(3, 2.0 * x).unwrap()),
+        ("besselj(-1, x)", -bessel_j(1, x).unwrap()),
+        ("x^(1/3) + x^-3 + pi", x.powf(1.0 / 3.0) + x.powi(-3) + std::f64::consts::PI),
+    ];
+    for (text, want) in cases {
+        assert!(close(p(text).eval_f64(x), want), "{text}: {} vs {want}", p(text).eval_f64(x));
+    }
+    assert!(p("sqrt(x)").eval_f64(-1.0).is_nan());
+    assert!(p("log(x)").eval_f64(-1.0).is_nan());
+}
+
+#[test]
+fn error_cases_are_typed_and_say_what_to_fix() {
+    assert_eq!(err(""), ExprError::Empty);
+    assert_eq!(err("   \t\n"), ExprError::Empty);
+    assert!(matches!(err("(((("), ExprError::Syntax { position: 4, .. }));
+    assert!(matches!(err("x^"), ExprError::Syntax { position: 2, .. }));
+    assert!(matches!(err("x +"), ExprError::Syntax { position: 3, .. }));
+    assert!(matches!(err("x + * 2"), ExprError::Syntax { position: 4, .. }));
+    assert!(matches!(err("(x"), ExprError::Syntax { position: 2, .. }));
+    assert!(matches!(err("x)"), ExprError::Syntax { position: 1, .. }));
+    assert!(matches!(err("2x"), ExprError::Syntax { position: 1, .. }));
+    assert!(matches!(err("2e"), ExprError::Syntax { position: 1, .. }));
+    assert!(matches!(err("."), ExprError::Syntax { position: 0, .. }));
+    assert!(matches!(err("1..2"), ExprError::Syntax { position: 2, .. }));
+    assert!(matches!(err("sin x"), ExprError::Syntax { position: 4, .. }));
+    assert!(matches!(err("x²"), ExprError::Syntax { position: 1, .. }));
+    assert!(matches!(err("é + x"), ExprError::Syntax { position: 0, .. }));
+    assert!(matches!(err("x + é"), ExprError::Syntax { position: 4, .. }));
+    assert!(matches!(err("1e99999999"), ExprError::BadNumber { position: 0, .. }));
+    assert_eq!(err("foo(x)"), ExprError::UnknownFunction { name: "foo".into(), position: 0 });
+    assert_eq!(err("1 + ln(((("), ExprError::UnknownFunction { name: "ln".into(), position: 4 });
+    assert_eq!(err("y+1"), ExprError::UnknownVariable { name: "y".into(), position: 0 });
+    assert_eq!(err("NaN"), ExprError::UnknownVariable { name: "NaN".into(), position: 0 });
+    assert_eq!(err("inf*x"), ExprError::UnknownVariable { name: "inf".into(), position: 0 });
+    assert_eq!(err("besselj(x)"), ExprError::WrongArity { name: "besselj".into(), expected: 2, got: 1, position: 0 });
+    assert_eq!(err("sin(x, 2)"), ExprError::WrongArity { name: "sin".into(), expected: 1, got: 2, position: 0 });
+    assert_eq!(err("cos()"), ExprError::WrongArity { name: "cos".into(), expected: 1, got: 0, position: 0 });
+    assert_eq!(err("besselj(1.5, x)"), ExprError::BadBesselOrder { text: "1.5".into(), position: 8 });
+    assert_eq!(err("besselj( x , x)"), ExprError::BadBesselOrder { text: "x".into(), position: 9 });
+    assert_eq!(err("besselj(100001, x)"), ExprError::BadBesselOrder { text: "100001".into(), position: 8 });
+    assert!(matches!(err(&"x+".repeat(3000)), ExprError::TooLong { chars: 6000 }));
+    assert!(matches!(err(&format!("{}x{}", "(".repeat(200), ")".repeat(200))), ExprError::TooDeep { .. }));
+    assert!(matches!(err(&"x^".repeat(150)), ExprError::TooDeep { .. }));
+    assert!(matches!(err(&format!("{}x", "sin(".repeat(150))), ExprError::TooDeep { .. }));
+
+    // the messages name the problem and the way out
+    let m = crate::Error::from(err("foo(x)")).to_string();
+    assert!(m.contains("'foo'") && m.contains("sqrt, exp, log, sin, cos, tan, sinh, cosh, tanh, atan and besselj(n, x)"), "{m}");
+    let m = err("x^").to_string();
+    assert!(m.contains("character 3") && m.contains("the end of the expression"), "{m}");
+    let m = err("2x").to_string();
+    assert!(m.contains("expected an operator") && m.contains("'x'"), "{m}");
+    let m = err("y+1").to_string();
+    assert!(m.contains("'y'") && m.contains("variable is x"), "{m}");
+    let m = err("besselj(1.5, x)").to_string();
+    assert!(m.contains("integer") && m.contains("'1.5'"), "{m}");
+}
+
+#[test]
+fn nothing_panics_on_odd_input() {
+    let long_ok = format!("{}x", "x+".repeat(2000));
+    let deep_ok = format!("{}x{}", "(".repeat(MAX_DEPTH - 1), ")".repeat(MAX_DEPTH - 1));
+    let odd = [
+        "",
+        " ",
+        "((((",
+        "))))",
+        "x^",
+        "^x",
+        "*x",
+        "x**2",
+        "x^^2",
+        "1e99999999",
+        "1e-99999999",
+        "1e",
+        "e5",
+        ".e5",
+        "nan",
+        "NaN(x)",
+        "∞",
+        "x\u{0}",
+        "🦀",
+        "besselj",
+        "besselj(",
+        "besselj(1",
+        "besselj(1,",
+        "besselj(1, x",
+        "besselj(,x)",
+        "besselj(1.5, x)",
+        "besselj(x)",
+        "besselj(1, 2, x)",
+        "besselj(99999999999999999999999, x)",
+        "x^99999999999999999999999",
+        "sqrt",
+        "sqrt()",
+        "foo(x)",
+        "y+1",
+        "x,",
+        "(,)",
+        "1 2",
+        &long_ok,
+        &deep_ok,
+        &"-".repeat(4000),
+        &format!("{}x", "-".repeat(4000)),
+        &"(".repeat(5000),
+        &"9".repeat(4096),
+    ];
+    for text in odd {
+        let r = std::panic::catch_unwind(|| Expr::parse(text).map(|e| (e.eval_f64(0.5), e.to_string())));
+        assert!(r.is_ok(), "{text:?} panicked");
+    }
+    // the longest accepted input and the deepest nesting evaluate and print
+    assert_eq!(p(&long_ok).eval_f64(1.0), 2001.0);
+    assert_eq!(p(&deep_ok).eval_f64(1.5), 1.5);
+    assert_eq!(p(&format!("{}x", "-".repeat(4000))), Expr::X);
+}
+
+/// Random trees in the shapes the parser builds (an integer-literal exponent is
+/// always a `PowInt`).
+fn tree() -> impl proptest::strategy::Strategy<Value = Expr> {
+    use proptest::prelude::*;
+    let leaf = prop_oneof![
+        Just(Expr::X),
+        Just(Expr::Pi),
+        (0u32..100_000, 0u32..6, -5i32..5).prop_map(|(m, point, e)| {
+            let text = format!("{}e{}", f64::from(m) / 10f64.powi(point as i32), e);
+            Expr::Number(Decimal::parse(&text).unwrap())
+        }),
+    ];
+    leaf.prop_recursive(6, 48, 2, |inner| {
+        let b = |e: Expr| Box::new(e);
+        prop_oneof![
+            inner.clone().prop_map(move |a| Expr::Neg(b(a))),
+            (inner.clone(), inner.clone()).prop_map(move |(a, c)| Expr::Add(b(a), b(c))),
+            (inner.clone(), inner.clone()).prop_map(move |(a, c)| Expr::Sub(b(a), b(c))),
+            (inner.clone(), inner.clone()).prop_map(move |(a, c)| Expr::Mul(b(a), b(c))),
+            (inner.clone(), inner.clone()).prop_map(move |(a, c)| Expr::Div(b(a), b(c))),
+            (inner.clone(), -4i64..5).prop_map(move |(a, n)| Expr::PowInt(b(a), n)),
+            (inner.clone(), inner.clone()).prop_map(move |(a, c)| match parse::integer_literal(&c) {
+                Some(n) => Expr::PowInt(b(a), n),
+                None => Expr::Pow(b(a), b(c)),
+            }),
+            (inner.clone(), 0usize..10).prop_map(move |(a, k)| Expr::Call(Function::ALL[k], b(a))),
+            (inner, -3i64..4).prop_map(move |(a, n)| Expr::BesselJ(n, b(a))),
+        ]
+    })
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::test_runner::Config::with_cases(512))]
+    #[test]
+    fn random_trees_print_and_parse_back(e in tree()) {
+        let printed = e.to_string();
+        let back = Expr::parse(&printed);
+        proptest::prop_assert!(back.as_ref().is_ok_and(|b| *b == e), "{:?} printed as {} parsed as {:?}", e, printed, back);
+    }
+}

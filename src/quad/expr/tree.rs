@@ -1,0 +1,230 @@
+//! The parsed expression tree and its printed form.
+
+use std::fmt;
+
+use rug::{Integer, Rational};
+
+use crate::ball::Decimal;
+
+/// A one-argument function of the expression language.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Function {
+    /// `sqrt`, the square root (analytic form in [`CBall`](crate::ball::CBall)s).
+    Sqrt,
+    /// `exp`.
+    Exp,
+    /// `log`, the natural logarithm (analytic form in complex balls).
+    Log,
+    /// `sin`.
+    Sin,
+    /// `cos`.
+    Cos,
+    /// `tan`.
+    Tan,
+    /// `sinh`.
+    Sinh,
+    /// `cosh`.
+    Cosh,
+    /// `tanh`.
+    Tanh,
+    /// `atan` (analytic form in complex balls).
+    Atan,
+}
+
+impl Function {
+    /// Every one-argument function, in the order the messages list them.
+    pub const ALL: [Function; 10] = [
+        Function::Sqrt,
+        Function::Exp,
+        Function::Log,
+        Function::Sin,
+        Function::Cos,
+        Function::Tan,
+        Function::Sinh,
+        Function::Cosh,
+        Function::Tanh,
+        Function::Atan,
+    ];
+
+    /// The name written in expressions.
+    pub fn name(self) -> &'static str {
+        match self {
+            Function::Sqrt => "sqrt",
+            Function::Exp => "exp",
+            Function::Log => "log",
+            Function::Sin => "sin",
+            Function::Cos => "cos",
+            Function::Tan => "tan",
+            Function::Sinh => "sinh",
+            Function::Cosh => "cosh",
+            Function::Tanh => "tanh",
+            Function::Atan => "atan",
+        }
+    }
+
+    /// The function written `name`, if any.
+    pub fn from_name(name: &str) -> Option<Function> {
+        Function::ALL.into_iter().find(|f| f.name() == name)
+    }
+}
+
+/// A parsed integrand: a tree in the one variable `x`.
+///
+/// Built by [`Expr::parse`] (or by hand), evaluated by [`Expr::eval`] in any
+/// [`ExprValue`](super::ExprValue) and printed back by `Display` in a form that
+/// parses to the same tree.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum Expr {
+    /// The variable `x`.
+    X,
+    /// The constant `pi`.
+    Pi,
+    /// A decimal literal, held exactly (a ball that contains it at any precision).
+    Number(Decimal),
+    /// `-a`.
+    Neg(Box<Expr>),
+    /// `a + b`.
+    Add(Box<Expr>, Box<Expr>),
+    /// `a - b`.
+    Sub(Box<Expr>, Box<Expr>),
+    /// `a * b`.
+    Mul(Box<Expr>, Box<Expr>),
+    /// `a / b`.
+    Div(Box<Expr>, Box<Expr>),
+    /// `a ^ n` with an integer exponent written as a literal (`x^3`, `x^-2`):
+    /// integer powering, no branch cut.
+    PowInt(Box<Expr>, i64),
+    /// `a ^ b` for any other exponent: the general power `exp(b log a)`, analytic
+    /// form in complex balls.
+    Pow(Box<Expr>, Box<Expr>),
+    /// `f(a)` for a one-argument function.
+    Call(Function, Box<Expr>),
+    /// `besselj(n, a)`: the Bessel function `J_n(a)` of integer order `n`.
+    BesselJ(i64, Box<Expr>),
+}
+
+impl Expr {
+    /// Whether the expression contains the variable `x` (otherwise it is a constant).
+    pub fn depends_on_x(&self) -> bool {
+        match self {
+            Expr::X => true,
+            Expr::Pi | Expr::Number(_) => false,
+            Expr::Neg(a) | Expr::PowInt(a, _) | Expr::Call(_, a) | Expr::BesselJ(_, a) => a.depends_on_x(),
+            Expr::Add(a, b) | Expr::Sub(a, b) | Expr::Mul(a, b) | Expr::Div(a, b) | Expr::Pow(a, b) => {
+                a.depends_on_x() || b.depends_on_x()
+            }
+        }
+    }
+
+    /// Number of nodes of the tree.
+    pub fn size(&self) -> usize {
+        1 + match self {
+            Expr::X | Expr::Pi | Expr::Number(_) => 0,
+            Expr::Neg(a) | Expr::PowInt(a, _) | Expr::Call(_, a) | Expr::BesselJ(_, a) => a.size(),
+            Expr::Add(a, b) | Expr::Sub(a, b) | Expr::Mul(a, b) | Expr::Div(a, b) | Expr::Pow(a, b) => {
+                a.size() + b.size()
+            }
+        }
+    }
+
+    /// How tightly the printed form binds: an operand whose level is below what
+    /// its parent needs gets parentheses.
+    fn level(&self) -> u8 {
+        match self {
+            Expr::Add(..) | Expr::Sub(..) => 1,
+            Expr::Mul(..) | Expr::Div(..) => 2,
+            Expr::Neg(_) => 3,
+            Expr::Pow(..) | Expr::PowInt(..) => 4,
+            Expr::X | Expr::Pi | Expr::Number(_) | Expr::Call(..) | Expr::BesselJ(..) => 5,
+        }
+    }
+}
+
+/// Writes `e`, in parentheses when it binds less tightly than `min`.
+fn operand(f: &mut fmt::Formatter<'_>, e: &Expr, min: u8) -> fmt::Result {
+    if e.level() < min {
+        write!(f, "({e})")
+    } else {
+        write!(f, "{e}")
+    }
+}
+
+impl fmt::Display for Expr {
+    /// The expression with as few parentheses as parsing it back to the same tree
+    /// needs (`-x^2`, `(-x)^2`, `a - (b - c)`, `x^-2`).
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // Left operands of a left-associative operator may bind as loosely as the
+        // operator itself; right operands must bind more tightly. The operand of
+        // `^` and of a unary minus is itself a signed power, so a minus there needs
+        // no parentheses.
+        let binary = |f: &mut fmt::Formatter<'_>, a: &Expr, op: &str, b: &Expr, lvl: u8| {
+            operand(f, a, lvl)?;
+            f.write_str(op)?;
+            operand(f, b, lvl + 1)
+        };
+        match self {
+            Expr::X => f.write_str("x"),
+            Expr::Pi => f.write_str("pi"),
+            Expr::Number(d) => write_decimal(f, d.as_rational()),
+            Expr::Neg(a) => {
+                // `-(-x)`: a second sign would fold into the first when parsed
+                f.write_str("-")?;
+                operand(f, a, 4)
+            }
+            Expr::Add(a, b) => binary(f, a, " + ", b, 1),
+            Expr::Sub(a, b) => binary(f, a, " - ", b, 1),
+            Expr::Mul(a, b) => binary(f, a, "*", b, 2),
+            Expr::Div(a, b) => binary(f, a, "/", b, 2),
+            Expr::PowInt(a, n) => {
+                operand(f, a, 5)?;
+                write!(f, "^{n}")
+            }
+            Expr::Pow(a, b) => {
+                operand(f, a, 5)?;
+                f.write_str("^")?;
+                operand(f, b, 3)
+            }
+            Expr::Call(func, a) => write!(f, "{}({a})", func.name()),
+            Expr::BesselJ(n, a) => write!(f, "besselj({n}, {a})"),
+        }
+    }
+}
+
+/// Writes a rational exactly as a decimal (`0.1`, `2500`, `3e-40`) when its
+/// denominator is `2^i 5^j`, as `(p/q)` otherwise (not a decimal literal).
+fn write_decimal(f: &mut fmt::Formatter<'_>, q: &Rational) -> fmt::Result {
+    let den = q.denom();
+    let (rest, twos) = den.clone().remove_factor(&Integer::from(2));
+    let (rest, fives) = rest.remove_factor(&Integer::from(5));
+    if rest != 1 {
+        return write!(f, "({q})");
+    }
+    if *q < 0 {
+        f.write_str("(-")?;
+    }
+    // |q| = m 10^-k with m an integer; then drop m's trailing zeros into exp.
+    let k = twos.max(fives);
+    let scale = Integer::from(Integer::u_pow_u(10, k));
+    let m = Integer::from(q.numer().abs_ref()) * scale / den;
+    let (m, zeros) = if m == 0 { (m, 0) } else { m.remove_factor(&Integer::from(10)) };
+    let exp = i64::from(zeros) - i64::from(k);
+    let digits = m.to_string();
+    if (0..=6).contains(&exp) {
+        write!(f, "{digits}{}", "0".repeat(exp as usize))?;
+    } else if (-30..0).contains(&exp) {
+        let point = exp.unsigned_abs() as usize;
+        if digits.len() > point {
+            let (int, frac) = digits.split_at(digits.len() - point);
+            write!(f, "{int}.{frac}")?;
+        } else {
+            write!(f, "0.{}{digits}", "0".repeat(point - digits.len()))?;
+        }
+    } else {
+        write!(f, "{digits}e{exp}")?;
+    }
+    if *q < 0 {
+        f.write_str(")")?;
+    }
+    Ok(())
+}
