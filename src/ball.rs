@@ -40,6 +40,7 @@ pub use complex::CBall;
 mod decimal;
 mod dd_bounded;
 mod double_double;
+mod elementary;
 pub(crate) use double_double::{quick_two_sum, two_prod, two_sum};
 mod lanes;
 pub(crate) use lanes::F64x2;

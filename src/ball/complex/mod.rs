@@ -35,6 +35,9 @@ use rug::Float;
 
 use super::{Ball, Mag};
 
+mod bessel;
+mod elementary;
+
 /// A complex rectangle `re + i im` of two real balls.
 #[derive(Clone, PartialEq)]
 pub struct CBall {
