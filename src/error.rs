@@ -50,6 +50,8 @@ pub enum Error {
     },
     /// An integrand expression that does not parse ([`crate::quad::expr`]).
     Expression(crate::quad::expr::ExprError),
+    /// A certified integral that cannot be done as asked ([`crate::quad::certified`]).
+    Integration(crate::quad::certified::IntegrationError),
     /// An internal invariant failed. This is a bug; please report it.
     Internal {
         /// What failed.
@@ -78,6 +80,7 @@ impl fmt::Display for Error {
             Error::DivisionByZero => write!(f, "division by a ball containing zero"),
             Error::Overflow { what } => write!(f, "overflow in {what}: the result exceeds the exponent range"),
             Error::Expression(e) => write!(f, "{e}"),
+            Error::Integration(e) => write!(f, "{e}"),
             Error::Internal { what } => write!(f, "internal error (please report): {what}"),
         }
     }

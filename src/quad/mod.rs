@@ -36,6 +36,7 @@
 //!   `FnMut(f64) -> f64`, with `try_*` variants for `FnMut(f64) -> Result<f64>`;
 //!   tanh-sinh always takes a fallible integrand.
 
+pub mod certified;
 pub mod expr;
 pub mod gauss_kronrod;
 pub mod gauss_legendre;

@@ -1,0 +1,275 @@
+//! Gauss-Legendre nodes and weights as certified balls, cached per degree and precision.
+//!
+//! # Method
+//!
+//! The `n` nodes are the roots of the Legendre polynomial `P_n` (DLMF 18.3), found
+//! and enclosed in three steps:
+//!
+//! 1. **Start.** Tricomi's approximation `x_k ~ cos(pi (4k - 1)/(4n + 2))`
+//!    (DLMF 18.16.6 with the first correction term), refined by Newton's method in
+//!    f64.
+//! 2. **Refine.** Newton's method in MPFR, `x <- x - P_n(x)/P_n'(x)`, with the
+//!    precision doubled each step (quadratic convergence) up to the working
+//!    precision plus guard bits. `P_n` and `P_n'` come from the three-term
+//!    recurrence `(k+1) P_{k+1} = (2k+1) x P_k - k P_{k-1}` (DLMF 18.9.1) and
+//!    `(1 - x^2) P_n' = n (P_{n-1} - x P_n)` (DLMF 18.9.18).
+//! 3. **Certify.** `P_n` is evaluated in ball arithmetic at the two exact points
+//!    `x - delta` and `x + delta`. Opposite signs (balls that exclude zero) prove
+//!    a root in `[x - delta, x + delta]`. The `ceil(n/2)` non-negative roots are
+//!    all found this way in disjoint, ordered intervals (for odd `n` the root 0 is
+//!    exact), and `P_n` has exactly `n` roots, symmetric about 0, so every node
+//!    is enclosed. The weight `w = 2 (1 - x^2) / (n P_{n-1}(x))^2` (DLMF 3.5.19
+//!    with the identity above at a root) is evaluated in ball arithmetic on the
+//!    node's ball, so it encloses the true weight.
+//!
+//! Cost: `O(n)` operations a polynomial evaluation, a few evaluations a node, so
+//! `O(n^2)` a rule, once per `(n, prec)`: rules are cached for the life of the
+//! process ([`rule`]).
+
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex, OnceLock};
+
+use rug::float::Round;
+use rug::ops::AssignRound;
+use rug::{Assign, Float};
+
+use crate::ball::{Ball, Mag};
+use crate::error::{Error, Result};
+
+/// A Gauss-Legendre rule on `[-1, 1]`: the non-negative nodes (in decreasing
+/// order) and their weights; the negative nodes mirror them.
+#[derive(Debug)]
+pub(crate) struct Rule {
+    /// `x_k >= 0`, `k = 0 .. ceil(n/2)`, largest first; for odd `n` the last is 0.
+    pub nodes: Vec<Ball>,
+    /// The matching weights.
+    pub weights: Vec<Ball>,
+}
+
+type Cache = Mutex<HashMap<(usize, u32), Arc<Rule>>>;
+
+fn cache() -> &'static Cache {
+    static CACHE: OnceLock<Cache> = OnceLock::new();
+    CACHE.get_or_init(|| Mutex::new(HashMap::new()))
+}
+
+/// The degree-`n` rule with node and weight balls at `prec` bits (cached).
+pub(crate) fn rule(n: usize, prec: u32) -> Result<Arc<Rule>> {
+    if let Ok(c) = cache().lock() {
+        if let Some(r) = c.get(&(n, prec)) {
+            return Ok(Arc::clone(r));
+        }
+    }
+    let r = Arc::new(compute_rule(n, prec)?);
+    if let Ok(mut c) = cache().lock() {
+        c.insert((n, prec), Arc::clone(&r));
+    }
+    Ok(r)
+}
+
+/// `(P_n(x), P_{n-1}(x))` by the three-term recurrence, in MPFR at `x`'s precision.
+fn legendre_pair(n: usize, x: &Float) -> (Float, Float) {
+    let p = x.prec();
+    let mut prev = Float::with_val(p, 1);
+    let mut cur = x.clone();
+    let mut t = Float::new(p);
+    for k in 1..n {
+        // P_{k+1} = ((2k+1) x P_k - k P_{k-1}) / (k+1)
+        t.assign(&cur * x);
+        t *= (2 * k + 1) as u64;
+        prev *= k as u64;
+        t -= &prev;
+        t /= (k + 1) as u64;
+        std::mem::swap(&mut prev, &mut cur);
+        std::mem::swap(&mut cur, &mut t);
+    }
+    (cur, prev)
+}
+
+
+/// `(P_n(X), P_{n-1}(X))` in ball arithmetic (encloses the values for every point of `X`).
+fn legendre_pair_ball(n: usize, x: &Ball) -> Result<(Ball, Ball)> {
+    let p = x.prec();
+    let mut prev = Ball::one(p);
+    let mut cur = x.clone();
+    for k in 1..n {
+        let next = cur.mul(x).mul_i64((2 * k + 1) as i64).sub(&prev.mul_i64(k as i64)).div_i64((k + 1) as i64)?;
+        prev = std::mem::replace(&mut cur, next);
+    }
+    Ok((cur, prev))
+}
+
+/// Newton's method for the root near `x0` (f64 start), refined to `prec` bits.
+fn newton_root(n: usize, x0: f64, prec: u32) -> Float {
+    // f64 Newton first.
+    let mut x = x0;
+    for _ in 0..8 {
+        let (pn, pm) = legendre_pair_f64(n, x);
+        let d = n as f64 * (pm - x * pn) / (1.0 - x * x);
+        let step = pn / d;
+        x -= step;
+        if step.abs() <= 1e-17 * x.abs().max(1e-300) {
+            break;
+        }
+    }
+    let mut q = 53u32;
+    let mut xf = Float::with_val(prec, x);
+    loop {
+        q = (2 * q).min(prec);
+        xf.set_prec_round(q, Round::Nearest);
+        let (pn, pm) = legendre_pair(n, &xf);
+        // d = n (P_{n-1} - x P_n) / (1 - x^2)
+        let mut num = Float::with_val(q, &xf * &pn);
+        num = Float::with_val(q, &pm - &num) * n as u64;
+        let one_minus = Float::with_val(q, 1) - Float::with_val(q, xf.square_ref());
+        let d = num / one_minus;
+        let step = pn / d;
+        xf -= step;
+        if q == prec {
+            break;
+        }
+    }
+    // One more step at full precision (the doubling ends one step short of it).
+    let (pn, pm) = legendre_pair(n, &xf);
+    let num = Float::with_val(prec, &pm - Float::with_val(prec, &xf * &pn)) * n as u64;
+    let one_minus = Float::with_val(prec, 1) - Float::with_val(prec, xf.square_ref());
+    let d = num / one_minus;
+    xf -= pn / d;
+    xf
+}
+
+fn legendre_pair_f64(n: usize, x: f64) -> (f64, f64) {
+    let (mut prev, mut cur) = (1.0, x);
+    for k in 1..n {
+        let next = ((2 * k + 1) as f64 * x * cur - k as f64 * prev) / (k + 1) as f64;
+        prev = cur;
+        cur = next;
+    }
+    (cur, prev)
+}
+
+/// Sign of a ball that excludes zero: `Some(true)` positive, `Some(false)` negative.
+fn strict_sign(b: &Ball) -> Option<bool> {
+    if b.is_positive() {
+        Some(true)
+    } else if b.is_negative() {
+        Some(false)
+    } else {
+        None
+    }
+}
+
+/// Extra bits that cover the growth of ball radii through the three-term
+/// recurrence: a radius grows at most by the larger root of `t^2 = 2|x| t + 1`,
+/// `1 + sqrt(2) < 2^1.28`, a step for `|x| <= 1`. The recurrence itself is stable
+/// (the radius growth is an overestimate), so these bits only keep the balls tight.
+fn recurrence_guard(n: usize) -> u32 {
+    (1.28 * n as f64).ceil() as u32 + 40
+}
+
+fn compute_rule(n: usize, prec: u32) -> Result<Rule> {
+    if n == 0 {
+        return Err(Error::Internal { what: "Gauss-Legendre rule of degree 0".into() });
+    }
+    let half = n.div_ceil(2);
+    let wp = prec + 2 * (usize::BITS - n.leading_zeros()) + 16;
+    // Roots to `ext` bits, enclosed in balls of radius `2^-(wp + guard)`: the
+    // recurrence on the node's ball then still gives the weight to about `wp` bits.
+    let guard = recurrence_guard(n);
+    let ext = wp + 2 * guard;
+    let mut nodes = Vec::with_capacity(half);
+    let mut weights = Vec::with_capacity(half);
+    let nf = n as f64;
+    let mut prev_low: Option<Float> = None;
+    for k in 1..=half {
+        let exact_zero = n % 2 == 1 && k == half;
+        let node = if exact_zero {
+            Ball::zero(ext)
+        } else {
+            let theta = std::f64::consts::PI * (4.0 * k as f64 - 1.0) / (4.0 * nf + 2.0);
+            let x0 = (1.0 - (nf - 1.0) / (8.0 * nf * nf * nf)) * theta.cos();
+            let x = newton_root(n, x0, ext);
+            certify_root(n, &x, ext, wp + guard)?
+        };
+        // Disjoint and ordered (largest first), all inside (0, 1).
+        let (lo, hi) = (node.lower(), node.upper());
+        if hi >= 1 || (!exact_zero && lo <= 0) {
+            return Err(Error::Internal { what: format!("Gauss-Legendre node {k} of degree {n} left (0, 1)") });
+        }
+        if let Some(pl) = &prev_low {
+            if hi >= *pl {
+                return Err(Error::Internal { what: format!("Gauss-Legendre nodes {k} and {} of degree {n} overlap", k - 1) });
+            }
+        }
+        prev_low = Some(lo);
+        let (_, pm) = legendre_pair_ball(n, &node)?;
+        let one_minus = Ball::one(ext).sub(&node.sqr());
+        let den = pm.mul_i64(n as i64).sqr();
+        let w = one_minus.mul_pow2(1).div(&den)?;
+        nodes.push(node.set_prec(prec));
+        weights.push(w.set_prec(prec));
+    }
+    Ok(Rule { nodes, weights })
+}
+
+/// Encloses the root of `P_n` next to `x` by a sign change: a ball of radius about
+/// `2^-target`, `P_n` evaluated at `ext` bits.
+fn certify_root(n: usize, x: &Float, ext: u32, target: u32) -> Result<Ball> {
+    // delta starts at the target and grows if the signs cannot be decided (the
+    // Newton iterate is then less accurate than expected).
+    let mut delta_exp = -(target as i64);
+    for _ in 0..8 {
+        let delta = Mag::pow2(delta_exp).to_float();
+        let mut lo = Float::new(ext);
+        lo.assign_round(x - &delta, Round::Down);
+        let mut hi = Float::new(ext);
+        hi.assign_round(x + &delta, Round::Up);
+        let (plo, _) = legendre_pair_ball(n, &Ball::from_float(&lo, ext))?;
+        let (phi, _) = legendre_pair_ball(n, &Ball::from_float(&hi, ext))?;
+        if let (Some(a), Some(b)) = (strict_sign(&plo), strict_sign(&phi)) {
+            if a != b {
+                return Ok(Ball::hull(&lo, &hi, ext));
+            }
+        }
+        delta_exp += 8;
+    }
+    Err(Error::Internal { what: format!("could not certify a root of P_{n} to {target} bits") })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// sum w_k x_k^(2j) = 2/(2j+1) for 2j <= 2n - 1.
+    #[test]
+    fn rules_integrate_even_monomials_exactly() {
+        for &n in &[1usize, 2, 3, 4, 7, 16, 33] {
+            let r = rule(n, 128).unwrap();
+            for j in 0..n {
+                let mut s = Ball::zero(128);
+                for (k, (x, w)) in r.nodes.iter().zip(&r.weights).enumerate() {
+                    let mult = if n % 2 == 1 && k == r.nodes.len() - 1 { 1 } else { 2 };
+                    s = s.add(&w.mul(&x.pow_u64(2 * j as u64)).mul_i64(mult));
+                }
+                let exact = Ball::from_ratio(2, 2 * j as i64 + 1, 256);
+                assert!(s.overlaps(&exact), "n = {n}, j = {j}: {s:?}");
+                assert!(s.rad_mag().le(&Mag::pow2(-110)), "n = {n}: radius {:?}", s.rad_mag());
+            }
+        }
+    }
+
+    #[test]
+    fn nodes_are_tight_at_high_precision() {
+        let r = rule(20, 1000).unwrap();
+        for x in &r.nodes {
+            assert!(x.rad_mag().le(&Mag::pow2(-995)), "{:?}", x.rad_mag());
+        }
+        // the cache hands back the same rule
+        assert!(Arc::ptr_eq(&r, &rule(20, 1000).unwrap()));
+    }
+
+    #[test]
+    fn degree_zero_is_an_error() {
+        assert!(rule(0, 64).is_err());
+    }
+}

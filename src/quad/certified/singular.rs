@@ -1,0 +1,388 @@
+//! Endpoint weights `(x-a)^alpha (b-x)^beta log^k(x-a)` and semi-infinite ranges.
+//!
+//! # Method
+//!
+//! `[a, b]` is split at `c = (a + b)/2`. On `[a, c]`, when `alpha != 0` or `k > 0`,
+//! the substitution `x = a + d e^{-s}`, `d = c - a`, gives (exactly)
+//!
+//! ```text
+//! int_a^c (x-a)^alpha log^k(x-a) h(x) dx
+//!     = int_0^inf e^{mu (log d - s)} (log d - s)^k h(a + d e^{-s}) ds,   mu = alpha + 1,
+//! ```
+//!
+//! with `h(x) = (b-x)^beta g(x)` analytic next to `[a, c]`. The new integrand is
+//! analytic in `s` and decays like `e^{-mu s}`. The range is cut at `S`; with
+//! `A = |log d|` and `H = sup |h|` over `[a, a + d e^{-S}]` (one ball evaluation),
+//!
+//! ```text
+//! |int_S^inf ...| <= H e^{mu (log d - S)} (A + S)^k / (mu (1 - k/(mu (A + S)))),
+//! ```
+//!
+//! valid for `mu (A + S) > k`, from `Gamma(k+1, y) <= y^k e^{-y} / (1 - k/y)` for
+//! `y > k` (DLMF 8.10.1 and the alternating expansion 8.11.2). `S` is chosen so that
+//! this is at most a quarter of the tolerance, and the bound is added to the radius.
+//! The right end is the mirror image (`x = b - d e^{-s}`, `nu = beta + 1`, no log).
+//! Where an end is regular, the piece is integrated as it is. Exponents that are
+//! balls (decimals such as `-1/3`) are used as balls throughout, so the result holds
+//! for every exponent in the ball.
+//!
+//! A semi-infinite range `[a, inf)` with a declared decay is cut at `T` where the
+//! declared tail (`m e^{-cT}/c`, or `m T^{1-p}/(p-1)`) is at most a quarter of the
+//! tolerance, and `[a, T]` is integrated as above.
+
+use rug::Float;
+
+use super::{HoloBall, IntegrationError, Mode, Part, PartsBuilder};
+use crate::ball::{Ball, CBall, Mag};
+use crate::error::{Error, Result};
+
+/// The endpoint weight `(x-a)^alpha (b-x)^beta log^k(x-a)`.
+#[derive(Debug, Clone)]
+pub struct Weight {
+    alpha: Ball,
+    beta: Ball,
+    log_power: u32,
+}
+
+impl Weight {
+    /// Largest power of the logarithm.
+    pub const MAX_LOG_POWER: u32 = 8;
+
+    /// A weight; `alpha` and `beta` must be `> -1` on the whole ball, `log_power <=`
+    /// [`Weight::MAX_LOG_POWER`].
+    pub fn new(alpha: Ball, beta: Ball, log_power: u32) -> Result<Weight> {
+        for (which, e) in [("alpha", &alpha), ("beta", &beta)] {
+            if !e.is_finite() || e.lower() <= -1 {
+                return Err(Error::Integration(IntegrationError::WeightExponent { which, value: e.to_f64() }));
+            }
+        }
+        if log_power > Weight::MAX_LOG_POWER {
+            return Err(Error::Integration(IntegrationError::LogPower { value: log_power }));
+        }
+        Ok(Weight { alpha, beta, log_power })
+    }
+
+    /// `(x-a)^alpha`, no log, no right weight.
+    pub fn left(alpha: Ball) -> Result<Weight> {
+        let p = alpha.prec();
+        Weight::new(alpha, Ball::zero(p), 0)
+    }
+
+    fn left_singular(&self) -> bool {
+        !is_zero(&self.alpha) || self.log_power > 0
+    }
+
+    fn right_singular(&self) -> bool {
+        !is_zero(&self.beta)
+    }
+}
+
+fn is_zero(b: &Ball) -> bool {
+    b.is_exact() && b.mid().is_zero()
+}
+
+/// A declared bound on the whole integrand for `x >= a`.
+#[derive(Debug, Clone)]
+#[non_exhaustive]
+pub enum Decay {
+    /// `|f(x)| <= bound e^{-rate x}`, `rate > 0`.
+    Exponential {
+        /// `c > 0`.
+        rate: Ball,
+        /// `m >= 0`.
+        bound: Ball,
+    },
+    /// `|f(x)| <= bound x^{-power}`, `power > 1`, for `x >= a > 0`.
+    Algebraic {
+        /// `p > 1`.
+        power: Ball,
+        /// `m >= 0`.
+        bound: Ball,
+    },
+}
+
+impl Decay {
+    /// `|f(x)| <= bound e^{-rate x}`.
+    pub fn exponential(rate: Ball, bound: Ball) -> Result<Decay> {
+        if !rate.is_finite() || !rate.is_positive() {
+            return Err(decay_error("rate must be > 0", &rate));
+        }
+        if !bound.is_finite() || bound.is_negative() {
+            return Err(decay_error("bound must be >= 0", &bound));
+        }
+        Ok(Decay::Exponential { rate, bound })
+    }
+
+    /// `|f(x)| <= bound x^{-power}`.
+    pub fn algebraic(power: Ball, bound: Ball) -> Result<Decay> {
+        if !power.is_finite() || power.lower() <= 1 {
+            return Err(decay_error("power must be > 1", &power));
+        }
+        if !bound.is_finite() || bound.is_negative() {
+            return Err(decay_error("bound must be >= 0", &bound));
+        }
+        Ok(Decay::Algebraic { power, bound })
+    }
+}
+
+fn decay_error(what: &'static str, v: &Ball) -> Error {
+    Error::Integration(IntegrationError::Decay { what, value: v.to_f64() })
+}
+
+type Wrap<'w> = Box<dyn Fn(&HoloBall, &mut dyn FnMut(&HoloBall) -> HoloBall) -> HoloBall + 'w>;
+
+/// The weight factors that are analytic on a piece: `(b-x)^beta` next to `a`, and
+/// `(x-a)^alpha log^k(x-a)` next to `b`, times `g`.
+fn left_factor(b: Ball, beta: Ball) -> impl Fn(&HoloBall, &mut dyn FnMut(&HoloBall) -> HoloBall) -> HoloBall {
+    move |x, g| {
+        let gx = g(x);
+        if is_zero(&beta) {
+            return gx;
+        }
+        let bx = x.real(b.clone()) - x;
+        bx.pow(&x.real(beta.clone())) * gx
+    }
+}
+
+fn right_factor(a: Ball, alpha: Ball, k: u32) -> impl Fn(&HoloBall, &mut dyn FnMut(&HoloBall) -> HoloBall) -> HoloBall {
+    move |x, g| {
+        let mut v = g(x);
+        if is_zero(&alpha) && k == 0 {
+            return v;
+        }
+        let xa = x - x.real(a.clone());
+        if !is_zero(&alpha) {
+            v = xa.pow(&x.real(alpha.clone())) * v;
+        }
+        if k > 0 {
+            v = xa.log().powi(k as i64) * v;
+        }
+        v
+    }
+}
+
+/// The exponentially mapped piece next to an endpoint `e` (`sign` +1 for `x = e + d e^{-s}`,
+/// -1 for `x = e - d e^{-s}`), and its tail bound for the target `target`.
+struct Mapped {
+    e: Ball,
+    sign: i64,
+    d: Ball,
+    mu: Ball,
+    log_d: Ball,
+    k: u32,
+}
+
+impl Mapped {
+    fn new(e: &Ball, other: &Float, sign: i64, exponent: &Ball, k: u32, wp: u32) -> Result<Mapped> {
+        let other = Ball::from_float(other, other.prec());
+        let d = if sign > 0 { other.sub(e) } else { e.sub(&other) };
+        let log_d = d.set_prec(wp).ln()?;
+        Ok(Mapped { e: e.set_prec(wp), sign, d: d.set_prec(wp), mu: exponent.set_prec(wp).add_i64(1), log_d, k })
+    }
+
+    /// `x(s)`.
+    fn x(&self, s: &HoloBall) -> HoloBall {
+        let step = s.real(self.d.clone()) * (-s).exp();
+        if self.sign > 0 {
+            s.real(self.e.clone()) + step
+        } else {
+            s.real(self.e.clone()) - step
+        }
+    }
+
+    /// The integrand in `s`, around the analytic factor `h`.
+    fn wrap<'w, H>(self, h: H) -> Wrap<'w>
+    where
+        H: Fn(&HoloBall, &mut dyn FnMut(&HoloBall) -> HoloBall) -> HoloBall + 'w,
+    {
+        Box::new(move |s, g| {
+            let ld = s.real(self.log_d.clone()) - s;
+            let mut v = (s.real(self.mu.clone()) * &ld).exp();
+            if self.k > 0 {
+                v = v * ld.powi(self.k as i64);
+            }
+            v * h(&self.x(s), g)
+        })
+    }
+
+    /// The cut `S` (an exact float) and the rigorous tail bound beyond it.
+    fn cut<H>(&self, h: &H, target: Mag, g: &mut dyn FnMut(&HoloBall) -> HoloBall) -> Result<(Float, Mag)>
+    where
+        H: Fn(&HoloBall, &mut dyn FnMut(&HoloBall) -> HoloBall) -> HoloBall,
+    {
+        let p = 64;
+        let mu_f = self.mu.lower().to_f64().max(1e-300);
+        let a_f = self.log_d.abs_upper().to_f64();
+        let k = self.k as f64;
+        // A first S from the bound with H = 1, then refined with the true H.
+        let ln_target = target.log2() * std::f64::consts::LN_2;
+        let mut ln_h = 0.0f64;
+        let mut s = 1.0f64;
+        for round in 0..40 {
+            for _ in 0..4 {
+                let est = mu_f * self.log_d.to_f64() + k * (a_f + s).ln() - mu_f.ln() + ln_h - ln_target;
+                s = (est / mu_f).max(1.0).max((k + 1.0) / mu_f);
+            }
+            let s_float = Float::with_val(53, s);
+            // H over x in [e, e +- d e^{-S}]
+            let near = self.d.mul(&Ball::from_float(&s_float, p).neg().exp()?);
+            let seg = Ball::hull(&Float::with_val(p, 0), &near.upper(), p);
+            let xs = if self.sign > 0 { self.e.add(&seg) } else { self.e.sub(&seg) };
+            let hv = h(&HoloBall::new(CBall::from_real(xs), Mode::Point), g);
+            let big_h = hv.inner().abs_upper_mag();
+            if !big_h.is_finite() {
+                return Ok((s_float, Mag::inf()));
+            }
+            let tail = self.tail_bound(&s_float, a_f, big_h)?;
+            if tail.le(&target) {
+                return Ok((s_float, tail));
+            }
+            ln_h = big_h.log2() * std::f64::consts::LN_2 + 0.5 * round as f64;
+        }
+        Err(Error::Integration(IntegrationError::NotIntegrable { near: self.e.to_f64(), evaluations: 0 }))
+    }
+
+    /// `H e^{mu (log d - S)} (A + S)^k / (mu (1 - k/(mu (A + S))))`, rounded up.
+    fn tail_bound(&self, s: &Float, a_f: f64, big_h: Mag) -> Result<Mag> {
+        let p = 64;
+        let sb = Ball::from_float(s, p);
+        let mu = self.mu.set_prec(p);
+        let e = mu.mul(&self.log_d.set_prec(p).sub(&sb)).exp()?;
+        let a_up = Ball::from_f64(a_f.next_up(), p)?; // >= |log d|
+        let u = a_up.add(&sb);
+        let mut t = e.mul(&u.pow_u64(self.k as u64)).div(&mu)?;
+        if self.k > 0 {
+            let y = mu.mul(&u);
+            let factor = Ball::one(p).sub(&Ball::from_i64(self.k as i64, p).div(&y)?);
+            if !factor.is_positive() {
+                return Ok(Mag::inf());
+            }
+            t = t.div(&factor)?;
+        }
+        Ok(t.abs_upper_mag().mul(big_h))
+    }
+}
+
+/// The parts of `int_a^b (x-a)^alpha (b-x)^beta log^k(x-a) g(x) dx`, `a < b`.
+pub(crate) fn finite_parts<'w, F>(a: &Ball, b: &Ball, weight: &Weight, prec: u32) -> Result<Box<PartsBuilder<'w, F>>>
+where
+    F: FnMut(&HoloBall) -> HoloBall + 'w,
+{
+    if !(a.upper() < b.lower()) {
+        return Err(Error::Integration(IntegrationError::Endpoints { a: a.to_f64(), b: b.to_f64() }));
+    }
+    let (a, b, w) = (a.clone(), b.clone(), weight.clone());
+    Ok(Box::new(move |tol: Mag, wp: u32, g: &mut F| parts_on(&a, &b, &w, tol, wp.max(prec.min(64)), g, Mag::ZERO)))
+}
+
+/// The parts of `int_a^inf w(x) f(x) dx` under a declared decay.
+pub(crate) fn infinite_parts<'w, F>(a: &Ball, weight: Option<&Weight>, decay: &Decay, _prec: u32) -> Result<Box<PartsBuilder<'w, F>>>
+where
+    F: FnMut(&HoloBall) -> HoloBall + 'w,
+{
+    let p = a.prec().max(64);
+    let w = match weight {
+        Some(w) => {
+            if w.right_singular() {
+                return Err(Error::Integration(IntegrationError::WeightExponent { which: "beta (must be 0 on [a, inf))", value: w.beta.to_f64() }));
+            }
+            w.clone()
+        }
+        None => Weight::new(Ball::zero(p), Ball::zero(p), 0)?,
+    };
+    if let Decay::Algebraic { .. } = decay {
+        if !a.is_positive() {
+            return Err(Error::Integration(IntegrationError::Decay { what: "an algebraic decay x^-p needs a > 0", value: a.to_f64() }));
+        }
+    }
+    let (a, decay) = (a.clone(), decay.clone());
+    Ok(Box::new(move |tol: Mag, wp: u32, g: &mut F| {
+        let (t, tail) = cut_infinite(&a, &decay, tol.mul_2exp(-2))?;
+        parts_on(&a, &Ball::from_float(&t, t.prec()), &w, tol.mul_2exp(-1), wp, g, tail)
+    }))
+}
+
+/// `T >= a + 1` (exact) where the declared tail is at most `target`, and that tail.
+fn cut_infinite(a: &Ball, decay: &Decay, target: Mag) -> Result<(Float, Mag)> {
+    let p = 64;
+    let ln_target = target.log2() * std::f64::consts::LN_2;
+    let start = a.upper().to_f64() + 1.0;
+    let (mut t, tail_at): (f64, Box<dyn Fn(&Ball) -> Result<Ball>>) = match decay {
+        Decay::Exponential { rate, bound } => {
+            let c = rate.lower().to_f64();
+            let m = bound.abs_upper().to_f64().max(1e-300);
+            let t = ((m.ln() - c.ln() - ln_target) / c).max(start);
+            let (rate, bound) = (rate.set_prec(p), bound.set_prec(p));
+            (t, Box::new(move |tb: &Ball| bound.mul(&rate.mul(tb).neg().exp()?).div(&rate)))
+        }
+        Decay::Algebraic { power, bound } => {
+            let q = power.lower().to_f64() - 1.0;
+            let m = bound.abs_upper().to_f64().max(1e-300);
+            let t = (((m / q).ln() - ln_target) / q).exp().max(start);
+            let (pm1, bound) = (power.set_prec(p).add_i64(-1), bound.set_prec(p));
+            (t, Box::new(move |tb: &Ball| bound.mul(&tb.ln()?.mul(&pm1).neg().exp()?).div(&pm1)))
+        }
+    };
+    for _ in 0..60 {
+        if !t.is_finite() || t > 1e300 {
+            break;
+        }
+        let tf = Float::with_val(53, t);
+        let tail = tail_at(&Ball::from_float(&tf, p))?.abs_upper_mag();
+        if tail.le(&target) {
+            return Ok((tf, tail));
+        }
+        t = t * 1.25 + 1.0;
+    }
+    Err(Error::Integration(IntegrationError::Decay { what: "the declared decay does not reach the tolerance at any finite cut", value: t }))
+}
+
+fn parts_on<'w, F>(a: &Ball, b: &Ball, w: &Weight, tol: Mag, wp: u32, g: &mut F, extra_tail: Mag) -> Result<Vec<Part<'w>>>
+where
+    F: FnMut(&HoloBall) -> HoloBall,
+{
+    let p = wp;
+    let c = {
+        let m = Float::with_val(a.mid().prec().max(b.mid().prec()) + 1, a.mid() + b.mid());
+        m / 2u32
+    };
+    let target = tol.mul_2exp(-3);
+    let mut parts = Vec::new();
+    let mut endpoint_error = extra_tail;
+    // left piece [a, c]
+    let lf = left_factor(b.set_prec(p), w.beta.set_prec(p));
+    if w.left_singular() {
+        let mapped = Mapped::new(a, &c, 1, &w.alpha, w.log_power, p)?;
+        let (s, tail) = mapped.cut(&lf, target, g)?;
+        parts.push(Part { lo: Float::with_val(p, 0), hi: s, tail, wrap: mapped.wrap(lf) });
+    } else {
+        endpoint_error = endpoint_error.add(end_error(a, &lf, p, g));
+        parts.push(Part { lo: a.mid().clone(), hi: c.clone(), tail: Mag::ZERO, wrap: Box::new(lf) });
+    }
+    // right piece [c, b]
+    let rf = right_factor(a.set_prec(p), w.alpha.set_prec(p), w.log_power);
+    if w.right_singular() {
+        let mapped = Mapped::new(b, &c, -1, &w.beta, 0, p)?;
+        let (s, tail) = mapped.cut(&rf, target, g)?;
+        parts.push(Part { lo: Float::with_val(p, 0), hi: s, tail, wrap: mapped.wrap(rf) });
+    } else {
+        endpoint_error = endpoint_error.add(end_error(b, &rf, p, g));
+        parts.push(Part { lo: c, hi: b.mid().clone(), tail: Mag::ZERO, wrap: Box::new(rf) });
+    }
+    if !endpoint_error.is_zero() {
+        parts.push(Part { lo: Float::new(p), hi: Float::new(p), tail: endpoint_error, wrap: Box::new(|s, g| g(s)) });
+    }
+    Ok(parts)
+}
+
+/// `rad(e) sup |f|` over the endpoint's ball (zero for an exact endpoint).
+fn end_error<H>(e: &Ball, h: &H, p: u32, g: &mut dyn FnMut(&HoloBall) -> HoloBall) -> Mag
+where
+    H: Fn(&HoloBall, &mut dyn FnMut(&HoloBall) -> HoloBall) -> HoloBall,
+{
+    if e.is_exact() {
+        return Mag::ZERO;
+    }
+    let v = h(&HoloBall::new(CBall::from_real(e.set_prec(p)), Mode::Point), g);
+    v.inner().abs_upper_mag().mul(e.rad_mag())
+}
