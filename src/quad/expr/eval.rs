@@ -1,7 +1,8 @@
 //! Evaluating a tree in any number type that has the operations it needs.
 
 use super::tree::{Expr, Function};
-use crate::ball::Decimal;
+use crate::ball::{Ball, CBall, Decimal};
+use crate::quad::certified::HoloBall;
 
 /// The operations an [`Expr`] is evaluated with.
 ///
@@ -34,6 +35,25 @@ pub trait ExprValue: Clone {
     /// A value that contains the decimal `d` exactly, in the kind of `like`
     /// (a ball for ball types, the nearest double for `f64`).
     fn from_decimal(d: &Decimal, like: &Self) -> Self;
+}
+
+/// `f(x)` through the methods of `x`'s type: `$sqrt`, `$log` and `$atan` name the
+/// forms taken for the functions with a branch cut.
+macro_rules! apply_function {
+    ($x:expr, $f:expr, $sqrt:ident, $log:ident, $atan:ident) => {
+        match $f {
+            Function::Sqrt => $x.$sqrt(),
+            Function::Exp => $x.exp(),
+            Function::Log => $x.$log(),
+            Function::Sin => $x.sin(),
+            Function::Cos => $x.cos(),
+            Function::Tan => $x.tan(),
+            Function::Sinh => $x.sinh(),
+            Function::Cosh => $x.cosh(),
+            Function::Tanh => $x.tanh(),
+            Function::Atan => $x.$atan(),
+        }
+    };
 }
 
 impl Expr {
@@ -90,19 +110,7 @@ impl ExprValue for f64 {
         self.powf(*e)
     }
     fn apply(&self, f: Function) -> f64 {
-        let x = *self;
-        match f {
-            Function::Sqrt => x.sqrt(),
-            Function::Exp => x.exp(),
-            Function::Log => x.ln(),
-            Function::Sin => x.sin(),
-            Function::Cos => x.cos(),
-            Function::Tan => x.tan(),
-            Function::Sinh => x.sinh(),
-            Function::Cosh => x.cosh(),
-            Function::Tanh => x.tanh(),
-            Function::Atan => x.atan(),
-        }
+        apply_function!(self, f, sqrt, ln, atan)
     }
     fn bessel_j(&self, n: i64) -> f64 {
         crate::special::bessel_j::bessel_j(n, *self).unwrap_or(f64::NAN)
@@ -112,5 +120,86 @@ impl ExprValue for f64 {
     }
     fn from_decimal(d: &Decimal, _: &f64) -> f64 {
         d.to_f64()
+    }
+}
+
+/// Certified complex balls. The functions with a branch cut are the *analytic*
+/// forms (`log_analytic`, `sqrt_analytic`, `pow_analytic`, `atan_analytic`): a
+/// rectangle that touches the cut gives the indeterminate ball, so a finite result
+/// means the expression is holomorphic on the whole rectangle. Constants take the
+/// precision of `x`.
+impl ExprValue for CBall {
+    fn add(&self, other: &CBall) -> CBall {
+        CBall::add(self, other)
+    }
+    fn sub(&self, other: &CBall) -> CBall {
+        CBall::sub(self, other)
+    }
+    fn mul(&self, other: &CBall) -> CBall {
+        CBall::mul(self, other)
+    }
+    fn div(&self, other: &CBall) -> CBall {
+        CBall::div(self, other)
+    }
+    fn neg(&self) -> CBall {
+        CBall::neg(self)
+    }
+    fn pow_int(&self, n: i64) -> CBall {
+        self.pow_i64(n)
+    }
+    fn pow(&self, e: &CBall) -> CBall {
+        self.pow_analytic(e)
+    }
+    fn apply(&self, f: Function) -> CBall {
+        apply_function!(self, f, sqrt_analytic, log_analytic, atan_analytic)
+    }
+    fn bessel_j(&self, n: i64) -> CBall {
+        CBall::bessel_j(self, n)
+    }
+    fn pi(like: &CBall) -> CBall {
+        CBall::from_real(Ball::pi(like.prec()))
+    }
+    fn from_decimal(d: &Decimal, like: &CBall) -> CBall {
+        CBall::from_real(d.to_ball(like.prec()))
+    }
+}
+
+/// The certified integrator's argument ([`HoloBall`]): the functions with a branch
+/// cut take the form the integrator's evaluation mode asks for (principal at the
+/// nodes, analytic on the boxes around its ellipses), so an expression evaluated
+/// in it is an integrand that cannot integrate across a cut unnoticed.
+impl ExprValue for HoloBall {
+    fn add(&self, other: &HoloBall) -> HoloBall {
+        self + other
+    }
+    fn sub(&self, other: &HoloBall) -> HoloBall {
+        self - other
+    }
+    fn mul(&self, other: &HoloBall) -> HoloBall {
+        self * other
+    }
+    fn div(&self, other: &HoloBall) -> HoloBall {
+        self / other
+    }
+    fn neg(&self) -> HoloBall {
+        -self
+    }
+    fn pow_int(&self, n: i64) -> HoloBall {
+        self.powi(n)
+    }
+    fn pow(&self, e: &HoloBall) -> HoloBall {
+        HoloBall::pow(self, e)
+    }
+    fn apply(&self, f: Function) -> HoloBall {
+        apply_function!(self, f, sqrt, log, atan)
+    }
+    fn bessel_j(&self, n: i64) -> HoloBall {
+        self.besselj(n)
+    }
+    fn pi(like: &HoloBall) -> HoloBall {
+        like.pi()
+    }
+    fn from_decimal(d: &Decimal, like: &HoloBall) -> HoloBall {
+        like.decimal(d)
     }
 }

@@ -70,6 +70,7 @@
 
 mod error;
 mod eval;
+mod integrate;
 mod parse;
 mod tree;
 
@@ -80,6 +81,7 @@ use std::str::FromStr;
 
 pub use error::ExprError;
 pub use eval::ExprValue;
+pub use integrate::{integrate_expr, DecaySpec, UpperLimit, WeightSpec};
 pub use tree::{Expr, Function};
 
 /// Longest expression accepted, in characters.

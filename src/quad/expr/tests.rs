@@ -298,3 +298,144 @@ proptest::proptest! {
         proptest::prop_assert!(back.as_ref().is_ok_and(|b| *b == e), "{:?} printed as {} parsed as {:?}", e, printed, back);
     }
 }
+
+mod complex_balls {
+    use super::*;
+    use crate::ball::{Ball, CBall};
+    use rug::{Float, Rational};
+
+    fn real(x: f64, prec: u32) -> CBall {
+        CBall::from_real(Ball::from_f64(x, prec).unwrap())
+    }
+
+    /// The ball contains the f64 value within a few ulps of it and is tight.
+    fn encloses(b: &CBall, want: f64, what: &str) {
+        assert!(b.is_finite() && b.im().contains(&Float::new(53)), "{what}: {b}");
+        let mid = b.re().mid().to_f64();
+        assert!(close(mid, want), "{what}: {mid} vs {want}");
+        assert!(b.re().rad().to_f64() <= 1e-30 * want.abs().max(1.0), "{what}: {b}");
+    }
+
+    #[test]
+    fn decimal_is_enclosed_at_the_working_precision() {
+        let x = real(0.0, 128);
+        let tenth = p("0.1").eval(&x);
+        let q = Rational::from((1, 10));
+        assert!(tenth.re().contains(&Float::with_val(1024, &q)));
+        assert!(tenth.is_real());
+        let rad = tenth.re().rad();
+        assert!(rad <= Float::with_val(64, Float::i_exp(1, -127)), "{rad}");
+        // and a binary fraction is exact
+        assert!(p("2.5e-1").eval(&x).is_exact());
+        // at 1000 bits the same tree gives a 1000-bit ball
+        let fine = p("0.1").eval(&real(0.0, 1000));
+        assert!(fine.re().rad() <= Float::with_val(64, Float::i_exp(1, -999)));
+    }
+
+    #[test]
+    fn each_function_agrees_with_f64() {
+        let x0 = 0.7;
+        let x = real(x0, 128);
+        for text in [
+            "sqrt(x)",
+            "exp(x)",
+            "log(x)",
+            "sin(x)",
+            "cos(x)",
+            "tan(x)",
+            "sinh(x)",
+            "cosh(x)",
+            "tanh(x)",
+            "atan(x)",
+            "besselj(0, x)",
+            "besselj(3, 2*x)",
+            "besselj(-1, x)",
+            "x^(1/3) + x^-3 + pi",
+            "x^x",
+            "-x^2/(1 + x)",
+        ] {
+            let e = p(text);
+            encloses(&e.eval(&x), e.eval_f64(x0), text);
+        }
+    }
+
+    #[test]
+    fn branch_cuts_give_non_finite_balls_and_integer_powers_do_not() {
+        let neg = real(-0.5, 64);
+        for text in ["sqrt(x)", "log(x)", "x^0.5", "x^(1/3)", "(x - 1)^pi"] {
+            assert!(!p(text).eval(&neg).is_finite(), "{text}");
+        }
+        // x^-2 and x^3 by integer powering: finite on the negative axis
+        for (text, want) in [("x^-2", 4.0), ("x^3", -0.125), ("x^2.0", 0.25)] {
+            let v = p(text).eval(&neg);
+            assert!(v.re().contains(&Float::with_val(53, want)) && v.is_finite(), "{text}: {v}");
+        }
+        // atan's cuts are on the imaginary axis beyond +-i
+        let z = CBall::new(Ball::from_f64(0.0, 64).unwrap(), Ball::from_f64(2.0, 64).unwrap());
+        assert!(!p("atan(x)").eval(&z).is_finite());
+        assert!(p("atan(x)").eval(&real(5.0, 64)).is_finite());
+    }
+}
+
+mod integrals {
+    use super::*;
+    use crate::quad::certified::{integrate, HoloBall, Options};
+    use rug::Float;
+
+    fn d(text: &str) -> Decimal {
+        Decimal::parse(text).unwrap()
+    }
+
+    fn run(f: &str, a: &str, b: &str, w: Option<&WeightSpec>, decay: Option<&DecaySpec>, prec: u32) -> crate::quad::certified::Integral {
+        let b = UpperLimit::parse(b).unwrap();
+        match integrate_expr(&p(f), &d(a), &b, w, decay, prec, &Options::new()) {
+            Ok(r) => r,
+            Err(e) => panic!("{f} over [{a}, {b:?}]: {e}"),
+        }
+    }
+
+    #[test]
+    fn sqrt_over_one_to_four_contains_fourteen_thirds_every_way() {
+        let exact = Float::with_val(512, 14) / 3u32;
+        let (a, b) = (crate::Ball::from_i64(1, 128), crate::Ball::from_i64(4, 128));
+        let direct = integrate(|x: &HoloBall| p("sqrt(x)").eval(x), &a, &b, 128, &Options::new()).unwrap();
+        assert!(direct.real().contains(&exact) && direct.goal_met);
+        for f in ["sqrt(x)", "x^0.5", "x^(1/2)", "exp(log(x)/2)", "x/sqrt(x)"] {
+            let r = run(f, "1", "4", None, None, 128);
+            assert!(r.real().contains(&exact), "{f}: {:?}", r.value);
+            assert!(r.goal_met && r.real().meets_rel(128), "{f}: {:?}", r.value);
+        }
+    }
+
+    #[test]
+    fn endpoint_weights_and_infinite_ranges() {
+        // x^(-1/2) cos(x) over [0, 1] = sqrt(2 pi) C(sqrt(2/pi)) = 1.8090484758005441629...
+        let w = WeightSpec { alpha: Some(d("-0.5")), ..WeightSpec::default() };
+        let r = run("cos(x)", "0", "1", Some(&w), None, 64);
+        assert!(r.goal_met && (r.real().to_f64() - 1.809_048_475_800_544_2).abs() < 1e-15, "{:?}", r.value);
+        // x log x over [0, 1] = -1/4, as a weight
+        let w = WeightSpec { log: 1, ..WeightSpec::default() };
+        let r = run("x", "0", "1", Some(&w), None, 64);
+        assert!(r.real().contains(&Float::with_val(64, -0.25)), "{:?}", r.value);
+        // exp(-x^2) over [0, inf) = sqrt(pi)/2, with |f| <= e^(1/4) e^(-x)
+        let decay = DecaySpec::Exponential { rate: d("1"), bound: d("1.2841") };
+        let r = run("exp(-x^2)", "0", "inf", None, Some(&decay), 64);
+        let exact = Float::with_val(128, rug::float::Constant::Pi).sqrt() / 2u32;
+        assert!(r.goal_met && r.real().contains(&exact), "{:?}", r.value);
+    }
+
+    #[test]
+    fn bad_requests_are_errors() {
+        let e = |b: &str, decay: Option<&DecaySpec>| {
+            integrate_expr(&p("exp(-x)"), &d("0"), &UpperLimit::parse(b).unwrap(), None, decay, 64, &Options::new())
+        };
+        assert!(matches!(e("inf", None), Err(crate::Error::Domain { .. })));
+        let decay = DecaySpec::Exponential { rate: d("1"), bound: d("1") };
+        assert!(matches!(e("1", Some(&decay)), Err(crate::Error::Domain { .. })));
+        assert!(UpperLimit::parse("-inf").is_err() && UpperLimit::parse("x").is_err());
+        assert_eq!(UpperLimit::parse(" +Infinity ").unwrap(), UpperLimit::Infinity);
+        let w = WeightSpec { alpha: Some(d("-1")), ..WeightSpec::default() };
+        let r = integrate_expr(&p("1"), &d("0"), &UpperLimit::parse("1").unwrap(), Some(&w), None, 64, &Options::new());
+        assert!(matches!(r, Err(crate::Error::Integration(_))));
+    }
+}
