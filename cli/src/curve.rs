@@ -25,7 +25,6 @@ use std::time::{Duration, Instant};
 
 use clap::{Args, ValueEnum};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use rayon::prelude::*;
 
@@ -40,7 +39,7 @@ use serde::Serialize;
 
 use crate::args::{self, num, short, Roughness, SiArgs, SiRun};
 use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
-use crate::plot::{finish_load_area_chart, xy_chart, arrow_head, clip_y, colour, plot_err, triangle_down, triangle_up, DARK_GREY, LIGHT_GREY};
+use crate::plot::{arrow_head, clip_y, colour, finish_load_area_chart, plot_err, triangle_down, triangle_up, xy_chart, Legend, Mark, DARK_GREY, LEGEND_FONT, LIGHT_GREY};
 
 /// The Maugis parameters of the paper's Figs. 4 and 13 (default run).
 pub const DEFAULT_LAMBDAS: [f64; 7] = [0.1, 0.25, 0.5, 1.0, 1.5, 3.0, 6.0];
@@ -289,7 +288,12 @@ pub fn run(a: CurveArgs) -> Result<(), String> {
         runs.len(),
         elapsed.as_secs_f64()
     );
-    let _ = writeln!(report, "  {:>8}  {:>16}  {:>17}  {:>24}  {:>8}", "lambda", "turning max/min", "jumps load/unload", "pull-off (abar, Lbar)", "invalid");
+    let _ = writeln!(
+        report,
+        "  {:>8}  {:>16}  {:>17}  {:>26}  {:>22}  {:>8}",
+        "lambda", "turning max/min", "jumps load/unload", "pull-off (abar, Lbar)", "valid pull-off", "invalid"
+    );
+    let mut at_grid_start = false;
     for r in &runs {
         let c = &r.curve;
         let nmax = c.turning_points.iter().filter(|t| t.kind == TurningKind::Max).count();
@@ -300,16 +304,30 @@ pub fn run(a: CurveArgs) -> Result<(), String> {
             Some(p) => format!("({:.4}, {:.4}){}", p.abar, p.load, if p.validity.valid { "" } else { " invalid" }),
             None => "none".into(),
         };
+        // the most tensile valid state unloading reaches, where the raw one is invalid
+        let vpo = match (c.pull_off, c.valid_pull_off) {
+            (Some(p), Some(v)) if p.validity.valid && v.abar == p.abar && v.load == p.load => "same".into(),
+            (_, Some(v)) => {
+                let first = c.points.first().is_some_and(|g| g.abar == v.abar);
+                at_grid_start |= first;
+                format!("({:.4}, {:.4}){}", v.abar, v.load, if first { "*" } else { "" })
+            }
+            (_, None) => "none".into(),
+        };
         let inv = c.points.iter().filter(|p| !p.validity.valid).count();
         let _ = writeln!(
             report,
-            "  {:>8}  {:>16}  {:>17}  {:>24}  {:>8}",
+            "  {:>8}  {:>16}  {:>17}  {:>26}  {:>22}  {:>8}",
             short(r.lambda),
             format!("{nmax}/{nmin}"),
             format!("{nload}/{nunload}"),
             po,
+            vpo,
             format!("{inv}/{}", c.points.len())
         );
+    }
+    if at_grid_start {
+        let _ = writeln!(report, "  * at the smallest abar of the grid: the valid small-contact branch may reach lower loads below it");
     }
     if let Some(r) = &si {
         let s = SiSummary::new(&summary, r.material).map_err(|e| e.to_string())?;
@@ -369,10 +387,11 @@ fn validity_runs<'p>(points: impl IntoIterator<Item = &'p CurvePoint>, coords: i
 }
 
 /// Draws one curve's validity runs (from [`validity_runs`]): valid parts solid,
-/// invalid parts thin, faded and dashed, clipped to `[ymin, ymax]`, with one
-/// legend entry for the curve (marked when every state is invalid).
+/// invalid parts thin, faded and dashed, clipped to `[ymin, ymax]`, and adds the
+/// curve's legend entry (in the dashed style when every state is invalid).
 fn draw_validity_runs(
     chart: &mut ChartContext<'_, SVGBackend<'_>, Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>>,
+    legend: &mut Legend,
     runs: Vec<(bool, Vec<(f64, f64)>)>,
     (ymin, ymax): (f64, f64),
     colour_index: usize,
@@ -381,30 +400,27 @@ fn draw_validity_runs(
     let col = colour(colour_index);
     let solid = col.stroke_width(3);
     let faded = ShapeStyle { color: col.mix(0.6), filled: false, stroke_width: 2 };
-    let mut labelled = false;
+    let any_valid = runs.iter().any(|(valid, _)| *valid);
     for (valid, pts) in runs {
         for piece in clip_y(&pts, ymin, ymax) {
             if valid {
-                let ann = chart.draw_series(LineSeries::new(piece, solid)).map_err(plot_err)?;
-                if !labelled {
-                    ann.label(format!("λ = {}", short(lambda)))
-                        .legend(move |(x, y)| PathElement::new(vec![(x - 4, y), (x + 26, y)], solid));
-                    labelled = true;
-                }
+                chart.draw_series(LineSeries::new(piece, solid)).map_err(plot_err)?;
             } else {
                 chart.draw_series(DashedLineSeries::new(piece, 3, 5, faded)).map_err(plot_err)?;
             }
         }
     }
-    if !labelled {
-        // an all-invalid curve still gets its legend entry
-        chart
-            .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
-            .map_err(plot_err)?
-            .label(format!("λ = {} (all states invalid)", short(lambda)))
-            .legend(move |(x, y)| DashedPathElement::new(vec![(x - 4, y), (x + 26, y)], 3, 5, faded));
+    if any_valid {
+        legend.line(format!("λ = {}", short(lambda)), solid, 0, 0);
+    } else {
+        legend.line(format!("λ = {} (all states invalid)", short(lambda)), faded, 3, 5);
     }
     Ok(())
+}
+
+/// The legend entry for invalid stretches (thin, faded, dotted).
+fn invalid_entry(legend: &mut Legend, label: &str) {
+    legend.line(label, ShapeStyle { color: BLACK.mix(0.6), filled: false, stroke_width: 2 }, 3, 5);
 }
 
 /// A limit line: points, style, dash, gap, legend label.
@@ -462,6 +478,7 @@ pub fn load_area_svg(runs: &[Run], alpha: f64, beta: f64, amax: f64, mdmt_lambda
             if alpha > 0.0 { short((beta / (alpha * alpha)).sqrt()) } else { "∞".into() }
         );
         let mut chart = xy_chart(&root, title, (window.amin, amax), (ymin, ymax), ("contact half-width abar", "load Lbar"))?;
+        let mut legend = Legend::new(LEGEND_FONT);
 
         // zero-load line
         chart.draw_series(LineSeries::new(vec![(0.0, 0.0), (amax, 0.0)], BLACK.mix(0.5).stroke_width(1))).map_err(plot_err)?;
@@ -487,7 +504,7 @@ pub fn load_area_svg(runs: &[Run], alpha: f64, beta: f64, amax: f64, mdmt_lambda
 
         // Curves: valid parts solid, invalid parts thin, faded and dashed.
         for (i, r) in runs.iter().enumerate() {
-            draw_validity_runs(&mut chart, validity_runs(&r.curve.points, |p| (p.abar, p.load)), (ymin, ymax), i, r.lambda)?;
+            draw_validity_runs(&mut chart, &mut legend, validity_runs(&r.curve.points, |p| (p.abar, p.load)), (ymin, ymax), i, r.lambda)?;
         }
 
         // Jumps: horizontal arrows at constant load, in the curve's colour; thin
@@ -561,71 +578,29 @@ pub fn load_area_svg(runs: &[Run], alpha: f64, beta: f64, amax: f64, mdmt_lambda
             }
         }
 
-        // Legend-only entries: the limits, then the symbols.
+        // Legend entries after the curves': the limits, then the symbols.
         for (_, style, dash, gap, label) in limit_lines {
             if let Some(l) = label {
-                chart
-                    .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
-                    .map_err(plot_err)?
-                    .label(l)
-                    .legend(move |(x, y)| DashedPathElement::new(vec![(x - 4, y), (x + 26, y)], dash.min(14), gap.min(6), style));
+                legend.line(l, style, dash, gap);
             }
         }
-        {
-            let faded = ShapeStyle { color: BLACK.mix(0.6), filled: false, stroke_width: 2 };
-            chart
-                .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
-                .map_err(plot_err)?
-                .label("invalid state: cavitation (p̄ > 1) or interpenetration (ḡ < 0)")
-                .legend(move |(x, y)| DashedPathElement::new(vec![(x - 4, y), (x + 26, y)], 3, 5, faded));
-            chart
-                .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
-                .map_err(plot_err)?
-                .label("turning point: load maximum")
-                .legend(|(x, y)| {
-                    EmptyElement::at((x + 11, y))
-                        + Polygon::new(triangle_up(7), RGBColor(120, 120, 120).filled())
-                        + PathElement::new(closed(&triangle_up(7)), BLACK.stroke_width(1))
-                });
-            chart
-                .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
-                .map_err(plot_err)?
-                .label("turning point: load minimum")
-                .legend(|(x, y)| {
-                    EmptyElement::at((x + 11, y))
-                        + Polygon::new(triangle_down(7), RGBColor(120, 120, 120).filled())
-                        + PathElement::new(closed(&triangle_down(7)), BLACK.stroke_width(1))
-                });
-            chart
-                .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
-                .map_err(plot_err)?
-                .label("jump at constant load (loading →, unloading ←)")
-                .legend(|(x, y)| {
-                    EmptyElement::at((x - 4, y))
-                        + PathElement::new(vec![(0, 0), (30, 0)], BLACK.stroke_width(2))
-                        + Polygon::new(arrow_head(true, 12, 5).into_iter().map(|(a, b)| (a + 30, b)).collect::<Vec<_>>(), BLACK.filled())
-                });
-            chart
-                .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
-                .map_err(plot_err)?
-                .label("hollow marker, thin arrow: turning point or jump on an invalid state")
-                .legend(|(x, y)| {
-                    EmptyElement::at((x + 11, y))
-                        + Polygon::new(triangle_up(7), WHITE.filled())
-                        + PathElement::new(closed(&triangle_up(7)), RGBColor(120, 120, 120).stroke_width(2))
-                });
-            chart
-                .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
-                .map_err(plot_err)?
-                .label("pull-off")
-                .legend(|(x, y)| {
-                    EmptyElement::at((x + 11, y))
-                        + Circle::new((0, 0), 6, RGBColor(120, 120, 120).filled())
-                        + Circle::new((0, 0), 6, BLACK.stroke_width(2))
-                });
-        }
+        let grey = RGBColor(120, 120, 120);
+        let outlined = |shape: Vec<(i32, i32)>| Mark::polygon(shape, grey.filled(), Some(BLACK.stroke_width(1)));
+        invalid_entry(&mut legend, "invalid state: cavitation (p̄ > 1) or interpenetration (ḡ < 0)");
+        legend.entry("turning point: load maximum", vec![outlined(triangle_up(7))]);
+        legend.entry("turning point: load minimum", vec![outlined(triangle_down(7))]);
+        let half = Legend::SWATCH / 2;
+        legend.entry(
+            "jump at constant load (loading →, unloading ←)",
+            vec![
+                Mark::Line { points: vec![(-half, 0), (half, 0)], style: BLACK.stroke_width(2), dash: 0, gap: 0 },
+                Mark::polygon(arrow_head(true, 12, 5).into_iter().map(|(a, b)| (a + half, b)).collect(), BLACK.filled(), None),
+            ],
+        );
+        legend.entry("hollow marker or thin arrow: on an invalid state", vec![Mark::polygon(triangle_up(7), WHITE.filled(), Some(grey.stroke_width(2)))]);
+        legend.entry("pull-off", vec![Mark::circle(6, grey.filled(), Some(BLACK.stroke_width(2)))]);
 
-        finish_load_area_chart(chart, &root)?;
+        finish_load_area_chart(&chart, &root, &legend)?;
     }
     Ok(svg)
 }
@@ -653,10 +628,11 @@ pub fn load_approach_svg(runs: &[Run], alpha: f64, beta: f64, window: Window) ->
         root.fill(&WHITE).map_err(plot_err)?;
         let title = format!("Load-approach response, α = {}, β = {} (approach from a datum at infinity, log term removed)", short(alpha), short(beta));
         let mut chart = xy_chart(&root, title, (x0 - dx, x1 + dx), (ymin, ymax), ("approach Δ̄", "load Lbar"))?;
+        let mut legend = Legend::new(LEGEND_FONT);
         for (i, r) in runs.iter().enumerate() {
             let col = colour(i);
             let pts = r.curve.points.iter().filter(|p| p.abar >= window.amin);
-            draw_validity_runs(&mut chart, validity_runs(pts, |p| (p.approach, p.load)), (ymin, ymax), i, r.lambda)?;
+            draw_validity_runs(&mut chart, &mut legend, validity_runs(pts, |p| (p.approach, p.load)), (ymin, ymax), i, r.lambda)?;
             if let Some(po) = r.curve.pull_off {
                 if po.load >= ymin && po.load <= ymax {
                     chart
@@ -665,17 +641,9 @@ pub fn load_approach_svg(runs: &[Run], alpha: f64, beta: f64, window: Window) ->
                 }
             }
         }
-        chart
-            .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
-            .map_err(plot_err)?
-            .label("invalid state (cavitation or interpenetration)")
-            .legend(|(x, y)| DashedPathElement::new(vec![(x - 4, y), (x + 26, y)], 3, 5, ShapeStyle { color: BLACK.mix(0.6), filled: false, stroke_width: 2 }));
-        chart
-            .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
-            .map_err(plot_err)?
-            .label("pull-off")
-            .legend(|(x, y)| Circle::new((x + 11, y), 6, RGBColor(120, 120, 120).filled()));
-        finish_load_area_chart(chart, &root)?;
+        invalid_entry(&mut legend, "invalid state (cavitation or interpenetration)");
+        legend.entry("pull-off", vec![Mark::circle(6, RGBColor(120, 120, 120).filled(), None)]);
+        finish_load_area_chart(&chart, &root, &legend)?;
     }
     Ok(svg)
 }

@@ -15,7 +15,6 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use clap::{Args, ValueEnum};
-use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use rayon::prelude::*;
 use serde::Serialize;
@@ -27,7 +26,7 @@ use maugis::contact::model::Params;
 
 use crate::args::{self, num, short, Roughness};
 use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
-use crate::plot::{finish_load_area_chart, load_area_chart, clip_y, colour, plot_err, DARK_GREY, LIGHT_GREY};
+use crate::plot::{clip_y, colour, finish_load_area_chart, load_area_chart, plot_err, Legend, DARK_GREY, LEGEND_FONT, LIGHT_GREY};
 
 /// Output format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -248,27 +247,20 @@ fn limits_svg(rows: &[Row], alpha: f64, beta: f64, lambda: f64, amax: f64) -> Re
         root.fill(&WHITE).map_err(plot_err)?;
         let title = format!("Appendix E limits and Eq. 17 envelope, α = {}, β = {}, λ = {l}", short(alpha), short(beta));
         let mut chart = load_area_chart(&root, title, amax, ymin, ymax)?;
+        let mut legend = Legend::new(LEGEND_FONT);
         for (label, pts, st, dash, gap) in series {
-            let mut first = true;
             for piece in clip_y(&pts, ymin, ymax) {
-                let ann = if dash == 0 {
-                    chart.draw_series(LineSeries::new(piece, st)).map_err(plot_err)?
+                if dash == 0 {
+                    chart.draw_series(LineSeries::new(piece, st)).map_err(plot_err)?;
                 } else {
-                    chart.draw_series(DashedLineSeries::new(piece, dash, gap, st)).map_err(plot_err)?
-                };
-                if let (true, Some(lab)) = (first, label.as_ref()) {
-                    ann.label(lab.clone()).legend(move |(x, y)| {
-                        if dash == 0 {
-                            DashedPathElement::new(vec![(x - 4, y), (x + 26, y)], 30, 1, st)
-                        } else {
-                            DashedPathElement::new(vec![(x - 4, y), (x + 26, y)], dash.min(8), gap.min(5), st)
-                        }
-                    });
+                    chart.draw_series(DashedLineSeries::new(piece, dash, gap, st)).map_err(plot_err)?;
                 }
-                first = false;
+            }
+            if let Some(lab) = label {
+                legend.line(lab, st, dash, gap);
             }
         }
-        finish_load_area_chart(chart, &root)?;
+        finish_load_area_chart(&chart, &root, &legend)?;
     }
     Ok(svg)
 }

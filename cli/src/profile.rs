@@ -15,7 +15,6 @@ use std::path::PathBuf;
 
 use clap::{Args, ValueEnum};
 use plotters::coord::Shift;
-use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use serde::Serialize;
 
@@ -26,7 +25,7 @@ use maugis::contact::units::{Material, Scales};
 
 use crate::args::{self, num, short, Roughness, SiArgs};
 use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
-use crate::plot::{tick, clip_y, colour, plot_err, DARK_GREY, LIGHT_GREY};
+use crate::plot::{clip_y, colour, plot_err, tick, Legend, DARK_GREY, LIGHT_GREY};
 
 /// Output format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -280,7 +279,9 @@ fn range_of(vals: impl Iterator<Item = f64>) -> (f64, f64) {
 type Series = (String, RGBColor, u32, Vec<(f64, f64)>);
 
 /// Draws one panel with series `(label, colour, points)`, vertical lines at the
-/// contact edge and strip end, and optional horizontal reference lines.
+/// contact edge and strip end, and optional horizontal reference lines; the
+/// legend sits in the upper right corner of the data when `legend_right`, else
+/// in the upper left.
 #[allow(clippy::too_many_arguments)]
 fn panel(
     area: &DrawingArea<SVGBackend<'_>, Shift>,
@@ -292,7 +293,7 @@ fn panel(
     abar: f64,
     c: f64,
     show_x_label: bool,
-    legend_at: SeriesLabelPosition,
+    legend_right: bool,
 ) -> Result<(), String> {
     let (ylo, yhi) = range_of(series.iter().flat_map(|s| s.3.iter().map(|p| p.1)).chain(hlines.iter().map(|h| h.1)));
     let mut b = ChartBuilder::on(area);
@@ -316,45 +317,29 @@ fn panel(
 
     let edge = ShapeStyle { color: DARK_GREY.to_rgba(), filled: false, stroke_width: 2 };
     let strip = ShapeStyle { color: LIGHT_GREY.to_rgba(), filled: false, stroke_width: 2 };
-    chart
-        .draw_series(DashedLineSeries::new(vec![(abar, ylo), (abar, yhi)], 8, 5, edge))
-        .map_err(plot_err)?
-        .label(format!("contact edge x̄ = ā = {}", short(abar)))
-        .legend(move |(x, y)| DashedPathElement::new(vec![(x - 4, y), (x + 26, y)], 8, 5, edge));
-    chart
-        .draw_series(DashedLineSeries::new(vec![(c, ylo), (c, yhi)], 3, 4, strip))
-        .map_err(plot_err)?
-        .label(format!("strip end x̄ = m ā = {:.4}", c))
-        .legend(move |(x, y)| DashedPathElement::new(vec![(x - 4, y), (x + 26, y)], 3, 4, strip));
+    let mut legend = Legend::new(15.0);
+    chart.draw_series(DashedLineSeries::new(vec![(abar, ylo), (abar, yhi)], 8, 5, edge)).map_err(plot_err)?;
+    legend.line(format!("contact edge x̄ = ā = {}", short(abar)), edge, 8, 5);
+    chart.draw_series(DashedLineSeries::new(vec![(c, ylo), (c, yhi)], 3, 4, strip)).map_err(plot_err)?;
+    legend.line(format!("strip end x̄ = m ā = {:.4}", c), strip, 3, 4);
     for (label, y) in hlines {
         let st = ShapeStyle { color: BLACK.mix(0.5), filled: false, stroke_width: 1 };
-        chart
-            .draw_series(DashedLineSeries::new(vec![(0.0, *y), (xmax, *y)], 12, 6, st))
-            .map_err(plot_err)?
-            .label(label.clone())
-            .legend(move |(x, y)| DashedPathElement::new(vec![(x - 4, y), (x + 26, y)], 12, 6, st));
+        chart.draw_series(DashedLineSeries::new(vec![(0.0, *y), (xmax, *y)], 12, 6, st)).map_err(plot_err)?;
+        legend.line(label.as_str(), st, 12, 6);
     }
     for (label, col, width, pts) in series {
         let st = col.stroke_width(*width);
-        let mut first = true;
         for piece in clip_y(pts, ylo, yhi) {
-            let ann = chart.draw_series(LineSeries::new(piece, st)).map_err(plot_err)?;
-            if first {
-                ann.label(label.clone()).legend(move |(x, y)| PathElement::new(vec![(x - 4, y), (x + 26, y)], st));
-                first = false;
-            }
+            chart.draw_series(LineSeries::new(piece, st)).map_err(plot_err)?;
         }
+        legend.line(label.as_str(), st, 0, 0);
     }
-    chart
-        .configure_series_labels()
-        .position(legend_at)
-        .margin(8)
-        .legend_area_size(40)
-        .label_font(("sans-serif", 15))
-        .background_style(WHITE.mix(0.88))
-        .border_style(BLACK.mix(0.5))
-        .draw()
-        .map_err(plot_err)?;
+    // inside the plotting area, in the corner `legend_right` says
+    let plot = chart.plotting_area().strip_coord_spec();
+    let (w, _) = plot.dim_in_pixel();
+    let (lw, _) = legend.size();
+    let x = if legend_right { (w as i32 - lw - 8).max(8) } else { 8 };
+    legend.draw(&plot, (x, 8), w as i32 - 16)?;
     Ok(())
 }
 
@@ -398,7 +383,7 @@ fn profile_svg(s: &[Sample], cs: &ContactSize, m: f64, load: f64, v: &Validity) 
             abar,
             c,
             false,
-            SeriesLabelPosition::UpperRight,
+            true,
         )?;
         panel(
             mid,
@@ -413,7 +398,7 @@ fn profile_svg(s: &[Sample], cs: &ContactSize, m: f64, load: f64, v: &Validity) 
             abar,
             c,
             false,
-            SeriesLabelPosition::UpperLeft,
+            false,
         )?;
         panel(
             bottom,
@@ -425,7 +410,7 @@ fn profile_svg(s: &[Sample], cs: &ContactSize, m: f64, load: f64, v: &Validity) 
             abar,
             c,
             true,
-            SeriesLabelPosition::UpperLeft,
+            false,
         )?;
         root.present().map_err(plot_err)?;
     }

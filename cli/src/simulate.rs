@@ -27,7 +27,7 @@ use maugis_solver::run::{simulate, SimulationSpec, StateRecord};
 
 use crate::args::{self, short};
 use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
-use crate::plot::{colour, finish_load_area_chart, load_area_chart, plot_err, LIGHT_GREY};
+use crate::plot::{colour, finish_load_area_chart, load_area_chart, plot_err, Legend, Mark, LEGEND_FONT, LIGHT_GREY};
 
 /// Output format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -138,20 +138,20 @@ fn overlay_svg(params: Params, amax: f64, rows: &[StateRecord]) -> Result<String
     let pad = 0.05 * (hi - lo).max(1.0);
     let mut svg = String::new();
     {
-        let root = SVGBackend::with_string(&mut svg, (1200, 850)).into_drawing_area();
+        let root = SVGBackend::with_string(&mut svg, (1000 + crate::plot::LEGEND_WIDTH, 850)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_err)?;
         let title = format!("simulation vs model: λ = {}, α = {}, β = {}", short(params.lambda), short(params.alpha), short(params.beta));
         let mut chart = load_area_chart(&root, title, amax, lo - pad, hi + pad)?;
+        let mut legend = Legend::new(LEGEND_FONT);
         let mut first = [true, true];
         for w in curve.points.windows(2) {
             let valid = w[0].validity.valid && w[1].validity.valid;
             let style = if valid { colour(0).stroke_width(2) } else { LIGHT_GREY.mix(0.5).stroke_width(1) };
-            let s = chart.draw_series(LineSeries::new([(w[0].abar, w[0].load), (w[1].abar, w[1].load)], style)).map_err(plot_err)?;
+            chart.draw_series(LineSeries::new([(w[0].abar, w[0].load), (w[1].abar, w[1].load)], style)).map_err(plot_err)?;
             let k = usize::from(!valid);
             if first[k] {
                 first[k] = false;
-                let label = if valid { "model, valid" } else { "model, invalid (faded)" };
-                s.label(label).legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], style));
+                legend.line(if valid { "model, valid" } else { "model, invalid (faded)" }, style, 0, 0);
             }
         }
         for (leg, col, name) in [("loading", colour(3), "simulation, loading"), ("unloading", colour(2), "simulation, unloading")] {
@@ -163,28 +163,23 @@ fn overlay_svg(params: Params, amax: f64, rows: &[StateRecord]) -> Result<String
             for (i, r) in leg_rows.iter().enumerate().filter(|(_, r)| r.load_controlled && r.abar > 0.0) {
                 let p = (r.abar, r.load);
                 if let Some((j, q)) = last {
-                    let series = if i == j + 1 {
-                        chart.draw_series(LineSeries::new([q, p], col.stroke_width(1))).map_err(plot_err)?
+                    if i == j + 1 {
+                        chart.draw_series(LineSeries::new([q, p], col.stroke_width(1))).map_err(plot_err)?;
                     } else {
-                        chart.draw_series(DashedLineSeries::new([q, p], 4, 4, col.stroke_width(1))).map_err(plot_err)?
-                    };
+                        chart.draw_series(DashedLineSeries::new([q, p], 4, 4, col.stroke_width(1))).map_err(plot_err)?;
+                    }
                     if !labelled {
                         labelled = true;
-                        series
-                            .label(format!("{name}, load-controlled path (jumps dashed)"))
-                            .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], col.stroke_width(1)));
+                        legend.line(format!("{name}, load-controlled path (jumps dashed)"), col.stroke_width(1), 0, 0);
                     }
                 }
                 last = Some((i, p));
             }
             let pts: Vec<(f64, f64)> = rows.iter().filter(|r| r.leg == leg && r.abar > 0.0).map(|r| (r.abar, r.load)).collect();
-            chart
-                .draw_series(pts.iter().map(|&p| Circle::new(p, 3, col.filled())))
-                .map_err(plot_err)?
-                .label(name)
-                .legend(move |(x, y)| Circle::new((x + 10, y), 4, col.filled()));
+            chart.draw_series(pts.iter().map(|&p| Circle::new(p, 3, col.filled()))).map_err(plot_err)?;
+            legend.entry(name, vec![Mark::circle(4, col.filled(), None)]);
         }
-        finish_load_area_chart(chart, &root)?;
+        finish_load_area_chart(&chart, &root, &legend)?;
     }
     Ok(svg)
 }

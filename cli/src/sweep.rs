@@ -28,7 +28,7 @@ use maugis::contact::sweep::{merge, run_sweep, Regime, Sweep, SweepAxis, SweepGr
 use crate::args::{self, num, short, Roughness};
 use crate::curve::progress;
 use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
-use crate::plot::plot_err;
+use crate::plot::{plot_err, tick, Legend, Mark};
 
 /// The second axis on the command line.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -168,11 +168,32 @@ fn sweep_svg(s: &Sweep) -> Result<String, String> {
     let dl = if g.lambda_n > 1 { (l1 - l0) / (g.lambda_n - 1) as f64 } else { 1.0 };
     let dv = if g.n > 1 { (g.max - g.min) / (g.n - 1) as f64 } else { 1.0 };
     let wmax = s.points.iter().map(|p| p.dissipation.abs()).filter(|w| w.is_finite()).fold(0.0, f64::max).max(1e-300);
+    // legend beside the map: regime colours at full shade, then the shade ramp
+    const BLUE: (f64, f64, f64) = (31.0, 91.0, 180.0);
+    const ORANGE: (f64, f64, f64) = (214.0, 96.0, 24.0);
+    let shade = |c: (f64, f64, f64), t: f64| {
+        let mix = |v: f64| (255.0 - (255.0 - v) * (0.25 + 0.75 * t)).round() as u8;
+        RGBColor(mix(c.0), mix(c.1), mix(c.2))
+    };
+    let cell = |c: RGBColor| vec![Mark::Rect { from: (-12, -9), to: (12, 9), style: c.filled() }, Mark::Rect { from: (-12, -9), to: (12, 9), style: BLACK.stroke_width(1) }];
+    let ramp = |c| {
+        let mut marks: Vec<Mark> = (0..5).map(|k| Mark::Rect { from: (-20 + 8 * k, -9), to: (-12 + 8 * k, 9), style: shade(c, f64::from(k) / 4.0).filled() }).collect();
+        marks.push(Mark::Rect { from: (-20, -9), to: (20, 9), style: BLACK.stroke_width(1) });
+        marks
+    };
+    let mut legend = Legend::new(16.0);
+    legend
+        .entry("dissipative: valid loops", cell(shade(BLUE, 1.0)))
+        .entry("cavitating: loops through invalid states", cell(shade(ORANGE, 1.0)))
+        .entry("smooth-like: no roughness-induced loop", cell(RGBColor(225, 225, 225)))
+        .entry(format!("shade: dissipation |W| from 0 to {}", short(wmax)), ramp(BLUE))
+        .entry("(same shading for cavitating cells)", ramp(ORANGE));
+    let (plot_w, legend_w) = (860u32, legend.size().0 as u32 + 30);
     let mut svg = String::new();
     {
-        let root = SVGBackend::with_string(&mut svg, (1100, 800)).into_drawing_area();
+        let root = SVGBackend::with_string(&mut svg, (plot_w + legend_w, 800)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_err)?;
-        let (plot, legend) = root.split_horizontally(860);
+        let (plot, beside) = root.split_horizontally(plot_w);
         let title = format!(
             "Regime map: {} over log10 λ, {} (amax = {}, {} points per curve)",
             axis_name(g.axis),
@@ -186,27 +207,27 @@ fn sweep_svg(s: &Sweep) -> Result<String, String> {
         let mut chart = ChartBuilder::on(&plot)
             .caption(title, ("sans-serif", 18))
             .margin(12)
-            .x_label_area_size(48)
-            .y_label_area_size(64)
+            .x_label_area_size(55)
+            .y_label_area_size(75)
             .build_cartesian_2d((l0 - dl / 2.0)..(l1 + dl / 2.0), (g.min - dv / 2.0)..(g.max + dv / 2.0))
             .map_err(plot_err)?;
         chart
             .configure_mesh()
             .x_desc("log10 λ (Maugis parameter)")
             .y_desc(axis_name(g.axis))
+            .axis_desc_style(("sans-serif", 18))
+            .label_style(("sans-serif", 15))
+            .x_label_formatter(&tick)
+            .y_label_formatter(&tick)
             .disable_mesh()
             .draw()
             .map_err(plot_err)?;
         for p in &s.points {
             let (x, y) = (p.lambda.log10(), p.value);
             let t = (p.dissipation.abs() / wmax).clamp(0.0, 1.0);
-            let shade = |c: (f64, f64, f64)| {
-                let mix = |v: f64| (255.0 - (255.0 - v) * (0.25 + 0.75 * t)).round() as u8;
-                RGBColor(mix(c.0), mix(c.1), mix(c.2))
-            };
             let col = match p.regime {
-                Regime::Dissipative => shade((31.0, 91.0, 180.0)),
-                Regime::Cavitating => shade((214.0, 96.0, 24.0)),
+                Regime::Dissipative => shade(BLUE, t),
+                Regime::Cavitating => shade(ORANGE, t),
                 Regime::SmoothLike => RGBColor(225, 225, 225),
             };
             chart
@@ -216,19 +237,7 @@ fn sweep_svg(s: &Sweep) -> Result<String, String> {
                 )))
                 .map_err(plot_err)?;
         }
-        // legend outside the data
-        let entries = [
-            (RGBColor(31, 91, 180), "dissipative: valid loops".to_string()),
-            (RGBColor(214, 96, 24), "cavitating: loops through invalid states".to_string()),
-            (RGBColor(225, 225, 225), "smooth-like: no roughness-induced loop".to_string()),
-            (RGBColor(255, 255, 255), format!("shade: dissipation W / {}", short(wmax))),
-        ];
-        for (i, (c, label)) in entries.iter().enumerate() {
-            let y = 80 + 34 * i as i32;
-            legend.draw(&Rectangle::new([(10, y), (34, y + 20)], c.filled())).map_err(plot_err)?;
-            legend.draw(&Rectangle::new([(10, y), (34, y + 20)], BLACK.stroke_width(1))).map_err(plot_err)?;
-            legend.draw(&Text::new(label.clone(), (40, y + 3), ("sans-serif", 13))).map_err(plot_err)?;
-        }
+        legend.draw(&beside, (10, 80), legend_w as i32 - 20)?;
         root.present().map_err(plot_err)?;
     }
     Ok(svg)

@@ -1,6 +1,9 @@
 //! `maugis curve`, `maugis profile`, `maugis limits`, `maugis sweep` and `maugis merge` end to end: the JSON
 //! schema, the files written, atomic output, and one-line usage errors (exit
-//! code 2, nothing written). Small grids keep it fast.
+//! code 2, nothing written). Small grids keep it fast. Every SVG written is
+//! rendered and its legend checked (`render`).
+
+mod render;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -346,6 +349,20 @@ fn plot_window_and_many_curves() {
     colours.dedup();
     assert!(colours.len() >= 12 + 2, "{} colours", colours.len());
     assert!(svg.contains(">\n3</text>") || svg.contains("λ = 3"), "legend");
+    let report = render::check_svg(&dir.path().join("load-area.svg"));
+    assert_lambda_entries(&report, 12);
+}
+
+/// The legend of a curve plot has `n` entries `λ = ...`, each in a colour of
+/// its own that is not a grey.
+fn assert_lambda_entries(report: &render::Report, n: usize) {
+    let mut colours = Vec::new();
+    for e in report.entries().filter(|e| e.label.starts_with("λ = ")) {
+        let c = e.colours.iter().find(|c| c.chromatic()).unwrap_or_else(|| panic!("{:?} has no colour: {:?}", e.label, e.colours));
+        assert!(!colours.contains(&c.rgb), "{:?} repeats the colour {:?}", e.label, c.rgb);
+        colours.push(c.rgb);
+    }
+    assert_eq!(colours.len(), n, "{report:?}");
 }
 
 /// Parameters are arithmetic expressions.
@@ -429,9 +446,17 @@ fn curve_writes_csv_summary_and_svg() {
 
     let svg = std::fs::read_to_string(dir.path().join("load-approach.svg")).unwrap();
     assert!(svg.contains("<svg") && svg.contains("approach"));
+    let report = render::check_svg(&dir.path().join("load-approach.svg"));
+    assert_lambda_entries(&report, 2);
+    report.entry("pull-off");
     let svg = std::fs::read_to_string(dir.path().join("load-area.svg")).unwrap();
     assert!(svg.len() > 1000 && svg.contains("<svg"));
     assert!(svg.contains("contact half-width abar") && svg.contains("load Lbar"));
+    let report = render::check_svg(&dir.path().join("load-area.svg"));
+    assert_lambda_entries(&report, 2);
+    for label in ["turning point: load maximum", "turning point: load minimum", "pull-off", "JKR limit λ→∞ (E.42a)"] {
+        report.entry(label);
+    }
 
     // A second run into the existing directory replaces the folder: no stale files.
     let o = maugis(&["curve", "--lambda", "3", "--points", "20", "--out", dir.str()]);
@@ -543,6 +568,11 @@ fn sweep_writes_a_map_and_shards_merge_to_the_whole() {
     }
     let svg = std::fs::read_to_string(whole.path().join("sweep.svg")).unwrap();
     assert!(svg.contains("<svg") && svg.contains("dissipative"));
+    // the regimes' swatches in distinct colours
+    let report = render::check_svg(&whole.path().join("sweep.svg"));
+    let fill = |label: &str| report.entry(label).colours[0].rgb;
+    let regimes = ["dissipative: valid loops", "cavitating: loops through invalid states", "smooth-like: no roughness-induced loop"].map(fill);
+    assert!(regimes[0] != regimes[1] && regimes[1] != regimes[2] && regimes[0] != regimes[2], "{regimes:?}");
 
     let (s1, s2, merged) = (TempPath::new("shard1"), TempPath::new("shard2"), TempPath::new("merged"));
     for (sh, dir) in [("1/2", &s1), ("2/2", &s2)] {
@@ -596,6 +626,10 @@ fn profile_writes_csv_and_svg() {
     assert!(rows.iter().any(|r| r[0] > 2.71 && r[1] == 1.0));
     let svg = std::fs::read_to_string(dir.path().join("profile.svg")).unwrap();
     assert!(svg.contains("<svg") && svg.contains("valid"));
+    // three panels, each with its own legend
+    let report = render::check_svg(&dir.path().join("profile.svg"));
+    assert_eq!(report.legends.len(), 3, "{report:?}");
+    assert!(report.entry("traction p̄").colours.iter().any(|c| c.chromatic()));
     assert!(dir.tmp_siblings().is_empty());
 
     let o = maugis(&["profile", "--abar", "3", "--points", "20", "--format", "json"]);
@@ -636,6 +670,8 @@ fn limits_write_csv_and_svg_or_print() {
         assert!((row[7] - (std::f64::consts::PI * a * a / 4.0 - 2.0 * 0.2f64.sqrt())).abs() < 1e-12);
     }
     assert!(std::fs::read_to_string(dir.path().join("limits.svg")).unwrap().contains("<svg"));
+    let report = render::check_svg(&dir.path().join("limits.svg"));
+    assert!(report.entry("local envelope, λ = 0.1 (Eq. 17)").colours.iter().any(|c| c.chromatic()));
 
     let o = maugis(&["limits", "--points", "5", "--format", "json"]);
     assert_eq!(o.status.code(), Some(0));

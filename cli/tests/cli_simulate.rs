@@ -1,4 +1,7 @@
-//! `maugis simulate`: a small run writes CSV and SVG; bad input exits 2 and writes nothing.
+//! `maugis simulate`: a small run writes CSV and SVG (rendered and its legend
+//! checked, `render`); bad input exits 2 and writes nothing.
+
+mod render;
 
 use std::process::Command;
 
@@ -37,6 +40,10 @@ fn small_run_writes_csv_and_svg() {
         assert!(loads.windows(2).all(|w| if rising { w[1] > w[0] } else { w[1] < w[0] }), "{leg} {loads:?}");
     }
     assert!(std::fs::read_to_string(dir.join("simulate.svg")).unwrap().contains("<svg"));
+    let report = render::check_svg(&dir.join("simulate.svg"));
+    let colour = |label: &str| report.entry(label).colours.iter().find(|c| c.chromatic()).map(|c| c.rgb);
+    let (loading, unloading) = (colour("simulation, loading"), colour("simulation, unloading"));
+    assert!(loading.is_some() && unloading.is_some() && loading != unloading, "{report:?}");
     let _ = std::fs::remove_dir_all(&dir);
 }
 
