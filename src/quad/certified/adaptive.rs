@@ -155,8 +155,13 @@ where
         f.stats.subintervals += 1;
         f.stats.max_depth = f.stats.max_depth.max(depth);
         let width = exact_diff(&lo, &hi);
-        // The piece's share of the tolerance.
-        let piece_tol = tol.mul_lower(Mag::from_float_down(&width)).div(total.add(Mag::pow2(-100_000)));
+        // The piece's share of the tolerance: proportional to its width, but never
+        // below 2^-10 of the whole, so that a long range whose integral lives in a
+        // small part (a cut-off tail) is not asked for absurd accuracy far out. More
+        // than 2^10 pieces at the floor can exceed `tol`; the driver then retries
+        // with a smaller one.
+        let share = Mag::from_float_down(&width).div(total.add(Mag::pow2(-100_000))).max(Mag::pow2(-10));
+        let piece_tol = tol.mul_lower(share);
         let reached = if f.stats.evaluations >= lim.max_evaluations {
             Some(Limit::Evaluations)
         } else if depth >= lim.max_depth {

@@ -466,8 +466,10 @@ where
     drop(provisional);
     evaluations += 32;
     let mut last: Option<Integral> = None;
+    // log2 of a factor on the tolerance, lowered when truncation kept the goal out of reach
+    let mut tol_shift: i64 = 0;
     for _attempt in 0..6 {
-        let tol = tolerance(opts, goal, mag, l1);
+        let tol = tolerance(opts, goal, mag, l1).mul_2exp(tol_shift);
         let parts = builder(tol, wp, f)?;
         let n_parts = parts.iter().filter(|p| p.lo != p.hi).count().max(1) as u64;
         let mut total = CBall::zero(wp);
@@ -500,13 +502,25 @@ where
         evaluations += stats.evaluations;
         let goal_met = meets(&total, goal, opts.abs_tol);
         let result = Integral { value: total, goal_met, limit, evaluations, subintervals: stats.subintervals, working_prec: wp };
-        if goal_met || limit.is_some() {
+        if goal_met {
+            return Ok(result);
+        }
+        let new_mag = result.value.abs_lower_mag().to_f64_up();
+        if limit.is_some() {
+            // A limit with a tolerance set from a rough estimate far below the
+            // integral's size (a long range sampled where the integrand is small):
+            // retry once the enclosure tells the size; otherwise stop, flagged.
+            if new_mag > mag * 1024.0 && tol_shift == 0 {
+                mag = new_mag;
+                l1 = l1.max(new_mag);
+                last = Some(result);
+                continue;
+            }
             return Ok(result);
         }
         // Not met: rounding or truncation?
         let rad = result.value.rad_mag();
         let rounding_dominates = truncation.mul_2exp(1).le(&rad);
-        let new_mag = result.value.abs_lower_mag().to_f64_up();
         if rounding_dominates {
             if wp >= cap {
                 return Ok(Integral { limit: Some(Limit::WorkingPrecision), ..result });
@@ -518,6 +532,13 @@ where
         if new_mag > 0.0 {
             mag = new_mag;
             l1 = l1.min(new_mag * 2f64.powi(32));
+        }
+        if !rounding_dominates {
+            // Truncation: many pieces each within their share. Ask each for the bits
+            // missing, and two more.
+            let wanted = result.value.abs_lower_mag().mul_2exp(-(goal as i64));
+            let missing = (rad.log2() - wanted.log2()).max(0.0).ceil() as i64;
+            tol_shift -= missing + 2;
         }
         last = Some(result);
     }
