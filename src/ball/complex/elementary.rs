@@ -602,7 +602,7 @@ mod tests {
         (1.0 + 1e-15, 1e-9),
         (0.6, 0.8),
         (-20.0, 30.0),
-        (1.5707963267948966, 0.0),
+        (std::f64::consts::FRAC_PI_2, 0.0),
         (1e-5, 1.5),
         (-1e-5, -1.5),
     ];
@@ -670,7 +670,7 @@ mod tests {
         // just above and below: continuous from above, jump of 2 pi below
         let above = CBall::from_f64s(-2.0, 1e-30, p).log();
         let below = CBall::from_f64s(-2.0, -1e-30, p).log();
-        assert!(above.im().mid().to_f64() > 3.14 && below.im().mid().to_f64() < -3.14);
+        assert!(above.im().mid().to_f64() > 3.1 && below.im().mid().to_f64() < -3.1);
         // a rectangle straddling the cut: the principal form encloses every value
         let mut z = CBall::from_f64s(-1.0, 0.0, p);
         z.add_error_mag(Mag::from_f64(0.25));
