@@ -33,6 +33,17 @@
 //!   and certify (or, for the quadrature, estimate) the function at that binary
 //!   number (see `arg_float`).
 //!
+//! * `integrate` takes the integrand as a string in x (`"f"`, the language of
+//!   [`maugis::quad::expr`]), the ends `"a"` and `"b"` as decimals (`"b": "inf"`
+//!   for a semi-infinite range, with a `"decay"`), and optionally
+//!   `"weight": {"alpha": AL, "beta": BE, "log": K}` (the integrand is then
+//!   `(x-a)^AL (b-x)^BE log^K(x-a)` times `f`) and
+//!   `"decay": {"rate": C | "power": P, "bound": M}` (`|f(x)| <= M e^(-C x)` or
+//!   `M x^(-P)` for `x >= a`). It is always certified (`"prec"` defaults to 53)
+//!   and answers `mid` and `rad` of the real part (`im_mid`, `im_rad` too when the
+//!   imaginary part may exceed `rad`), the evaluations spent, and
+//!   `"goal_met": false` with a `"warning"` when a limit stopped it early.
+//!
 //! Integer arguments (`n`, `k`, `kmax`, `prec`) must be integers as typed.
 //! A bad line gets `{"id": ..., "error": "..."}` and the stream goes on.
 
@@ -42,9 +53,13 @@ use maugis::contact::model::{ContactSize, Params};
 use maugis::contact::{displacement, model_mp, wave_quadrature};
 use maugis::special::{bessel_j, hyp1f2, hyp2f1, meijer_g};
 use maugis::ball::{eval_at_decimals, Decimal};
+use maugis::quad::certified::Options;
+use maugis::quad::expr::{integrate_expr, DecaySpec, Expr, UpperLimit, WeightSpec};
 use maugis::{Ball, Error, MAX_PREC};
 use rug::Float;
 use serde_json::{json, Map, Value};
+
+use crate::integrate::{ball_fields, digits_for, shortfall};
 
 /// A request-level failure, turned into an error line.
 struct BadRequest(String);
@@ -71,6 +86,7 @@ const FUNCTIONS: &[(&str, &[&str])] = &[
     ("u_adhesive", &["a", "c", "sigma", "e_star", "x"]),
     ("strip_ratio", &MODEL_ARGS),
     ("load", &MODEL_ARGS),
+    ("integrate", &["f", "a", "b", "weight", "decay"]),
 ];
 
 /// The model's inputs (normalised, docs/model.md), for `strip_ratio` and `load`.
@@ -160,11 +176,6 @@ fn check_names(obj: &Map<String, Value>, fname: &str, args: &[&str]) -> Req<()> 
     Ok(())
 }
 
-/// Decimal digits printed for a ball at `prec` bits: `ceil(prec log10 2) + 3`.
-fn digits_for(prec: u32) -> usize {
-    (prec as f64 * std::f64::consts::LOG10_2).ceil() as usize + 3
-}
-
 fn mp_response(id: &Value, ball: &Ball, prec: u32) -> Value {
     let (mid, rad) = ball.to_decimal(digits_for(prec));
     json!({"id": id, "mid": mid, "rad": rad, "prec": prec})
@@ -220,6 +231,7 @@ fn evaluate(obj: &Map<String, Value>) -> Req<Value> {
             mp_response(&id, &eval_at_decimals(&[y], p, |b| meijer_g::meijer_g_k_ball_mp(k, &b[0], p))?, p)
         }
         ("strip_ratio" | "load", _) => return evaluate_model(obj, fname, &id, prec),
+        ("integrate", _) => return evaluate_integral(obj, &id, prec.unwrap_or(DEFAULT_INTEGRAL_PREC)),
         _ => return evaluate_contact(obj, fname, &id, prec),
     };
     Ok(out)
@@ -337,6 +349,71 @@ fn evaluate_model(obj: &Map<String, Value>, fname: &str, id: &Value, prec: Optio
             mp_response(id, &b, p)
         }
     })
+}
+
+/// Precision of an `integrate` request without `"prec"` (bits).
+const DEFAULT_INTEGRAL_PREC: u32 = 53;
+
+/// The fields of a nested object argument (`"weight"`, `"decay"`), checked against `names`.
+fn sub_object<'a>(obj: &'a Map<String, Value>, name: &str, names: &[&str]) -> Req<Option<&'a Map<String, Value>>> {
+    match obj.get(name) {
+        None | Some(Value::Null) => Ok(None),
+        Some(Value::Object(sub)) => {
+            if let Some(key) = sub.keys().find(|k| !names.contains(&k.as_str())) {
+                return Err(BadRequest(format!("unknown field \"{key}\" in \"{name}\" (it takes {})", names.join(", "))));
+            }
+            Ok(Some(sub))
+        }
+        Some(other) => Err(BadRequest(format!("\"{name}\" must be an object, got {other}"))),
+    }
+}
+
+/// An optional decimal field of a nested object.
+fn opt_decimal(obj: &Map<String, Value>, name: &str) -> Req<Option<Decimal>> {
+    obj.contains_key(name).then(|| arg_decimal(obj, name)).transpose()
+}
+
+/// `{"fn": "integrate", "f": EXPR, "a": A, "b": B | "inf", "prec": P,
+/// "weight": {"alpha": AL, "beta": BE, "log": K}, "decay": {"rate": C | "power": P, "bound": M}}`.
+fn evaluate_integral(obj: &Map<String, Value>, id: &Value, prec: u32) -> Req<Value> {
+    let f = match obj.get("f") {
+        Some(Value::String(s)) => Expr::parse(s)?,
+        Some(other) => return Err(BadRequest(format!("\"f\" must be the integrand as a string, got {other}"))),
+        None => return Err(BadRequest("missing argument \"f\" (the integrand in x, e.g. \"exp(-x^2)\")".into())),
+    };
+    let a = arg_decimal(obj, "a")?;
+    let b = UpperLimit::parse(&arg_text(obj, "b")?)?;
+    let weight = match sub_object(obj, "weight", &["alpha", "beta", "log"])? {
+        None => None,
+        Some(w) => Some(WeightSpec {
+            alpha: opt_decimal(w, "alpha")?,
+            beta: opt_decimal(w, "beta")?,
+            log: if w.contains_key("log") { arg_u32(w, "log")? } else { 0 },
+        }),
+    };
+    let decay = match sub_object(obj, "decay", &["rate", "power", "bound"])? {
+        None => None,
+        Some(d) => {
+            let bound = arg_decimal(d, "bound")?;
+            Some(match (opt_decimal(d, "rate")?, opt_decimal(d, "power")?) {
+                (Some(rate), None) => DecaySpec::Exponential { rate, bound },
+                (None, Some(power)) => DecaySpec::Algebraic { power, bound },
+                _ => return Err(BadRequest("\"decay\" takes one of \"rate\" (exponential) and \"power\" (algebraic), with \"bound\"".into())),
+            })
+        }
+    };
+    let r = integrate_expr(&f, &a, &b, weight.as_ref(), decay.as_ref(), prec, &Options::new())?;
+    let mut resp = json!({"id": id});
+    for (key, value) in ball_fields(&r, prec) {
+        resp[key] = Value::String(value);
+    }
+    resp["prec"] = json!(prec);
+    resp["evaluations"] = json!(r.evaluations);
+    if let Some(note) = shortfall(&r) {
+        resp["goal_met"] = json!(false);
+        resp["warning"] = Value::String(note);
+    }
+    Ok(resp)
 }
 
 /// Handles one input line; always returns exactly one response.

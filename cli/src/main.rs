@@ -1,6 +1,7 @@
 //! The `maugis` command line.
 //!
 //! * `maugis eval`: JSON Lines calculator over the special functions (see `eval.rs`).
+//! * `maugis integrate`: a certified integral of an expression in x (`integrate.rs`).
 //! * `maugis demo`: evaluates a few representative requests through `eval` and
 //!   prints them.
 //! * `maugis curve`: the main job, load-area responses for several Maugis
@@ -17,6 +18,7 @@
 mod args;
 mod curve;
 mod eval;
+mod integrate;
 mod limits;
 mod output;
 mod paper;
@@ -38,6 +40,9 @@ struct Cli {
 enum Command {
     /// JSON Lines calculator: one request per stdin line, one response per stdout line.
     Eval,
+    /// Certified integral of an expression in x over [A, B] (B may be inf with a declared
+    /// decay), with optional endpoint weights; prints the ball as mid and rad.
+    Integrate(integrate::IntegrateArgs),
     /// Show a few certified evaluations (the Eq. 12 building blocks at the model's arguments).
     Demo,
     /// Load-area curves Lbar(abar) for several lambda (default: the paper's Fig. 4c) with
@@ -97,6 +102,7 @@ fn main() {
             let _ = out.write_all(text.as_bytes());
             0
         }
+        Command::Integrate(a) => report(guarded(move || integrate::run(a))),
         Command::Curve(a) => report(guarded(move || curve::run(a))),
         Command::Profile(a) => report(guarded(move || profile::run(a))),
         Command::Limits(a) => report(guarded(move || limits::run(a))),
@@ -159,7 +165,7 @@ fn report(r: Result<(), String>) -> i32 {
 fn one_line(e: &clap::Error) -> String {
     use clap::error::ErrorKind;
     if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand || e.kind() == ErrorKind::MissingSubcommand {
-        return "a subcommand is required (eval, demo, curve, profile, limits, sweep, merge, simulate, paper); try 'maugis --help'".into();
+        return "a subcommand is required (eval, integrate, demo, curve, profile, limits, sweep, merge, simulate, paper); try 'maugis --help'".into();
     }
     let text = e.render().to_string();
     let parts: Vec<&str> = text

@@ -31,9 +31,10 @@ impl UpperLimit {
             "-inf" | "-infinity" => Err(Error::Domain {
                 what: "the upper end -inf is not supported: integrate f(-x) from -b to inf instead".into(),
             }),
-            _ => Ok(UpperLimit::Finite(Decimal::parse(t).map_err(|e| Error::Domain {
-                what: format!("the upper end must be a decimal or inf: {e}"),
-            })?)),
+            _ => Decimal::parse(t).map(UpperLimit::Finite).map_err(|e| match e {
+                Error::Domain { what } => Error::Domain { what: format!("{what}; or inf for an infinite upper end") },
+                other => other,
+            }),
         }
     }
 }

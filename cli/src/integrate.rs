@@ -1,0 +1,147 @@
+//! `maugis integrate 'EXPR' A B`: a certified integral of an expression in x.
+//!
+//! ```text
+//! $ maugis integrate 'sqrt(x)' 1 4 --prec 128
+//! mid: 4.66666666666666666666666666666666666666667
+//! rad: 2.0e-40
+//! ```
+//!
+//! The result is a ball (`mid` +/- `rad`) that contains the integral, computed by
+//! the certified integrator ([`maugis::quad::certified`]) on the expression
+//! parsed by [`maugis::quad::expr`]; `im_mid` and `im_rad` follow when the
+//! imaginary part may be larger than `rad` (an integrand that is complex
+//! somewhere, such as `sqrt(x)` for `x < 0`). The endpoints and the exponents are decimals
+//! taken as balls that contain them; `B` may be `inf` with a declared decay.
+//! `--alpha AL --beta BE --log K` multiply the integrand by
+//! `(x-A)^AL (B-x)^BE log^K(x-A)`, certified without truncation.
+//!
+//! Everything typed is checked while the command line is parsed, so a bad
+//! expression or number exits with code 2 and one line on stderr before any
+//! work. An integral that cannot be done (a pole, an undeclared endpoint
+//! singularity, `B = inf` without a decay) also exits with code 2, and nothing
+//! is printed on stdout. A result that stopped at a limit before its goal is
+//! printed (it still encloses the integral), with a warning on stderr.
+
+use clap::Args;
+
+use maugis::ball::Decimal;
+use maugis::quad::certified::{Integral, Options};
+use maugis::quad::expr::{integrate_expr, DecaySpec, Expr, UpperLimit, WeightSpec};
+use maugis::MAX_PREC;
+
+use crate::output::print_stdout;
+
+/// Flags of `maugis integrate`.
+#[derive(Args, Debug)]
+pub struct IntegrateArgs {
+    /// The integrand in x: + - * / ^, sqrt exp log sin cos tan sinh cosh tanh atan,
+    /// besselj(n, x), pi and decimals, e.g. 'exp(-x^2)' or 'x^(-1/2)*cos(x)'.
+    #[arg(value_name = "EXPR", value_parser = expression, allow_hyphen_values = true)]
+    pub f: Expr,
+    /// Lower end, a decimal.
+    #[arg(value_name = "A", value_parser = decimal, allow_hyphen_values = true)]
+    pub a: Decimal,
+    /// Upper end, a decimal or inf (then a decay must be declared).
+    #[arg(value_name = "B", value_parser = upper, allow_hyphen_values = true)]
+    pub b: UpperLimit,
+    /// Precision in bits: the goal is rad <= 2^-P |mid|.
+    #[arg(long, value_name = "P", default_value = "53", value_parser = prec)]
+    pub prec: u32,
+    /// Endpoint weight (x-A)^AL, AL > -1.
+    #[arg(long, value_name = "AL", value_parser = decimal, allow_negative_numbers = true)]
+    pub alpha: Option<Decimal>,
+    /// Endpoint weight (B-x)^BE, BE > -1 (B finite).
+    #[arg(long, value_name = "BE", value_parser = decimal, allow_negative_numbers = true)]
+    pub beta: Option<Decimal>,
+    /// Endpoint weight log^K(x-A).
+    #[arg(long, value_name = "K", default_value = "0")]
+    pub log: u32,
+    /// For B = inf: |f(x)| <= M e^(-C x) for x >= A (with --decay-bound M).
+    #[arg(long, value_name = "C", value_parser = decimal, requires = "decay_bound", conflicts_with = "decay_power")]
+    pub decay_rate: Option<Decimal>,
+    /// For B = inf: |f(x)| <= M x^(-P) for x >= A > 0, P > 1 (with --decay-bound M).
+    #[arg(long, value_name = "P", value_parser = decimal, requires = "decay_bound")]
+    pub decay_power: Option<Decimal>,
+    /// The constant M of the declared decay.
+    #[arg(long, value_name = "M", value_parser = decimal)]
+    pub decay_bound: Option<Decimal>,
+}
+
+fn expression(s: &str) -> Result<Expr, String> {
+    Expr::parse(s).map_err(|e| e.to_string())
+}
+
+fn decimal(s: &str) -> Result<Decimal, String> {
+    Decimal::parse(s).map_err(|e| e.to_string())
+}
+
+fn upper(s: &str) -> Result<UpperLimit, String> {
+    UpperLimit::parse(s).map_err(|e| e.to_string())
+}
+
+fn prec(s: &str) -> Result<u32, String> {
+    match s.trim().parse::<u32>() {
+        Ok(p) if (2..=MAX_PREC).contains(&p) => Ok(p),
+        _ => Err(format!("use a whole number of bits in 2 ..= {MAX_PREC}")),
+    }
+}
+
+/// Decimal digits printed for a ball at `prec` bits: `ceil(prec log10 2) + 3`.
+pub fn digits_for(prec: u32) -> usize {
+    (prec as f64 * std::f64::consts::LOG10_2).ceil() as usize + 3
+}
+
+/// The printed fields of an integral at `prec` bits: `mid` and `rad` of the real
+/// part, then `im_mid` and `im_rad` unless the imaginary part is a ball around 0
+/// no wider than the real part's (the integral of a real integrand, whose
+/// imaginary part is 0, shows as `mid` and `rad` alone).
+pub fn ball_fields(r: &Integral, prec: u32) -> Vec<(&'static str, String)> {
+    let digits = digits_for(prec);
+    let (re, im) = (r.value.re(), r.value.im());
+    let (mid, rad) = re.to_decimal(digits);
+    let mut fields = vec![("mid", mid), ("rad", rad)];
+    if !(im.contains_zero() && im.rad_mag().le(&re.rad_mag())) {
+        let (im_mid, im_rad) = im.to_decimal(digits);
+        fields.extend([("im_mid", im_mid), ("im_rad", im_rad)]);
+    }
+    fields
+}
+
+/// Why a result is flagged, if it is: the limit that stopped it before its goal.
+pub fn shortfall(r: &Integral) -> Option<String> {
+    if r.goal_met {
+        return None;
+    }
+    let by = r.limit.map_or_else(|| "a limit".to_string(), |l| l.to_string());
+    Some(format!(
+        "the goal was not met: stopped by {by} after {} evaluations; the ball still encloses the integral",
+        r.evaluations
+    ))
+}
+
+/// The declared decay, from the flags.
+fn decay(args: &IntegrateArgs) -> Option<DecaySpec> {
+    let bound = args.decay_bound.clone()?;
+    match (&args.decay_rate, &args.decay_power) {
+        (Some(rate), _) => Some(DecaySpec::Exponential { rate: rate.clone(), bound }),
+        (None, Some(power)) => Some(DecaySpec::Algebraic { power: power.clone(), bound }),
+        (None, None) => None,
+    }
+}
+
+/// Runs `maugis integrate`.
+pub fn run(args: IntegrateArgs) -> Result<(), String> {
+    if args.decay_bound.is_some() && args.decay_rate.is_none() && args.decay_power.is_none() {
+        return Err("--decay-bound needs --decay-rate or --decay-power".into());
+    }
+    let weight = WeightSpec { alpha: args.alpha.clone(), beta: args.beta.clone(), log: args.log };
+    let decay = decay(&args);
+    let r = integrate_expr(&args.f, &args.a, &args.b, Some(&weight), decay.as_ref(), args.prec, &Options::new())
+        .map_err(|e| e.to_string())?;
+    let text: String = ball_fields(&r, args.prec).iter().map(|(k, v)| format!("{k}: {v}\n")).collect();
+    print_stdout(&text)?;
+    if let Some(note) = shortfall(&r) {
+        eprintln!("maugis: warning: {note}");
+    }
+    Ok(())
+}
