@@ -13,7 +13,10 @@
 //!   side: [`bessel_j`](special::bessel_j), [`hyp1f2`](special::hyp1f2),
 //!   [`hyp2f1`](special::hyp2f1), the [`pFq` core](special::pfq) and the Eq. 12
 //!   Meijer-G family [`meijer_g_k`](special::meijer_g).
-//! * [`quad`]: tanh-sinh (MP), Gauss-Legendre and Gauss-Kronrod (f64).
+//! * [`quad`]: [certified integration](quad::certified) in complex ball arithmetic
+//!   (adaptive Gauss-Legendre with Bernstein-ellipse bounds, endpoint weights,
+//!   semi-infinite ranges, integrand [expressions](quad::expr)), and the estimating
+//!   rules beside it: tanh-sinh (MP), Gauss-Legendre and Gauss-Kronrod (f64).
 //! * [`contact`]: the application: displacements (Eqs. 10, 11a, 11b, 12, A.5a),
 //!   the normalised Maugis model (Eqs. 14, 15b, 16), the load-area response and
 //!   the limits of Appendix E.

@@ -6,9 +6,12 @@
 //! | [`gauss_legendre`] | f64, fixed order `n` (1..=[`MAX_ORDER`](gauss_legendre::MAX_ORDER)) | smooth integrands where the order is chosen by the caller; inner loops (cached rules) |
 //! | [`gauss_kronrod`] | f64, adaptive G7-K15 | everyday f64 integrals to a tolerance, moderate endpoint singularities, kinks |
 //!
+//! Certified integrals, whose balls provably contain the integral, are in
+//! [`certified`] (method and guarantees there and in `docs/quadrature.md`).
+//!
 //! # Estimates, not bounds
 //!
-//! Unlike the `*_mp` special functions, **nothing here is certified**. The
+//! The three rules in the table are **not certified**. The
 //! `error_estimate` of a [`QuadEstimate`] / [`QuadEstimateMp`] is a heuristic
 //! (difference of successive tanh-sinh levels, QUADPACK's Kronrod-Gauss
 //! formula): reliable for the integrands each rule is made for, but it can
