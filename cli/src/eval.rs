@@ -54,12 +54,12 @@ use maugis::contact::{displacement, model_mp, wave_quadrature};
 use maugis::special::{bessel_j, hyp1f2, hyp2f1, meijer_g};
 use maugis::ball::{eval_at_decimals, Decimal};
 use maugis::quad::certified::Options;
-use maugis::quad::expr::{integrate_expr, DecaySpec, Expr, UpperLimit, WeightSpec};
+use maugis::quad::expr::{integrate_expr, shortfall, DecaySpec, Expr, UpperLimit, WeightSpec};
 use maugis::{Ball, Error, MAX_PREC};
 use rug::Float;
 use serde_json::{json, Map, Value};
 
-use crate::integrate::{ball_fields, digits_for, shortfall};
+use crate::integrate::{ball_fields, digits_for};
 
 /// A request-level failure, turned into an error line.
 struct BadRequest(String);

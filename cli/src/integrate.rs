@@ -26,7 +26,7 @@ use clap::Args;
 
 use maugis::ball::Decimal;
 use maugis::quad::certified::{Integral, Options};
-use maugis::quad::expr::{integrate_expr, DecaySpec, Expr, UpperLimit, WeightSpec};
+use maugis::quad::expr::{integrate_expr, shortfall, significant_imaginary, DecaySpec, Expr, UpperLimit, WeightSpec};
 use maugis::MAX_PREC;
 
 use crate::output::print_stdout;
@@ -92,31 +92,17 @@ pub fn digits_for(prec: u32) -> usize {
 }
 
 /// The printed fields of an integral at `prec` bits: `mid` and `rad` of the real
-/// part, then `im_mid` and `im_rad` unless the imaginary part is a ball around 0
-/// no wider than the real part's (the integral of a real integrand, whose
-/// imaginary part is 0, shows as `mid` and `rad` alone).
+/// part, then `im_mid` and `im_rad` when the imaginary part may exceed `rad`
+/// ([`significant_imaginary`]).
 pub fn ball_fields(r: &Integral, prec: u32) -> Vec<(&'static str, String)> {
     let digits = digits_for(prec);
-    let (re, im) = (r.value.re(), r.value.im());
-    let (mid, rad) = re.to_decimal(digits);
+    let (mid, rad) = r.value.re().to_decimal(digits);
     let mut fields = vec![("mid", mid), ("rad", rad)];
-    if !(im.contains_zero() && im.rad_mag().le(&re.rad_mag())) {
+    if let Some(im) = significant_imaginary(r) {
         let (im_mid, im_rad) = im.to_decimal(digits);
         fields.extend([("im_mid", im_mid), ("im_rad", im_rad)]);
     }
     fields
-}
-
-/// Why a result is flagged, if it is: the limit that stopped it before its goal.
-pub fn shortfall(r: &Integral) -> Option<String> {
-    if r.goal_met {
-        return None;
-    }
-    let by = r.limit.map_or_else(|| "a limit".to_string(), |l| l.to_string());
-    Some(format!(
-        "the goal was not met: stopped by {by} after {} evaluations; the ball still encloses the integral",
-        r.evaluations
-    ))
 }
 
 /// The declared decay, from the flags.

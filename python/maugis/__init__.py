@@ -12,6 +12,11 @@ error bound, ``prec=`` returns certified arbitrary-precision balls)::
     u_wave(a, zeta, amp, x)   wave displacement u_w (Eq. 12)
     du_wave(a, zeta, amp, x)  its gradient (Eq. 11b)
 
+Certified integrals of an expression in x (``prec=`` bits; ``b`` may be inf)::
+
+    integrate(f, a, b, prec=53, alpha=, beta=, log=, decay_rate=, decay_power=, decay_bound=)
+                              (mid, rad) of int_a^b (x-a)^alpha (b-x)^beta log^log(x-a) f(x) dx
+
 The model (results carry the fields of the ``maugis`` command's JSON)::
 
     curve(lam, alpha, beta)         load-area response, jumps, loops, dissipation, pull-off
@@ -36,6 +41,7 @@ from ._model import (
     state,
     sweep,
 )
+from ._integrate import integrate
 from ._special import bessel_j, du_wave, hyp1f2, hyp1f2_model_family, hyp2f1, meijer_g_k, meijer_g_k_family, u_wave
 
 __version__ = "0.1.0"
@@ -56,6 +62,7 @@ __all__ = [
     "hyp1f2_model_family",
     "u_wave",
     "du_wave",
+    "integrate",
     "run_summary",
     "sweep",
     "simulate",

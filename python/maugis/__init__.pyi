@@ -58,6 +58,21 @@ def du_wave(a: ArrayLike, zeta: ArrayLike, amp: ArrayLike, x: ArrayLike, *, boun
 def du_wave(a: ArrayLike, zeta: ArrayLike, amp: ArrayLike, x: ArrayLike, *, bounded: Literal[True], prec: None = ...) -> Tuple[Values, Values]: ...
 @overload
 def du_wave(a: MpInput, zeta: MpInput, amp: MpInput, x: MpInput, *, prec: int, output: Literal["mpf", "str"] = ..., digits: int | None = ...) -> Balls: ...
+def integrate(
+    f: str,
+    a: Union[float, int, str, mpmath.mpf],
+    b: Union[float, int, str, mpmath.mpf],
+    *,
+    prec: int = ...,
+    alpha: Union[float, int, str, mpmath.mpf, None] = ...,
+    beta: Union[float, int, str, mpmath.mpf, None] = ...,
+    log: int = ...,
+    decay_rate: Union[float, int, str, mpmath.mpf, None] = ...,
+    decay_power: Union[float, int, str, mpmath.mpf, None] = ...,
+    decay_bound: Union[float, int, str, mpmath.mpf, None] = ...,
+    output: Literal["mpf", "str"] = ...,
+    digits: int | None = ...,
+) -> Tuple[Any, Any]: ...
 
 class Record(dict[str, Any]):
     """A JSON object; keys are also attributes."""

@@ -112,7 +112,8 @@ def _to_mpf(pair):
     return mpmath.mp.make_mpf(mpmath.libmp.from_man_exp(int(man), exp))
 
 
-def _eval_mp(function, names, values, prec, output, digits):
+def _mp_options(prec, output):
+    """Checks ``prec=`` and ``output=`` of a certified call; returns ``prec`` as an int."""
     if output not in ("mpf", "str"):
         raise ValueError(f'output must be "mpf" or "str" (got {output!r})')
     if isinstance(prec, bool) or not isinstance(prec, (int, np.integer)):
@@ -120,6 +121,11 @@ def _eval_mp(function, names, values, prec, output, digits):
     prec = int(prec)
     if not 2 <= prec <= _ext.MAX_PREC:
         raise ValueError(f"precision {prec} bits is out of range: use 2 ..= {_ext.MAX_PREC} bits")
+    return prec
+
+
+def _eval_mp(function, names, values, prec, output, digits):
+    prec = _mp_options(prec, output)
     arrays = [np.asarray(v, dtype=object) for v in values]
     b = np.broadcast(*arrays)
     shape = b.shape

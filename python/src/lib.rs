@@ -11,6 +11,8 @@
 //!   or decimal strings (each a ball that contains the decimal as typed, as in
 //!   `maugis eval`), and returns each certified ball either as exact binary
 //!   pairs (for `mpmath.mpf`) or as decimal strings whose radius still encloses.
+//! * [`integrate_mp`]: a certified integral of an expression in x
+//!   ([`maugis::quad::expr`]) with the same inputs and outputs.
 //! * Every library [`maugis::Error`] becomes a Python `ValueError` carrying the
 //!   library's message and the arguments of the element that failed.
 
@@ -28,6 +30,8 @@ use maugis::contact::displacement::{
 };
 use maugis::contact::model::{ContactSize, Params, Validity};
 use maugis::ball::{eval_at_decimals, Decimal};
+use maugis::quad::certified::Options;
+use maugis::quad::expr::{integrate_expr, shortfall, significant_imaginary, DecaySpec, Expr, UpperLimit, WeightSpec};
 use maugis::rug::{Float, Integer, Rational};
 use maugis_solver::run::{simulate, SimulationSpec};
 use maugis::special::bessel_j::{bessel_j, bessel_j_ball_mp, bessel_j_bounded};
@@ -323,6 +327,30 @@ enum MpOut {
     Decimal(String, String),
 }
 
+/// A ball's midpoint and radius as Python receives them (see [`MpOut`]).
+fn ball_out(ball: &Ball, digits: Option<usize>) -> MpOut {
+    match digits {
+        None => MpOut::Exact(exact_pair(ball.mid()), exact_pair(&ball.rad())),
+        Some(d) => {
+            let (m, r) = ball.to_decimal(d);
+            MpOut::Decimal(m, r)
+        }
+    }
+}
+
+impl<'py> IntoPyObject<'py> for MpOut {
+    type Target = PyTuple;
+    type Output = Bound<'py, PyTuple>;
+    type Error = PyErr;
+
+    fn into_pyobject(self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
+        match self {
+            MpOut::Exact(m, r) => (m, r).into_pyobject(py),
+            MpOut::Decimal(m, r) => (m, r).into_pyobject(py),
+        }
+    }
+}
+
 /// Certified balls of `function` over argument columns (one list per argument,
 /// all of one length), at `prec` bits. `digits = None` returns exact binary
 /// pairs, `Some(d)` decimal strings with `d` significant digits.
@@ -343,13 +371,7 @@ fn eval_mp<'py>(py: Python<'py>, function: &str, columns: Vec<Vec<MpArg>>, prec:
                 .into_par_iter()
                 .map(|i| {
                     let ball = mp_one(function, &row(i), prec).map_err(|error| ElementError { index: i, error })?;
-                    Ok(match digits {
-                        None => MpOut::Exact(exact_pair(ball.mid()), exact_pair(&ball.rad())),
-                        Some(d) => {
-                            let (m, r) = ball.to_decimal(d);
-                            MpOut::Decimal(m, r)
-                        }
-                    })
+                    Ok(ball_out(&ball, digits))
                 })
                 .collect::<Result<Vec<MpOut>, ElementError>>()
         })
@@ -361,12 +383,64 @@ fn eval_mp<'py>(py: Python<'py>, function: &str, columns: Vec<Vec<MpArg>>, prec:
         })?;
     let list = PyList::empty(py);
     for o in out {
-        match o {
-            MpOut::Exact(m, r) => list.append((m, r))?,
-            MpOut::Decimal(m, r) => list.append((m, r))?,
-        }
+        list.append(o)?;
     }
     Ok(list)
+}
+
+// ---------------------------------------------------------------- certified integrals
+
+/// `int_a^b w(x) f(x) dx` for the expression `f` in x ([`maugis::quad::expr`]),
+/// certified at `prec` bits ([`integrate_expr`]). `b = None` is `+inf` (then a
+/// decay is required); the weight is `(x-a)^alpha (b-x)^beta log^log(x-a)`.
+/// Returns a dict: `re` and `im` (`None` when it is a ball around 0 no wider than
+/// `re`'s radius), each `(mid, rad)` as exact pairs or decimal strings like
+/// [`eval_mp`], `evaluations`, and `warning` (`None`, or why the goal was not met).
+#[pyfunction]
+#[pyo3(signature = (f, a, b, prec, alpha=None, beta=None, log=0, decay_rate=None, decay_power=None, decay_bound=None, digits=None))]
+#[allow(clippy::too_many_arguments)]
+fn integrate_mp<'py>(
+    py: Python<'py>,
+    f: &str,
+    a: MpArg,
+    b: Option<MpArg>,
+    prec: u32,
+    alpha: Option<MpArg>,
+    beta: Option<MpArg>,
+    log: u32,
+    decay_rate: Option<MpArg>,
+    decay_power: Option<MpArg>,
+    decay_bound: Option<MpArg>,
+    digits: Option<usize>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let expr = Expr::parse(f).map_err(lib_error)?;
+    let opt = |v: &Option<MpArg>, what: &'static str| v.as_ref().map(|v| v.to_decimal(what)).transpose();
+    let a = a.to_decimal("a").map_err(lib_error)?;
+    let b = match &b {
+        None => UpperLimit::Infinity,
+        Some(b) => UpperLimit::Finite(b.to_decimal("b").map_err(lib_error)?),
+    };
+    let weight = WeightSpec { alpha: opt(&alpha, "alpha").map_err(lib_error)?, beta: opt(&beta, "beta").map_err(lib_error)?, log };
+    let bound = opt(&decay_bound, "decay_bound").map_err(lib_error)?;
+    let decay = match (opt(&decay_rate, "decay_rate").map_err(lib_error)?, opt(&decay_power, "decay_power").map_err(lib_error)?, bound) {
+        (None, None, None) => None,
+        (Some(rate), None, Some(bound)) => Some(DecaySpec::Exponential { rate, bound }),
+        (None, Some(power), Some(bound)) => Some(DecaySpec::Algebraic { power, bound }),
+        _ => {
+            return Err(PyValueError::new_err(
+                "declare a decay with decay_bound and one of decay_rate (exponential) and decay_power (algebraic)",
+            ))
+        }
+    };
+    let r = py
+        .detach(|| integrate_expr(&expr, &a, &b, Some(&weight), decay.as_ref(), prec, &Options::new()))
+        .map_err(lib_error)?;
+    let out = PyDict::new(py);
+    out.set_item("re", ball_out(r.value.re(), digits))?;
+    out.set_item("im", significant_imaginary(&r).map(|im| ball_out(im, digits)))?;
+    out.set_item("evaluations", r.evaluations)?;
+    out.set_item("warning", shortfall(&r))?;
+    Ok(out)
 }
 
 // ---------------------------------------------------------------- the model
@@ -526,6 +600,7 @@ fn _maugis(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(meijer_g_k_f64, m)?)?;
     m.add_function(wrap_pyfunction!(family_f64, m)?)?;
     m.add_function(wrap_pyfunction!(eval_mp, m)?)?;
+    m.add_function(wrap_pyfunction!(integrate_mp, m)?)?;
     m.add_function(wrap_pyfunction!(curve_summary_json, m)?)?;
     m.add_function(wrap_pyfunction!(states_json, m)?)?;
     m.add_function(wrap_pyfunction!(sweep_json, m)?)?;

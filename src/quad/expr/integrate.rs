@@ -3,7 +3,7 @@
 //! `maugis.integrate`.
 
 use super::Expr;
-use crate::ball::Decimal;
+use crate::ball::{Ball, Decimal};
 use crate::error::{Error, Result};
 use crate::quad::certified::{integrate, integrate_to_infinity, integrate_weighted, Decay, Integral, Options, Weight};
 
@@ -126,4 +126,26 @@ pub fn integrate_expr(
             integrate_to_infinity(g, &a, weight.as_ref(), &decay, prec, opts)
         }
     }
+}
+
+/// The imaginary part of an integral when the front ends must show it: `None` when
+/// it is a ball around 0 no wider than the real part's radius (as for a real
+/// integrand, whose integral's imaginary part is 0), so that what is left out is
+/// never larger than the radius shown.
+pub fn significant_imaginary(r: &Integral) -> Option<&Ball> {
+    let (re, im) = (r.value.re(), r.value.im());
+    (!(im.contains_zero() && im.rad_mag().le(&re.rad_mag()))).then_some(im)
+}
+
+/// Why a result is flagged, for a warning: the limit that stopped it before its
+/// goal; `None` when the goal was met.
+pub fn shortfall(r: &Integral) -> Option<String> {
+    if r.goal_met {
+        return None;
+    }
+    let by = r.limit.map_or_else(|| "a limit".to_string(), |l| l.to_string());
+    Some(format!(
+        "the goal was not met: stopped by {by} after {} evaluations; the ball still encloses the integral",
+        r.evaluations
+    ))
 }

@@ -81,7 +81,7 @@ use std::str::FromStr;
 
 pub use error::ExprError;
 pub use eval::ExprValue;
-pub use integrate::{integrate_expr, DecaySpec, UpperLimit, WeightSpec};
+pub use integrate::{integrate_expr, shortfall, significant_imaginary, DecaySpec, UpperLimit, WeightSpec};
 pub use tree::{Expr, Function};
 
 /// Longest expression accepted, in characters.
