@@ -22,6 +22,8 @@ pub trait ExprValue: Clone {
     fn div(&self, other: &Self) -> Self;
     /// `-self`.
     fn neg(&self) -> Self;
+    /// `1 / self` (what `1/a` evaluates to: cheaper than a division).
+    fn recip(&self) -> Self;
     /// `self^n` by integer powering (defined for every `self` but zero when `n < 0`).
     fn pow_int(&self, n: i64) -> Self;
     /// `self^e`, the general power `exp(e log self)`.
@@ -35,6 +37,11 @@ pub trait ExprValue: Clone {
     /// A value that contains the decimal `d` exactly, in the kind of `like`
     /// (a ball for ball types, the nearest double for `f64`).
     fn from_decimal(d: &Decimal, like: &Self) -> Self;
+}
+
+/// Whether `e` is the literal 1.
+fn is_one(e: &Expr) -> bool {
+    matches!(e, Expr::Number(d) if *d.as_rational() == 1)
 }
 
 /// `f(x)` through the methods of `x`'s type: `$sqrt`, `$log` and `$atan` name the
@@ -68,6 +75,7 @@ impl Expr {
             Expr::Add(a, b) => go(a).add(&go(b)),
             Expr::Sub(a, b) => go(a).sub(&go(b)),
             Expr::Mul(a, b) => go(a).mul(&go(b)),
+            Expr::Div(a, b) if is_one(a) => go(b).recip(),
             Expr::Div(a, b) => go(a).div(&go(b)),
             Expr::PowInt(a, n) => go(a).pow_int(*n),
             Expr::Pow(a, b) => go(a).pow(&go(b)),
@@ -99,6 +107,9 @@ impl ExprValue for f64 {
     }
     fn neg(&self) -> f64 {
         -self
+    }
+    fn recip(&self) -> f64 {
+        1.0 / self
     }
     fn pow_int(&self, n: i64) -> f64 {
         match i32::try_from(n) {
@@ -144,6 +155,9 @@ impl ExprValue for CBall {
     fn neg(&self) -> CBall {
         CBall::neg(self)
     }
+    fn recip(&self) -> CBall {
+        CBall::recip(self)
+    }
     fn pow_int(&self, n: i64) -> CBall {
         self.pow_i64(n)
     }
@@ -183,6 +197,9 @@ impl ExprValue for HoloBall {
     }
     fn neg(&self) -> HoloBall {
         -self
+    }
+    fn recip(&self) -> HoloBall {
+        HoloBall::recip(self)
     }
     fn pow_int(&self, n: i64) -> HoloBall {
         self.powi(n)

@@ -353,6 +353,7 @@ mod complex_balls {
             "x^(1/3) + x^-3 + pi",
             "x^x",
             "-x^2/(1 + x)",
+            "1/(2 + x) - 1.0/x",
         ] {
             let e = p(text);
             encloses(&e.eval(&x), e.eval_f64(x0), text);
