@@ -6,6 +6,7 @@
 //!   profile depth (Eq. 1).
 //! * [`wave_bounded`]: `u_w` and `du_w/dx` in f64 with a proven error bound.
 //! * [`wave_quadrature`]: the independent Eq. 11a quadrature route.
+//! * [`wave_certified`]: Eq. 11a and the traction integral as certified balls.
 //! * [`model`]: the normalised Maugis model at one contact size: the
 //!   adhesive-strip equation (15b corrected), its first root, the load (Eq. 14),
 //!   traction (Eq. 16), displacement, gap and the validity checks.
@@ -28,6 +29,7 @@
 pub mod displacement;
 pub mod wave_bounded;
 pub mod wave_quadrature;
+pub mod wave_certified;
 pub mod model;
 pub mod curve;
 pub mod limits;
