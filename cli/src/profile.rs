@@ -20,10 +20,13 @@ use serde::Serialize;
 
 use maugis::contact::displacement::profile_depth;
 use maugis::contact::model::{ContactSize, Params, Validity};
+use maugis::contact::model_mp::solve_m_mp;
+use maugis::contact::traction_mp::traction_mp;
 
 use maugis::contact::units::{Material, Scales};
 
 use crate::args::{self, num, short, Roughness, SiArgs};
+use crate::integrate::digits_for;
 use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
 use crate::plot::{clip_y, colour, plot_err, tick, Legend, DARK_GREY, LIGHT_GREY};
 
@@ -63,16 +66,25 @@ pub struct ProfileArgs {
     /// `files` (default) or `json` (print to stdout, write nothing).
     #[arg(long, value_name = "FORMAT", default_value = "files")]
     pub format: ProfileFormat,
+    /// Also the traction as certified balls at P bits (2..=1024): columns
+    /// pbar_mid, pbar_rad (CSV) or fields (JSON samples), with m certified too.
+    #[arg(long, value_name = "P", value_parser = clap::value_parser!(u32).range(2..=1024))]
+    pub prec: Option<u32>,
 }
 
 /// One sample of the profile.
-#[derive(Serialize, Clone, Copy)]
+#[derive(Serialize, Clone)]
 struct Sample {
     xbar: f64,
     pbar: f64,
     ubar: f64,
     gbar: f64,
     hbar: f64,
+    /// The certified traction (with `--prec`): midpoint and radius, decimal.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pbar_mid: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pbar_rad: Option<String>,
 }
 
 #[derive(Serialize)]
@@ -170,10 +182,24 @@ pub fn run(a: ProfileArgs) -> Result<(), String> {
     xs.push(c);
     xs.sort_by(f64::total_cmp);
     xs.dedup();
+    // --prec: m as a certified ball, then the traction at each point as a ball
+    let m_ball = match a.prec {
+        Some(p) => Some(solve_m_mp(params, abar, p).map_err(|e| format!("abar = {}: certified m: {e}", num(abar)))?),
+        None => None,
+    };
     let mut samples = Vec::with_capacity(xs.len());
     for &x in &xs {
         let e = |e: maugis::Error| format!("at xbar = {}: {e}", num(x));
+        let (pbar_mid, pbar_rad) = match (a.prec, &m_ball) {
+            (Some(p), Some(mb)) => {
+                let (mid, rad) = traction_mp(params, abar, mb, x, p).map_err(e)?.to_decimal(digits_for(p));
+                (Some(mid), Some(rad))
+            }
+            _ => (None, None),
+        };
         samples.push(Sample {
+            pbar_mid,
+            pbar_rad,
             xbar: x,
             pbar: cs.traction_at(strip, x),
             ubar: cs.displacement_at(strip, x).map_err(e)?,
@@ -216,12 +242,18 @@ pub fn run(a: ProfileArgs) -> Result<(), String> {
     if si.is_some() {
         header.extend(["x_m", "p_pa", "u_m", "g_m", "h_m"]);
     }
+    if a.prec.is_some() {
+        header.extend(["pbar_mid", "pbar_rad"]);
+    }
     w.write_record(&header).map_err(err)?;
     for s in &samples {
         let mut row = vec![s.xbar.to_string(), s.pbar.to_string(), s.ubar.to_string(), s.gbar.to_string(), s.hbar.to_string()];
         if let Some(r) = &si {
             let k = &r.scales;
             row.extend([k.to_horizontal(s.xbar), k.to_traction(s.pbar, lambda), k.to_vertical(s.ubar), k.to_vertical(s.gbar), k.to_vertical(s.hbar)].map(|v| v.to_string()));
+        }
+        if let (Some(mid), Some(rad)) = (&s.pbar_mid, &s.pbar_rad) {
+            row.extend([mid.clone(), rad.clone()]);
         }
         w.write_record(&row).map_err(err)?;
     }

@@ -7,6 +7,7 @@
 //! * [`wave_bounded`]: `u_w` and `du_w/dx` in f64 with a proven error bound.
 //! * [`wave_quadrature`]: the independent Eq. 11a quadrature route.
 //! * [`wave_certified`]: Eq. 11a and the traction integral as certified balls.
+//! * [`traction_mp`]: the traction (Eq. 16) as a certified ball.
 //! * [`model`]: the normalised Maugis model at one contact size: the
 //!   adhesive-strip equation (15b corrected), its first root, the load (Eq. 14),
 //!   traction (Eq. 16), displacement, gap and the validity checks.
@@ -30,6 +31,7 @@ pub mod displacement;
 pub mod wave_bounded;
 pub mod wave_quadrature;
 pub mod wave_certified;
+pub mod traction_mp;
 pub mod model;
 pub mod curve;
 pub mod limits;

@@ -26,26 +26,30 @@
 //! ln((r - cos th)/(1 - cos th)) = ln(rho + 2 s^2) - ln 2 - 2 ln s,   rho = r - 1 = (x - a)/a,
 //! ```
 //!
-//! so with the endpoint weight `(1 - s)^(1/2)` (from `sqrt(1 - s^2) = (1-s)^(1/2) (1+s)^(1/2)`):
+//! The range is split at `s = 3/4`; beyond it (`th` towards `pi`) the variable
+//! `v = cos(th/2)` (`cos th = 2 v^2 - 1`, `sin^2(th) dth = 8 v^2 sqrt(1 - v^2) dv`,
+//! `v in [0, sqrt(7)/4]`) keeps `sqrt(1 - v^2)` away from its branch point, so
 //!
 //! ```text
-//! 2 int_0^pi ... dth = 16 [ int_0^1 (1-s)^(1/2) ln(s) g1(s) ds + int_0^1 (1-s)^(1/2) g0(s) ds ],
-//! g1 = -2 s^2 sqrt(1+s) C,   g0 = s^2 sqrt(1+s) C (ln(rho + 2 s^2) - ln 2),
+//! 2 int_0^pi ... dth = 16 [ int_0^{3/4} s^2 ln(s) g1(s) ds + int_0^{3/4} g0(s) ds + int_0^{sqrt 7/4} h(v) dv ],
+//! g1 = -2 sqrt(1-s^2) C,   g0 = s^2 sqrt(1-s^2) C (ln(rho + 2 s^2) - ln 2),
+//! h  = v^2 sqrt(1-v^2) C ln((rho + 2 - 2 v^2)/(2 - 2 v^2)),
 //! ```
 //!
-//! both `g` analytic on a neighbourhood of `[0, 1]` for `x > a`: the logarithmic
-//! singularity at `th = 0` is the log weight (`k = 1`) of
-//! [`integrate_weighted`], and the square-root endpoint at `th = pi` (`s = 1`) its
-//! `beta = 1/2`; nothing is truncated by hand. The gradient kernel is
+//! `g1`, `g0`, `h` analytic on neighbourhoods of their ranges for `x > a`: the
+//! logarithmic singularity at `th = 0` is the weight `s^2 ln s` (`alpha = 2`,
+//! `k = 1`) of [`integrate_weighted`], certified without truncation; the `v` piece
+//! is mapped onto `[0, 3/4]` (`v = s sqrt(7)/3`) and shares one integral with `g0`.
+//! The gradient kernel, in the same two variables, is
 //!
 //! ```text
-//! 2 int_0^pi ... dth = 16 int_0^1 (1-s)^(1/2) cos(phi) s^2 sqrt(1+s) C / (eps + 2 s^2 cos(phi)) ds,
+//! 16 [ int_0^{3/4} cos(phi) s^2 sqrt(1-s^2) C / (eps + 2 s^2 cos(phi)) ds
+//!    + int_0^{sqrt 7/4} cos(phi) v^2 sqrt(1-v^2) C / (1 + cos(phi) - 2 v^2 cos(phi)) dv ],
 //! eps = 1 - cos(phi) = (x - a)/x,
 //! ```
 //!
 //! analytic for `x > a` (poles at `s = +-i sqrt(eps/(2 cos phi))`, resolved by
-//! bisection); at `x = a` exactly it is `s^2/(2 s^2) = 1/2` and the kernel is
-//! `sqrt(1+s) C / 2`.
+//! bisection); at `x = a` exactly `s^2/(2 s^2) = 1/2`.
 //!
 //! # Rigour of the outer integral
 //!
@@ -54,15 +58,20 @@
 //! `|J0 I|` on complex boxes around Bernstein ellipses: the inner integral is run
 //! with `t` the complex ball itself (a constant of the inner integrand), and since
 //! every inner evaluation encloses the integrand for every `t` in the box, the
-//! inner certified integral encloses `I(t)` for every `t` in the box. On wide boxes
-//! the inner goal is lowered to what the box allows (and escalation is off); the
-//! result is still an enclosure. An inner failure becomes the indeterminate ball,
+//! inner certified integral encloses `I(t)` for every `t` in the box. That is how
+//! the nodes (balls of radius about `2^-wp`) are evaluated. On the wide boxes of
+//! the Bernstein ellipses the integrand is bounded instead, without the complex
+//! Bessel function or the inner integral (both costly on a huge box): every kernel
+//! above is `>= 0`, `|c| <= 1` for the `cos((t - D) c)` factor, so
+//! `|J0(t) I(t)| <= e^|Im t| M cosh(|Im t|) <= M e^(2 |Im t|)` (DLMF 10.14.4) with
+//! `M` the inner integral at `t = D` (`C = 1`), itself a certified ball. An inner failure becomes the indeterminate ball,
 //! which the outer integrator treats as a point to bisect around (or reports).
 //! Inputs are balls (Arb's convention): `D`, `rho`, `cos(phi)` and `eps` are ball
 //! functions of them, and the endpoint `D` is a ball the integrator accounts for.
 //!
-//! Cost: about `D^2` inner evaluations at each outer node, so this route is for
-//! checking, not for production (`D <=` [`MAX_CERTIFIED_D`], `prec <=`
+//! Cost (64 bits, release): 0.05-1 s for `du_w/dx` and 0.5-10 s for `u_w` a point
+//! (`D` up to 75, `x/a` down to `1 + 1e-6`), so this route is for checking, not for
+//! production (`D <=` [`MAX_CERTIFIED_D`], `prec <=`
 //! [`MAX_CERTIFIED_PREC`]).
 //!
 //! References: the paper's Eq. 11a (and Eq. 11b / Eq. 12, which the tests
