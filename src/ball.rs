@@ -388,9 +388,22 @@ impl Ball {
         Ball { mid, rad }
     }
 
-    /// `self * self`.
+    /// `self * self`. For a wide ball (radius above `|mid|/16`) the square of the
+    /// interval itself: `[0, max|x|^2]` when it reaches zero, `[min|x|^2, max|x|^2]`
+    /// otherwise (the product rule `2|m|r + r^2` would reach below zero).
     pub fn sqr(&self) -> Ball {
-        self.mul(self)
+        if self.rad.is_zero() || !self.is_finite() || self.rad.le(&Mag::from_float_down(&self.mid).mul_2exp(-4)) {
+            return self.mul(self);
+        }
+        let p = self.prec();
+        let hi_abs = self.abs_upper_mag();
+        let hi = hi_abs.mul(hi_abs).to_float();
+        if self.contains_zero() {
+            return Ball::hull(&Float::with_val(MAG_PREC, 0), &hi, p);
+        }
+        let lo_abs = self.abs_lower_mag();
+        let lo = lo_abs.mul_lower(lo_abs).to_float();
+        Ball::hull(&lo, &hi, p)
     }
 
     /// `self * n` for an integer `n`.

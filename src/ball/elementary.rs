@@ -37,6 +37,10 @@ use rug::Float;
 use super::{rounding_error, Ball, Mag};
 
 /// The real ball "no information": NaN midpoint, infinite radius.
+/// Radius above which the monotone functions use their end values instead of a
+/// derivative bound at the midpoint (tighter, and sign-preserving, for wide balls).
+const WIDE: Mag = Mag::pow2_const(-8);
+
 pub(crate) fn nan_ball(prec: u32) -> Ball {
     Ball { mid: Float::with_val(prec, Special::Nan), rad: Mag::inf() }
 }
@@ -86,6 +90,16 @@ impl Ball {
         if !self.is_finite() {
             return nan_ball(p);
         }
+        if !self.rad.le(&WIDE) {
+            // A wide ball: exp is increasing, so the hull of the directed-rounded
+            // values at the ends (it stays positive, unlike mid +- |exp'| r).
+            let (lo, hi) = (self.lower(), self.upper());
+            let (a, b) = (Float::with_val_round(p, lo.exp_ref(), Round::Down).0, Float::with_val_round(p, hi.exp_ref(), Round::Up).0);
+            if !b.is_finite() {
+                return nan_ball(p);
+            }
+            return Ball::hull(&a, &b, p);
+        }
         let (y, ord) = Float::with_val_round(p, self.mid.exp_ref(), Round::Nearest);
         let err = mpfr_error(&y, ord);
         with_lipschitz(y.clone(), err, &y, self.rad)
@@ -96,6 +110,26 @@ impl Ball {
         let p = self.prec();
         if !self.is_finite() {
             return (nan_ball(p), nan_ball(p));
+        }
+        if !self.rad.le(&WIDE) {
+            // A wide ball: sinh is increasing and cosh increasing in |x|, so the hulls of
+            // directed-rounded end values (cosh stays >= 1 instead of dipping below 0).
+            let (lo, hi) = (self.lower(), self.upper());
+            let s_lo = Float::with_val_round(p, lo.sinh_ref(), Round::Down).0;
+            let s_hi = Float::with_val_round(p, hi.sinh_ref(), Round::Up).0;
+            let far = if lo.clone().abs() > hi.clone().abs() { lo.clone().abs() } else { hi.clone().abs() };
+            let c_hi = Float::with_val_round(p, far.cosh_ref(), Round::Up).0;
+            let c_lo = if lo.is_sign_positive() {
+                Float::with_val_round(p, lo.cosh_ref(), Round::Down).0
+            } else if hi.is_sign_negative() {
+                Float::with_val_round(p, hi.cosh_ref(), Round::Down).0
+            } else {
+                Float::with_val(p, 1)
+            };
+            if !s_lo.is_finite() || !s_hi.is_finite() || !c_hi.is_finite() {
+                return (nan_ball(p), nan_ball(p));
+            }
+            return (Ball::hull(&s_lo, &s_hi, p), Ball::hull(&c_lo, &c_hi, p));
         }
         let mut s = self.mid.clone();
         let mut c = Float::new(p);

@@ -57,6 +57,11 @@ impl Mag {
         }
     }
 
+    /// `2^e`, in constant context.
+    pub const fn pow2_const(e: i64) -> Mag {
+        Mag { man: 0.5, exp: e + 1 }
+    }
+
     /// `2^e`.
     pub fn pow2(e: i64) -> Mag {
         Mag { man: 0.5, exp: e + 1 }

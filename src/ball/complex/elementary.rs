@@ -255,6 +255,37 @@ impl CBall {
         CBall::new(b, a.neg())
     }
 
+    /// `sech z = 1/cosh z`; indeterminate where the rectangle reaches a pole.
+    ///
+    /// Where the real part keeps one sign, `sech z = 2 t / (1 + t^2)` with
+    /// `t = e^{-|Re| ...}`, i.e. `t = e^{-z}` for `Re z > 0` and `t = e^{z}` for
+    /// `Re z < 0` (DLMF 4.28.1, multiplied through): `|t| < 1` there, so the
+    /// denominator stays away from 0 even on rectangles whose imaginary side spans
+    /// several periods, where the rectangle of `cosh z` itself contains 0 (this is
+    /// what lets the integrator bound `sech` on wide ellipse boxes, as Arb's
+    /// `acb_sech` does).
+    pub fn sech(&self) -> CBall {
+        let p = self.prec();
+        if !self.is_finite() {
+            return CBall::indeterminate(p);
+        }
+        if self.is_real() {
+            let (_, c) = self.re.sinh_cosh();
+            return match c.recip() {
+                Ok(r) => finish(CBall::from_real(r), p),
+                Err(_) => CBall::indeterminate(p),
+            };
+        }
+        let t = if self.re.is_positive() {
+            self.neg().exp()
+        } else if self.re.is_negative() {
+            self.exp()
+        } else {
+            return self.cosh().recip();
+        };
+        finish(t.mul_pow2(1).div(&t.sqr().add(&CBall::one(p))), p)
+    }
+
     // ----- logarithm, square root, powers ---------------------------------
 
     /// `ln|z|` as a real ball (the rectangle must exclude 0).

@@ -248,9 +248,11 @@ impl CBall {
             return CBall { re: self.re.sqr(), im: Ball::zero(self.im.prec()) };
         }
         let (a, b) = (&self.re, &self.im);
-        // (a + ib)^2 = (a - b)(a + b) + 2iab: one product fewer, and no cancellation
-        // between a^2 and b^2 beyond what the exact value has.
-        CBall { re: a.sub(b).mul(&a.add(b)), im: a.mul(b).mul_pow2(1) }
+        // (a + ib)^2 = (a - b)(a + b) + 2iab for points: one product fewer, and no
+        // cancellation between a^2 and b^2 beyond what the exact value has. For wide
+        // rectangles a^2 - b^2 is tighter (each square sees its own dependency).
+        let re = if self.is_exact() { a.sub(b).mul(&a.add(b)) } else { a.sqr().sub(&b.sqr()) };
+        CBall { re, im: a.mul(b).mul_pow2(1) }
     }
 
     /// `|self|^2 = re^2 + im^2` as a real ball.

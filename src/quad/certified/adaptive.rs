@@ -139,67 +139,114 @@ fn exact_diff(lo: &Float, hi: &Float) -> Float {
     Float::with_val(p.min(crate::MAX_WORKING_PREC * 2), hi - lo)
 }
 
-/// Integrates over `[a, b]` (exact floats, `a < b`) to an absolute tolerance `tol`,
-/// at working precision `wp`.
-pub(crate) fn adaptive<F>(f: &mut Counted<'_, F>, a: &Float, b: &Float, wp: u32, tol: Mag, lim: RunLimits) -> Result<Outcome>
+/// The crude enclosure `(hi - lo) f([lo, hi])` of a piece (`None` where `f` is
+/// unbounded on the segment).
+fn crude<F>(f: &mut Counted<'_, F>, lo: &Float, hi: &Float, wp: u32) -> Option<CBall>
 where
     F: FnMut(&CBall, Mode) -> CBall,
 {
-    let total = Mag::from_float_down(&exact_diff(a, b));
-    let mut stack: Vec<(Float, Float, u32)> = vec![(a.clone(), b.clone(), 0)];
+    let width = exact_diff(lo, hi);
+    let seg = CBall::from_real(Ball::hull(lo, hi, wp));
+    let fv = f.eval(&seg, Mode::Point);
+    fv.is_finite().then(|| fv.mul_real(&Ball::from_float(&width, width.prec())))
+}
+
+/// A piece on the work stack, with its crude enclosure.
+struct Piece {
+    lo: Float,
+    hi: Float,
+    depth: u32,
+    crude: Option<CBall>,
+}
+
+impl Piece {
+    /// The radius of the crude enclosure (infinite without one): the work left.
+    fn open(&self) -> Mag {
+        self.crude.as_ref().map_or(Mag::inf(), |c| c.rad_mag())
+    }
+}
+
+/// Integrates over `[a, b]` (exact floats, `a < b`) at working precision `wp`.
+///
+/// The tolerance of every piece is `tol`, raised as the work goes to `2^-goal` times
+/// the largest magnitude (lower bound) of a piece's enclosure (Arb's rule: a piece
+/// never needs to be known better than the goal relative to the integral, and the
+/// integral is at least as large as... its pieces' sum, which the largest piece
+/// approximates). Of two halves, the one with more work left is done first, so large
+/// pieces raise the tolerance early. The sum of the pieces' errors can exceed one
+/// piece's tolerance; the driver checks the goal and retries with a smaller one.
+pub(crate) fn adaptive<F>(f: &mut Counted<'_, F>, a: &Float, b: &Float, wp: u32, tol: Mag, goal: i64, lim: RunLimits) -> Result<Outcome>
+where
+    F: FnMut(&CBall, Mode) -> CBall,
+{
+    let mut dyn_tol = tol;
+    let raise = |t: &mut Mag, v: &CBall| {
+        let m = v.abs_lower_mag().mul_2exp(-goal);
+        if t.le(&m) {
+            *t = m;
+        }
+    };
+    let first = crude(f, a, b, wp);
+    if let Some(c) = &first {
+        raise(&mut dyn_tol, c);
+    }
+    let mut stack = vec![Piece { lo: a.clone(), hi: b.clone(), depth: 0, crude: first }];
     let mut sum = CBall::zero(wp);
     let mut truncation = Mag::ZERO;
     let mut limit = None;
     let mut unbounded_near = None;
-    while let Some((lo, hi, depth)) = stack.pop() {
+    while let Some(piece) = stack.pop() {
         f.stats.subintervals += 1;
-        f.stats.max_depth = f.stats.max_depth.max(depth);
-        let width = exact_diff(&lo, &hi);
-        // The piece's share of the tolerance: proportional to its width, but never
-        // below 2^-10 of the whole, so that a long range whose integral lives in a
-        // small part (a cut-off tail) is not asked for absurd accuracy far out. More
-        // than 2^10 pieces at the floor can exceed `tol`; the driver then retries
-        // with a smaller one.
-        let share = Mag::from_float_down(&width).div(total.add(Mag::pow2(-100_000))).max(Mag::pow2(-10));
-        let piece_tol = tol.mul_lower(share);
+        f.stats.max_depth = f.stats.max_depth.max(piece.depth);
         let reached = if f.stats.evaluations >= lim.max_evaluations {
             Some(Limit::Evaluations)
-        } else if depth >= lim.max_depth {
+        } else if piece.depth >= lim.max_depth {
             Some(Limit::Depth)
         } else {
             None
         };
-        // 1. crude enclosure
-        let seg = CBall::from_real(Ball::hull(&lo, &hi, wp));
-        let fv = f.eval(&seg, Mode::Point);
-        if fv.is_finite() {
-            let crude = fv.mul_real(&Ball::from_float(&width, width.prec()));
-            if crude.rad_mag().le(&piece_tol) || reached.is_some() {
-                sum = sum.add(&crude);
+        // 1. the crude enclosure, when it is good enough (or a limit is reached)
+        match &piece.crude {
+            Some(c) if c.rad_mag().le(&dyn_tol) || reached.is_some() => {
+                sum = sum.add(c);
                 if reached.is_some() {
                     limit = reached;
                 }
                 continue;
             }
-        } else if reached.is_some() || width.is_zero() {
-            // Nothing bounds this piece: the integrand is unbounded (or not defined) on it.
-            limit = reached;
-            unbounded_near = Some(midpoint(&lo, &hi).to_f64());
-            sum = CBall::indeterminate(wp);
-            continue;
+            None if reached.is_some() || piece.lo == piece.hi => {
+                // Nothing bounds this piece: the integrand is unbounded (or not defined) on it.
+                limit = reached;
+                unbounded_near = Some(midpoint(&piece.lo, &piece.hi).to_f64());
+                sum = CBall::indeterminate(wp);
+                continue;
+            }
+            _ => {}
         }
-        if reached.is_none() {
-            // 2. Gauss-Legendre
-            if let Some((v, err)) = gauss_legendre_piece(f, &lo, &hi, wp, piece_tol, lim.max_degree)? {
+        // 2. Gauss-Legendre, where the integrand is bounded on the segment
+        if piece.crude.is_some() {
+            if let Some((v, err)) = gauss_legendre_piece(f, &piece.lo, &piece.hi, wp, dyn_tol, lim.max_degree)? {
+                raise(&mut dyn_tol, &v);
                 sum = sum.add(&v);
                 truncation = truncation.add(err);
                 continue;
             }
         }
-        // 3. bisect
-        let mid = midpoint(&lo, &hi);
-        stack.push((mid.clone(), hi, depth + 1));
-        stack.push((lo, mid, depth + 1));
+        // 3. bisect, the half with more work left on top
+        let mid = midpoint(&piece.lo, &piece.hi);
+        let (cl, cr) = (crude(f, &piece.lo, &mid, wp), crude(f, &mid, &piece.hi, wp));
+        for c in [&cl, &cr].into_iter().flatten() {
+            raise(&mut dyn_tol, c);
+        }
+        let left = Piece { lo: piece.lo, hi: mid.clone(), depth: piece.depth + 1, crude: cl };
+        let right = Piece { lo: mid, hi: piece.hi, depth: piece.depth + 1, crude: cr };
+        if left.open().le(&right.open()) {
+            stack.push(left);
+            stack.push(right);
+        } else {
+            stack.push(right);
+            stack.push(left);
+        }
     }
     Ok(Outcome { value: sum, truncation, limit, unbounded_near })
 }

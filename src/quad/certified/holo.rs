@@ -186,6 +186,11 @@ impl HoloBall {
         /// Hyperbolic tangent (poles where `cosh` vanishes).
         tanh
     );
+    entire_function!(
+        /// Hyperbolic secant `1/cosh` (poles where `cosh` vanishes), enclosed
+        /// tightly on rectangles far from the imaginary axis.
+        sech
+    );
 
     /// The Bessel function `J_n(self)`, entire for integer `n`.
     pub fn besselj(&self, n: i64) -> HoloBall {
