@@ -12,7 +12,11 @@
 //!   stretches solid, invalid ones faded), and the load-controlled path of each
 //!   leg as a line (its jumps dashed).
 //!
-//! `--format json` writes no file and prints one JSON object. Bad input exits
+//! `--format json` writes no file and prints one JSON object, with
+//! `"dissipation": {"load_control": W, "displacement_control": W_d, "datum": ..}`,
+//! W of the closed in-contact cycle as the model's curve defines it
+//! (`maugis_solver::dissipation`), and `stiff_cycle_work`, the work
+//! `oint L dDelta` of the simulated stiff-machine cycle (not W). Bad input exits
 //! with code 2 before any work.
 
 use std::fmt::Write as _;
@@ -112,8 +116,8 @@ pub fn run(a: SimulateArgs) -> Result<(), String> {
     let files = [OutFile::text("simulate.csv", csv), OutFile::text("simulate.svg", svg)];
     let written = write_atomically(&a.out, &files)?;
     let mut text = format!(
-        "maugis simulate: lambda {}, alpha {}, beta {}, {} cells on [-{}, {}], {} states, dissipated work {}, \
-         load-controlled pull-off {}\n",
+        "maugis simulate: lambda {}, alpha {}, beta {}, {} cells on [-{}, {}], {} states, dissipation W {} (load control), \
+         W_d {} (displacement control, datum {}), stiff-cycle work {}, load-controlled pull-off {}\n",
         short(a.lambda),
         short(a.alpha),
         short(a.beta),
@@ -121,7 +125,10 @@ pub fn run(a: SimulateArgs) -> Result<(), String> {
         short(x),
         short(x),
         all.len(),
-        short(c.dissipated),
+        report.dissipation.as_ref().map(|d| short(d.load_control)).unwrap_or_else(|| "none".into()),
+        report.dissipation.as_ref().map(|d| short(d.displacement_control)).unwrap_or_else(|| "none".into()),
+        report.dissipation.as_ref().map(|d| short(d.datum)).unwrap_or_else(|| "none".into()),
+        short(c.stiff_work),
         report.pull_off.map(short).unwrap_or_else(|| "none".into())
     );
     for p in written {

@@ -64,6 +64,14 @@ fn json_carries_the_load_controlled_path_and_pull_off() {
     let min_unloading = states.iter().filter(|s| s["leg"] == "unloading").map(|s| s["load"].as_f64().unwrap()).fold(f64::INFINITY, f64::min);
     assert!(pull_off < 0.0 && pull_off == min_unloading, "{pull_off} {min_unloading}");
     assert!(on_path.iter().any(|s| s["load"].as_f64() == Some(pull_off)));
+    // W of the closed in-contact cycle with the curve's keys (0 for the smooth
+    // cylinder), next to the stiff-machine work, which is not W.
+    let d = &v["dissipation"];
+    let (w, wd) = (d["load_control"].as_f64().expect("W"), d["displacement_control"].as_f64().expect("W_d"));
+    assert!(w.abs() <= 0.02 && wd.abs() <= 0.02, "W {w}, W_d {wd}");
+    assert_eq!(d["datum"].as_f64(), Some(100.0));
+    assert!(v["stiff_cycle_work"].as_f64().expect("stiff_cycle_work") > 0.1);
+    assert!(v.get("dissipated").is_none());
 }
 
 #[test]

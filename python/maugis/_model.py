@@ -236,7 +236,11 @@ def simulate(lam, alpha=FIG4C_ALPHA, beta=FIG4C_BETA, *, amax=4.0, cells=4096, s
 
     ``cells`` is the grid (a power of two), ``steps`` the approach steps per
     leg. Returns a :class:`Record` with ``lambda``, ``alpha``, ``beta``,
-    ``cells``, ``half_width``, ``datum``, ``dissipated``, ``pull_off`` (the most
+    ``cells``, ``half_width``, ``datum``, ``stiff_cycle_work`` (``oint L dDelta``
+    of the simulated stiff-machine cycle, not the dissipation),
+    ``dissipation`` (``load_control``, ``displacement_control``, ``datum``, ...:
+    W of the closed in-contact cycle, as ``curve(...).dissipation``; ``None``
+    with fewer than two states in contact), ``pull_off`` (the most
     tensile load under load control) and ``states``: a :class:`Table` with
     ``leg``, ``approach``, ``abar``, ``load``, ``contact_intervals``,
     ``zone_cells``, ``model_load`` and ``model_valid`` (``None`` where the model

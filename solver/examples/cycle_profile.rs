@@ -43,7 +43,7 @@ fn main() {
             }
         }
     }
-    println!("max |L - L_model| on valid single-interval states: {worst:.4e}; dissipated {:.5}", c.dissipated);
+    println!("max |L - L_model| on valid single-interval states: {worst:.4e}; stiff-cycle work {:.5}", c.stiff_work);
     let datum = s.datum();
     if std::env::var("VERBOSE").is_ok() {
         for s in &all {

@@ -20,8 +20,11 @@
 //! * [`profile::Profile`], [`profile::Adhesion`]: the geometry and the law;
 //! * [`contact::ContactSolver`]: one equilibrium at a given approach
 //!   (Polonsky-Keer CG inside a Dugdale-zone fixed point), warm-started;
-//! * [`path`]: displacement-controlled loading and unloading, the cycle's
-//!   dissipated work, and the comparison with the semi-analytical curve;
+//! * [`path`]: displacement-controlled loading and unloading, the work of the
+//!   stiff-machine cycle, and the comparison with the semi-analytical curve;
+//! * [`dissipation`]: W of the closed in-contact cycle under load and
+//!   displacement control, measured on a simulated cycle as the library
+//!   measures it on the model;
 //! * [`run::simulate`]: one cycle from `(lambda, alpha, beta)`, set up as
 //!   `maugis simulate` and the Python package run it.
 //!
@@ -37,6 +40,7 @@
 //! Method, validation and the mesh-convergence study: `docs/solver.md`.
 
 pub mod contact;
+pub mod dissipation;
 pub mod elastic;
 pub mod error;
 pub mod grid;

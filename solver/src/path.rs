@@ -18,14 +18,15 @@
 //! leg of the displacement-controlled cycle: the states with
 //! `dLbar/dDelta > 0`, the jumps between them and the pull-off load.
 //!
-//! # Dissipated work
+//! # Work of the stiff-machine cycle
 //!
-//! [`Cycle::dissipated`] is the work of the displacement-controlled cycle,
-//! `oint Lbar dDelta` (trapezoidal rule over both legs). It is datum-free: the
-//! datum shifts `Delta` by a multiple of `Lbar`, which integrates to zero around
-//! a closed loop. It is the work lost in the jumps under a stiff machine, not the
-//! load-controlled hysteresis `W` of the semi-analytical curve, which has
-//! different jumps.
+//! [`Cycle::stiff_work`] is the work of the displacement-controlled cycle as
+//! simulated, `oint Lbar dDelta` (trapezoidal rule over both legs), from out of
+//! contact back to out of contact. It is datum-free: the datum shifts `Delta` by
+//! a multiple of `Lbar`, which integrates to zero around a closed loop. It is
+//! the work lost in the jumps of a stiff machine over the first cycle (snap-in
+//! and the separation past pull-off included), not the dissipation W of the
+//! model's closed in-contact cycle: that is [`crate::dissipation`].
 
 use maugis::contact::curve::state as model_state;
 use maugis::contact::model::{ContactSize, Params};
@@ -57,8 +58,10 @@ pub struct Cycle {
     pub unloading: Vec<State>,
     /// Approach step.
     pub step: f64,
-    /// `oint Lbar dDelta` over the cycle (see the module docs).
-    pub dissipated: f64,
+    /// `oint Lbar dDelta` over the simulated stiff-machine cycle, from out of
+    /// contact back to out of contact (see the module docs); not the model's W,
+    /// which [`crate::dissipation`] measures.
+    pub stiff_work: f64,
 }
 
 /// Most steps a leg may take, as a multiple of `steps_per_leg` (the Hertz
@@ -127,13 +130,13 @@ pub fn cycle(solver: &mut ContactSolver, opts: CycleOptions, progress: &mut dyn 
     // Close the loop: unloading starts at the last loading state.
     let mut back = vec![loading[top].clone()];
     back.extend(unloading.iter().cloned());
-    let mut dissipated = work(&loading) + work(&back);
+    let mut stiff_work = work(&loading) + work(&back);
     // Both legs end without load; if unloading stopped below the start, the
     // unloaded stretch carries no load and adds nothing.
-    if !dissipated.is_finite() {
-        dissipated = f64::NAN;
+    if !stiff_work.is_finite() {
+        stiff_work = f64::NAN;
     }
-    Ok(Cycle { loading, unloading, step, dissipated })
+    Ok(Cycle { loading, unloading, step, stiff_work })
 }
 
 /// Direction of the load under load control.

@@ -8,9 +8,11 @@
 //! [`cycle`], and compares every state with the semi-analytical load at the
 //! same contact half-width ([`compare_with_model`]).
 
+use maugis::contact::curve::DEFAULT_DATUM;
 use maugis::contact::model::Params;
 
 use crate::contact::{ContactSolver, SolveOptions, State};
+use crate::dissipation::{cycle_dissipation, CycleDissipation};
 use crate::error::{Result, SolverError};
 use crate::grid::Grid;
 use crate::path::{
@@ -72,6 +74,15 @@ impl Simulation {
         (loading, load_controlled(&back, LoadDirection::Decreasing))
     }
 
+    /// W of the closed in-contact cycle under load control and under
+    /// displacement control at the model's default datum
+    /// ([`DEFAULT_DATUM`], 100 `l_h`), measured as the library measures it on
+    /// the model ([`crate::dissipation`]), so the two compare point by point.
+    /// Errors when the cycle has fewer than two states in contact.
+    pub fn dissipation(&self) -> Result<CycleDissipation> {
+        cycle_dissipation(&self.cycle, self.datum, DEFAULT_DATUM)
+    }
+
     /// The run as a flat report: the object `maugis simulate --format json`
     /// prints and the Python package returns.
     pub fn report(&self) -> SimulationReport {
@@ -105,7 +116,15 @@ impl Simulation {
             cells: self.spec.cells,
             half_width: self.half_width,
             datum: self.datum,
-            dissipated: self.cycle.dissipated,
+            stiff_cycle_work: self.cycle.stiff_work,
+            dissipation: self.dissipation().ok().map(|d| DissipationRecord {
+                load_control: d.load_control.dissipation.total,
+                displacement_control: d.displacement_control.dissipation.total,
+                datum: d.displacement_control.datum,
+                load_control_cavitated: d.load_control.dissipation.invalid,
+                displacement_control_cavitated: d.displacement_control.dissipation.invalid,
+                single_interval: d.load_control.single_interval,
+            }),
             pull_off: lc_unloading.pull_off.map(|(_, load)| load),
             states,
         }
@@ -143,6 +162,26 @@ pub struct StateRecord {
     pub zone_ends_placed: bool,
 }
 
+/// W of a simulated cycle ([`Simulation::dissipation`]), in units of
+/// `dgamma l_h` per unit length.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct DissipationRecord {
+    /// W under load control.
+    pub load_control: f64,
+    /// W_d under displacement control at `datum`.
+    pub displacement_control: f64,
+    /// The datum of displacement control (model convention, units of `l_h`).
+    pub datum: f64,
+    /// The part of `load_control` from loops through cavitated states.
+    pub load_control_cavitated: f64,
+    /// The part of `displacement_control` from loops through cavitated states.
+    pub displacement_control_cavitated: f64,
+    /// Every state had at most one contact interval; otherwise W is an
+    /// estimate (states of different branches ordered by `abar` together).
+    pub single_interval: bool,
+}
+
 /// A simulated cycle as a flat report.
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
@@ -159,8 +198,12 @@ pub struct SimulationReport {
     pub half_width: f64,
     /// Datum of the approach.
     pub datum: f64,
-    /// `oint Lbar dDelta` over the cycle.
-    pub dissipated: f64,
+    /// `oint Lbar dDelta` over the simulated stiff-machine cycle, from out of
+    /// contact back to out of contact ([`Cycle::stiff_work`]); not W.
+    pub stiff_cycle_work: f64,
+    /// W of the closed in-contact cycle ([`Simulation::dissipation`]), with the
+    /// keys of the model's curve; `None` when fewer than two states are in contact.
+    pub dissipation: Option<DissipationRecord>,
     /// The pull-off load under load control (the most tensile load of the
     /// unloading leg), if the unloading leg carries tension.
     pub pull_off: Option<f64>,

@@ -1,0 +1,382 @@
+//! The energy dissipated per cycle, measured on a simulated cycle with the
+//! library's definition for the semi-analytical model (the **closed in-contact
+//! cycle** of `maugis::contact::paths`), so that the two are comparable.
+//!
+//! # Definition
+//!
+//! The library defines W on the load-area curve: unload from the largest
+//! contact to the end of unloading (pull-off under load control), reload from
+//! that state back to the largest contact, and take the area the two paths
+//! enclose in the `(Delta, Lbar)` plane:
+//!
+//! ```text
+//! load control:          W   = int (Delta_unload(L) - Delta_reload(L)) dL
+//! displacement control:  W_d = int (L_reload(Delta_d) - L_unload(Delta_d)) dDelta_d
+//! ```
+//!
+//! with `Delta_d = Delta + (2 Lbar/pi) ln x_d` the approach at the machine's
+//! datum `x_d` (the model's default is `maugis::contact::curve::DEFAULT_DATUM`,
+//! 100 `l_h`).
+//!
+//! # On a simulated cycle
+//!
+//! [`closed_cycle`] takes the in-contact states of both legs of a
+//! displacement-controlled [`Cycle`] (`abar > 0`), puts their approach on the
+//! model's datum ([`approach_on_model_datum`]), orders them by `abar`, and walks
+//! them as the library walks its curve: unloading from the largest contact down
+//! the running minimum of the controlled variable, a jump at each local minimum
+//! to the first smaller contact at the same level, the end of unloading at the
+//! first minimum without such a state; then reloading from that end up the
+//! running maximum. The turning points are the simulated states (the
+//! library refines them on the model) and jump targets are interpolated
+//! linearly between the two states that bracket the level. The loops and their
+//! areas are then computed by the library's own
+//! [`loops_and_dissipation`], so the integration is the model's.
+//!
+//! The stiff machine of the simulation (datum `L_d = 2X`) jumps over the
+//! stretches where `Delta` falls with `abar`, and the two legs jump over
+//! different stretches; the soft paths of W (load control, or a datum of 100
+//! `l_h`) jump over wider stretches, so the states they visit and their
+//! turning points lie on the visited stretches, within one approach step.
+//!
+//! A state is *valid* when it has at most one contact interval; loops through
+//! cavitated states count in [`Dissipation::invalid`]. With cavitation, states
+//! of different branches can share an `abar`, and their order by `abar` mixes
+//! the branches: W is then only an estimate ([`ClosedCycle::single_interval`]
+//! says whether every state had one contact interval).
+//!
+//! This is not [`Cycle::stiff_work`], the work `oint Lbar dDelta` of the
+//! stiff-machine cycle from out of contact back to out of contact (12.02 against
+//! W = 4.51 at lambda = 6, amax = 6, Fig. 4c roughness).
+
+use maugis::contact::paths::{
+    loops_and_dissipation, Control, Dissipation, Driver, HysteresisLoop, PathNode,
+};
+
+use crate::contact::State;
+use crate::error::{finite, Result, SolverError};
+use crate::path::{approach_on_model_datum, Cycle};
+
+/// Relative difference in `abar` and in the load below which two simulated
+/// states are the same state (the legs reach the states a stiff machine
+/// visits both ways at approaches equal up to rounding).
+const SAME_STATE: f64 = 1e-7;
+
+/// The closed in-contact cycle of a simulated cycle under one kind of control.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ClosedCycle {
+    /// The controlled variable.
+    pub control: Control,
+    /// The datum `x_d` of displacement control (1 under load control), on the
+    /// model's convention (`Delta_d = Delta_model + (2 Lbar/pi) ln x_d`).
+    pub datum: f64,
+    /// The unloading path, from the largest contact, by decreasing contact
+    /// (approach on the model's datum).
+    pub unloading: Vec<PathNode>,
+    /// The end of unloading (pull-off under load control).
+    pub end: PathNode,
+    /// The end of unloading is the smallest simulated contact, not a minimum of
+    /// the controlled variable: the true end may lie below it.
+    pub end_at_edge: bool,
+    /// The reloading path, from `end` to the largest contact.
+    pub reloading: Vec<PathNode>,
+    /// Reloading stopped at a maximum with no larger contact at its level
+    /// (the cycle does not close; the library then reports no loops).
+    pub reloading_truncated: bool,
+    /// The hysteresis loops, by increasing controlled variable.
+    pub loops: Vec<HysteresisLoop>,
+    /// Their dissipation (units of `dgamma l_h` per unit length); `invalid`:
+    /// loops through cavitated states.
+    pub dissipation: Dissipation,
+    /// Every state of the cycle had at most one contact interval (otherwise
+    /// the ordering by `abar` may mix branches, see the module docs).
+    pub single_interval: bool,
+}
+
+/// W under load control and under displacement control at one datum.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CycleDissipation {
+    /// Load control.
+    pub load_control: ClosedCycle,
+    /// Displacement control at `displacement_control.datum`.
+    pub displacement_control: ClosedCycle,
+}
+
+/// The closed in-contact cycle of `cycle` under `driver` (the library's
+/// [`Driver`]: `Driver::load()` or `Driver::displacement(x_d)` on the model's
+/// datum). `solver_datum` is the datum the cycle was simulated with
+/// ([`crate::contact::ContactSolver::datum`], [`crate::run::Simulation::datum`]).
+///
+/// Errors: a non-finite or non-positive `solver_datum`, fewer than two
+/// in-contact states, or a state with a non-finite load or approach
+/// ([`SolverError::Domain`]).
+pub fn closed_cycle(cycle: &Cycle, solver_datum: f64, driver: Driver) -> Result<ClosedCycle> {
+    finite(solver_datum, "solver datum")?;
+    if solver_datum <= 0.0 {
+        return Err(SolverError::Domain {
+            what: format!("the solver datum must be > 0 (got {solver_datum})"),
+        });
+    }
+    let states: Vec<&State> = cycle
+        .loading
+        .iter()
+        .chain(&cycle.unloading)
+        .filter(|s| s.abar > 0.0)
+        .collect();
+    if states.len() < 2 {
+        return Err(SolverError::Domain {
+            what: format!(
+                "the dissipation needs at least 2 states in contact (the cycle has {})",
+                states.len()
+            ),
+        });
+    }
+    let mut pts = Vec::with_capacity(states.len());
+    for s in &states {
+        if !(s.load.is_finite() && s.approach.is_finite() && s.abar.is_finite()) {
+            return Err(SolverError::Domain {
+                what: format!(
+                    "a state has a non-finite load or approach (abar {}, load {}, approach {})",
+                    s.abar, s.load, s.approach
+                ),
+            });
+        }
+        pts.push(PathNode {
+            abar: s.abar,
+            load: s.load,
+            approach: approach_on_model_datum(s.approach, s.load, solver_datum),
+            valid: s.contact_intervals() <= 1,
+        });
+    }
+    pts.sort_by(|p, q| p.abar.total_cmp(&q.abar));
+    // Both legs visit the states a stiff machine reaches either way (at
+    // approaches equal up to rounding): keep one.
+    pts.dedup_by(|q, p| {
+        (q.abar - p.abar).abs() <= SAME_STATE * p.abar.abs().max(1.0)
+            && (q.load - p.load).abs() <= SAME_STATE * p.load.abs().max(1.0)
+    });
+    let single_interval = pts.iter().all(|p| p.valid);
+    let y = |p: &PathNode| driver.value((p.load, p.approach));
+    let n = pts.len();
+
+    // Unloading: running minimum of y from the largest contact. `at`: the
+    // index in `pts` of the path's last node, when it is a simulated state.
+    let mut levels = Vec::new();
+    let mut unloading = vec![pts[n - 1]];
+    // `run`: how many of the path's last nodes are consecutive simulated states.
+    let mut run = 1;
+    let mut end = None;
+    let mut k = n - 1;
+    while k > 0 {
+        k -= 1;
+        let last = unloading[unloading.len() - 1];
+        if y(&pts[k]) <= y(&last) {
+            unloading.push(pts[k]);
+            run += 1;
+            continue;
+        }
+        // `last` (pts[k + 1]) is a minimum: refine it, then jump down to the
+        // first smaller contact at its level.
+        let refined = if run >= 3 {
+            refine_extremum(
+                driver,
+                [pts[k + 3], pts[k + 2], pts[k + 1]],
+                pts[k].abar,
+                -1.0,
+            )
+        } else {
+            None
+        };
+        let from = match refined {
+            Some(r) => {
+                unloading.pop();
+                unloading.push(r);
+                r
+            }
+            None => last,
+        };
+        let level = y(&from);
+        match (0..=k).rev().find(|&j| y(&pts[j]) <= level) {
+            Some(j) => {
+                levels.push(level);
+                unloading.push(interpolate(driver, pts[j], pts[j + 1], level));
+                run = 0;
+                k = j + 1; // pts[j] is next
+            }
+            None => {
+                end = Some(from);
+                break;
+            }
+        }
+    }
+    let (end, end_at_edge) = match end {
+        Some(e) => (e, false),
+        None => (unloading[unloading.len() - 1], true),
+    };
+
+    // Reloading: running maximum of y from the end of unloading.
+    let mut reloading = vec![end];
+    let mut run = 0;
+    let mut truncated = false;
+    let mut i = pts.partition_point(|p| p.abar <= end.abar);
+    while i < n {
+        let last = reloading[reloading.len() - 1];
+        if y(&pts[i]) >= y(&last) {
+            reloading.push(pts[i]);
+            run += 1;
+            i += 1;
+            continue;
+        }
+        // `last` (pts[i - 1]) is a maximum: refine it, then jump up to the
+        // first larger contact at its level.
+        let refined = if run >= 3 {
+            refine_extremum(
+                driver,
+                [pts[i - 3], pts[i - 2], pts[i - 1]],
+                pts[i].abar,
+                1.0,
+            )
+        } else {
+            None
+        };
+        let from = match refined {
+            Some(r) => {
+                reloading.pop();
+                reloading.push(r);
+                r
+            }
+            None => last,
+        };
+        let level = y(&from);
+        match (i..n).find(|&j| y(&pts[j]) >= level) {
+            Some(j) => {
+                levels.push(level);
+                reloading.push(interpolate(driver, pts[j - 1], pts[j], level));
+                run = 0;
+                i = j;
+            }
+            None => {
+                truncated = true;
+                break;
+            }
+        }
+    }
+    let (loops, dissipation) =
+        loops_and_dissipation(driver, &reloading, &unloading, &levels, truncated);
+    Ok(ClosedCycle {
+        control: driver.control,
+        datum: driver.ln_datum.exp(),
+        unloading,
+        end,
+        end_at_edge,
+        reloading,
+        reloading_truncated: truncated,
+        loops,
+        dissipation,
+        single_interval,
+    })
+}
+
+/// The state between `a` and `b` where the controlled variable is `level`
+/// (linear in the controlled variable; `level` lies between the two values).
+fn interpolate(driver: Driver, a: PathNode, b: PathNode, level: f64) -> PathNode {
+    let (ya, yb) = (
+        driver.value((a.load, a.approach)),
+        driver.value((b.load, b.approach)),
+    );
+    let t = if yb != ya {
+        ((level - ya) / (yb - ya)).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let lin = |u: f64, v: f64| u + t * (v - u);
+    let mut n = PathNode {
+        abar: lin(a.abar, b.abar),
+        load: lin(a.load, b.load),
+        approach: lin(a.approach, b.approach),
+        valid: if t < 0.5 { a.valid } else { b.valid },
+    };
+    // A jump is at a constant controlled variable: pin it.
+    match driver.control {
+        Control::Load => n.load = level,
+        Control::Displacement => {
+            n.approach = level - 2.0 * n.load / std::f64::consts::PI * driver.ln_datum
+        }
+    }
+    n
+}
+
+/// The extremum (`sign = 1`: maximum, `-1`: minimum) of the controlled
+/// variable at the end of a path's stretch `q = [q0, q1, q2]`: three
+/// consecutive simulated states along the path, `q2` the turning state, and
+/// `next` the `abar` of the state after it (where the controlled variable has
+/// turned back). The load-area curve is smooth in `abar`, but a leg of the
+/// stiff machine often stops at or just past the soft machine's turning point
+/// (its own fold is near), so the states on the far side can lie across an
+/// unvisited stretch: the parabola in `abar` is fitted on the visited side
+/// only, and its vertex may lie up to two spacings beyond `q2` (not past
+/// `next`). The load and the approach are taken on the same parabola. `None`
+/// when the two spacings differ by more than a factor 4, the parabola does not turn the right
+/// way, the vertex is out of that range, or it does not improve on `q2`.
+fn refine_extremum(driver: Driver, q: [PathNode; 3], next: f64, sign: f64) -> Option<PathNode> {
+    let [p0, p1, p2] = q;
+    let (x0, x1, x2) = (p0.abar, p1.abar, p2.abar);
+    let h = x2 - x1;
+    // Spacings of one sign and comparable size (a parabola through two close
+    // states and a far one amplifies their noise).
+    let h0 = x1 - x0;
+    if !(h * h0 > 0.0 && h / h0 <= 4.0 && h0 / h <= 4.0) {
+        return None;
+    }
+    let y = |p: &PathNode| driver.value((p.load, p.approach));
+    let (y0, y1, y2) = (y(&p0), y(&p1), y(&p2));
+    let d01 = (y1 - y0) / (x1 - x0);
+    let d12 = (y2 - y1) / (x2 - x1);
+    let c2 = (d12 - d01) / (x2 - x0);
+    if !(sign * c2 < 0.0) {
+        return None;
+    }
+    // y(x) = y0 + d01 (x - x0) + c2 (x - x0)(x - x1); y'(xs) = 0.
+    let xs = 0.5 * (x0 + x1) - d01 / (2.0 * c2);
+    // Between q1 and q2 + 2h, short of `next` (h may be negative: unloading).
+    let (lo, hi) = if h > 0.0 {
+        (x1, (x2 + 2.0 * h).min(next))
+    } else {
+        ((x2 + 2.0 * h).max(next), x1)
+    };
+    if !(xs > lo && xs < hi) {
+        return None;
+    }
+    let quad = |f0: f64, f1: f64, f2: f64| {
+        let (e01, e12) = ((f1 - f0) / (x1 - x0), (f2 - f1) / (x2 - x1));
+        f0 + e01 * (xs - x0) + (e12 - e01) / (x2 - x0) * (xs - x0) * (xs - x1)
+    };
+    let r = PathNode {
+        abar: xs,
+        load: quad(p0.load, p1.load, p2.load),
+        approach: quad(p0.approach, p1.approach, p2.approach),
+        valid: p0.valid && p1.valid && p2.valid,
+    };
+    (sign * (y(&r) - y2) >= 0.0 && y(&r).is_finite()).then_some(r)
+}
+
+/// W under load control and under displacement control at the datum
+/// `displacement_datum` (model convention, `x_d > 0`; the model's curves use
+/// `maugis::contact::curve::DEFAULT_DATUM`).
+pub fn cycle_dissipation(
+    cycle: &Cycle,
+    solver_datum: f64,
+    displacement_datum: f64,
+) -> Result<CycleDissipation> {
+    let mut displacement_control = closed_cycle(
+        cycle,
+        solver_datum,
+        Driver::displacement(displacement_datum)?,
+    )?;
+    // As given, not exp(ln x_d).
+    displacement_control.datum = displacement_datum;
+    Ok(CycleDissipation {
+        load_control: closed_cycle(cycle, solver_datum, Driver::load())?,
+        displacement_control,
+    })
+}

@@ -1,0 +1,131 @@
+//! W of the closed in-contact cycle measured on a simulated cycle
+//! (`maugis_solver::dissipation`) against the semi-analytical model's W
+//! (`maugis::contact::paths`, the same definition) where the model is valid
+//! along the whole cycle: the Fig. 4c roughness (alpha = 2 sqrt(2)/8,
+//! beta = 9/8) at lambda = 3 and 6, and the smooth cylinder at lambda = 1,
+//! amax = 6. Tolerance (issue 24): 2 % of the model's W, or 0.02 where W is
+//! near 0 (the smooth cylinder, W = 0).
+//!
+//! Resolution: 4096 cells and 400 approach steps per leg. The steps, not the
+//! cells, set the error: W is made by the turning points of the load (and of
+//! `Delta_d`), which the stiff machine samples once per step. At 400 steps
+//! the measured differences are -0.04 % (W) and -0.64 % (W_d) at lambda = 3,
+//! -0.16 % and -0.80 % at lambda = 6; at 100 steps W_d misses by 7.6 % at
+//! lambda = 3 (checked below, so the tolerance bites). The smooth cylinder has
+//! no fold to resolve: 100 steps.
+
+use maugis::contact::curve::{load_area_curve, CurveOptions};
+use maugis::contact::model::Params;
+use maugis_solver::run::{simulate, SimulationSpec};
+
+const FIG4C_ALPHA: f64 = std::f64::consts::SQRT_2 / 4.0;
+const FIG4C_BETA: f64 = 1.125;
+const AMAX: f64 = 6.0;
+/// Relative tolerance on W where W is not near 0.
+const REL_TOL: f64 = 0.02;
+/// Absolute tolerance where W is near 0.
+const ABS_TOL: f64 = 0.02;
+
+/// (solver W, solver W_d, model W, model W_d).
+fn both(lambda: f64, alpha: f64, steps: usize) -> (f64, f64, f64, f64) {
+    let spec = SimulationSpec {
+        lambda,
+        alpha,
+        beta: FIG4C_BETA,
+        amax: AMAX,
+        cells: 4096,
+        steps_per_leg: steps,
+    };
+    let sim = simulate(spec, &mut |_, _| {}).unwrap();
+    let d = sim.dissipation().unwrap();
+    assert!(
+        d.load_control.single_interval,
+        "lambda {lambda}: a cavitated state"
+    );
+    assert!(!d.load_control.reloading_truncated && !d.displacement_control.reloading_truncated);
+    let curve = load_area_curve(
+        Params::new(lambda, alpha, FIG4C_BETA).unwrap(),
+        CurveOptions {
+            amax: AMAX,
+            ..CurveOptions::default()
+        },
+    )
+    .unwrap();
+    // The model is valid along the whole cycle: every loop it counts is valid.
+    for c in [&curve.load_control, &curve.displacement_control] {
+        assert_eq!(
+            c.dissipation.invalid, 0.0,
+            "lambda {lambda}: the model has invalid loops"
+        );
+    }
+    (
+        d.load_control.dissipation.total,
+        d.displacement_control.dissipation.total,
+        curve.load_control.dissipation.total,
+        curve.displacement_control.dissipation.total,
+    )
+}
+
+fn agrees(solver: f64, model: f64) -> bool {
+    if model.abs() < 1.0 {
+        (solver - model).abs() <= ABS_TOL
+    } else {
+        (solver - model).abs() <= REL_TOL * model.abs()
+    }
+}
+
+fn check(lambda: f64, alpha: f64, steps: usize) {
+    let (w, wd, mw, mwd) = both(lambda, alpha, steps);
+    eprintln!("lambda {lambda} alpha {alpha}: W {w} (model {mw}), W_d {wd} (model {mwd})");
+    assert!(
+        agrees(w, mw),
+        "lambda {lambda}: W {w} against the model's {mw}"
+    );
+    assert!(
+        agrees(wd, mwd),
+        "lambda {lambda}: W_d {wd} against the model's {mwd}"
+    );
+}
+
+#[test]
+fn fig4c_lambda_3_dissipation_matches_the_model() {
+    check(3.0, FIG4C_ALPHA, 400);
+}
+
+#[test]
+fn fig4c_lambda_6_dissipation_matches_the_model() {
+    check(6.0, FIG4C_ALPHA, 400);
+}
+
+#[test]
+fn smooth_lambda_1_dissipates_nothing() {
+    let (w, wd, mw, mwd) = both(1.0, 0.0, 100);
+    assert!(
+        mw.abs() < 1e-12 && mwd.abs() < 1e-12,
+        "model W {mw}, W_d {mwd}"
+    );
+    assert!(agrees(w, mw) && agrees(wd, mwd), "W {w}, W_d {wd}");
+}
+
+/// W is not the stiff-machine work (12.0 at lambda = 6), and with 100 steps
+/// per leg W_d at lambda = 3 misses the tolerance: the test above can fail.
+#[test]
+fn coarse_steps_miss_the_tolerance_and_w_is_not_the_stiff_work() {
+    let (_, wd, _, mwd) = both(3.0, FIG4C_ALPHA, 100);
+    assert!(!agrees(wd, mwd), "W_d {wd} against {mwd} at 100 steps");
+    let spec = SimulationSpec {
+        lambda: 6.0,
+        alpha: FIG4C_ALPHA,
+        beta: FIG4C_BETA,
+        amax: AMAX,
+        cells: 4096,
+        steps_per_leg: 100,
+    };
+    let sim = simulate(spec, &mut |_, _| {}).unwrap();
+    let w = sim.dissipation().unwrap().load_control.dissipation.total;
+    assert!(
+        sim.cycle.stiff_work > 2.0 * w,
+        "stiff work {} against W {w}",
+        sim.cycle.stiff_work
+    );
+}
