@@ -5,8 +5,9 @@
 //! * `n < 0`: `J_{-n} = (-1)^n J_n` (DLMF 10.4.1).
 //! * Real `z` (imaginary part exactly zero): the crate's certified real-argument
 //!   [`crate::special::bessel_j::bessel_j_mp`] machinery at the midpoint `m` (Hankel,
-//!   recurrence or series by cost), widened by the input radius `r`: `|J_n'(x)| <= 1`
-//!   on the real line (DLMF 10.6.1 with 10.14.1), so `J_n([m +/- r]) ⊂ [J_n(m) +/- (rad + r)]`.
+//!   recurrence or series by cost), widened by the input radius `r` as in
+//!   [`crate::special::bessel_j::bessel_j_ball_mp`]: relative (`~ n r / m`) before the
+//!   first zeros, else `r` times a bound of `|J_n'|` over the ball (DLMF 10.6.1, 10.14.1, 10.14.4).
 //! * Complex `z`: the power series (DLMF 10.2.2)
 //!   `J_n(z) = sum_k (-1)^k (z/2)^(2k+n) / (k! (k+n)!)`
 //!   in complex ball arithmetic, `t_{k+1} = t_k * (-(z/2)^2) / ((k+1)(k+n+1))`. The sum
@@ -48,11 +49,8 @@ impl CBall {
             return CBall::indeterminate(p);
         }
         if self.is_real() {
-            return match crate::special::bessel_j::bessel_j_ball(n, self.re().mid(), p) {
-                Ok(mut b) => {
-                    b.add_error_mag(self.re().rad_mag());
-                    CBall::from_real(b)
-                }
+            return match crate::special::bessel_j::bessel_j_ball_input(n, self.re(), p) {
+                Ok(b) => CBall::from_real(b),
                 Err(_) => CBall::indeterminate(p),
             };
         }

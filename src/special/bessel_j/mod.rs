@@ -75,9 +75,11 @@ pub use three_term::bessel_j_three_term;
 
 use std::sync::atomic::{AtomicU64, Ordering as AtomicOrdering};
 
+use rug::float::Round;
+use rug::ops::AssignRound;
 use rug::Float;
 
-use crate::ball::{Ball, Bounded};
+use crate::ball::{Ball, Bounded, Mag};
 use crate::error::{Error, Result};
 use crate::special::{check_finite, exact, f64_from_mp, ziv};
 
@@ -275,27 +277,122 @@ pub fn bessel_j_mp(n: i64, x: &Float, prec: u32) -> Result<Ball> {
 ///
 /// # Input-radius propagation
 ///
-/// `J_n(t) - J_n(m) = int_m^t J_n'(s) ds` and `|J_n'(s)| <= 1` for every real
-/// `s` and integer `n`: `J_n' = (J_{n-1} - J_{n+1}) / 2` [DLMF 10.6.1] and
-/// `|J_k(s)| <= 1` for integer `k` [DLMF 10.14.1, with `J_{-k} = (-1)^k J_k`].
-/// So with `m = mid(x)`, `r = rad(x)`:
-/// `J_n(x) ⊂ [J_n(m) ± (rad_J + r)]`, where `[mid_J ± rad_J]` is the certified
-/// [`bessel_j_mp`] ball at the exact binary number `m`.
+/// With `m = mid(x)`, `r = rad(x)`, `[c ± rho]` the certified ball of
+/// `J_n(m)` at the exact binary number `m`, and `n >= 0`, `m > 0` after the
+/// symmetries `J_{-n} = (-1)^n J_n`, `J_n(-t) = (-1)^n J_n(t)` [DLMF 10.4.1, 10.11.1]:
 ///
-/// The midpoint part meets `rad <= 2^-prec |mid|`; the total does too when
-/// `r` is small against `2^-prec |J_n(m)|` (for an exact `x` the result is
-/// [`bessel_j_mp`]'s). Near a zero of `J_n` the input radius dominates: the
-/// ball is then honest but wide, and callers that know the input exactly
-/// (decimal text) narrow it with [`crate::ball::eval_at_decimals`].
+/// * **Before the first zeros** (`0 < m - r`, `m + r <= n - 1`, or `<= 2` for
+///   `n = 1`): relative propagation. `d/dt (t^-n J_n) = -t^-n J_{n+1}` and
+///   `d/dt (t^n J_n) = t^n J_{n-1}` [DLMF 10.6.6]; `J_{n-1}`, `J_n`, `J_{n+1}`
+///   are positive on `(0, j_{n-1,1})`, and `j_{nu,1} > nu` [DLMF 10.21.3]
+///   (`j_{0,1} = 2.4048...` > 2, DLMF Table 10.21.1). So `t^-n J_n` falls and
+///   `t^n J_n` rises across the ball, which pins
+///   `J_n(t) / J_n(m)` to `[(lo/m)^n, (m/lo)^n]`, `lo = m - r`, and
+///   `(m/lo)^n - 1 <= y e^y` with `y = n r / lo` (`(1+u)^n <= e^(nu)`,
+///   `e^y - 1 <= y e^y`). The radius grows by `rho + (|c| + rho) y e^y`: about
+///   `n r / m` relative, the true sensitivity `|J_n'/J_n| r ~ n r / m` there,
+///   instead of `r` absolute, which at `J_10000(0.001) ~ 1e-68670` carried no digit.
+/// * **Elsewhere**: `J_n(t) - J_n(m) = int_m^t J_n'(s) ds` with
+///   `J_n' = (J_{n-1} - J_{n+1}) / 2` [DLMF 10.6.1] and, for real `|s| <= T = |m| + r`,
+///   `|J_k(s)| <= min(1, (T/2)^k / k!)` [DLMF 10.14.1, 10.14.4], `k! >= (k/e)^k`:
+///   `|J_n'| <= min(1, (B_{n-1} + B_{n+1}) / 2)` over the ball (`|J_0'| = |J_1|`), times `r`.
+///
+/// When the input is inexact the midpoint value is computed 4 bits beyond
+/// `prec` so that the input part has room under `2^-prec |mid|`. For an exact
+/// `x` the result is [`bessel_j_mp`]'s. Near a zero of `J_n` the input radius
+/// dominates: the ball is then honest but wide, and callers that know the
+/// input exactly (decimal text) narrow it with [`crate::ball::eval_at_decimals`].
 pub fn bessel_j_ball_mp(n: i64, x: &Ball, prec: u32) -> Result<Ball> {
     crate::error::check_prec(prec)?;
     if !x.is_finite() {
         return Err(Error::NonFinite { what: "x" });
     }
-    let mut out = bessel_j_ball(n, x.mid(), prec)?;
-    // |J_n'| <= 1 on the whole real line.
-    out.add_error_mag(x.rad_mag());
-    Ok(out)
+    bessel_j_ball_input(n, x, prec)
+}
+
+/// Guard bits of the midpoint value when the input ball has a radius.
+const INPUT_GUARD_BITS: u32 = 4;
+
+/// [`bessel_j_ball_mp`] without the user-precision cap (also the real-axis path
+/// of [`crate::ball::CBall::bessel_j`]).
+pub(crate) fn bessel_j_ball_input(n: i64, x: &Ball, prec: u32) -> Result<Ball> {
+    let r = x.rad_mag();
+    if r.is_zero() {
+        return bessel_j_ball(n, x.mid(), prec);
+    }
+    validate(n, x.mid())?;
+    let (m, ax, negate) = reduce(n, x.mid());
+    let mut out = bessel_j_ball(m as i64, &ax, prec + INPUT_GUARD_BITS)?;
+    let mut lo = Float::new(ax.prec());
+    lo.assign_round(&ax - &r.to_float(), Round::Down);
+    let lo = if lo.is_sign_positive() && !lo.is_zero() { Mag::from_float_down(&lo) } else { Mag::ZERO };
+    let hi = Mag::from_float_up(&ax).add(r);
+    let first_zero_bound = match m {
+        0 => Mag::ZERO,
+        1 => Mag::from_f64(2.0),
+        _ => Mag::from_f64((m - 1) as f64),
+    };
+    if !lo.is_zero() && m >= 1 && hi.le(&first_zero_bound) {
+        // J_n(t)/J_n(m) in [(lo/m)^n, (m/lo)^n]; (m/lo)^n - 1 <= y e^y, y = n r / lo.
+        let y = r.div(lo).mul(Mag::from_f64(m as f64));
+        let ey = exp_upper(y);
+        let grow = out.abs_upper_mag().mul(y).mul(ey).add(out.rad_mag());
+        out.add_error_mag(grow);
+    } else {
+        out.add_error_mag(r.mul(derivative_bound(m, hi)));
+    }
+    Ok(if negate { out.neg() } else { out })
+}
+
+/// Upper bound of `e^y` for a [`Mag`] `y` (infinite when it overflows).
+fn exp_upper(y: Mag) -> Mag {
+    match Ball::with_mag(y.to_float(), Mag::ZERO).exp() {
+        Ok(e) => e.abs_upper_mag(),
+        Err(_) => Mag::inf(),
+    }
+}
+
+/// Upper bound of `base^k` by square-and-multiply in [`Mag`] (each step rounds up;
+/// no underflow: the exponent is an `i64`).
+fn mag_pow(base: Mag, mut k: u64) -> Mag {
+    let mut acc = Mag::from_f64(1.0);
+    let mut b = base;
+    while k > 0 {
+        if k & 1 == 1 {
+            acc = acc.mul(b);
+        }
+        k >>= 1;
+        if k > 0 {
+            b = b.mul(b);
+        }
+    }
+    acc
+}
+
+/// Upper bound of `|J_k(s)|` for real `|s| <= t`: `min(1, (t/2)^k / k!)`
+/// [DLMF 10.14.1, 10.14.4], with `k! >= (k/e)^k` (from `e^k >= k^k / k!`), so
+/// `(t/2)^k / k! <= (e t / (2k))^k`.
+fn j_abs_bound(k: u64, t: Mag) -> Mag {
+    let one = Mag::from_f64(1.0);
+    if k == 0 {
+        return one;
+    }
+    // 2.718281828459046 (as an f64) is above e.
+    let base = t.mul(Mag::from_f64(2.718_281_828_459_046)).div(Mag::from_f64(2.0 * k as f64));
+    if one.le(&base) {
+        return one;
+    }
+    let b = mag_pow(base, k);
+    if b.le(&one) { b } else { one }
+}
+
+/// Upper bound of `|J_n'(s)|` for real `|s| <= t`, `n >= 0`: `J_0' = -J_1`,
+/// `J_n' = (J_{n-1} - J_{n+1}) / 2` [DLMF 10.6.1], with [`j_abs_bound`].
+fn derivative_bound(n: u64, t: Mag) -> Mag {
+    if n == 0 {
+        return j_abs_bound(1, t);
+    }
+    j_abs_bound(n - 1, t).add(j_abs_bound(n + 1, t)).mul_2exp(-1)
 }
 
 /// [`bessel_j_mp`] without the user-precision cap (internal callers run at
