@@ -61,9 +61,10 @@
 //! `K [c ln(c/a) - sqrt(c^2-a^2) acosh(c/a)]` at `|x| = c` (A.5b);
 //! `K [c asinh(|x| Y/a) - |x| asinh(Y) - sqrt(c^2-a^2) acosh(|x|/a)]` for `|x| > c`.
 
+use rug::float::Round;
 use rug::Float;
 
-use crate::ball::{Ball, Bounded, MAG_PREC};
+use crate::ball::{Ball, Bounded, Mag, MAG_PREC};
 use crate::error::{finite, Error, Result};
 use crate::ball::Dd;
 use crate::contact::wave_bounded::{count_fallback, CertifiedBessel};
@@ -181,6 +182,22 @@ fn wave_geometry(a: &Float, zeta: &Float, amp: &Float, x: &Float, wp: u32) -> Re
     geometry_from_balls(&inputs, xma, xpa, x == a, wp)
 }
 
+/// The part of a ball at or above zero, for a quantity known to be `>= 0` (the
+/// caller has checked `x >= a`): `[max(lower, 0), upper]`. A ball wholly
+/// below zero cannot hold such a quantity and is returned as it is (the square
+/// root after it then reports the domain error).
+fn clip_nonnegative(b: &Ball) -> Ball {
+    if !(b.lower() < 0) || b.upper() < 0 {
+        return b.clone();
+    }
+    // [0, u] as [u/2 ± u/2] with u rounded up to 53 bits: mid and radius are
+    // then the same exact number, so the lower end is exactly 0.
+    let (u, _) = Float::with_val_round(53, b.upper(), Round::Up);
+    let half = u / 2u32;
+    let rad = Mag::from_float_up(&half);
+    Ball::with_mag(half, rad)
+}
+
 /// The geometry over balls of inputs `[a, zeta, amp, x]`, with `x - a` and
 /// `x + a` given as balls (exact for exact inputs).
 fn geometry_from_balls(inputs: &[Ball; 4], xma: Ball, xpa: Ball, at_edge: bool, wp: u32) -> Result<WaveGeometry> {
@@ -190,14 +207,15 @@ fn geometry_from_balls(inputs: &[Ball; 4], xma: Ball, xpa: Ball, at_edge: bool, 
     // r - 1 and r + 1, r = x/a; a lower end of r - 1 below zero (only for
     // balls that touch the edge x = a from above) is clipped: the caller has
     // checked x >= a over the balls.
-    let rm1 = xma.div(ab)?;
-    let rm1 = if rm1.lower() < 0 { Ball::hull(&Float::new(wp), &rm1.upper(), wp) } else { rm1 };
+    let rm1 = clip_nonnegative(&xma.div(ab)?);
     let rp1 = xpa.div(ab)?;
     let r = rm1.add_i64(1);
-    let sq = rm1.mul(&rp1).sqrt()?; // sqrt(r^2 - 1)
+    // r^2 - 1 and (r-1)/(r+1) are >= 0 wherever x >= a; their balls may still
+    // reach below zero by rounding, so the square roots see them clipped.
+    let sq = clip_nonnegative(&rm1.mul(&rp1)).sqrt()?; // sqrt(r^2 - 1)
     let q = r.add(&sq).recip()?;
     let acosh_r = rm1.add(&sq).ln_1p()?;
-    let one_minus_q_over_s = Ball::one(wp).sub(&rm1.div(&rp1)?.sqrt()?);
+    let one_minus_q_over_s = Ball::one(wp).sub(&clip_nonnegative(&rm1.div(&rp1)?).sqrt()?);
     let y = ab.div(xb)?.sqr();
     let w = xma.mul(&xpa).div(&xb.sqr())?;
     Ok(WaveGeometry {
@@ -409,10 +427,14 @@ fn wave_ball_mp(a: &Ball, zeta: &Ball, amp: &Ball, x: Option<&Ball>, prec: u32, 
         WaveOutput::Displacement => Float::with_val(MAG_PREC, amp.abs_lower()),
         WaveOutput::Gradient => gradient_scale(&amp.abs_lower(), &zeta.upper()),
     };
+    // x - a and x + a at the inputs' own precision (the subtraction above), then
+    // rounded to wp relative to themselves: rounding x and a to wp first would
+    // merge x = a (1 + 1e-15) with a at low precision and put the edge in the ball.
+    let xpa_full = x.add(a);
     crate::special::ziv_ball_inputs(prec, DEFAULT_GUARD_BITS, Some(&floor), |wp| {
         let balls = [a, zeta, amp, x].map(|v| v.set_prec(wp));
-        let xma = if x_is_a { Ball::zero(wp) } else { balls[3].sub(&balls[0]) };
-        let xpa = balls[3].add(&balls[0]);
+        let xma = if x_is_a { Ball::zero(wp) } else { xma.set_prec(wp) };
+        let xpa = xpa_full.set_prec(wp);
         let at_edge = xma.is_exact() && xma.mid().is_zero();
         let g = geometry_from_balls(&balls, xma, xpa, at_edge, wp)?;
         let (u, du) = wave_bessel_geometry(&g, wp)?;
