@@ -34,7 +34,7 @@ use crate::output::print_stdout;
 /// Flags of `maugis integrate`.
 #[derive(Args, Debug)]
 pub struct IntegrateArgs {
-    /// The integrand in x: + - * / ^, sqrt exp log sin cos tan sinh cosh tanh atan,
+    /// The integrand in x: + - * / ^, sqrt exp log sin cos tan sinh cosh tanh sech atan,
     /// besselj(n, x), pi and decimals, e.g. 'exp(-x^2)' or 'x^(-1/2)*cos(x)'.
     #[arg(value_name = "EXPR", value_parser = expression, allow_hyphen_values = true)]
     pub f: Expr,

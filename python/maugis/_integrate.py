@@ -46,7 +46,7 @@ def integrate(
 ):
     """Certified ``int_a^b w(x) f(x) dx`` for an expression ``f`` in x.
 
-    ``f`` is a string: ``+ - * / ^``, ``sqrt exp log sin cos tan sinh cosh tanh
+    ``f`` is a string: ``+ - * / ^``, ``sqrt exp log sin cos tan sinh cosh tanh sech
     atan``, ``besselj(n, x)``, ``pi`` and decimals (``"x^(-1/2)*cos(x)"``).
     ``a`` and ``b`` are numbers as for the ``prec=`` functions: floats, ints and
     ``mpmath.mpf`` exactly, decimal strings as balls that contain them; ``b`` may

@@ -39,6 +39,17 @@ pub trait ExprValue: Clone {
     fn from_decimal(d: &Decimal, like: &Self) -> Self;
 }
 
+/// `sech` for f64, so that [`apply_function!`] reads the same for every type.
+trait SechF64 {
+    fn sech(&self) -> f64;
+}
+
+impl SechF64 for f64 {
+    fn sech(&self) -> f64 {
+        1.0 / self.cosh()
+    }
+}
+
 /// Whether `e` is the literal 1.
 fn is_one(e: &Expr) -> bool {
     matches!(e, Expr::Number(d) if *d.as_rational() == 1)
@@ -58,6 +69,7 @@ macro_rules! apply_function {
             Function::Sinh => $x.sinh(),
             Function::Cosh => $x.cosh(),
             Function::Tanh => $x.tanh(),
+            Function::Sech => $x.sech(),
             Function::Atan => $x.$atan(),
         }
     };

@@ -16,7 +16,7 @@
 //! * `+ - * / ^` with the usual precedence; `^` is right-associative
 //!   (`2^3^2 = 2^9`) and a unary minus binds more loosely than `^`, as in
 //!   mathematics (`-x^2 = -(x^2)`, `2^-x*3 = (2^(-x))*3`);
-//! * the functions `sqrt exp log sin cos tan sinh cosh tanh atan` of one argument
+//! * the functions `sqrt exp log sin cos tan sinh cosh tanh sech atan` of one argument
 //!   and `besselj(n, expr)`, the Bessel function `J_n`, whose order `n` is an
 //!   integer literal (possibly negative, `|n| <=` [`MAX_BESSEL_ORDER`]).
 //!

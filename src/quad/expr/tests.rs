@@ -128,7 +128,7 @@ fn printing_parses_back_to_the_same_tree() {
 #[test]
 fn each_function_in_f64() {
     let x = 0.7_f64;
-    let cases: [(&str, f64); 14] = [
+    let cases: [(&str, f64); 15] = [
         ("sqrt(x)", x.sqrt()),
         ("exp(x)", x.exp()),
         ("log(x)", x.ln()),
@@ -138,6 +138,7 @@ fn each_function_in_f64() {
         ("sinh(x)", x.sinh()),
         ("cosh(x)", x.cosh()),
         ("tanh(x)", x.tanh()),
+        ("sech(x)", 1.0 / x.cosh()),
         ("atan(x)", x.atan()),
         ("besselj(0, x)", bessel_j(0, x).unwrap()),
         ("besselj(3, 2*x)", bessel_j(3, 2.0 * x).unwrap()),
@@ -188,7 +189,7 @@ fn error_cases_are_typed_and_say_what_to_fix() {
 
     // the messages name the problem and the way out
     let m = crate::Error::from(err("foo(x)")).to_string();
-    assert!(m.contains("'foo'") && m.contains("sqrt, exp, log, sin, cos, tan, sinh, cosh, tanh, atan and besselj(n, x)"), "{m}");
+    assert!(m.contains("'foo'") && m.contains("sqrt, exp, log, sin, cos, tan, sinh, cosh, tanh, sech, atan and besselj(n, x)"), "{m}");
     let m = err("x^").to_string();
     assert!(m.contains("character 3") && m.contains("the end of the expression"), "{m}");
     let m = err("2x").to_string();

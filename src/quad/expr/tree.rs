@@ -27,13 +27,15 @@ pub enum Function {
     Cosh,
     /// `tanh`.
     Tanh,
+    /// `sech = 1/cosh` (enclosed tightly on wide boxes, see [`crate::ball::CBall::sech`]).
+    Sech,
     /// `atan` (analytic form in complex balls).
     Atan,
 }
 
 impl Function {
     /// Every one-argument function, in the order the messages list them.
-    pub const ALL: [Function; 10] = [
+    pub const ALL: [Function; 11] = [
         Function::Sqrt,
         Function::Exp,
         Function::Log,
@@ -43,6 +45,7 @@ impl Function {
         Function::Sinh,
         Function::Cosh,
         Function::Tanh,
+        Function::Sech,
         Function::Atan,
     ];
 
@@ -58,6 +61,7 @@ impl Function {
             Function::Sinh => "sinh",
             Function::Cosh => "cosh",
             Function::Tanh => "tanh",
+            Function::Sech => "sech",
             Function::Atan => "atan",
         }
     }
