@@ -52,6 +52,23 @@ pub(crate) use dd_bounded::{div_f64_p, mag, BoundedDd, BOUND_INFLATION, C_ADD, U
 pub(crate) use double_double::{cpu_dispatch, Dekker, ExactProduct, Fused};
 pub use mag::Mag;
 
+/// `base^n` by square-and-multiply (`one` is the unit of `mul`); shared by the ball,
+/// complex-ball and magnitude powers.
+pub(crate) fn binary_power<T>(one: T, base: T, mut n: u64, mul: impl Fn(&T, &T) -> T, sqr: impl Fn(&T) -> T) -> T {
+    let mut result = one;
+    let mut base = base;
+    while n > 0 {
+        if n & 1 == 1 {
+            result = mul(&result, &base);
+        }
+        n >>= 1;
+        if n > 0 {
+            base = sqr(&base);
+        }
+    }
+    result
+}
+
 /// Precision (bits) of the radius-sized `Float` values handed out by
 /// [`Ball::rad`], [`Ball::abs_upper`] and friends (the radius itself is a [`Mag`]
 /// with a 53-bit mantissa). Radii are upper bounds, so a short mantissa only
@@ -598,19 +615,8 @@ impl Ball {
     }
 
     /// `self^n` for an integer `n >= 0` (binary powering).
-    pub fn pow_u64(&self, mut n: u64) -> Ball {
-        let mut result = Ball::one(self.prec());
-        let mut base = self.clone();
-        while n > 0 {
-            if n & 1 == 1 {
-                result = result.mul(&base);
-            }
-            n >>= 1;
-            if n > 0 {
-                base = base.sqr();
-            }
-        }
-        result
+    pub fn pow_u64(&self, n: u64) -> Ball {
+        binary_power(Ball::one(self.prec()), self.clone(), n, Ball::mul, Ball::sqr)
     }
 
     /// Requires an exact point, or returns an error naming the function.

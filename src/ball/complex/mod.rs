@@ -297,19 +297,8 @@ impl CBall {
     }
 
     /// `self^n` for an integer `n >= 0` (binary powering).
-    pub fn pow_u64(&self, mut n: u64) -> CBall {
-        let mut result = CBall::one(self.prec());
-        let mut base = self.clone();
-        while n > 0 {
-            if n & 1 == 1 {
-                result = result.mul(&base);
-            }
-            n >>= 1;
-            if n > 0 {
-                base = base.sqr();
-            }
-        }
-        result
+    pub fn pow_u64(&self, n: u64) -> CBall {
+        super::binary_power(CBall::one(self.prec()), self.clone(), n, CBall::mul, CBall::sqr)
     }
 
     /// `self^n` for any integer `n` (a negative power through [`CBall::recip`]).

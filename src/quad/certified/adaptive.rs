@@ -84,19 +84,8 @@ fn ellipse(xexp: u32) -> (Mag, Mag) {
 }
 
 /// `m^k` rounded down.
-fn pow_lower(m: Mag, mut k: u64) -> Mag {
-    let mut result = Mag::from_f64(1.0);
-    let mut base = m;
-    while k > 0 {
-        if k & 1 == 1 {
-            result = result.mul_lower(base);
-        }
-        k >>= 1;
-        if k > 0 {
-            base = base.mul_lower(base);
-        }
-    }
-    result
+fn pow_lower(m: Mag, k: u64) -> Mag {
+    crate::ball::binary_power(Mag::from_f64(1.0), m, k, |a, b| a.mul_lower(*b), |a| a.mul_lower(*a))
 }
 
 /// The bound `6.1 M / rho^(2n)` (see the module docs), rounded up.

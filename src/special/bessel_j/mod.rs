@@ -354,19 +354,8 @@ fn exp_upper(y: Mag) -> Mag {
 
 /// Upper bound of `base^k` by square-and-multiply in [`Mag`] (each step rounds up;
 /// no underflow: the exponent is an `i64`).
-fn mag_pow(base: Mag, mut k: u64) -> Mag {
-    let mut acc = Mag::from_f64(1.0);
-    let mut b = base;
-    while k > 0 {
-        if k & 1 == 1 {
-            acc = acc.mul(b);
-        }
-        k >>= 1;
-        if k > 0 {
-            b = b.mul(b);
-        }
-    }
-    acc
+fn mag_pow(base: Mag, k: u64) -> Mag {
+    crate::ball::binary_power(Mag::from_f64(1.0), base, k, |a, b| a.mul(*b), |a| a.mul(*a))
 }
 
 /// Upper bound of `|J_k(s)|` for real `|s| <= t`: `min(1, (t/2)^k / k!)`
