@@ -27,7 +27,7 @@
 //! any cycle not in it, and on any entry of it that is no longer a cycle (so the
 //! list shrinks as the refactor of issue 26 lands: delete the entry).
 
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 /// The cycles that exist today, each as the sorted set of its files (paths from
