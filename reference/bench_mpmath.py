@@ -15,7 +15,7 @@ mpmath cases (30 significant digits, mp.dps = 30 + guard where needed):
   at x/a = 1.001 and does not finish at x/a = 1 (z = -1). We therefore time a
   sample of k values and extrapolate to the 1001 terms (the table says so);
   terms that exceed PER_TERM_TIMEOUT seconds are reported as such.
-* The Bessel form (notes/model.md sec. 3), mpmath besselj, 30 digits.
+* The Bessel form (docs/displacement.md, Route 2), mpmath besselj, 30 digits.
 """
 
 import json

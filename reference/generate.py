@@ -1313,7 +1313,7 @@ BALL_DECIMAL_OUT_DIGITS = 100
 
 
 def wave_bessel_ref(a, zeta, amp, x):
-    """(u_w, du_w/dx) by the Bessel form of notes/model.md sec. 3 (mpmath at the
+    """(u_w, du_w/dx) by the Bessel form of docs/displacement.md, Route 2 (mpmath at the
     current precision), from decimal strings.  At x = a: q = 1, acosh = 0 and
     g_n = 2n (the limit from x > a)."""
     a, zeta, amp, x = mpf(a), mpf(zeta), mpf(amp), mpf(x)
@@ -1381,7 +1381,7 @@ def ball_decimal_value(fn, args):
         return mg_from_S(int(k), y, mg_S_hyp3f2(int(k), y))[0]
     a, zeta, amp, x = args
     if fn == "u_wave" and a == x:
-        # the edge value A (1 - cos(2 pi a/zeta)) (notes/model.md sec. 3)
+        # the edge value A (1 - cos(2 pi a/zeta)) (docs/displacement.md, Route 2)
         return mpf(amp) * (1 - mpmath.cos(2 * mpmath.pi * mpf(a) / mpf(zeta)))
     u, du = wave_bessel_ref(a, zeta, amp, x)
     return u if fn == "u_wave" else du

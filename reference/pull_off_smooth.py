@@ -3,7 +3,7 @@
 
 Usage:  python3 reference/pull_off_smooth.py   (writes reference/data/pull_off_smooth.csv)
 
-The normalised smooth strip equation and load (notes/model.md sec. 5; z = m - 1,
+The normalised smooth strip equation and load (docs/model.md, "Equations"; z = m - 1,
 s = sqrt(z (2 + z))):
 
     F(a, z) = (4/pi) lambda^2 a A(z) + (lambda/2) a^2 H(z) - 1 = 0,

@@ -14,8 +14,8 @@
 //! * `/`:        `r = (|ma| rb + |mb| ra) / (|mb| (|mb| - rb)) + err(m)` (requires `|mb| > rb`)
 //! * monotone functions (`exp`, `ln`, `sqrt`, `acosh`): evaluate at both endpoints with
 //!   directed rounding (MPFR rounds correctly in every direction) and take the hull.
-//! * `gamma`, `digamma`, `ln_gamma` on an *exact* point: MPFR is correctly rounded, so
-//!   the error is at most one ulp.
+//! * `gamma`, `digamma` on an *exact* point: MPFR is correctly rounded, so
+//!   the error is at most one ulp (`rgamma` is the reciprocal of the `gamma` ball).
 //!
 //! `err(m)` is the rounding error of the midpoint: zero when MPFR reports the
 //! operation exact (ternary value `Equal`), otherwise one ulp of the rounded

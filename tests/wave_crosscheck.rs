@@ -8,7 +8,7 @@
 //! At 56 points spanning a in (0, 6], zeta in [1/2, 5], A = 1 (D = 2 pi a/zeta up
 //! to 75) and x/a in (1, 5], including x/a = 1 + 10^-j for j = 2..10. Also the
 //! truncation bounds at several kmax, the edge identity, and one test per
-//! erratum of the printed paper (notes/model.md).
+//! erratum of the printed paper (docs/displacement.md, "Errata pinned by tests").
 
 use maugis::contact::displacement::*;
 use maugis::contact::wave_quadrature::*;
@@ -116,7 +116,7 @@ fn truncation_bounds_hold() {
 
 // ------------------------------------------------------------------ errata
 
-/// notes sec. 1/2: with C = 0 and the corrected prefactor, Eq. 12 meets the
+/// Erratum (docs/displacement.md): with C = 0 and the corrected prefactor, Eq. 12 meets the
 /// profile at the edge, u_w(a) = A (1 - cos(2 pi a/zeta)), and the printed
 /// prefactor (pi a/lambda)^2 (lambda the Maugis parameter, here 1.5) does not.
 #[test]
@@ -132,7 +132,7 @@ fn erratum_eq12_prefactor_and_integration_constant() {
     }
 }
 
-/// notes sec. 2: the sign is (-1)^k (the printed (-1)^{3k} is the same for
+/// Erratum (docs/displacement.md): the sign is (-1)^k (the printed (-1)^{3k} is the same for
 /// integer k): the Eq. 12 terms alternate. Dropping the alternation breaks the
 /// agreement with the Bessel form.
 #[test]
@@ -153,7 +153,7 @@ fn erratum_eq12_sign_alternates() {
     assert_eq!(t1.is_negative(), g1.is_positive() == f1.is_positive(), "T_1 carries the sign (-1)^1");
 }
 
-/// notes sec. 1: printed Eq. 11a (outer integral over [0, 2 pi], factor
+/// Erratum (docs/displacement.md): printed Eq. 11a (outer integral over [0, 2 pi], factor
 /// 2 pi a/zeta inside) does not give du_w/dx; the corrected one (outer over
 /// [0, D], prefactor A/zeta) matches the Bessel form and Eq. 11b.
 #[test]
@@ -167,7 +167,7 @@ fn erratum_eq11a_limits_and_prefactor() {
     }
 }
 
-/// notes sec. 1: sign convention. With u positive downward, u_w' from Eq. 11b
+/// Erratum (docs/displacement.md): sign convention. With u positive downward, u_w' from Eq. 11b
 /// is the derivative of u_w (central difference of the certified Bessel form),
 /// not its negative (printed Eq. 2 has the opposite sign).
 #[test]

@@ -2,8 +2,8 @@
 //! paper's value with the difference; `--write docs/paper.md` regenerates the
 //! committed page (test `paper_md_is_current` in `cli/tests/cli_curve.rs`).
 //!
-//! The paper's values are quoted from its text (`/work/shared/seed`, a text
-//! extraction of the paper) with the section or figure they come from. Ours come
+//! The paper's values are quoted from its text (a text extraction of the seed
+//! paper, which is not in this repository) with the section or figure they come from. Ours come
 //! from the library at the default grid (600 states on `abar in (0, 6]`),
 //! turning points and jump targets refined, under load control.
 

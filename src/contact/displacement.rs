@@ -11,7 +11,7 @@
 //!
 //! With `D = 2 pi a/zeta`, `s = (pi a/zeta)^2 = D^2/4`, `y = (a/x)^2`:
 //!
-//! 1. **Eq. 12** (seed, with the errata of notes/model.md sec. 2 applied:
+//! 1. **Eq. 12** (seed, with the errata of docs/displacement.md applied:
 //!    `(pi a/zeta)^2` for the printed `(pi a/lambda)^2`, `(-1)^k` for `(-1)^{3k}`,
 //!    integration constant `C = 0`):
 //!    `u_w = (A/sqrt(pi)) s sum_k (-1)^k D^{2k}/(2k+1)! 1F2(1/2; k+1, k+3/2; -s) G(k, y)`,
@@ -21,7 +21,7 @@
 //!    digit there; the MP sum adds those bits as guard bits (Ziv).
 //!    Its gradient is **Eq. 11b**:
 //!    `du_w/dx = (2 A s / x) sum_k (-1)^k s^k / (k! (k+1)! (2k+1)) 1F2(..; -s) 2F1(1, k+1/2; k+2; y)`.
-//! 2. **Bessel form** (notes/model.md sec. 3; Chebyshev expansion of the traction,
+//! 2. **Bessel form** (docs/displacement.md, Route 2; Chebyshev expansion of the traction,
 //!    Appendix B.11, integrated term by term), with `q = x/a - sqrt((x/a)^2-1)`:
 //!    `u_w = A [1 - J0(D) + D J1(D) acosh(x/a) + 2 sum_{n>=1} (-1)^{n+1} J_{2n}(D) q^{2n}]`,
 //!    `du_w/dx = (4A/a) sum_{n>=1} (-1)^{n+1} n J_{2n}(D) g_n`,
@@ -35,7 +35,7 @@
 //!    (times `4A/a`), bounded geometrically once the ratio `(D/2)^2/((2n+1)(2n+2)) ((n+1)/n)^2 < 1`.
 //!    `J_n` at the ball `D` is evaluated at its midpoint and widened by `rad(D)`
 //!    (`|J_n'| <= 1` [DLMF 10.14.1]).
-//! 3. **Eq. 11a quadrature** (corrected form of the notes, sec. 1), in
+//! 3. **Eq. 11a quadrature** (corrected form, docs/displacement.md, Route 3), in
 //!    [`crate::contact::wave_quadrature`].
 //!
 //! # Eq. 12 and Eq. 11b truncated at `kmax`: the truncation bound
@@ -1380,7 +1380,7 @@ mod tests {
 
     #[test]
     fn substrate_meets_profile_at_the_edge() {
-        // u_w(a) = A (1 - cos(2 pi a/zeta)) exactly (notes sec. 1).
+        // u_w(a) = A (1 - cos(2 pi a/zeta)) exactly (docs/displacement.md, "Errata pinned by tests").
         for &(a, zeta) in &[(2.0, 1.125), (0.7, 2.0), (6.0, 1.125), (5.5, 0.5)] {
             let u = u_wave_mp(&e(a), &e(zeta), &e(1.0), &e(a), 128).unwrap();
             let d = Ball::pi(200).mul_pow2(1).mul(&Ball::from_f64(a, 200).unwrap()).div(&Ball::from_f64(zeta, 200).unwrap()).unwrap();

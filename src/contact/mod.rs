@@ -21,7 +21,7 @@
 //! * [`limits`]: Appendix E (JKR, M-DMT) and the Eq. 17 envelope.
 //! * [`units`]: SI inputs and outputs (scales of Eq. 13a with two length scales).
 //!
-//! Sign convention (notes/model.md, sec. 1): compressive traction is negative,
+//! Sign convention (docs/displacement.md): compressive traction is negative,
 //! `u` is positive "downward" like the profile depth
 //! `h(x) = x^2/(2R) + A (1 - cos(2 pi x/zeta))`, so that the substrate meets the
 //! profile at the contact edge: `u_H(a) = a^2/(2R)`, `u_w(a) = A (1 - cos(2 pi a/zeta))`.

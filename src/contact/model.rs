@@ -1,6 +1,6 @@
-//! The normalised wavy Maugis model at one contact size (notes/model.md sec. 4-7).
+//! The normalised wavy Maugis model at one contact size (docs/model.md).
 //!
-//! # Normalisation (two length scales, notes sec. 4)
+//! # Normalisation (two length scales, docs/model.md)
 //!
 //! Horizontal lengths by `l_h = (dgamma R^2/E*)^(1/3)`: `a = abar l_h`,
 //! `c = m abar l_h`, `x = xbar l_h`, `zeta = beta l_h`. Vertical lengths by
@@ -11,7 +11,7 @@
 //! `ubar_a = u_a(a = abar, c = m abar, sigma = lambda, E* = 1)` (the functions of
 //! [`super::displacement`] with these arguments).
 //!
-//! # The adhesive-strip equation (Eq. 15b, corrected, notes sec. 5)
+//! # The adhesive-strip equation (Eq. 15b, corrected, docs/model.md)
 //!
 //! `lambda gbar(c) = 1`, i.e. `F(m) = 0` with
 //!
@@ -23,7 +23,7 @@
 //! ```
 //!
 //! `F(1) = -1` because every gap term vanishes at the contact edge. The strip
-//! ends where the gap *first* reaches `delta` (notes sec. 6), so `m` is the
+//! ends where the gap *first* reaches `delta` (docs/model.md, "Root m"), so `m` is the
 //! smallest root: [`ContactSize::solve_strip`] scans outward from `c = a` (steps of
 //! at most `beta/16` so no wave period is skipped, shrinking towards the edge when
 //! the root is closer than one step) for the first sign change and refines it with
@@ -45,7 +45,7 @@
 //! Eq. 16 has `2 pi abar` as the upper limit; Eq. 7 and the normalisation give `D`);
 //! `pbar = 1` in the strip and 0 outside.
 //!
-//! # Validity (notes sec. 7)
+//! # Validity (docs/model.md)
 //!
 //! A state is physical only if the gap is non-negative in the strip
 //! `abar < x < m abar` (no interpenetration at crests) and `pbar <= 1` inside the
@@ -157,7 +157,7 @@ pub struct Validity {
 /// The end of the adhesive strip, `m = c/a > 1`, stored as `m - 1`.
 ///
 /// As `lambda -> inf` the strip closes like `m - 1 ~ pi/(4 lambda^2 abar)`
-/// (notes sec. 8): at `lambda = 1e6` that is `1e-12`, and `m` itself would carry
+/// (docs/model.md, the `smooth_jkr_limit` erratum row): at `lambda = 1e6` that is `1e-12`, and `m` itself would carry
 /// only four significant digits of it. The solver works in `m - 1`, and every
 /// quantity of a state (load, traction, gap, approach) is computed from it.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -436,7 +436,7 @@ impl ContactSize {
     /// an approach exists only relative to a datum; any other datum shifts
     /// `Delta` by `k Lbar` and leaves `int Delta dLbar` over a closed cycle
     /// unchanged. From the large-`x` forms of Eq. 10, the Bessel form of `u_w`
-    /// (notes sec. 3, `acosh(x/a) -> ln(2x/a)`, `q -> 0`) and A.5b:
+    /// (docs/displacement.md, Route 2, `acosh(x/a) -> ln(2x/a)`, `q -> 0`) and A.5b:
     ///
     /// ```text
     /// Delta = (2 Lbar/pi) ln(2/abar) + abar^2/4 + alpha (1 - J0(D))

@@ -6,7 +6,7 @@
 //! # Method
 //!
 //! With `D = 2 pi a/zeta`, `r = x/a >= 1` and `t = sqrt((x-a)/(x+a))` in `[0, 1)`
-//! (notes/model.md sec. 3; the module docs of [`super::displacement`]):
+//! (docs/displacement.md, Route 2; the module docs of [`super::displacement`]):
 //!
 //! ```text
 //! q = (1 - t)/(1 + t) = (1 - t)^2 (x + a)/(2a),      acosh(r) = -ln q,
@@ -136,7 +136,7 @@
 //! here). Its error is an estimate, enforced by tests/wave_value.rs (method
 //! block in `value.rs`).
 //!
-//! References: seed paper Eq. 12 and Appendix B.11; notes/model.md sec. 3;
+//! References: seed paper Eq. 12 and Appendix B.11; docs/displacement.md, Route 2;
 //! DLMF 10.2.2, 10.6.1, 10.12.4, 10.14.1, 10.14.4; Dekker (1971); Hida, Li, Bailey (2007);
 //! Joldes, Muller, Popescu, "Tight and rigorous error bounds for basic building
 //! blocks of double-word arithmetic", ACM TOMS 44 (2017); Graillat, Langlois,

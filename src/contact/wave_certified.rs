@@ -5,7 +5,7 @@
 //!
 //! # The integrals
 //!
-//! Eq. 11a as corrected in notes/model.md sec. 1 (outer range `[0, D]`,
+//! Eq. 11a as corrected in docs/displacement.md, Route 3 (outer range `[0, D]`,
 //! `D = 2 pi a/zeta`, prefactor `A/zeta`, `x = a/cos(phi)`), and its integral in `x`
 //! from `a` (see [`crate::contact::wave_quadrature`], docs/model.md and
 //! docs/displacement.md for the derivation):
@@ -75,7 +75,7 @@
 //! [`MAX_CERTIFIED_PREC`]).
 //!
 //! References: the paper's Eq. 11a (and Eq. 11b / Eq. 12, which the tests
-//! cross-check against); notes/model.md sec. 1 (the corrected Eq. 11a);
+//! cross-check against); docs/displacement.md, Route 3 (the corrected Eq. 11a);
 //! docs/quadrature.md (the certified integrator).
 
 use rug::Float;

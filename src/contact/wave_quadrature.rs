@@ -3,7 +3,7 @@
 //!
 //! # The integrals
 //!
-//! Eq. 11a, as corrected in notes/model.md sec. 1 (outer integral over
+//! Eq. 11a, as corrected in docs/displacement.md, Route 3 (outer integral over
 //! `t in [0, D]`, `D = 2 pi a/zeta`, prefactor `A/zeta`, `x = a/cos(phi)`):
 //!
 //! ```text

@@ -6,7 +6,7 @@
 //!
 //! `z = -y` lies on the branch cut of `G` and `z = -1` (the contact edge
 //! `x = a` in the seed's Eq. 12) is its singular point; the real part is still
-//! finite there. With `C_k = 2 Gamma(k+1/2)/Gamma(k+2)` (notes/model.md, sec. 2,
+//! finite there. With `C_k = 2 Gamma(k+1/2)/Gamma(k+2)` (docs/displacement.md, Route 1,
 //! verified against mpmath's `meijerg`):
 //!
 //! ```text
@@ -70,7 +70,7 @@
 //! compare it with Slater's sum at slightly perturbed parameters.
 //!
 //! References: seed paper Eq. 12 and D.41a; DLMF 15.8.4, 16.17.2, 5.5.2 (psi
-//! recurrence); notes/model.md section 2.
+//! recurrence); docs/displacement.md, Route 1.
 
 use rug::Float;
 

@@ -9,17 +9,17 @@
 //!
 //! # Method
 //!
-//! * **Analytic pieces** ([`adaptive`]): adaptive Gauss-Legendre on a work stack of
+//! * **Analytic pieces** (`adaptive.rs`): adaptive Gauss-Legendre on a work stack of
 //!   subintervals, the degree chosen per piece as the cheapest that meets the piece's
 //!   tolerance, bisection where none does; the error bound `64 M / (15 (rho - 1)
 //!   rho^(2n-1))` from `M = |f|` on a Bernstein ellipse (Trefethen 2008; Petras;
 //!   F. Johansson, "Numerical integration in arbitrary-precision ball arithmetic",
 //!   ICMS 2018, the method of Arb's `acb_calc_integrate`). Nodes and weights are balls
-//!   ([`legendre`]), cached per degree and precision.
+//!   (`legendre.rs`), cached per degree and precision.
 //! * **Holomorphy that cannot be forgotten** ([`HoloBall`]): the integrand receives a
 //!   value whose branch-cut functions check the cut themselves on the ellipse's box.
 //!   There is no flag to forget.
-//! * **Endpoint singularities** ([`singular`]): `(x-a)^alpha (b-x)^beta log^k(x-a) g(x)`
+//! * **Endpoint singularities** (`singular.rs`): `(x-a)^alpha (b-x)^beta log^k(x-a) g(x)`
 //!   with `g` analytic, `alpha, beta > -1`. The interval is split at its midpoint; next
 //!   to a singular endpoint the substitution `x = a + d e^{-s}` turns the piece into
 //!   `int_0^inf d^(alpha+1) e^{-(alpha+1)s} (log d - s)^k h(a + d e^{-s}) ds`, whose

@@ -83,7 +83,8 @@ use crate::ball::{Ball, Bounded, Mag};
 use crate::error::{Error, Result};
 use crate::special::{check_finite, exact, f64_from_mp, ziv};
 
-/// Largest |n| accepted (the documented domain is |n| <= 1e4; this is the hard cap).
+/// Largest |n| accepted: the hard cap. The documented and tested domain is |n| <= 1e5
+/// (module docs); orders between 1e5 and this cap are accepted but not tested.
 pub const MAX_ORDER: i64 = 1_000_000;
 
 /// The algorithms.
