@@ -51,7 +51,7 @@ pub enum Error {
     /// An integrand expression that does not parse ([`crate::quad::expr`]).
     Expression(crate::quad::expr::ExprError),
     /// A certified integral that cannot be done as asked ([`crate::quad::certified`]).
-    Integration(crate::quad::certified::IntegrationError),
+    Integration(IntegrationError),
     /// An internal invariant failed. This is a bug; please report it.
     Internal {
         /// What failed.
@@ -87,6 +87,82 @@ impl fmt::Display for Error {
 }
 
 impl std::error::Error for Error {}
+
+/// What can go wrong in an integration, beyond the crate's common errors.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum IntegrationError {
+    /// The integrand could not be bounded on a piece next to `near`: a pole, a
+    /// non-integrable singularity, or an endpoint singularity that was not declared
+    /// with a weight.
+    NotIntegrable {
+        /// A point of the piece that could not be bounded (approximate).
+        near: f64,
+        /// Evaluations spent.
+        evaluations: u64,
+    },
+    /// An exponent of a weight is not `> -1` (the weight is not integrable).
+    WeightExponent {
+        /// `"alpha"` or `"beta"`.
+        which: &'static str,
+        /// The value given.
+        value: f64,
+    },
+    /// The power of the logarithm in a weight is above `max`
+    /// ([`Weight::MAX_LOG_POWER`](crate::quad::certified::Weight::MAX_LOG_POWER)).
+    LogPower {
+        /// The value given.
+        value: u32,
+        /// The largest allowed.
+        max: u32,
+    },
+    /// A decay parameter is out of range.
+    Decay {
+        /// Which parameter, and what it must be.
+        what: &'static str,
+        /// The value given.
+        value: f64,
+    },
+    /// The endpoints are not ordered `a < b` where the integral needs it (weights
+    /// and semi-infinite ranges).
+    Endpoints {
+        /// The left endpoint (approximate).
+        a: f64,
+        /// The right endpoint (approximate).
+        b: f64,
+    },
+    /// An option is out of range.
+    Option {
+        /// Which option, and what it must be.
+        what: &'static str,
+    },
+}
+
+impl fmt::Display for IntegrationError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            IntegrationError::NotIntegrable { near, evaluations } => write!(
+                f,
+                "the integrand is not bounded near x = {near:.6e} (after {evaluations} evaluations): a pole, a \
+                 non-integrable singularity, or an endpoint singularity; declare endpoint behaviour with a weight \
+                 (alpha, beta, log) or split the interval there"
+            ),
+            IntegrationError::WeightExponent { which, value } => {
+                write!(f, "weight exponent {which} = {value} must be > -1 (otherwise the integral diverges)")
+            }
+            IntegrationError::LogPower { value, max } => {
+                write!(f, "log power {value} is too large: use 0 ..= {max}")
+            }
+            IntegrationError::Decay { what, value } => write!(f, "decay: {what} (got {value})"),
+            IntegrationError::Endpoints { a, b } => {
+                write!(f, "this integral needs a < b (got a = {a}, b = {b})")
+            }
+            IntegrationError::Option { what } => write!(f, "integration option: {what}"),
+        }
+    }
+}
+
+
 
 /// `Result` with [`Error`].
 pub type Result<T> = std::result::Result<T, Error>;

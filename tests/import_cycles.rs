@@ -68,11 +68,6 @@ const KNOWN_CYCLES: &[(&[&str], &str)] = &[
         "issue 26: one double-word type (ball::Dd) for both",
     ),
     (
-        &["src/ball.rs", "src/error.rs", "src/quad/certified/mod.rs"],
-        // not in issue 26's list: Error wraps certified's IntegrationError, certified and ball use Error
-        "issue 26: move IntegrationError out of quad::certified (or error.rs below both)",
-    ),
-    (
         &["solver/src/error.rs", "solver/src/grid.rs"],
         // SolverError's message cites grid::MIN_CELLS, grid returns SolverError
         "issue 26: structured errors carry the limits as fields",

@@ -59,6 +59,7 @@ pub(crate) use holo::Mode;
 pub use singular::{Decay, Weight};
 
 use crate::ball::{Ball, CBall, Mag};
+pub use crate::error::IntegrationError;
 use crate::error::{check_prec, Error, Result};
 use adaptive::{Counted, RunLimits, Stats};
 
@@ -85,77 +86,6 @@ impl fmt::Display for Limit {
             Limit::Evaluations => write!(f, "the evaluation limit"),
             Limit::Depth => write!(f, "the bisection depth limit"),
             Limit::WorkingPrecision => write!(f, "the working-precision cap"),
-        }
-    }
-}
-
-/// What can go wrong in an integration, beyond the crate's common errors.
-#[derive(Debug, Clone, PartialEq)]
-#[non_exhaustive]
-pub enum IntegrationError {
-    /// The integrand could not be bounded on a piece next to `near`: a pole, a
-    /// non-integrable singularity, or an endpoint singularity that was not declared
-    /// with a [`Weight`].
-    NotIntegrable {
-        /// A point of the piece that could not be bounded (approximate).
-        near: f64,
-        /// Evaluations spent.
-        evaluations: u64,
-    },
-    /// An exponent of a [`Weight`] is not `> -1` (the weight is not integrable).
-    WeightExponent {
-        /// `"alpha"` or `"beta"`.
-        which: &'static str,
-        /// The value given.
-        value: f64,
-    },
-    /// The power of the logarithm in a [`Weight`] is above [`Weight::MAX_LOG_POWER`].
-    LogPower {
-        /// The value given.
-        value: u32,
-    },
-    /// A [`Decay`] parameter is out of range.
-    Decay {
-        /// Which parameter, and what it must be.
-        what: &'static str,
-        /// The value given.
-        value: f64,
-    },
-    /// The endpoints are not ordered `a < b` where the integral needs it (weights
-    /// and semi-infinite ranges).
-    Endpoints {
-        /// The left endpoint (approximate).
-        a: f64,
-        /// The right endpoint (approximate).
-        b: f64,
-    },
-    /// An option is out of range.
-    Option {
-        /// Which option, and what it must be.
-        what: &'static str,
-    },
-}
-
-impl fmt::Display for IntegrationError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            IntegrationError::NotIntegrable { near, evaluations } => write!(
-                f,
-                "the integrand is not bounded near x = {near:.6e} (after {evaluations} evaluations): a pole, a \
-                 non-integrable singularity, or an endpoint singularity; declare endpoint behaviour with a weight \
-                 (alpha, beta, log) or split the interval there"
-            ),
-            IntegrationError::WeightExponent { which, value } => {
-                write!(f, "weight exponent {which} = {value} must be > -1 (otherwise the integral diverges)")
-            }
-            IntegrationError::LogPower { value } => {
-                write!(f, "log power {value} is too large: use 0 ..= {}", Weight::MAX_LOG_POWER)
-            }
-            IntegrationError::Decay { what, value } => write!(f, "decay: {what} (got {value})"),
-            IntegrationError::Endpoints { a, b } => {
-                write!(f, "this integral needs a < b (got a = {a}, b = {b})")
-            }
-            IntegrationError::Option { what } => write!(f, "integration option: {what}"),
         }
     }
 }

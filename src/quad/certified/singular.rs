@@ -57,7 +57,7 @@ impl Weight {
             }
         }
         if log_power > Weight::MAX_LOG_POWER {
-            return Err(Error::Integration(IntegrationError::LogPower { value: log_power }));
+            return Err(Error::Integration(IntegrationError::LogPower { value: log_power, max: Weight::MAX_LOG_POWER }));
         }
         Ok(Weight { alpha, beta, log_power })
     }
