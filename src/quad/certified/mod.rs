@@ -420,7 +420,6 @@ where
         let mut stats = Stats::default();
         let mut limit = None;
         for part in &parts {
-            let mut tail = part.tail;
             if part.lo != part.hi {
                 let mut g = |z: &CBall, mode: Mode| (part.wrap)(&HoloBall::new(z.clone(), mode), f).into_inner();
                 let mut counted = Counted { f: &mut g, stats };
@@ -436,10 +435,10 @@ where
                 total = total.add(&out.value);
                 truncation = truncation.add(out.truncation);
             }
-            if !tail.is_finite() {
+            if !part.tail.is_finite() {
                 return Err(adaptive::unbounded_error(Some(part.lo.to_f64()), &stats));
             }
-            total.add_error_mag(std::mem::replace(&mut tail, Mag::ZERO));
+            total.add_error_mag(part.tail);
             truncation = truncation.add(part.tail);
         }
         evaluations += stats.evaluations;
