@@ -1084,7 +1084,7 @@ mod profile {
     // asserts nothing about the results, and needs a CPU with FMA. Run by hand:
     // `cargo test --release --lib profile_parts -- --ignored`.
     #[test]
-    #[ignore]
+    #[ignore = "profiling harness for callgrind, asserts nothing (see the comment above)"]
     fn profile_parts() {
         let a: f64 = std::env::var("PROFILE_A").ok().and_then(|v| v.parse().ok()).unwrap_or(6.0);
         // SAFETY: the machine that runs this profile has FMA (asserted).
