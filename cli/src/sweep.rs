@@ -15,6 +15,12 @@
 //! `maugis merge DIR... --out DIR` reads the shards' `sweep.json`, checks that
 //! they cover the grid exactly once, and writes the whole sweep's files. The
 //! grid points run in parallel (rayon) with a progress bar on a terminal.
+//!
+//! `maugis sweep --solver` draws the map with the numerical solver instead
+//! (library: `maugis_solver::map`; this file and `sweep/solver_map.rs` only
+//! parse and present): the same grid, shards and files, with the solver's and
+//! the model's labels side by side (`docs/solver-map.md`); `maugis merge`
+//! recognises its `sweep.json` (`"kind": "solver_map"`).
 
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -24,11 +30,14 @@ use clap::{Args, ValueEnum};
 use plotters::prelude::*;
 
 use maugis::contact::sweep::{merge, run_sweep, Regime, Sweep, SweepAxis, SweepGrid};
+use maugis_solver::map::model_regime_name;
 
 use crate::args::{self, num, short, Roughness};
 use crate::curve::progress;
 use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
 use crate::plot::{plot_err, tick, Legend, Mark};
+
+mod solver_map;
 
 /// The second axis on the command line.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -77,6 +86,20 @@ pub struct SweepArgs {
     /// Compute only shard s of n (1-based), e.g. --shard 3/8 in an array job.
     #[arg(long, value_name = "S/N", value_parser = shard)]
     pub shard: Option<(usize, usize)>,
+    /// Draw the map with the numerical solver: one simulated cycle per point,
+    /// labelled next to the model (`docs/solver-map.md`).
+    #[arg(long)]
+    pub solver: bool,
+    /// With --solver: the label margin of W over the smooth cylinder's W.
+    #[arg(long, value_name = "M", default_value = "0.02", value_parser = args::non_negative, allow_negative_numbers = true, requires = "solver")]
+    pub margin: f64,
+    /// With --solver: grid cells of every cycle (a power of two) instead of the
+    /// per-lambda rule; give --steps with it.
+    #[arg(long, value_name = "N", requires_all = ["solver", "steps"])]
+    pub cells: Option<usize>,
+    /// With --solver: approach steps per leg of every cycle instead of the rule; give --cells with it.
+    #[arg(long, value_name = "S", requires_all = ["solver", "cells"])]
+    pub steps: Option<usize>,
     /// Output directory (written atomically).
     #[arg(long, value_name = "DIR", default_value = "maugis-sweep")]
     pub out: PathBuf,
@@ -113,15 +136,7 @@ fn shard(s: &str) -> Result<(usize, usize), String> {
     Ok((a, b))
 }
 
-fn regime_str(r: Regime) -> &'static str {
-    match r {
-        Regime::Dissipative => "dissipative",
-        Regime::Cavitating => "cavitating",
-        Regime::SmoothLike => "smooth_like",
-    }
-}
-
-fn axis_name(a: SweepAxis) -> &'static str {
+pub(crate) fn axis_name(a: SweepAxis) -> &'static str {
     match a {
         SweepAxis::Alpha => "alpha",
         SweepAxis::Beta => "beta",
@@ -153,7 +168,7 @@ fn sweep_csv(s: &Sweep) -> Result<String, String> {
             p.pull_off_valid.to_string(),
             p.valid_pull_off.map_or(String::new(), |v| v.to_string()),
             p.valid_fraction.to_string(),
-            regime_str(p.regime).to_string(),
+            model_regime_name(p.regime).to_string(),
         ])
         .map_err(err)?;
     }
@@ -164,9 +179,6 @@ fn sweep_csv(s: &Sweep) -> Result<String, String> {
 /// The regime map: one cell per grid point, hue by regime, shade by dissipation.
 fn sweep_svg(s: &Sweep) -> Result<String, String> {
     let g = &s.grid;
-    let (l0, l1) = (g.lambda_min.log10(), g.lambda_max.log10());
-    let dl = if g.lambda_n > 1 { (l1 - l0) / (g.lambda_n - 1) as f64 } else { 1.0 };
-    let dv = if g.n > 1 { (g.max - g.min) / (g.n - 1) as f64 } else { 1.0 };
     let wmax = s.points.iter().map(|p| p.dissipation.abs()).filter(|w| w.is_finite()).fold(0.0, f64::max).max(1e-300);
     // legend beside the map: regime colours at full shade, then the shade ramp
     const BLUE: (f64, f64, f64) = (31.0, 91.0, 180.0);
@@ -197,50 +209,74 @@ fn sweep_svg(s: &Sweep) -> Result<String, String> {
         let title = format!(
             "Regime map: {} over log10 λ, {} (amax = {}, {} points per curve)",
             axis_name(g.axis),
-            match g.axis {
-                SweepAxis::Beta => format!("α = {}", short(g.fixed)),
-                _ => format!("β = {}", short(g.fixed)),
-            },
+            fixed_label(g),
             short(g.amax),
             g.points
         );
-        let mut chart = ChartBuilder::on(&plot)
-            .caption(title, ("sans-serif", 18))
-            .margin(12)
-            .x_label_area_size(55)
-            .y_label_area_size(75)
-            .build_cartesian_2d((l0 - dl / 2.0)..(l1 + dl / 2.0), (g.min - dv / 2.0)..(g.max + dv / 2.0))
-            .map_err(plot_err)?;
-        chart
-            .configure_mesh()
-            .x_desc("log10 λ (Maugis parameter)")
-            .y_desc(axis_name(g.axis))
-            .axis_desc_style(("sans-serif", 18))
-            .label_style(("sans-serif", 15))
-            .x_label_formatter(&tick)
-            .y_label_formatter(&tick)
-            .disable_mesh()
-            .draw()
-            .map_err(plot_err)?;
-        for p in &s.points {
-            let (x, y) = (p.lambda.log10(), p.value);
+        let cells = s.points.iter().map(|p| {
             let t = (p.dissipation.abs() / wmax).clamp(0.0, 1.0);
             let col = match p.regime {
                 Regime::Dissipative => shade(BLUE, t),
                 Regime::Cavitating => shade(ORANGE, t),
                 Regime::SmoothLike => RGBColor(225, 225, 225),
             };
-            chart
-                .draw_series(std::iter::once(Rectangle::new(
-                    [(x - dl / 2.0, y - dv / 2.0), (x + dl / 2.0, y + dv / 2.0)],
-                    col.filled(),
-                )))
-                .map_err(plot_err)?;
-        }
+            (p.lambda, p.value, col)
+        });
+        regime_panel(&plot, g, &title, 18, cells, &[])?;
         legend.draw(&beside, (10, 80), legend_w as i32 - 20)?;
         root.present().map_err(plot_err)?;
     }
     Ok(svg)
+}
+
+/// `β = ...` or `α = ...`: the parameter a map holds fixed.
+pub(crate) fn fixed_label(g: &SweepGrid) -> String {
+    match g.axis {
+        SweepAxis::Beta => format!("α = {}", short(g.fixed)),
+        _ => format!("β = {}", short(g.fixed)),
+    }
+}
+
+/// One regime panel on `area`: a cell per grid point `(lambda, value, colour)`
+/// over log10 lambda and the second axis, and a black ring (radius 7 px) on
+/// each point of `rings`.
+pub(crate) fn regime_panel<DB: DrawingBackend>(
+    area: &DrawingArea<DB, plotters::coord::Shift>,
+    g: &SweepGrid,
+    title: &str,
+    title_size: u32,
+    cells: impl Iterator<Item = (f64, f64, RGBColor)>,
+    rings: &[(f64, f64)],
+) -> Result<(), String> {
+    let (l0, l1) = (g.lambda_min.log10(), g.lambda_max.log10());
+    let dl = if g.lambda_n > 1 { (l1 - l0) / (g.lambda_n - 1) as f64 } else { 1.0 };
+    let dv = if g.n > 1 { (g.max - g.min) / (g.n - 1) as f64 } else { 1.0 };
+    let mut chart = ChartBuilder::on(area)
+        .caption(title, ("sans-serif", title_size))
+        .margin(12)
+        .x_label_area_size(55)
+        .y_label_area_size(75)
+        .build_cartesian_2d((l0 - dl / 2.0)..(l1 + dl / 2.0), (g.min - dv / 2.0)..(g.max + dv / 2.0))
+        .map_err(plot_err)?;
+    chart
+        .configure_mesh()
+        .x_desc("log10 λ (Maugis parameter)")
+        .y_desc(axis_name(g.axis))
+        .axis_desc_style(("sans-serif", 18))
+        .label_style(("sans-serif", 15))
+        .x_label_formatter(&tick)
+        .y_label_formatter(&tick)
+        .disable_mesh()
+        .draw()
+        .map_err(plot_err)?;
+    chart
+        .draw_series(cells.map(|(lambda, v, col)| {
+            let x = lambda.log10();
+            Rectangle::new([(x - dl / 2.0, v - dv / 2.0), (x + dl / 2.0, v + dv / 2.0)], col.filled())
+        }))
+        .map_err(plot_err)?;
+    chart.draw_series(rings.iter().map(|&(lambda, v)| Circle::new((lambda.log10(), v), 7, BLACK.stroke_width(2)))).map_err(plot_err)?;
+    Ok(())
 }
 
 fn files_of(s: &Sweep) -> Result<Vec<OutFile>, String> {
@@ -309,6 +345,9 @@ pub fn run(a: SweepArgs) -> Result<(), String> {
     };
     args::check_size("--amax", a.amax, 1.0, smallest_beta)?;
     check_out_dir(&a.out)?;
+    if a.solver {
+        return solver_map::run(&a, grid);
+    }
     let total = a.shard.map_or(grid.len(), |(s, n)| (0..grid.len()).filter(|k| k % n == s - 1).count());
     let pb = progress(total as u64, "sweep");
     let t0 = Instant::now();
@@ -323,11 +362,23 @@ pub fn run(a: SweepArgs) -> Result<(), String> {
 pub fn run_merge(a: MergeArgs) -> Result<(), String> {
     check_out_dir(&a.out)?;
     let mut parts = Vec::new();
+    let mut maps = Vec::new();
     for d in &a.shards {
         let path = d.join("sweep.json");
         let text = std::fs::read_to_string(&path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
-        let s: Sweep = serde_json::from_str(&text).map_err(|e| format!("{}: not a sweep.json ({e})", path.display()))?;
-        parts.push(s);
+        let bad = |e: serde_json::Error| format!("{}: not a sweep.json ({e})", path.display());
+        let v: serde_json::Value = serde_json::from_str(&text).map_err(bad)?;
+        if solver_map::is_solver_map(&v) {
+            maps.push(serde_json::from_value(v).map_err(bad)?);
+        } else {
+            parts.push(serde_json::from_value(v).map_err(bad)?);
+        }
+    }
+    if !maps.is_empty() {
+        if !parts.is_empty() {
+            return Err("cannot merge model sweeps with solver maps (maugis sweep --solver)".into());
+        }
+        return solver_map::merge(&maps, &a.out);
     }
     let sweep = merge(&parts).map_err(|e| e.to_string())?;
     let written = write_atomically(&a.out, &files_of(&sweep)?)?;

@@ -594,6 +594,82 @@ fn sweep_writes_a_map_and_shards_merge_to_the_whole() {
     );
 }
 
+/// `maugis sweep --solver` on a small grid (1024 cells, 100 steps: about a
+/// second): the CSV columns, the side-by-side SVG (rendered, legend checked),
+/// two shards merged equal the whole; bad flags exit 2 with no files.
+#[test]
+fn solver_sweep_writes_both_maps_and_shards_merge_to_the_whole() {
+    let grid = [
+        "--solver", "--lambda-min", "1", "--lambda-max", "6", "--lambda-n", "2", "--n", "2", "--max", "0.35", "--points", "60", "--cells",
+        "1024", "--steps", "100",
+    ];
+    let whole = TempPath::new("solver-map");
+    let o = maugis(&[&["sweep"][..], &grid, &["--out", whole.str()]].concat());
+    assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(&o));
+    assert!(stdout(&o).contains("the model's label agrees at"), "{}", stdout(&o));
+    let mut r = csv::Reader::from_path(whole.path().join("sweep.csv")).unwrap();
+    let header: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap_or_else(|| panic!("no column {name}"));
+    let rows: Vec<csv::StringRecord> = r.records().map(|x| x.unwrap()).collect();
+    assert_eq!(rows.len(), 4);
+    for row in &rows {
+        for c in ["lambda", "alpha", "beta", "w_solver", "w_model"] {
+            row[col(c)].parse::<f64>().unwrap_or_else(|_| panic!("{c}: {:?}", &row[col(c)]));
+        }
+        assert!(["dissipative", "both", "cavitating", "smooth_like"].contains(&&row[col("regime_solver")]), "{row:?}");
+        assert!(["dissipative", "cavitating", "smooth_like"].contains(&&row[col("regime_model")]), "{row:?}");
+        assert_eq!(&row[col("cells")], "1024");
+    }
+    let report = render::check_svg(&whole.path().join("sweep.svg"));
+    let fill = |label: &str| report.entry(label).colours[0].rgb;
+    let labels = [
+        "dissipative: W above the smooth cylinder's by > 0.02 (model: a valid loop)",
+        "both: dissipative and cavitated states (solver only)",
+        "cavitating: cavitated states, no dissipation (model: loops, all invalid)",
+    ];
+    let colours = labels.map(fill);
+    assert!(colours[0] != colours[1] && colours[1] != colours[2] && colours[0] != colours[2], "{colours:?}");
+    let disagreeing = rows.iter().filter(|r| &r[col("agree")] == "false").count();
+    report.entry(&format!("labels disagree ({disagreeing} of 4 points)"));
+
+    let (s1, s2, merged) = (TempPath::new("smap1"), TempPath::new("smap2"), TempPath::new("smerged"));
+    for (sh, dir) in [("1/2", &s1), ("2/2", &s2)] {
+        let o = maugis(&[&["sweep"][..], &grid, &["--shard", sh, "--out", dir.str()]].concat());
+        assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(&o));
+        assert!(!dir.path().join("sweep.svg").exists(), "a shard draws no map");
+    }
+    let o = maugis(&["merge", s2.str(), s1.str(), "--out", merged.str()]);
+    assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(&o));
+    for f in ["sweep.json", "sweep.csv", "sweep.svg"] {
+        let read = |d: &TempPath| std::fs::read_to_string(d.path().join(f)).unwrap();
+        assert_eq!(read(&merged), read(&whole), "{f}");
+    }
+    // a model sweep does not merge with a solver map
+    let model = TempPath::new("smodel");
+    let o = maugis(&["sweep", "--lambda-n", "1", "--n", "1", "--points", "30", "--shard", "1/2", "--out", model.str()]);
+    assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(&o));
+    let mixed = TempPath::new("smixed");
+    let o = maugis(&["merge", s1.str(), model.str(), "--out", mixed.str()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("solver maps") && !mixed.path().exists(), "{}", stderr(&o));
+
+    let bad: &[&[&str]] = &[
+        &["--solver", "--margin", "-1"],
+        &["--margin", "0.1"],
+        &["--solver", "--cells", "1024"],
+        &["--solver", "--cells", "1000", "--steps", "100"],
+        &["--solver", "--cells", "1024", "--steps", "1"],
+        &["--solver", "--shard", "3/2"],
+    ];
+    for args in bad {
+        let dir = TempPath::new("sbad");
+        let o = maugis(&[&["sweep", "--lambda-n", "1", "--n", "1", "--out", dir.str()][..], args].concat());
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert_eq!(stderr(&o).lines().count(), 1, "{args:?}: {}", stderr(&o));
+        assert!(!dir.path().exists() && dir.tmp_siblings().is_empty(), "{args:?}: wrote files");
+    }
+}
+
 #[test]
 fn out_that_is_a_file_is_refused_before_computing() {
     let file = TempPath::new("file");

@@ -25,6 +25,9 @@
 //! * [`dissipation`]: W of the closed in-contact cycle under load and
 //!   displacement control, measured on a simulated cycle as the library
 //!   measures it on the model;
+//! * [`map`]: regime maps drawn by the solver, one cycle per grid point of the
+//!   model's sweep grid, labelled next to the model (sharded, merged exactly;
+//!   parallel with the `parallel` feature);
 //! * [`run::simulate`]: one cycle from `(lambda, alpha, beta)`, set up as
 //!   `maugis simulate` and the Python package run it.
 //!
@@ -44,6 +47,7 @@ pub mod dissipation;
 pub mod elastic;
 pub mod error;
 pub mod grid;
+pub mod map;
 pub mod path;
 pub mod profile;
 pub mod run;
