@@ -24,3 +24,16 @@ def write_below_marker(path, marker, text):
             prefix = old[: old.index(marker) + len(marker)] + "\n\n"
     with open(path, "w") as fh:
         fh.write(prefix + text)
+
+
+def write_between_markers(path, begin, end, text):
+    """Replaces what lies between the `begin` and `end` marker lines of the
+    existing file `path` by `text` (both markers must be there)."""
+    with open(path) as fh:
+        old = fh.read()
+    if begin not in old or end not in old:
+        raise SystemExit("%s: markers %r ... %r not found" % (path, begin, end))
+    head = old[: old.index(begin) + len(begin)]
+    tail = old[old.index(end):]
+    with open(path, "w") as fh:
+        fh.write(head + "\n\n" + text + "\n" + tail)

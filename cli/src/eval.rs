@@ -61,6 +61,72 @@ use serde_json::{json, Map, Value};
 
 use crate::integrate::{ball_fields, digits_for};
 
+/// Time per request by stage, printed to stderr at the end of `maugis eval`
+/// when `MAUGIS_EVAL_PROFILE=1` (measurement only; off, it costs one branch per
+/// stage). Stages: reading the line, the JSON parse, the arguments (decimal
+/// text to `Decimal`/f64/integers), the evaluation, the response (ball to
+/// decimal text, JSON object) and the output (serialising and writing).
+mod profile {
+    use std::cell::Cell;
+    use std::sync::OnceLock;
+    use std::time::Instant;
+
+    pub const NAMES: [&str; 6] = ["read line", "JSON parse", "arguments", "evaluation", "response", "output"];
+    pub const READ: usize = 0;
+    pub const JSON: usize = 1;
+    pub const ARGS: usize = 2;
+    pub const EVAL: usize = 3;
+    pub const RESPONSE: usize = 4;
+    pub const OUTPUT: usize = 5;
+
+    thread_local! {
+        static NANOS: Cell<[u64; 6]> = const { Cell::new([0; 6]) };
+    }
+
+    pub fn enabled() -> bool {
+        static ON: OnceLock<bool> = OnceLock::new();
+        *ON.get_or_init(|| std::env::var_os("MAUGIS_EVAL_PROFILE").is_some_and(|v| v == "1"))
+    }
+
+    /// Runs `f`, charging its time to `stage` (nested stages are subtracted by the caller).
+    #[inline]
+    pub fn timed<T>(stage: usize, f: impl FnOnce() -> T) -> T {
+        if !enabled() {
+            return f();
+        }
+        let t = Instant::now();
+        let out = f();
+        add(stage, t.elapsed().as_nanos() as i64);
+        out
+    }
+
+    /// Adds `nanos` (may be negative, to move time between stages) to `stage`.
+    pub fn add(stage: usize, nanos: i64) {
+        NANOS.with(|c| {
+            let mut a = c.get();
+            a[stage] = a[stage].wrapping_add(nanos as u64);
+            c.set(a);
+        });
+    }
+
+    pub fn get(stage: usize) -> u64 {
+        NANOS.with(|c| c.get()[stage])
+    }
+
+    /// The per-request means, one line per stage.
+    pub fn report(requests: u64) {
+        if !enabled() || requests == 0 {
+            return;
+        }
+        let a = NANOS.with(|c| c.get());
+        let total: u64 = a.iter().sum();
+        eprintln!("maugis eval profile: {requests} requests, {:.3} us each", total as f64 / requests as f64 / 1e3);
+        for (name, ns) in NAMES.iter().zip(a) {
+            eprintln!("  {name:<11} {:>9.3} us  {:>5.1} %", ns as f64 / requests as f64 / 1e3, 100.0 * ns as f64 / total.max(1) as f64);
+        }
+    }
+}
+
 /// A request-level failure, turned into an error line.
 struct BadRequest(String);
 
@@ -103,6 +169,10 @@ fn arg_text<'a>(obj: &'a Map<String, Value>, name: &str) -> Req<String> {
 }
 
 fn arg_f64(obj: &Map<String, Value>, name: &str) -> Req<f64> {
+    profile::timed(profile::ARGS, || arg_f64_untimed(obj, name))
+}
+
+fn arg_f64_untimed(obj: &Map<String, Value>, name: &str) -> Req<f64> {
     let t = arg_text(obj, name)?;
     let v: f64 = t.parse().map_err(|_| BadRequest(format!("argument \"{name}\" = {t:?} is not a decimal number")))?;
     if !v.is_finite() {
@@ -113,13 +183,19 @@ fn arg_f64(obj: &Map<String, Value>, name: &str) -> Req<f64> {
 
 /// The argument as an exact [`Decimal`] (for functions wired to ball inputs).
 fn arg_decimal(obj: &Map<String, Value>, name: &str) -> Req<Decimal> {
-    let t = arg_text(obj, name)?;
-    Decimal::parse(&t).map_err(|e| BadRequest(format!("argument \"{name}\": {e}")))
+    profile::timed(profile::ARGS, || {
+        let t = arg_text(obj, name)?;
+        Decimal::parse(&t).map_err(|e| BadRequest(format!("argument \"{name}\": {e}")))
+    })
 }
 
 /// The argument rounded to nearest at `max(prec, 53) + 64` bits (the legacy
 /// contract of functions not yet wired to ball inputs).
 fn arg_float(obj: &Map<String, Value>, name: &str, prec: u32) -> Req<Float> {
+    profile::timed(profile::ARGS, || arg_float_untimed(obj, name, prec))
+}
+
+fn arg_float_untimed(obj: &Map<String, Value>, name: &str, prec: u32) -> Req<Float> {
     let t = arg_text(obj, name)?;
     let parsed = Float::parse(&t).map_err(|_| BadRequest(format!("argument \"{name}\" = {t:?} is not a decimal number")))?;
     let v = Float::with_val(prec.max(53) + 64, parsed);
@@ -130,6 +206,10 @@ fn arg_float(obj: &Map<String, Value>, name: &str, prec: u32) -> Req<Float> {
 }
 
 fn arg_int(obj: &Map<String, Value>, name: &str) -> Req<i64> {
+    profile::timed(profile::ARGS, || arg_int_untimed(obj, name))
+}
+
+fn arg_int_untimed(obj: &Map<String, Value>, name: &str) -> Req<i64> {
     let t = arg_text(obj, name)?;
     if let Ok(v) = t.parse::<i64>() {
         return Ok(v);
@@ -177,8 +257,10 @@ fn check_names(obj: &Map<String, Value>, fname: &str, args: &[&str]) -> Req<()> 
 }
 
 fn mp_response(id: &Value, ball: &Ball, prec: u32) -> Value {
-    let (mid, rad) = ball.to_decimal(digits_for(prec));
-    json!({"id": id, "mid": mid, "rad": rad, "prec": prec})
+    profile::timed(profile::RESPONSE, || {
+        let (mid, rad) = ball.to_decimal_fast(digits_for(prec));
+        json!({"id": id, "mid": mid, "rad": rad, "prec": prec})
+    })
 }
 
 fn f64_response(id: &Value, v: f64) -> Value {
@@ -416,9 +498,24 @@ fn evaluate_integral(obj: &Map<String, Value>, id: &Value, prec: u32) -> Req<Val
     Ok(resp)
 }
 
+/// [`evaluate`], its time less the argument and response stages charged to
+/// the evaluation stage of the profile.
+fn evaluate_timed(obj: &Map<String, Value>) -> Req<Value> {
+    if !profile::enabled() {
+        return evaluate(obj);
+    }
+    let nested = || profile::get(profile::ARGS) as i64 + profile::get(profile::RESPONSE) as i64;
+    let before = nested();
+    let t = std::time::Instant::now();
+    let out = evaluate(obj);
+    let spent = t.elapsed().as_nanos() as i64;
+    profile::add(profile::EVAL, spent - (nested() - before));
+    out
+}
+
 /// Handles one input line; always returns exactly one response.
 pub fn handle_line(line: &str) -> Value {
-    let parsed: Value = match serde_json::from_str(line) {
+    let parsed: Value = match profile::timed(profile::JSON, || serde_json::from_str(line)) {
         Ok(v) => v,
         Err(e) => return json!({"id": Value::Null, "error": format!("invalid JSON: {e}")}),
     };
@@ -427,7 +524,7 @@ pub fn handle_line(line: &str) -> Value {
     };
     let id = obj.get("id").cloned().unwrap_or(Value::Null);
     // A panic in a numerical routine would be a bug; catch it so the stream goes on.
-    let result = std::panic::catch_unwind(|| evaluate(&obj));
+    let result = std::panic::catch_unwind(|| evaluate_timed(&obj));
     match result {
         Ok(Ok(v)) => v,
         Ok(Err(BadRequest(msg))) => json!({"id": id, "error": msg}),
@@ -436,26 +533,47 @@ pub fn handle_line(line: &str) -> Value {
 }
 
 /// Runs the calculator over stdin/stdout. Returns the process exit code.
+///
+/// Responses are flushed whenever no further input is waiting in the read
+/// buffer (an interactive client gets each answer before it sends the next
+/// line; a piped batch is written in large blocks, not one `write` per line).
 pub fn run() -> i32 {
-    let stdin = std::io::stdin();
+    let mut input = std::io::BufReader::with_capacity(1 << 16, std::io::stdin().lock());
     let stdout = std::io::stdout();
-    let mut out = std::io::BufWriter::new(stdout.lock());
-    for line in stdin.lock().lines() {
-        let line = match line {
-            Ok(l) => l,
+    let mut out = std::io::BufWriter::with_capacity(1 << 16, stdout.lock());
+    let mut line = String::new();
+    let mut requests = 0u64;
+    loop {
+        line.clear();
+        match profile::timed(profile::READ, || input.read_line(&mut line)) {
+            Ok(0) => break,
+            Ok(_) => {}
             Err(e) => {
                 eprintln!("maugis eval: cannot read stdin: {e}");
                 return 2;
             }
-        };
+        }
         if line.trim().is_empty() {
             continue;
         }
-        let resp = handle_line(&line);
-        if writeln!(out, "{resp}").and_then(|_| out.flush()).is_err() {
+        requests += 1;
+        let resp = handle_line(line.trim_end_matches(['\n', '\r']));
+        let written = profile::timed(profile::OUTPUT, || {
+            serde_json::to_writer(&mut out, &resp).map_err(std::io::Error::from)?;
+            out.write_all(b"\n")?;
+            if input.buffer().is_empty() {
+                out.flush()?;
+            }
+            Ok::<(), std::io::Error>(())
+        });
+        if written.is_err() {
             // Broken pipe: the reader went away.
             return 0;
         }
+    }
+    profile::report(requests);
+    if out.flush().is_err() {
+        return 0;
     }
     0
 }

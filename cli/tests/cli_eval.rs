@@ -6,14 +6,15 @@ use std::process::{Command, Stdio};
 use rug::Float;
 use serde_json::Value;
 
+/// `maugis eval` with its three streams piped.
+fn eval_command() -> Command {
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_maugis"));
+    cmd.arg("eval").stdin(Stdio::piped()).stdout(Stdio::piped()).stderr(Stdio::piped());
+    cmd
+}
+
 fn eval_lines(input: &str) -> (Vec<Value>, i32) {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_maugis"))
-        .arg("eval")
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("spawn maugis");
+    let mut child = eval_command().spawn().expect("spawn maugis");
     child.stdin.take().unwrap().write_all(input.as_bytes()).unwrap();
     let out = child.wait_with_output().unwrap();
     let text = String::from_utf8(out.stdout).unwrap();
@@ -198,4 +199,57 @@ fn model_strip_ratio_and_load_at_typed_decimals() {
     assert!(expected.len() >= 8, "{}", expected.len());
     let (out, _) = eval_lines("{\"fn\":\"load\",\"lambda\":\"1\",\"alpha\":\"-0.1\",\"beta\":\"1.125\",\"abar\":\"2\",\"prec\":64}\n");
     assert!(out[0]["error"].as_str().unwrap().contains("alpha"), "{}", out[0]);
+}
+
+/// Responses are batched only while more input is waiting: a client that sends
+/// one line and waits gets its answer before it sends the next (stdin open).
+#[test]
+fn interactive_client_gets_each_answer_before_the_next_line() {
+    use std::io::{BufRead, BufReader};
+    let mut child = eval_command().spawn().expect("spawn maugis");
+    let mut stdin = child.stdin.take().unwrap();
+    let (tx, rx) = std::sync::mpsc::channel();
+    let stdout = child.stdout.take().unwrap();
+    std::thread::spawn(move || {
+        for line in BufReader::new(stdout).lines() {
+            if tx.send(line.unwrap()).is_err() {
+                break;
+            }
+        }
+    });
+    for id in 1..=3 {
+        writeln!(stdin, "{{\"id\":{id},\"fn\":\"bessel_j\",\"n\":0,\"x\":\"2.5\",\"prec\":128}}").unwrap();
+        stdin.flush().unwrap();
+        let got = rx.recv_timeout(std::time::Duration::from_secs(20)).expect("an answer while stdin stays open");
+        let v: Value = serde_json::from_str(&got).unwrap();
+        assert_eq!(v["id"], id);
+        assert!(v["mid"].as_str().unwrap().starts_with("-4.838377646819799632728777885120343363"), "{got}");
+    }
+    drop(stdin);
+    assert!(child.wait().unwrap().success());
+}
+
+/// `MAUGIS_EVAL_PROFILE=1` reports the time per stage on stderr; stdout is unchanged.
+#[test]
+fn profile_reports_the_stages_on_stderr() {
+    let input = "{\"id\":1,\"fn\":\"bessel_j\",\"n\":0,\"x\":\"2.5\",\"prec\":128}\n{\"id\":2,\"fn\":\"nope\"}\n";
+    let run = |profile: bool| {
+        let mut cmd = eval_command();
+        if profile {
+            cmd.env("MAUGIS_EVAL_PROFILE", "1");
+        } else {
+            cmd.env_remove("MAUGIS_EVAL_PROFILE");
+        }
+        let mut child = cmd.spawn().expect("spawn maugis");
+        child.stdin.take().unwrap().write_all(input.as_bytes()).unwrap();
+        child.wait_with_output().unwrap()
+    };
+    let (plain, profiled) = (run(false), run(true));
+    assert_eq!(plain.stdout, profiled.stdout);
+    assert!(plain.stderr.is_empty());
+    let err = String::from_utf8(profiled.stderr).unwrap();
+    assert!(err.contains("2 requests"), "{err}");
+    for stage in ["JSON parse", "arguments", "evaluation", "response", "output"] {
+        assert!(err.contains(stage), "{stage} missing in {err}");
+    }
 }

@@ -26,7 +26,7 @@
 use rug::float::Round;
 use rug::{Float, Integer, Rational};
 
-use super::{rounded, Ball};
+use super::{rounded, Ball, Mag};
 use crate::error::{Error, Result};
 
 /// Largest |decimal exponent| accepted (after folding in the digits' position).
@@ -165,6 +165,75 @@ impl Ball {
     pub fn from_decimal(text: &str, prec: u32) -> Result<Ball> {
         Ok(Decimal::parse(text)?.to_ball(prec))
     }
+
+    /// [`Ball::to_decimal`] at about a third of its cost (`maugis eval`'s
+    /// printing, issue 23 item 6: 1.5 -> 0.5 us at 128 bits): decimal midpoint
+    /// with `digits` significant digits and a decimal radius that bounds the
+    /// true radius plus the conversion error of the midpoint, so the printed
+    /// ball encloses.
+    ///
+    /// The midpoint is printed by MPFR's `mpfr_get_str` rounding to nearest
+    /// (rug's `to_string_radix`), so it is within half a unit of its last printed
+    /// digit of the binary midpoint; that half unit, bounded above
+    /// ([`half_unit_of_last_digit`]), is the conversion error. `to_decimal`
+    /// parses the printed text back and subtracts, which costs a parse at
+    /// `prec + 64` bits for a radius at most half a unit of the last digit
+    /// smaller. The radius is printed through f64 where it is a normal f64
+    /// ([`mag_decimal_upper`]).
+    pub fn to_decimal_fast(&self, digits: usize) -> (String, String) {
+        let mid_s = self.mid().to_string_radix(10, Some(digits.max(1)));
+        let conv = if self.mid().is_zero() { Mag::ZERO } else { half_unit_of_last_digit(&mid_s).unwrap_or_else(Mag::inf) };
+        (mid_s, mag_decimal_upper(self.rad_mag().add(conv)))
+    }
+}
+
+/// An upper bound of half a unit in the last digit of the decimal text `s`
+/// (`[-]digits[.digits][e[-]exp]`, rug's format), or `None` if `s` is not such
+/// a decimal (`inf`, `NaN`).
+fn half_unit_of_last_digit(s: &str) -> Option<Mag> {
+    let body = s.strip_prefix('-').unwrap_or(s);
+    let (mant, exp) = match body.find('e') {
+        Some(i) => (&body[..i], body[i + 1..].parse::<i64>().ok()?),
+        None => (body, 0),
+    };
+    if mant.is_empty() || !mant.bytes().all(|b| b.is_ascii_digit() || b == b'.') {
+        return None;
+    }
+    let frac_digits = mant.find('.').map_or(0, |i| mant.len() - i - 1) as i64;
+    Some(pow10_upper(exp.checked_sub(frac_digits)?).mul_2exp(-1))
+}
+
+/// An upper bound of `10^m`: `2^s` with `s >= m log2(10)`. The f64 product
+/// `t = m LOG2_10` errs by at most `2.5e-16 |t|` (the constant and one rounding;
+/// `m` is exact below `2^52`), covered by the slack `2e-15 |t| + 1e-9`, which
+/// also covers the rounding of `t + slack`; `s = e + f` with `e = floor(s)` and
+/// `f = s - e` exact, and `2^f` from `exp2` (within a few ulps) raised by `1e-12`.
+fn pow10_upper(m: i64) -> Mag {
+    if m.unsigned_abs() > 1 << 52 {
+        return if m < 0 { Mag::pow2(-(1 << 60)) } else { Mag::inf() };
+    }
+    let t = m as f64 * std::f64::consts::LOG2_10;
+    let s = t + (t.abs() * 2e-15 + 1e-9);
+    let e = s.floor();
+    Mag::from_f64((s - e).exp2() * (1.0 + 1e-12)).mul_2exp(e as i64)
+}
+
+/// A short decimal string `>= m` ([`super::decimal_upper`] of a [`Mag`]): through
+/// f64 where the bound is a normal f64 (Rust prints an f64 exactly rounded to
+/// nearest, so printing `v (1 + 2^-16)` with six significant digits, relative
+/// error `<= 5e-6`, gives a decimal `>= v`), else through MPFR.
+fn mag_decimal_upper(m: Mag) -> String {
+    if m.is_zero() {
+        return "0".to_string();
+    }
+    let l = m.log2();
+    if l.is_finite() && l.abs() < 1000.0 {
+        let v = m.to_f64_up();
+        if v.is_normal() {
+            return format!("{:.5e}", v * (1.0 + 1.0 / 65536.0));
+        }
+    }
+    super::decimal_upper(&m.to_float())
 }
 
 /// Largest midpoint precision [`eval_at_decimals`] rounds decimals to.
@@ -308,5 +377,34 @@ mod tests {
         })
         .unwrap();
         assert_eq!(calls, 1);
+    }
+
+    #[test]
+    fn decimal_output_encloses_in_every_format() {
+        // rug prints "123456.75", "1.5e-3", "1.0e300", "-7.0e-5000": the half unit of the
+        // last digit is read from each form; radii outside the f64 range go through MPFR.
+        let texts = ["2.5", "123456.75", "0.001", "1e300", "-7e-5000", "9.99999999999999999999999999999999999999999999e9", "1e-320", "3e100000"];
+        for (i, t) in texts.iter().enumerate() {
+            for (digits, rad) in [(1usize, 0.0), (7, 1e-30), (42, 0.0), (42, 3.5e-44)] {
+                let x = Float::with_val(180, Float::parse(t).unwrap()) / 3u32;
+                let mut b = Ball::from_float(&x, 180);
+                b.add_error(&Float::with_val(53, rad));
+                let (m, r) = b.to_decimal_fast(digits);
+                let mid = Float::with_val(400, Float::parse(&m).unwrap());
+                let rr = Float::with_val(400, Float::parse(&r).unwrap());
+                // encloses the exact midpoint with room for the input radius
+                let d = Float::with_val(400, &x - &mid).abs() + rad;
+                assert!(d <= rr, "{i} {t} digits={digits}: {m} +/- {r} vs {x}");
+                // and is no wider than the radius plus one unit of the last digit (and 3e-5 for the rounding up)
+                let unit = Float::with_val(400, x.abs_ref()) * Float::with_val(400, Float::i_pow_u(10, digits as u32 - 1)).recip() * 10u32;
+                let limit = (Float::with_val(400, rad) + unit) * 1.00003f64;
+                assert!(rr <= limit, "{i} {t} digits={digits}: {r} > {limit}");
+            }
+        }
+        let mut z = Ball::from_float(&Float::new(53), 53);
+        z.add_error(&Float::with_val(53, 1e-10));
+        let (m, r) = z.to_decimal_fast(10);
+        assert_eq!(m, "0");
+        assert!(Float::with_val(100, Float::parse(&r).unwrap()) >= 1e-10);
     }
 }
