@@ -5,7 +5,9 @@
 //! per (integral, prec): id, prec, mean ms per call, evaluations of one call, calls,
 //! goal met, and the real part.
 //!
-//! `cargo run --release --example integrals_bench`
+//! `cargo run --release --example integrals_bench [id]`; with `MAUGIS_BENCH_CALLS=n`,
+//! exactly `n` timed calls (for instruction counts under callgrind, which a loaded
+//! machine does not disturb).
 
 use std::time::Instant;
 
@@ -30,7 +32,13 @@ fn once(f: F, a: i64, b: i64, prec: u32) -> Integral {
 
 fn main() {
     let only: Option<String> = std::env::args().nth(1);
-    for prec in [64u32, 333] {
+    // A fixed number of calls instead of 0.2 s (for instruction counts under callgrind).
+    let fixed_calls: Option<u64> = std::env::var("MAUGIS_BENCH_CALLS").ok().and_then(|v| v.parse().ok());
+    let precs: Vec<u32> = match std::env::var("MAUGIS_BENCH_PREC").ok().and_then(|v| v.parse().ok()) {
+        Some(p) => vec![p],
+        None => vec![64, 333],
+    };
+    for prec in precs {
         for (id, f, a, b) in INTEGRALS {
             if only.as_deref().is_some_and(|o| o != id) {
                 continue;
@@ -42,7 +50,7 @@ fn main() {
             loop {
                 last = once(f, a, b, prec);
                 calls += 1;
-                if t0.elapsed().as_secs_f64() >= 0.2 {
+                if fixed_calls.map_or(t0.elapsed().as_secs_f64() >= 0.2, |n| calls >= n) {
                     break;
                 }
             }

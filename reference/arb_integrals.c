@@ -13,6 +13,8 @@
 
 #include <stdio.h>
 #include <time.h>
+#include <string.h>
+#include <stdlib.h>
 #include <acb_calc.h>
 #include <acb_hypgeom.h>
 
@@ -94,6 +96,12 @@ static double now(void)
 int main(int argc, char **argv)
 {
     static const slong precs[] = {64, 333};
+    /* as on the maugis side: MAUGIS_BENCH_CALLS=n runs exactly n timed calls,
+       MAUGIS_BENCH_PREC=p only that precision, argv[1] only that integral */
+    const char *calls_env = getenv("MAUGIS_BENCH_CALLS");
+    const char *prec_env = getenv("MAUGIS_BENCH_PREC");
+    long fixed_calls = calls_env ? atol(calls_env) : 0;
+    slong only_prec = prec_env ? atol(prec_env) : 0;
     acb_t s, a, b;
     mag_t tol;
     acb_calc_integrate_opt_t opt;
@@ -108,6 +116,8 @@ int main(int argc, char **argv)
     for (j = 0; j < sizeof(precs) / sizeof(precs[0]); j++)
     {
         slong prec = precs[j];
+        if (only_prec && prec != only_prec)
+            continue;
         mag_set_ui_2exp_si(tol, 1, -prec);
         for (i = 0; i < sizeof(integrals) / sizeof(integrals[0]); i++)
         {
@@ -115,6 +125,9 @@ int main(int argc, char **argv)
             long calls = 0, ev;
             double t0, t;
             char *str;
+
+            if (argc > 1 && strcmp(argv[1], in->id) != 0)
+                continue;
 
             acb_set_si(a, in->a);
             acb_set_si(b, in->b);
@@ -128,7 +141,7 @@ int main(int argc, char **argv)
                 acb_calc_integrate(s, in->f, NULL, a, b, prec, tol, opt, prec);
                 calls++;
                 t = now() - t0;
-            } while (t < 0.2);
+            } while (fixed_calls ? calls < fixed_calls : t < 0.2);
             str = arb_get_str(acb_realref(s), 20, 0);
             printf("%s\t%ld\t%.6f\t%ld\t%ld\t%s\n", in->id, (long) prec, 1e3 * t / calls, ev, calls, str);
             flint_free(str);

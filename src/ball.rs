@@ -41,6 +41,7 @@ mod decimal;
 mod dd_bounded;
 mod double_double;
 mod elementary;
+mod fixed;
 pub(crate) use double_double::{quick_two_sum, two_prod, two_sum};
 mod lanes;
 pub(crate) use lanes::F64x2;
@@ -572,6 +573,9 @@ impl Ball {
     /// `(sin(self), cos(self))`. Both are 1-Lipschitz, so the input radius
     /// carries over unchanged; MPFR's correctly rounded values add one ulp each.
     pub fn sin_cos(&self) -> (Ball, Ball) {
+        if let Some(((s, es), (c, ec))) = self.is_finite().then(|| fixed::sin_cos(&self.mid, self.prec())).flatten() {
+            return (Ball { mid: s, rad: self.rad.add(es) }, Ball { mid: c, rad: self.rad.add(ec) });
+        }
         let mut s = self.mid.clone();
         let mut c = Float::new(self.prec());
         let (os, oc) = s.sin_cos_round(&mut c, Round::Nearest);

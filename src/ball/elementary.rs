@@ -4,7 +4,9 @@
 //!
 //! Each function evaluates MPFR once at the midpoint `m`, rounded to nearest at the
 //! ball's precision (error at most one ulp, zero when MPFR reports the result exact),
-//! and adds a bound for the effect of the input radius `r` from the derivative:
+//! and adds a bound for the effect of the input radius `r` from the derivative. `exp`,
+//! `sin` and `cos` take the midpoint value and its error bound from the fixed-point
+//! kernels of [`super::fixed`] instead, where those serve the precision and argument:
 //!
 //! * `exp`: `|e^(m+t) - e^m| <= e^m (e^r - 1)`;
 //! * `sinh`, `cosh`: `|sinh(m+t) - sinh m|, |cosh(m+t) - cosh m| <= cosh(m) (e^r - 1)`
@@ -94,14 +96,23 @@ impl Ball {
             // A wide ball: exp is increasing, so the hull of the directed-rounded
             // values at the ends (it stays positive, unlike mid +- |exp'| r).
             let (lo, hi) = (self.lower(), self.upper());
-            let (a, b) = (Float::with_val_round(p, lo.exp_ref(), Round::Down).0, Float::with_val_round(p, hi.exp_ref(), Round::Up).0);
+            // an end of the fixed-point ball when the kernel serves it, else MPFR rounded outward
+            let end = |x: &Float, round: Round| match super::fixed::exp(x, p) {
+                Some((y, rad)) if round == Round::Down => Ball { mid: y, rad }.lower(),
+                Some((y, rad)) => Ball { mid: y, rad }.upper(),
+                None => Float::with_val_round(p, x.exp_ref(), round).0,
+            };
+            let (a, b) = (end(&lo, Round::Down), end(&hi, Round::Up));
             if !b.is_finite() {
                 return nan_ball(p);
             }
             return Ball::hull(&a, &b, p);
         }
-        let (y, ord) = Float::with_val_round(p, self.mid.exp_ref(), Round::Nearest);
-        let err = mpfr_error(&y, ord);
+        let (y, err) = super::fixed::exp(&self.mid, p).unwrap_or_else(|| {
+            let (y, ord) = Float::with_val_round(p, self.mid.exp_ref(), Round::Nearest);
+            let err = mpfr_error(&y, ord);
+            (y, err)
+        });
         with_lipschitz(y.clone(), err, &y, self.rad)
     }
 
@@ -178,6 +189,9 @@ impl Ball {
 
     /// `sin(self)`.
     pub fn sin(&self) -> Ball {
+        if let Some(((y, err), _)) = self.is_finite().then(|| super::fixed::sin_cos(&self.mid, self.prec())).flatten() {
+            return Ball { mid: y, rad: self.rad.add(err) };
+        }
         self.lipschitz1(|m, p| Float::with_val_round(p, m.sin_ref(), Round::Nearest))
     }
 
