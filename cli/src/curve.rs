@@ -359,7 +359,7 @@ pub fn run(a: CurveArgs) -> Result<(), String> {
 
 /// Splits a curve into runs of equal validity; neighbouring runs share their
 /// boundary point so the drawn line is continuous.
-fn validity_runs<'p>(points: impl IntoIterator<Item = &'p CurvePoint>, coords: impl Fn(&CurvePoint) -> (f64, f64)) -> Vec<(bool, Vec<(f64, f64)>)> {
+pub(crate) fn validity_runs<'p>(points: impl IntoIterator<Item = &'p CurvePoint>, coords: impl Fn(&CurvePoint) -> (f64, f64)) -> Vec<(bool, Vec<(f64, f64)>)> {
     let mut out: Vec<(bool, Vec<(f64, f64)>)> = Vec::new();
     for p in points {
         let xy = coords(p);
@@ -389,7 +389,7 @@ fn validity_runs<'p>(points: impl IntoIterator<Item = &'p CurvePoint>, coords: i
 /// Draws one curve's validity runs (from [`validity_runs`]): valid parts solid,
 /// invalid parts thin, faded and dashed, clipped to `[ymin, ymax]`, and adds the
 /// curve's legend entry (in the dashed style when every state is invalid).
-fn draw_validity_runs(
+pub(crate) fn draw_validity_runs(
     chart: &mut ChartContext<'_, SVGBackend<'_>, Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>>,
     legend: &mut Legend,
     runs: Vec<(bool, Vec<(f64, f64)>)>,
@@ -419,7 +419,7 @@ fn draw_validity_runs(
 }
 
 /// The legend entry for invalid stretches (thin, faded, dotted).
-fn invalid_entry(legend: &mut Legend, label: &str) {
+pub(crate) fn invalid_entry(legend: &mut Legend, label: &str) {
     legend.line(label, ShapeStyle { color: BLACK.mix(0.6), filled: false, stroke_width: 2 }, 3, 5);
 }
 
@@ -649,7 +649,7 @@ pub fn load_approach_svg(runs: &[Run], alpha: f64, beta: f64, window: Window) ->
 }
 
 /// Validity of the grid state nearest to `abar`.
-fn valid_at(c: &Curve, abar: f64) -> bool {
+pub(crate) fn valid_at(c: &Curve, abar: f64) -> bool {
     c.points
         .iter()
         .min_by(|p, q| (p.abar - abar).abs().total_cmp(&(q.abar - abar).abs()))
@@ -658,7 +658,7 @@ fn valid_at(c: &Curve, abar: f64) -> bool {
 }
 
 /// A closed outline of a polygon.
-fn closed(shape: &[(i32, i32)]) -> Vec<(i32, i32)> {
+pub(crate) fn closed(shape: &[(i32, i32)]) -> Vec<(i32, i32)> {
     let mut v = shape.to_vec();
     if let Some(&f) = shape.first() {
         v.push(f);

@@ -11,6 +11,7 @@
 //! * `maugis limits`: the Appendix E limits and the Eq. 17 envelope (`limits.rs`).
 //! * `maugis sweep` / `maugis merge`: regime maps, sharded for array jobs (`sweep.rs`).
 //! * `maugis paper`: the paper's quoted numbers next to ours, docs/paper.md (`paper.rs`).
+//! * `maugis figures`: the paper's Figs. 2-14 regenerated, docs/figures.md (`figures.rs`).
 //!
 //! Usage errors and runtime errors exit with code 2 and a one-line message on
 //! stderr (`maugis: ...`); no output file is written then.
@@ -18,6 +19,7 @@
 mod args;
 mod curve;
 mod eval;
+mod figures;
 mod integrate;
 mod limits;
 mod output;
@@ -60,6 +62,8 @@ enum Command {
     Simulate(simulate::SimulateArgs),
     /// Merge the output directories of `maugis sweep --shard s/n` runs into the whole sweep.
     Merge(sweep::MergeArgs),
+    /// The paper's Figs. 2-14 regenerated (model, solver overlays, profiles) as SVGs; --write-doc for docs/figures.md.
+    Figures(figures::FiguresArgs),
     /// Every number the seed paper quotes, recomputed, next to the paper's value (docs/paper.md).
     Paper(paper::PaperArgs),
 }
@@ -110,6 +114,7 @@ fn main() {
         Command::Simulate(a) => report(guarded(move || simulate::run(a))),
         Command::Merge(a) => report(guarded(move || sweep::run_merge(a))),
         Command::Paper(a) => report(guarded(move || paper::run(a))),
+        Command::Figures(a) => report(guarded(move || figures::run(a))),
     };
     std::process::exit(code);
 }
@@ -165,7 +170,7 @@ fn report(r: Result<(), String>) -> i32 {
 fn one_line(e: &clap::Error) -> String {
     use clap::error::ErrorKind;
     if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand || e.kind() == ErrorKind::MissingSubcommand {
-        return "a subcommand is required (eval, integrate, demo, curve, profile, limits, sweep, merge, simulate, paper); try 'maugis --help'".into();
+        return "a subcommand is required (eval, integrate, demo, curve, profile, limits, sweep, merge, simulate, paper, figures); try 'maugis --help'".into();
     }
     let text = e.render().to_string();
     let parts: Vec<&str> = text

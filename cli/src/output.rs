@@ -138,3 +138,26 @@ pub fn write_atomically(out: &Path, files: &[OutFile]) -> Result<Vec<PathBuf>, S
     }
     Ok(finals)
 }
+
+/// Checks, before any computation, that `path` (given with `flag`) can take a
+/// file: not a directory, and its folder exists.
+pub fn check_file_target(flag: &str, path: &Path) -> Result<(), String> {
+    if path.is_dir() {
+        return Err(format!("{flag} {}: is a directory; give a file", path.display()));
+    }
+    if let Some(parent) = path.parent().filter(|p| !p.as_os_str().is_empty()) {
+        if !parent.is_dir() {
+            return Err(format!("{flag} {}: the folder {} does not exist", path.display(), parent.display()));
+        }
+    }
+    Ok(())
+}
+
+/// Writes `text` to the file `path` atomically (a sibling temporary file, renamed).
+pub fn write_file_atomically(flag: &str, path: &Path, text: &str) -> Result<(), String> {
+    let tmp = path.with_extension(format!("tmp-{}", std::process::id()));
+    fs::write(&tmp, text).and_then(|_| fs::rename(&tmp, path)).map_err(|e| {
+        let _ = fs::remove_file(&tmp);
+        format!("{flag} {}: {e}", path.display())
+    })
+}

@@ -35,8 +35,8 @@ pub const CITATION: &str = "J. S. Van Dokkum, F. Pérez-Ràfols and L. Nicola, \
 Institutional record: <https://research.unipd.it/handle/11577/3549746>.";
 
 /// Fig. 11-14 roughness `{alpha, beta} = {sqrt(2)/3, 2}`.
-const FIG11_ALPHA: f64 = std::f64::consts::SQRT_2 / 3.0;
-const FIG11_BETA: f64 = 2.0;
+pub(crate) const FIG11_ALPHA: f64 = std::f64::consts::SQRT_2 / 3.0;
+pub(crate) const FIG11_BETA: f64 = 2.0;
 
 /// One compared number.
 struct Row {
@@ -52,7 +52,7 @@ fn curve(lambda: f64, alpha: f64, beta: f64) -> Result<Curve, String> {
 }
 
 /// The jump of `direction` whose start is nearest to `near`.
-fn jump_near(c: &Curve, direction: JumpDirection, near: f64) -> Result<Jump, String> {
+pub(crate) fn jump_near(c: &Curve, direction: JumpDirection, near: f64) -> Result<Jump, String> {
     c.jumps
         .iter()
         .filter(|j| j.direction == direction)
@@ -62,7 +62,7 @@ fn jump_near(c: &Curve, direction: JumpDirection, near: f64) -> Result<Jump, Str
 }
 
 /// The invalid stretch (with cavitation) that contains `abar`: `(from, to)`.
-fn cavitating_stretch(c: &Curve, abar: f64) -> Result<(f64, f64), String> {
+pub(crate) fn cavitating_stretch(c: &Curve, abar: f64) -> Result<(f64, f64), String> {
     invalid_stretches(&c.points)
         .iter()
         .find(|s| s.cavitation && s.from_abar <= abar && abar <= s.to_abar)
@@ -163,26 +163,13 @@ fn page() -> Result<String, String> {
 /// Runs `maugis paper`.
 pub fn run(a: PaperArgs) -> Result<(), String> {
     if let Some(path) = &a.write {
-        if path.is_dir() {
-            return Err(format!("--write {}: is a directory; give a file", path.display()));
-        }
-        if let Some(parent) = path.parent().filter(|p| !p.as_os_str().is_empty()) {
-            if !parent.is_dir() {
-                return Err(format!("--write {}: the folder {} does not exist", path.display(), parent.display()));
-            }
-        }
+        crate::output::check_file_target("--write", path)?;
     }
     let text = page()?;
     match &a.write {
         None => print_stdout(&text),
         Some(path) => {
-            let tmp = path.with_extension(format!("tmp-{}", std::process::id()));
-            std::fs::write(&tmp, &text)
-                .and_then(|_| std::fs::rename(&tmp, path))
-                .map_err(|e| {
-                    let _ = std::fs::remove_file(&tmp);
-                    format!("--write {}: {e}", path.display())
-                })?;
+            crate::output::write_file_atomically("--write", path, &text)?;
             print_stdout(&format!("wrote {}\n", path.display()))
         }
     }

@@ -20,6 +20,7 @@
 //! * [`sweep`]: regime maps over grids of lambda and alpha, beta or the Johnson parameter, sharded.
 //! * [`limits`]: Appendix E (JKR, M-DMT) and the Eq. 17 envelope.
 //! * [`units`]: SI inputs and outputs (scales of Eq. 13a with two length scales).
+//! * [`state_profile`]: the profiles of one state sampled over x (traction, displacement, gap).
 //!
 //! Sign convention (docs/displacement.md): compressive traction is negative,
 //! `u` is positive "downward" like the profile depth
@@ -40,3 +41,4 @@ pub mod paths;
 pub mod summary;
 pub mod sweep;
 pub mod units;
+pub mod state_profile;
