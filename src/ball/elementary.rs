@@ -126,16 +126,45 @@ impl Ball {
             // A wide ball: sinh is increasing and cosh increasing in |x|, so the hulls of
             // directed-rounded end values (cosh stays >= 1 instead of dipping below 0).
             let (lo, hi) = (self.lower(), self.upper());
-            let s_lo = Float::with_val_round(p, lo.sinh_ref(), Round::Down).0;
-            let s_hi = Float::with_val_round(p, hi.sinh_ref(), Round::Up).0;
+            // beyond 2^31 both overflow MPFR's exponent range (2^(2^30)): say so at once
+            // (MPFR's sinh takes long to find out)
+            if lo.clone().abs() > (1u64 << 31) || hi.clone().abs() > (1u64 << 31) {
+                return (nan_ball(p), nan_ball(p));
+            }
+            // (sinh x, cosh x) at an end as balls, from the fixed-point exp where it serves
+            let at = |x: &Float| -> Option<(Ball, Ball)> {
+                let (ep, ee) = super::fixed::exp(x, p)?;
+                let (mp, me) = super::fixed::exp(&Float::with_val(p, -x), p)?;
+                let (e, einv) = (Ball { mid: ep, rad: ee }, Ball { mid: mp, rad: me });
+                Some((e.sub(&einv).mul_pow2(-1), e.add(&einv).mul_pow2(-1)))
+            };
             let far = if lo.clone().abs() > hi.clone().abs() { lo.clone().abs() } else { hi.clone().abs() };
-            let c_hi = Float::with_val_round(p, far.cosh_ref(), Round::Up).0;
-            let c_lo = if lo.is_sign_positive() {
-                Float::with_val_round(p, lo.cosh_ref(), Round::Down).0
-            } else if hi.is_sign_negative() {
-                Float::with_val_round(p, hi.cosh_ref(), Round::Down).0
-            } else {
-                Float::with_val(p, 1)
+            let (s_lo, s_hi, c_hi, c_lo) = match (at(&lo), at(&hi), at(&far)) {
+                (Some((sl, cl)), Some((sh, ch)), Some((_, cf))) => {
+                    let c_lo = if lo.is_sign_positive() {
+                        cl.lower()
+                    } else if hi.is_sign_negative() {
+                        ch.lower()
+                    } else {
+                        Float::with_val(p, 1)
+                    };
+                    (sl.lower(), sh.upper(), cf.upper(), c_lo)
+                }
+                _ => {
+                    let c_lo = if lo.is_sign_positive() {
+                        Float::with_val_round(p, lo.cosh_ref(), Round::Down).0
+                    } else if hi.is_sign_negative() {
+                        Float::with_val_round(p, hi.cosh_ref(), Round::Down).0
+                    } else {
+                        Float::with_val(p, 1)
+                    };
+                    (
+                        Float::with_val_round(p, lo.sinh_ref(), Round::Down).0,
+                        Float::with_val_round(p, hi.sinh_ref(), Round::Up).0,
+                        Float::with_val_round(p, far.cosh_ref(), Round::Up).0,
+                        c_lo,
+                    )
+                }
             };
             if !s_lo.is_finite() || !s_hi.is_finite() || !c_hi.is_finite() {
                 return (nan_ball(p), nan_ball(p));
@@ -189,7 +218,7 @@ impl Ball {
 
     /// `sin(self)`.
     pub fn sin(&self) -> Ball {
-        if let Some(((y, err), _)) = self.is_finite().then(|| super::fixed::sin_cos(&self.mid, self.prec())).flatten() {
+        if let Some((y, err)) = self.is_finite().then(|| super::fixed::sin(&self.mid, self.prec())).flatten() {
             return Ball { mid: y, rad: self.rad.add(err) };
         }
         self.lipschitz1(|m, p| Float::with_val_round(p, m.sin_ref(), Round::Nearest))

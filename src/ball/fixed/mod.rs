@@ -13,7 +13,8 @@
 //!
 //! The working format (see [`limbs`]) has `F = 64 L - 2` fractional bits, `L` the least
 //! number of limbs with `F >= wp + 24`; every operation truncates and errs by less
-//! than one *ulp* `2^-F`.
+//! than one *ulp* `2^-F` (a product by less than `1 + 2^-57`, which the margins of
+//! step 4 absorb).
 //!
 //! 1. **Reduction.** `|m| < 2^20`. For `exp`, `n = floor(m / ln 2)` and
 //!    `t = m - n ln 2` in `[0, 1)`; for `sin` and `cos`, `n = round(|m| / (pi/2))` and
@@ -241,16 +242,27 @@ pub(crate) fn exp(m: &Float, wp: u32) -> Option<(Float, Mag)> {
 /// `(sin m, cos m)` rounded to `wp` bits, each with a bound on its error; `None`
 /// outside the region served (see the module docs).
 pub(crate) fn sin_cos(m: &Float, wp: u32) -> Option<((Float, Mag), (Float, Mag))> {
+    let (s, c) = sin_cos_dispatch(m, wp, Want::Both)?;
+    Some((s, c?))
+}
+
+/// `sin m` rounded to `wp` bits with a bound on its error (as [`sin_cos`], without
+/// rounding the cosine).
+pub(crate) fn sin(m: &Float, wp: u32) -> Option<(Float, Mag)> {
+    sin_cos_dispatch(m, wp, Want::Sin).map(|(s, _)| s)
+}
+
+fn sin_cos_dispatch(m: &Float, wp: u32, want: Want) -> Option<((Float, Mag), Option<(Float, Mag)>)> {
     let l = limbs_for(wp)?;
     match l {
-        1 => sin_cos_kernel::<1>(m, wp),
-        2 => sin_cos_kernel::<2>(m, wp),
-        3 => sin_cos_kernel::<3>(m, wp),
-        4 => sin_cos_kernel::<4>(m, wp),
-        5 => sin_cos_kernel::<5>(m, wp),
-        6 => sin_cos_kernel::<6>(m, wp),
-        7 => sin_cos_kernel::<7>(m, wp),
-        _ => sin_cos_kernel::<8>(m, wp),
+        1 => sin_cos_kernel::<1>(m, wp, want),
+        2 => sin_cos_kernel::<2>(m, wp, want),
+        3 => sin_cos_kernel::<3>(m, wp, want),
+        4 => sin_cos_kernel::<4>(m, wp, want),
+        5 => sin_cos_kernel::<5>(m, wp, want),
+        6 => sin_cos_kernel::<6>(m, wp, want),
+        7 => sin_cos_kernel::<7>(m, wp, want),
+        _ => sin_cos_kernel::<8>(m, wp, want),
     }
 }
 
@@ -376,18 +388,28 @@ fn exp_fixed<const L: usize>(m: &Float) -> Option<([u64; L], i64)> {
     Some((r, n))
 }
 
-fn sin_cos_kernel<const L: usize>(m: &Float, wp: u32) -> Option<((Float, Mag), (Float, Mag))> {
+/// Which of `sin m`, `cos m` to round to a float.
+#[derive(Clone, Copy, PartialEq)]
+enum Want {
+    Sin,
+    Both,
+}
+
+fn sin_cos_kernel<const L: usize>(m: &Float, wp: u32, want: Want) -> Option<((Float, Mag), Option<(Float, Mag)>)> {
     let (sin_mag, sin_neg, cos_mag, cos_neg) = sin_cos_fixed::<L>(m)?;
     // below 2^-16 an absolute bound would cost relative bits: MPFR instead
     let small = |x: &[u64; L]| x[L - 1] >> (62 - 16) == 0;
-    if small(&sin_mag) || small(&cos_mag) {
+    if small(&sin_mag) || (want == Want::Both && small(&cos_mag)) {
         return None;
     }
     let f = 64 * L as i64 - 2;
-    let (ys, os) = to_float(&sin_mag, -f, wp, sin_neg);
-    let (yc, oc) = to_float(&cos_mag, -f, wp, cos_neg);
-    let (es, ec) = (bound(&ys, os, SIN_COS_ULPS, -f), bound(&yc, oc, SIN_COS_ULPS, -f));
-    Some(((ys, es), (yc, ec)))
+    let rounded = |x: &[u64; L], neg: bool| {
+        let (y, ord) = to_float(x, -f, wp, neg);
+        let e = bound(&y, ord, SIN_COS_ULPS, -f);
+        (y, e)
+    };
+    let cos = (want == Want::Both).then(|| rounded(&cos_mag, cos_neg));
+    Some((rounded(&sin_mag, sin_neg), cos))
 }
 
 /// `(|sin m| 2^F, sin m < 0, |cos m| 2^F, cos m < 0)`, each magnitude within 32 ulps.
@@ -513,6 +535,7 @@ mod tests {
                     served += 1;
                     let (vs, vc) = Float::with_val(1200, &m).sin_cos(Float::new(1200));
                     assert!(encloses(&ys, es, &vs), "sin {m} at {wp}: {ys} +- {es:?}");
+                    assert_eq!(sin(&m, wp), Some((ys.clone(), es)), "sin alone at {m}");
                     assert!(encloses(&yc, ec, &vc), "cos {m} at {wp}: {yc} +- {ec:?}");
                     assert!(es.le(&Mag::from_float_up(&ys).mul(Mag::pow2(2 - wp as i64))), "sin {m} at {wp}: radius too wide");
                     assert!(ec.le(&Mag::from_float_up(&yc).mul(Mag::pow2(2 - wp as i64))), "cos {m} at {wp}: radius too wide");

@@ -104,8 +104,8 @@ pub(crate) struct Counted<'f, F> {
     pub stats: Stats,
 }
 
-impl<F: FnMut(&CBall, Mode) -> CBall> Counted<'_, F> {
-    fn eval(&mut self, z: &CBall, mode: Mode) -> CBall {
+impl<F: FnMut(CBall, Mode) -> CBall> Counted<'_, F> {
+    fn eval(&mut self, z: CBall, mode: Mode) -> CBall {
         self.stats.evaluations += 1;
         (self.f)(z, mode)
     }
@@ -132,11 +132,11 @@ fn exact_diff(lo: &Float, hi: &Float) -> Float {
 /// unbounded on the segment).
 fn crude<F>(f: &mut Counted<'_, F>, lo: &Float, hi: &Float, wp: u32) -> Option<CBall>
 where
-    F: FnMut(&CBall, Mode) -> CBall,
+    F: FnMut(CBall, Mode) -> CBall,
 {
     let width = exact_diff(lo, hi);
     let seg = CBall::from_real(Ball::hull(lo, hi, wp));
-    let fv = f.eval(&seg, Mode::Point);
+    let fv = f.eval(seg, Mode::Point);
     fv.is_finite().then(|| fv.mul_real(&Ball::from_float(&width, width.prec())))
 }
 
@@ -166,7 +166,7 @@ impl Piece {
 /// piece's tolerance; the driver checks the goal and retries with a smaller one.
 pub(crate) fn adaptive<F>(f: &mut Counted<'_, F>, a: &Float, b: &Float, wp: u32, tol: Mag, goal: i64, lim: RunLimits) -> Result<Outcome>
 where
-    F: FnMut(&CBall, Mode) -> CBall,
+    F: FnMut(CBall, Mode) -> CBall,
 {
     let mut dyn_tol = tol;
     let raise = |t: &mut Mag, v: &CBall| {
@@ -244,7 +244,7 @@ where
 /// some degree up to `max_degree` meets `tol`, `None` otherwise.
 fn gauss_legendre_piece<F>(f: &mut Counted<'_, F>, lo: &Float, hi: &Float, wp: u32, tol: Mag, max_degree: usize) -> Result<Option<(CBall, Mag)>>
 where
-    F: FnMut(&CBall, Mode) -> CBall,
+    F: FnMut(CBall, Mode) -> CBall,
 {
     let m = midpoint(lo, hi);
     let mut h = exact_diff(lo, hi);
@@ -260,7 +260,7 @@ where
             Ball::with_mag(m.clone(), h_mag.mul(xr)),
             Ball::with_mag(Float::new(m.prec()), h_mag.mul(y)),
         );
-        let v = f.eval(&wide, Mode::Analytic);
+        let v = f.eval(wide, Mode::Analytic);
         if !v.is_finite() {
             break;
         }
@@ -288,11 +288,11 @@ where
     let mut s = CBall::zero(wp);
     for (k, (x, w)) in rule.nodes.iter().zip(&rule.weights).enumerate() {
         let hx = hb.mul(x);
-        let right = f.eval(&CBall::from_real(mb.add(&hx)), Mode::Point);
+        let right = f.eval(CBall::from_real(mb.add(&hx)), Mode::Point);
         let pair = if n % 2 == 1 && k == rule.nodes.len() - 1 {
             right
         } else {
-            right.add(&f.eval(&CBall::from_real(mb.sub(&hx)), Mode::Point))
+            right.add(&f.eval(CBall::from_real(mb.sub(&hx)), Mode::Point))
         };
         s = s.add(&pair.mul_real(w));
     }
