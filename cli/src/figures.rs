@@ -104,8 +104,8 @@ pub enum Limit {
     MdmtEnvelope(f64),
     /// E.44 at lambda.
     SmoothMdmt(f64),
-    /// Eq. 17 at lambda, for roughness `(alpha, beta)`, drawn in colour `i`.
-    Local(f64, (f64, f64), usize),
+    /// Eq. 17 at lambda, for roughness `(alpha, beta)`.
+    Local(f64, (f64, f64)),
 }
 
 /// Key of a parameter set.

@@ -86,11 +86,10 @@ fn limit_line(limit: Limit, alpha: f64, beta: f64, amin: f64, amax: f64) -> Resu
             let pts = xs.iter().map(|&x| smooth_mdmt_load(lambda, x).map(|l| (x, l)).map_err(e(x))).collect::<Result<Vec<_>, _>>()?;
             vec![(pts, style(LIGHT_GREY, 2), 9, 6, Some(format!("smooth M-DMT limit at λ = {} (E.44)", short(lambda))))]
         }
-        Limit::Local(lambda, (a, b), i) => {
+        Limit::Local(lambda, (a, b)) => {
             let p = Params::new(lambda, a, b).map_err(|e| e.to_string())?;
             let (lo, hi) = pair(&|x| local_envelope(p, x).map_err(e(x)))?;
-            let st = ShapeStyle { color: colour(i).mix(0.8), filled: false, stroke_width: 1 };
-            vec![(lo, st, 6, 4, Some(format!("local envelope (Eq. 17) at λ = {}, {{α, β}} = {}", short(lambda), super::roughness_name((a, b))))), (hi, st, 6, 4, None)]
+            vec![(lo, style(DARK_GREY, 2), 6, 4, Some(format!("local envelope (Eq. 17) at λ = {}", short(lambda)))), (hi, style(DARK_GREY, 2), 6, 4, None)]
         }
     })
 }

@@ -228,7 +228,8 @@ fn fig13(ctx: &Ctx) -> Result<Vec<String>, String> {
     let mut out = Vec::new();
     for (p, l) in [("a", 0.5), ("b", 1.0), ("c", 1.5)] {
         let cs = [(l, R4B, 0, 0.0), (l, R4C, 1, 0.0)];
-        let lim = [Limit::Local(l, R4B, 0), Limit::Local(l, R4C, 1), Limit::JkrEnvelope, Limit::MdmtEnvelope(l)];
+        // one local envelope: it depends on the roughness through alpha^2/beta = 1/9 only, the same for both
+        let lim = [Limit::Local(l, R4B), Limit::JkrEnvelope, Limit::MdmtEnvelope(l)];
         let t = format!("Fig. 13{p}: λ = {}, {{√2/3, 2}} and {{2√2/8, 9/8}}, with the local envelope (17)", short(l));
         out.push(la_panel(ctx, &t, R4B, (0.0, 6.0), &cs, &lim, &[], true, false)?);
     }
@@ -296,7 +297,7 @@ pub fn all() -> Vec<Figure> {
             title: "Fig. 3: smooth cylinder, model and solver",
             caption: "Load against contact area for λ = 1/10, 1/4, 1/2, 1, 3 and 6 in smooth contact; the JKR (E.42) and DMT (E.44) limits at λ ~ ∞ and 1/10 in grey; semi-analytical solid, numerical (GFMD) dashed with square markers; (b) 0 < ā ≤ 2, without λ = 1 and 3.",
             paper: "The numerical and semi-analytical curves coincide except at jump-out of contact, visible for λ = 3 and 6 as a horizontal dashed line in (b).",
-            ours: "The solver's loading and unloading states lie on the model curves; at λ = 3 and 6 the unloading leg leaves the model where the stiff machine passes the load minimum.",
+            ours: "The solver's loading and unloading states lie on the model curves. While loading, the contact snaps in at a finite ā; while unloading, the stiff machine follows the model past the load minimum and the contact jumps out at a finite ā (about 0.6 at λ = 6, panel b): the model's states below are unstable under displacement control and carry no simulated state.",
             differences: "Our solver runs displacement control both ways, so the jump-out shows as a gap between states rather than a horizontal line. The paper's abscissa range of (a) is not stated; we draw 0 < ā ≤ 6.",
             files: &["fig03a", "fig03b"],
             curves: each(&LAMBDAS3, SMOOTH),
@@ -426,8 +427,8 @@ pub fn all() -> Vec<Figure> {
             title: "Fig. 13: the local envelope (17)",
             caption: "Load against contact area, {√2/3, 2} and {2√2/8, 9/8}, (a) λ = 1/2, (b) 1, (c) 3/2; the local envelope (17) medium-dashed, the JKR and M-DMT envelopes long-dashed.",
             paper: "The response stays within the local envelope and touches it near its turning points for λ ≥ 1; for λ ≤ 1 the envelope overestimates.",
-            ours: "The model for both roughnesses and each roughness's local envelope (17) in its colour.",
-            differences: "Model only, as the caption; the JKR and M-DMT envelopes are drawn for {√2/3, 2} only.",
+            ours: "The model for both roughnesses and the local envelope (17), one line: it depends on the roughness through α²/β only, 1/9 for both (scaled Johnson parameter 3).",
+            differences: "Model only, as the caption. The JKR envelope depends on α²/β only and is the same for both roughnesses; the M-DMT envelope drawn is that of {√2/3, 2}.",
             files: &["fig13a", "fig13b", "fig13c"],
             curves: [each(&[0.5, 1.0, 1.5], R4B), fig4c_runs(&[0.5, 1.0, 1.5])].concat(),
             sims: vec![],
