@@ -302,12 +302,24 @@ impl Ball {
 
     /// True when every point of the ball is `> 0`.
     pub fn is_positive(&self) -> bool {
+        if self.mid.is_sign_positive() && self.mid.is_normal() && self.rad_below_half_mid() {
+            return true;
+        }
         self.lower() > 0
     }
 
     /// True when every point of the ball is `< 0`.
     pub fn is_negative(&self) -> bool {
+        if self.mid.is_sign_negative() && self.mid.is_normal() && self.rad_below_half_mid() {
+            return true;
+        }
         self.upper() < 0
+    }
+
+    /// `rad <= |mid| / 2`, decided without allocating (a sufficient test for the sign
+    /// checks above; they decide exactly otherwise).
+    fn rad_below_half_mid(&self) -> bool {
+        self.rad.mul_2exp(1).le(&Mag::from_float_down(&self.mid))
     }
 
     /// True when the ball contains zero (`|mid| <= rad`, decided conservatively:
