@@ -202,7 +202,7 @@ fn model_line(lambda: f64, r: (f64, f64), abar: f64, colour: usize, what: &str, 
 fn solver_line(ctx: &Ctx, lambda: f64, r: (f64, f64), unloading: bool, abar: f64, colour: usize) -> Result<Option<ProfileLine>, String> {
     let Some(run) = ctx.sim(lambda, r) else { return Ok(None) };
     let p = profile_near(run, unloading, abar)?;
-    let cav = if p.intervals > 1 { format!(", cavitated ({} contact intervals)", p.intervals) } else { String::new() };
+    let cav = if p.intervals > 1 { format!(" ({} contact intervals, outer edge {:.2})", p.intervals, p.outer) } else { String::new() };
     let leg = if unloading { "unloading" } else { "loading" };
     Ok(Some(ProfileLine::of_solver(format!("solver, λ = {}, {leg}, ā = {:.2}{cav}", short(lambda), p.abar), colour, &p)))
 }

@@ -129,7 +129,7 @@ pub fn load_area_panel(
     // y window: the model and the solver inside [amin, amax], with a margin
     let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
     for c in curves {
-        let solver = c.solver.unwrap_or(&[]).iter().flat_map(|l| l.states.iter().map(|s| (s.abar, s.load)));
+        let solver = c.solver.unwrap_or(&[]).iter().flat_map(|l| l.states.iter().map(|s| (s.abar, s.load + c.offset)));
         for (a, l) in c.run.curve.points.iter().map(|p| (p.abar, p.load + c.offset)).chain(solver) {
             if a >= amin && a <= amax && l.is_finite() {
                 lo = lo.min(l);
@@ -195,7 +195,7 @@ pub fn load_area_panel(
             let grey = RGBColor(120, 120, 120);
             let h = Legend::SWATCH / 2;
             let line = |dash| Mark::Line { points: vec![(-h, 0), (h, 0)], style: grey.stroke_width(1), dash, gap: 4 };
-            legend.entry("solver (maugis-solver), loading", vec![line(2), Mark::polygon(outline(Shape::Diamond, 5), grey.filled(), None)]);
+            legend.entry("solver (maugis-solver), loading; ā: total contact half-width", vec![line(2), Mark::polygon(outline(Shape::Diamond, 5), grey.filled(), None)]);
             legend.entry("solver, unloading", vec![line(7), Mark::polygon(outline(Shape::Square, 5), grey.filled(), None)]);
             let cavitated = curves
                 .iter()
@@ -261,6 +261,8 @@ pub enum Quantity {
     Displacement,
     /// `ubar - C`, `C` its value at the contact edge.
     ShiftedDisplacement,
+    /// Gap against `xbar`.
+    Gap,
     /// Gap against `xbar/abar`.
     GapOverA,
 }
@@ -277,9 +279,9 @@ pub struct ProfileLine {
 }
 
 impl ProfileLine {
-    /// The line of a solver state.
+    /// The line of a solver state (its contact edge: the outermost one).
     pub fn of_solver(label: String, colour: usize, p: &SolverProfile) -> ProfileLine {
-        ProfileLine { label, colour, solver: true, abar: p.abar, c: None, samples: p.samples.clone() }
+        ProfileLine { label, colour, solver: true, abar: p.outer, c: None, samples: p.samples.clone() }
     }
 }
 
@@ -321,6 +323,7 @@ fn profile_panel(area: &DrawingArea<SVGBackend<'_>, Shift>, q: Quantity, caption
                 .map(|s| match q {
                     Quantity::Traction => (s[0], s[1]),
                     Quantity::Displacement | Quantity::ShiftedDisplacement => (s[0], s[2] - c),
+                    Quantity::Gap => (s[0], s[3]),
                     Quantity::GapOverA => (s[0] / l.abar, s[3]),
                 })
                 .filter(|p| p.0 <= xmax)
@@ -338,7 +341,7 @@ fn profile_panel(area: &DrawingArea<SVGBackend<'_>, Shift>, q: Quantity, caption
     if q == Quantity::Traction {
         (lo, hi) = (lo.min(-0.1), hi.max(1.1));
     }
-    if q == Quantity::GapOverA {
+    if matches!(q, Quantity::Gap | Quantity::GapOverA) {
         hi = hi.min(2.5 * delta.iter().map(|d| d.1).fold(0.0, f64::max)).max(0.1);
         lo = lo.min(0.0);
     }
@@ -352,7 +355,7 @@ fn profile_panel(area: &DrawingArea<SVGBackend<'_>, Shift>, q: Quantity, caption
         Quantity::Traction => "traction p̄ (tensile > 0)",
         Quantity::Displacement => "displacement ū",
         Quantity::ShiftedDisplacement => "ū − C",
-        Quantity::GapOverA => "gap ḡ",
+        Quantity::Gap | Quantity::GapOverA => "gap ḡ",
     };
     let mut chart = xy_chart(area, caption.to_string(), (0.0, xmax), (ylo, yhi), (xdesc, ydesc))?;
     let mut legend = Legend::new(LEGEND_FONT);
@@ -361,7 +364,7 @@ fn profile_panel(area: &DrawingArea<SVGBackend<'_>, Shift>, q: Quantity, caption
         chart.draw_series(DashedLineSeries::new(vec![(0.0, 1.0), (xmax, 1.0)], 12, 6, grey)).map_err(plot_err)?;
         legend.line("p̄ = 1 (cohesive stress)", grey, 12, 6);
     }
-    if q == Quantity::GapOverA {
+    if matches!(q, Quantity::Gap | Quantity::GapOverA) {
         for (label, d) in delta {
             chart.draw_series(DashedLineSeries::new(vec![(0.0, *d), (xmax, *d)], 12, 6, grey)).map_err(plot_err)?;
             legend.line(label.as_str(), grey, 12, 6);

@@ -11,7 +11,10 @@ state is valid; thin, faded and dotted where it is not: a traction above the coh
 so a valley would cavitate, or a negative gap in the adhesive strip), the limit lines of Appendix E in grey, and, \
 where the paper overlays its GFMD results, the states of our FFT boundary-element solver (`maugis-solver`, \
 docs/solver.md) on one displacement-controlled cycle: loading as diamonds on a dotted line, unloading as squares on \
-a dashed line, hollow where the simulated contact has cavitated (more than one contact interval). The solver runs \
+a dashed line, hollow where the simulated contact has cavitated (more than one contact interval). A simulated \
+state is drawn at its total intimate contact half-width, half the summed length of its contact intervals, as the \
+paper draws its numerical results (\"the total intimate contact area\"): once the contact cavitates, the outermost \
+contact edge jumps from crest to crest while the total contact changes continuously. The solver runs \
 a stiff machine (displacement control), the GFMD of the paper too, so both show the stretches that load control \
 would jump over. Profiles draw the model as solid lines and the solver as dashed lines, over the symmetric half \
 x̄ ≥ 0, with the model's contact edge ā and strip end m ā as thin dashed verticals. All quantities are normalised \
@@ -181,7 +184,7 @@ fn fig10(ctx: &Ctx) -> Result<Vec<String>, String> {
     lines.extend(solver_line(ctx, 0.25, R4C, false, 3.0, 1)?);
     lines.extend(solver_line(ctx, 0.25, R4C, true, 3.0, 2)?);
     let mut q = uq().to_vec();
-    q.push((Quantity::GapOverA, "gap against x̄/ā (the paper's inset)".to_string()));
+    q.push((Quantity::Gap, "gap (the paper's inset)".to_string()));
     let delta = [("interaction range δ̄ = 1/λ = 4".to_string(), 4.0)];
     Ok(vec![profile_figure("Fig. 10: λ = 1/4, {2√2/8, 9/8}, ā ≈ 3, loading and unloading", xmax, &q, &lines, &rigid(R4C, xmax)?, &delta)?])
 }
@@ -310,7 +313,7 @@ pub fn all() -> Vec<Figure> {
             title: "Fig. 4: three roughnesses, model and solver",
             caption: "Load against contact area for λ = 1/10, 1/4, 1/2 (1) and 3 with (a) {2√2/8, 2}, (b) {√2/3, 2}, (c) {2√2/8, 9/8}; numerical loading dotted with diamonds, unloading dashed with squares; limits (E.42a, E.43a) and envelopes (E.42b, E.43d) in grey; λ = 6 added in (d).",
             paper: "Agreement that grows with λ, the Johnson parameter and β; instabilities (horizontal jumps) only at λ = 3 and 6 in (b)-(d); in (c) at λ = 1/4 to 1 a monotonic numerical response where the contact cavitates.",
-            ours: "The same curves with the solver's states; where the model is faded (invalid) the solver's states leave it, and hollow squares mark simulated states with several contact intervals.",
+            ours: "The same curves with the solver's states. Where the model is faded (invalid) the solver leaves it: its contact cavitates (hollow squares) and its load changes monotonically with the total contact. At λ = 3 and 6 the solver jumps between the model's turning points (the near-horizontal dotted and dashed lines), as the GFMD does.",
             differences: "Panel (d) is read as the (c) roughness with λ = 3 and 6, as the text says (\"λ = 6 in Fig. 4d\"); the caption's \"(a,d)\" is ambiguous.",
             files: &["fig04a", "fig04b", "fig04c", "fig04d"],
             curves: [each(&LAMBDAS4, R4A), each(&LAMBDAS4, R4B), fig4c_runs(&LAMBDAS4), fig4c_runs(&[6.0])].concat(),
@@ -323,7 +326,7 @@ pub fn all() -> Vec<Figure> {
             title: "Fig. 5: instability and cavitation, {2√2/8, 9/8}",
             caption: "Load against contact area for λ = 1/4 and 6, 2 ≤ ā ≤ 4; the continuous contact areas that border the instability and the cavitation marked by Δ and ∇ symbols.",
             paper: "λ = 6 jumps at ā = 2.71 (loading) and 3.16 (unloading); λ = 1/4 cavitates between 2.59 and 3.47, where the numerical response is monotonic.",
-            ours: "The model's jumps and cavitating stretch (marked), with the solver's states: at λ = 1/4 the simulated contact cavitates (hollow squares) over the stretch the model flags invalid.",
+            ours: "The model's jumps and cavitating stretch (marked), with the solver's states. At λ = 6 the solver jumps where the model turns (the near-horizontal dotted and dashed lines). At λ = 1/4 the simulated contact cavitates (hollow squares) across the stretch the model flags invalid, and its load rises monotonically with the total contact there, loading and unloading on one curve, as the paper's GFMD.",
             differences: "The loci are ours (list below), within 0.02 of the paper's (docs/paper.md). The paper's stars for λ = 1/4 are circles here.",
             files: &["fig05"],
             curves: fig4c_runs(&[0.25, 6.0]),
@@ -376,7 +379,7 @@ pub fn all() -> Vec<Figure> {
             caption: "Displacement and traction, {2√2/8, 9/8}, λ = 1/4, (a) loading at ā ≈ 2.59, (b) unloading at 3.47; numerical loading dotted with diamonds, unloading dashed with squares; semi-analytical solid.",
             paper: "Model and solver, loading and unloading, coincide at both states.",
             ours: "The model at our cavitating stretch's ends and the solver's loading and unloading states nearest to them.",
-            differences: "The solver's states are the cycle's states nearest the model's ā (labels give theirs).",
+            differences: "The solver's states are the cycle's states whose total contact half-width is nearest the model's ā (labels give theirs). Our stretch ends are its outermost grid states with p̄ > 1 (2.60, 3.46; paper 2.59, 3.47), so the model states drawn are flagged invalid, barely.",
             files: &["fig09a", "fig09b"],
             curves: fig4c_runs(&[0.25]),
             sims: fig4c_runs(&[0.25]),
@@ -389,7 +392,7 @@ pub fn all() -> Vec<Figure> {
             caption: "Displacement and traction, {2√2/8, 9/8}, λ = 1/4, at ā ≈ 3, loading and unloading; inset: the gap.",
             paper: "The semi-analytical traction exceeds the cohesive stress in the valleys and its gap is negative on the crests; the numerical contact is fragmented instead (cavitation).",
             ours: "The model (invalid) and the solver's loading and unloading states at ā ≈ 3, with the gap as a third panel.",
-            differences: "The paper's inset is our third panel.",
+            differences: "The solver's state is the one whose total contact half-width is nearest 3; its outermost contact edge lies further out (label). The paper's inset is our third panel.",
             files: &["fig10"],
             curves: fig4c_runs(&[0.25]),
             sims: fig4c_runs(&[0.25]),
@@ -414,8 +417,8 @@ pub fn all() -> Vec<Figure> {
             title: "Fig. 12: profiles, λ = 1/10 and 1/2, {√2/3, 2}",
             caption: "Shifted displacement ū − C and traction against |x̄|, λ = 1/10 (dashed) and 1/2 (solid), at (a) ā ≈ 2.96, (b) 3.25, (c) 3.63; contact sizes and gap sizes in grey.",
             paper: "The strip of λ = 1/10 spans several valleys and crests and its contact cavitates at 3.25; λ = 1/2 stays continuous.",
-            ours: "Both λ from the model (solid) and the solver's loading state of λ = 1/10 (dashed), where the contact cavitates.",
-            differences: "Line styles differ (the paper dashes λ = 1/10; we dash the solver). The paper's profiles are semi-analytical only.",
+            ours: "Both λ from the model (solid) and the solver's loading state of λ = 1/10 (dashed), which has cavitated at ā ≈ 3.25: the crest beyond the contact edge is in contact, the valley before it is not.",
+            differences: "Line styles differ (the paper dashes λ = 1/10; we dash the solver). The paper's profiles are semi-analytical only. Each line is shifted by its own displacement at its (outermost) contact edge.",
             files: &["fig12a", "fig12b", "fig12c"],
             curves: each(&[0.1, 0.5], R4B),
             sims: each(&[0.1], R4B),

@@ -12,6 +12,8 @@ use maugis_solver::run::{simulate, Simulation, SimulationSpec};
 /// One simulated state, as drawn.
 #[derive(Clone, Copy, Debug)]
 pub struct SolverState {
+    /// The total intimate contact half-width ([`total_half_width`]), the
+    /// paper's abscissa for its numerical results.
     pub abar: f64,
     pub load: f64,
     pub intervals: usize,
@@ -29,9 +31,20 @@ pub struct SolverLeg {
 /// stress, `ubar = hbar - gbar`).
 #[derive(Clone, Debug)]
 pub struct SolverProfile {
+    /// Total intimate contact half-width ([`total_half_width`]).
     pub abar: f64,
+    /// Outermost contact half-width (`State::abar`).
+    pub outer: f64,
     pub intervals: usize,
     pub samples: Vec<[f64; 4]>,
+}
+
+/// Half the total length of the contact intervals: the outermost half-width
+/// (`State::abar`) while the contact is one interval; less once it has
+/// cavitated, where the paper's "total intimate contact area" changes
+/// continuously while the outermost edge jumps from crest to crest.
+pub fn total_half_width(s: &maugis_solver::contact::State) -> f64 {
+    s.contact.iter().map(|(l, r)| r - l).sum::<f64>() / 2.0
 }
 
 /// A simulated cycle and its legs.
@@ -45,14 +58,14 @@ pub fn run(spec: SimulationSpec, tick: &(dyn Fn() + Sync)) -> Result<SolverRun, 
     let sim = simulate(spec, &mut |_, _| tick()).map_err(|e| format!("solver at lambda = {}, alpha = {}, beta = {}: {e}", spec.lambda, spec.alpha, spec.beta))?;
     let leg = |unloading: bool, list: &[maugis_solver::contact::State]| SolverLeg {
         unloading,
-        states: list.iter().map(|s| SolverState { abar: s.abar, load: s.load, intervals: s.contact_intervals() }).collect(),
+        states: list.iter().map(|s| SolverState { abar: total_half_width(s), load: s.load, intervals: s.contact_intervals() }).collect(),
     };
     let legs = vec![leg(false, &sim.cycle.loading), leg(true, &sim.cycle.unloading)];
     Ok(SolverRun { sim, legs })
 }
 
-/// The state of the leg (`unloading` or loading) whose contact half-width is
-/// nearest `abar`, with its fields: the leg is replayed up to it on a solver
+/// The state of the leg (`unloading` or loading) whose total contact
+/// half-width is nearest `abar`, with its fields: the leg is replayed up to it on a solver
 /// set up as [`simulate`] sets it up.
 pub fn profile_near(r: &SolverRun, unloading: bool, abar: f64) -> Result<SolverProfile, String> {
     let (cycle, spec) = (&r.sim.cycle, r.sim.spec);
@@ -61,7 +74,7 @@ pub fn profile_near(r: &SolverRun, unloading: bool, abar: f64) -> Result<SolverP
         .iter()
         .enumerate()
         .filter(|(_, s)| s.abar > 0.0)
-        .min_by(|a, b| (a.1.abar - abar).abs().total_cmp(&(b.1.abar - abar).abs()))
+        .min_by(|a, b| (total_half_width(a.1) - abar).abs().total_cmp(&(total_half_width(b.1) - abar).abs()))
         .map(|(k, _)| k)
         .ok_or("the solver's leg has no state in contact")?;
     let err = |e: maugis_solver::error::SolverError| e.to_string();
@@ -82,5 +95,5 @@ pub fn profile_near(r: &SolverRun, unloading: bool, abar: f64) -> Result<SolverP
         .filter(|(_, x)| *x >= 0.0)
         .map(|(i, x)| [x, -traction[i] / spec.lambda, h[i] - gap[i], gap[i]])
         .collect();
-    Ok(SolverProfile { abar: state.abar, intervals: state.contact_intervals(), samples })
+    Ok(SolverProfile { abar: total_half_width(&state), outer: state.abar, intervals: state.contact_intervals(), samples })
 }
