@@ -14,6 +14,9 @@
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use maugis::special::{bessel_j, exact, hyp1f2, hyp2f1, meijer_g};
 
+#[path = "common/meijer_domain.rs"]
+mod meijer_domain;
+
 const KS: [u32; 5] = [0, 1, 10, 100, 1000];
 
 fn bench_meijer(c: &mut Criterion) {
@@ -102,13 +105,7 @@ fn bench_hyp1f2_domain(c: &mut Criterion) {
 /// `meijer_g_k_bounded(k, y)` over the issue-8 domain k <= 1000, y in (0, 1]
 /// (64 fixed points; elements per second), with the MP fallbacks printed.
 fn bench_meijer_domain(c: &mut Criterion) {
-    let pts: Vec<(u32, f64)> = (0..64)
-        .map(|i| {
-            let u = (i as f64 * 0.618_033_988_749_895).fract();
-            let v = (i as f64 * 0.754_877_666_246_693).fract();
-            ((1000.0 * u).floor() as u32, 1.0 - v)
-        })
-        .collect();
+    let pts = meijer_domain::meijer_domain_points();
     let before = meijer_g::meijer_g_k_fallbacks();
     let mut g = c.benchmark_group("meijer_g_k_f64_domain");
     g.throughput(criterion::Throughput::Elements(pts.len() as u64));
@@ -117,13 +114,15 @@ fn bench_meijer_domain(c: &mut Criterion) {
     });
     g.finish();
     eprintln!("meijer_g_k_f64_domain: MP fallbacks during the run: {}", meijer_g::meijer_g_k_fallbacks() - before);
-    // The double-double paths on their own: y > 0.97 (near-one expansion) and
-    // 1e-9 next to the zero of G(k, .) (direct formula in double words).
+    // The paths next to y = 1 and the zeros: y > 0.97 (near-one expansion: f64 where
+    // k (1 - y) <= 1.25, else double-double), 1e-9 next to the zero of G(k, .) (direct
+    // formula in double words), and the f64 near-one expansion at 0.9 <= y < 0.97.
     let near_one: Vec<(u32, f64)> = [0u32, 2, 100, 472, 1000].iter().flat_map(|&k| [(k, 0.9705), (k, 0.99), (k, 1.0 - 1e-9)]).collect();
+    let near_one_f64: Vec<(u32, f64)> = [0u32, 1, 2, 5, 10].iter().flat_map(|&k| [(k, 0.9), (k, 0.93), (k, 0.95), (k, 0.96)]).collect();
     let near_zero: Vec<(u32, f64)> = vec![(2, 0.807_135_927_66), (5, 0.637_762_065), (10, 0.571_703_529_38), (100, 0.507_463_152_53), (1000, 0.500_749_626_68)];
     let before = meijer_g::meijer_g_k_fallbacks();
     let mut g = c.benchmark_group("meijer_g_k_f64_dd_paths");
-    for (name, pts) in [("near_one", &near_one), ("next_to_zero", &near_zero)] {
+    for (name, pts) in [("near_one", &near_one), ("next_to_zero", &near_zero), ("near_one_f64_below_0.97", &near_one_f64)] {
         g.throughput(criterion::Throughput::Elements(pts.len() as u64));
         g.bench_function(name, |b| b.iter(|| pts.iter().map(|&(k, y)| meijer_g::meijer_g_k_bounded(k, black_box(y)).unwrap().value).sum::<f64>()));
     }

@@ -1,14 +1,34 @@
 //! Time per value of the f64 `meijer_g_k_bounded(k, y)` on a grid over `k <= 1000`,
 //! `y in (0, 1]` (issue 23, item 4: at most 1 us everywhere), with the MP fallbacks
-//! marked. Each cell is the minimum over 7 batches of 40 calls (the machine is
-//! shared, so the minimum is the figure least disturbed by other load); a `*`
-//! marks a cell that fell back to MP. Prints a markdown table and a summary line.
+//! marked. Each cell is the wall time of the fastest of 15 batches of 40 calls (the
+//! machine is shared: batches of 10-300 us are shorter than a scheduler slice, so the
+//! fastest is the one least disturbed by other load); a `*` marks a cell that fell back
+//! to MP. Prints a markdown table, a summary line, and the mean over the 64 points
+//! of the criterion group `meijer_g_k_f64_domain` (same points, same measure).
 //!
 //! `cargo run --release --example meijer_g_grid`
 
 use maugis::special::meijer_g;
+
+#[path = "../benches/common/meijer_domain.rs"]
+mod meijer_domain;
 use std::hint::black_box;
 use std::time::Instant;
+
+/// Wall time per call of `f` in us, fastest of 15 batches of `calls`.
+fn per_call(calls: usize, mut f: impl FnMut() -> f64) -> f64 {
+    let mut best = f64::INFINITY;
+    for _ in 0..15 {
+        let t = Instant::now();
+        let mut s = 0.0;
+        for _ in 0..calls {
+            s += f();
+        }
+        black_box(s);
+        best = best.min(t.elapsed().as_secs_f64() * 1e6 / calls as f64);
+    }
+    best
+}
 
 fn main() {
     let ks = [0u32, 1, 2, 3, 5, 10, 30, 100, 300, 1000];
@@ -26,16 +46,7 @@ fn main() {
         let mut row = format!("| {k} |");
         for &y in &ys {
             let before = meijer_g::meijer_g_k_fallbacks();
-            let mut best = f64::INFINITY;
-            for _ in 0..7 {
-                let t = Instant::now();
-                let mut s = 0.0;
-                for _ in 0..40 {
-                    s += meijer_g::meijer_g_k_bounded(k, black_box(y)).unwrap().value;
-                }
-                black_box(s);
-                best = best.min(t.elapsed().as_secs_f64() / 40.0 * 1e6);
-            }
+            let best = per_call(40, || meijer_g::meijer_g_k_bounded(k, black_box(y)).unwrap().value);
             let fb = meijer_g::meijer_g_k_fallbacks() - before;
             fallbacks += (fb > 0) as u64;
             over += (best > 1.0) as u32;
@@ -47,9 +58,14 @@ fn main() {
         }
         println!("{row}");
     }
+    // the 64 points of benches/special.rs, bench_meijer_domain
+    let pts = meijer_domain::meijer_domain_points();
+    let before = meijer_g::meijer_g_k_fallbacks();
+    let domain = per_call(2, || pts.iter().map(|&(k, y)| meijer_g::meijer_g_k_bounded(k, black_box(y)).unwrap().value).sum::<f64>()) / 64.0;
+    println!("\nthe 64 domain points of meijer_g_k_f64_domain: {domain:.3} us per value, {} MP fallbacks", meijer_g::meijer_g_k_fallbacks() - before);
     let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
     println!(
-        "\n{} cells: worst {worst:.2} us at k = {}, y = {}; {over} cells above 1 us; {fallbacks} cells with an MP fallback; load average {}",
+        "{} cells: worst {worst:.2} us at k = {}, y = {}; {over} cells above 1 us; {fallbacks} cells with an MP fallback; load average {}",
         ks.len() * ys.len(),
         worst_at.0,
         worst_at.1,

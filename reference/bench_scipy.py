@@ -43,6 +43,7 @@ machine is shared, so compare the CPU-time columns, which were taken in one run.
 """
 
 import argparse
+import math
 import json
 import os
 import subprocess
@@ -188,6 +189,61 @@ def bench_regions(n_points, exe):
         print("| %s | %d | %.3f us | %.3f us | %.2f | %.3f us |" % (name, n, scipy_us[key], v, scipy_us[key] / v, bounded))
 
 
+def wave_points():
+    """The 64 points of benches/displacement.rs (domain_points): a = 0.5 + 5.5 u,
+    x = a (1 + 2 v), u, v the fractional parts of i phi and i 0.7548776662466927."""
+    pts = []
+    for i in range(64):
+        u = math.modf(i * 0.618033988749895)[0]
+        v = math.modf(i * 0.754877666246693)[0]
+        a = 0.5 + 5.5 * u
+        pts.append((a, a * (1.0 + 2.0 * v)))
+    return pts
+
+
+def scipy_wave(a, x, zeta=1.125, amp=1.0):
+    """u_w and du_w/dx by the Bessel form (docs/displacement.md, Route 2) with SciPy's
+    J_n: the orders 0..2N+1, N = D/2 + 20 (the tail is below 1e-17 at D <= 34), in one
+    vectorised jv call, then the two sums in NumPy. No error bound."""
+    d = 2.0 * math.pi * a / zeta
+    n_terms = int(d / 2) + 20
+    j = scipy.special.jv(np.arange(2 * n_terms + 2), d)
+    r = x / a
+    s = math.sqrt((r - 1.0) * (r + 1.0))
+    q = r - s if r < 2.0 else 1.0 / (r + s)
+    n = np.arange(1, n_terms + 1)
+    sign = np.where(n % 2 == 1, 1.0, -1.0)
+    q2n = q ** (2 * n)
+    u = amp * (1.0 - j[0] + d * j[1] * math.acosh(r) + 2.0 * np.sum(sign * j[2 * n] * q2n))
+    t = math.sqrt((x - a) / (x + a))
+    geo = (1.0 - q2n) / (1.0 - q) if q < 1.0 else 2.0 * n  # sum_{j<2n} q^j
+    du = (4.0 * amp / a) * (1.0 - t) * np.sum(sign * n * j[2 * n] * geo)
+    return u, du
+
+
+def bench_wave(reps=7):
+    """SciPy's u_w (Bessel form) over the 64 domain points against maugis' criterion
+    medians of wave_f64_domain (run `cargo bench --bench displacement -- wave_f64_domain`
+    first), per value."""
+    pts = wave_points()
+    wall, cpu = best_of(reps, lambda: [scipy_wave(a, x) for a, x in pts])
+    print("u_w and du_w/dx over the 64 points of wave_f64_domain (a in [0.5, 6], zeta = 9/8, x/a in [1, 3]);"
+          " scipy %s, numpy %s" % (scipy.__version__, np.__version__))
+    print("| per value | time | ratio to SciPy |")
+    print("|---|---:|---:|")
+    scipy_us = wall / len(pts) * 1e6
+    print("| SciPy Bessel form, u_w and du_w together (jv vectorised, best of %d; no bound) | %.2f us | 1.00 |"
+          % (reps, scipy_us))
+    for bench in ("u_wave_scratch", "du_wave_scratch", "u_wave_bounded_scratch", "du_wave_bounded_scratch"):
+        ns = criterion_ns("wave_f64_domain", bench)
+        if ns is None:
+            print("| maugis %s | (run cargo bench --bench displacement -- wave_f64_domain first) | |" % bench)
+        else:
+            us = ns / len(pts) / 1e3
+            print("| maugis `%s` from scratch (criterion median) | %.3f us | %.4f |"
+                  % (bench.replace("_scratch", ""), us, us / scipy_us))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--points", type=int, default=None)
@@ -195,10 +251,14 @@ def main():
     ap.add_argument("--regions", action="store_true", help="2F1 by band of z, both sides in one run")
     ap.add_argument("--regions-example", type=Path, default=ROOT / "target" / "release" / "examples" / "hyp2f1_regions",
                     help="the built examples/hyp2f1_regions binary")
+    ap.add_argument("--wave", action="store_true", help="u_w and du_w/dx (Bessel form) against wave_f64_domain")
     ap.add_argument("--accuracy-points", type=int, default=20000)
     ap.add_argument("--rust-example", type=Path, default=ROOT / "target" / "release" / "examples" / "bessel_f64",
                     help="the built examples/bessel_f64 binary")
     args = ap.parse_args()
+    if args.wave:
+        bench_wave()
+        return
     if args.bessel:
         bench_bessel(args.points or 100000, args.accuracy_points, args.rust_example)
         return

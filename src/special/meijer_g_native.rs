@@ -31,11 +31,11 @@
 //!   propagated to first and second order. The bound is evaluated in f64 and
 //!   inflated by `1 + 2^-30` for its own roundings.
 //!
-//! * Near `y = 1` with `k (1 - y) <= 3` ([`near_one_f64`]): the near-one expansion
+//! * Near `y = 1` with `k (1 - y) <= 1.25` ([`near_one_f64`]): the near-one expansion
 //!   of [`super::meijer_g_dd`] (`G = C_k B_k(1) + C_k (k+1) I1(w) - 2 sqrt(pi) w^{3/2} I2'(w)`,
 //!   `w = 1 - y` exact) in f64, its recurrences counted in roundings as the
 //!   series above and both sums compensated; the parts grow like `e^{k w}`
-//!   before they cancel, so its bound is `1e-14` relative up to `k w ~ 2.5`.
+//!   before they cancel, so its bound is `1e-14` relative up to `k w ~ 1`.
 //!   About `40/(-ln w) + 2 k w` terms a sum: 0.1-0.35 us against 1-4 us for the
 //!   direct series at `0.85 < y <= 0.97` and 1-2 us for the double-double path
 //!   above 0.97 (issue 23, item 4).
@@ -271,9 +271,10 @@ fn s_bounded(k: u32, y: f64) -> Option<Val> {
 
 /// Largest `k (1 - y)` for which [`near_one_f64`] is tried: its parts grow to
 /// about `e^{k w}` before they cancel, and f64 keeps `1e-14` of `G` only while
-/// that factor is small (measured: its bound is `1e-14` relative up to `k w ~ 2.5`,
-/// and at `k w = 3` for `k >= 300`; 74 of 89 test points with `k w <= 4`).
-pub const NEAR_ONE_F64_MAX_KW: f64 = 3.0;
+/// that factor is small (measured on the unit test's points: its bound is `1e-14`
+/// relative at every `k w <= 1` with `y > 0.85`, at none with `k w >= 1.5`; a try that
+/// misses costs about 0.2 us before the next path runs).
+pub const NEAR_ONE_F64_MAX_KW: f64 = 1.25;
 
 /// Smallest `y` for which [`near_one_f64`] is tried: below, its terms shrink like
 /// `w^j` with `w > 0.15`, and for `k >= 2` its bound misses `1e-14` (the parts
