@@ -158,8 +158,14 @@ impl Mag {
         if d > 60 {
             return Mag::norm(big.man.next_up(), big.exp);
         }
-        let sum = big.man + small.man * pow2_neg(d);
-        Mag::norm(sum.next_up(), big.exp)
+        // both mantissas in [0.5, 1): the sum is in [0.5, 2), so one halving (exact)
+        // normalises it, without the general frexp
+        let sum = (big.man + small.man * pow2_neg(d)).next_up();
+        if sum < 1.0 {
+            Mag { man: sum, exp: big.exp }
+        } else {
+            Mag { man: sum * 0.5, exp: big.exp + 1 }
+        }
     }
 
     /// `self * o`, rounded up.
@@ -170,7 +176,15 @@ impl Mag {
         if !self.is_finite() || !o.is_finite() {
             return Mag::inf();
         }
-        Mag::norm((self.man * o.man).next_up(), self.exp + o.exp)
+        // the product of two mantissas in [0.5, 1) is in [0.25, 1): one doubling (exact)
+        let prod = (self.man * o.man).next_up();
+        if prod >= 1.0 {
+            Mag { man: prod * 0.5, exp: self.exp + o.exp + 1 }
+        } else if prod >= 0.5 {
+            Mag { man: prod, exp: self.exp + o.exp }
+        } else {
+            Mag { man: prod * 2.0, exp: self.exp + o.exp - 1 }
+        }
     }
 
     /// `self * o`, rounded down (for lower bounds).

@@ -266,6 +266,19 @@ fn raw_parts(x: &Float) -> (&[u64], i64) {
     }
 }
 
+/// `|m|` as an f64 from the top limb of its significand (a guess for the reduction,
+/// accurate to about 2^-52, and 0 below 2^-1000), without MPFR's conversion.
+fn approx_abs(m: &Float) -> f64 {
+    let (d, e) = raw_parts(m);
+    let top = d[d.len() - 1] as f64; // in [2^63, 2^64)
+    let shift = e - 64;
+    if shift < -1000 {
+        return 0.0;
+    }
+    // 2^shift for |shift| < 1023, from its bits
+    top * f64::from_bits(((1023 + shift) as u64) << 52)
+}
+
 /// `X 2^e` rounded to nearest at `prec` bits, with MPFR's ternary value.
 fn to_float(x: &[u64], e: i64, prec: u32, negative: bool) -> (Float, Ordering) {
     let mut y = Float::new(prec);
@@ -407,10 +420,10 @@ const EXP_ULPS: f64 = 32.0;
 
 /// `(V, n)` with `|V 2^(n - F) - e^m| <= 32 2^(n - F)` (finite nonzero `m`).
 fn exp_fixed<const L: usize>(m: &Float) -> Option<([u64; L], i64)> {
-    if !m.is_finite() || m.is_zero() {
+    if !m.is_finite() || m.is_zero() || m.get_exp().is_none_or(|e| e > 21) {
         return None;
     }
-    let mf = m.to_f64();
+    let mf = if m.is_sign_negative() { -approx_abs(m) } else { approx_abs(m) };
     if mf.abs() >= (1u64 << 20) as f64 {
         return None;
     }
@@ -479,11 +492,11 @@ fn sin_cos_kernel<const L: usize>(m: &Float, wp: u32, want: Want) -> Option<((Fl
 /// `(|sin m| 2^F, sin m < 0, |cos m| 2^F, cos m < 0)`, each magnitude within
 /// `trig_ulps` ulps of its table.
 fn sin_cos_fixed<const L: usize>(m: &Float) -> Option<([u64; L], bool, [u64; L], bool)> {
-    if !m.is_finite() || m.is_zero() {
+    if !m.is_finite() || m.is_zero() || m.get_exp().is_none_or(|e| e > 21) {
         return None;
     }
-    let mf = m.to_f64();
-    if mf.abs() >= (1u64 << 20) as f64 || mf.abs() < 1.0 / 65536.0 {
+    let mf = approx_abs(m);
+    if mf >= (1u64 << 20) as f64 || mf < 1.0 / 65536.0 {
         return None;
     }
     let tab = tables(L);
