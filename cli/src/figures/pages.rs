@@ -145,17 +145,19 @@ fn fig08(ctx: &Ctx) -> Result<Vec<String>, String> {
     let fa = profile_figure("Fig. 8a: traction at ā = 12/5 and 79/25, λ = 3/2 and 6", xmax, &tq, &a, &[], &[])?;
     let [(a0, _), (b0, _)] = jumps(ctx, 1.5, (2.60, 2.77))?;
     let [(c0, _), (d0, _)] = jumps(ctx, 6.0, (2.71, 3.16))?;
-    let b = vec![
-        model_line(1.5, R4C, a0, 3, ", loading turning point", xmax)?,
-        model_line(1.5, R4C, b0, 4, ", unloading turning point", xmax)?,
-        model_line(6.0, R4C, c0, 1, ", loading turning point", xmax)?,
-        model_line(6.0, R4C, d0, 0, ", unloading turning point", xmax)?,
-    ];
-    let fb = profile_figure("Fig. 8b: traction just before the instabilities, λ = 3/2 and 6", xmax, &tq, &b, &[], &[])?;
-    let gq = [(Quantity::GapOverA, "gap against x̄/ā".to_string())];
+    let q = [(Quantity::Traction, "traction".to_string()), (Quantity::GapOverA, "gap against x̄/ā".to_string())];
     let delta = [("δ̄ = 1/λ at λ = 3/2".to_string(), 1.0 / 1.5), ("δ̄ = 1/λ at λ = 6".to_string(), 1.0 / 6.0)];
-    let fc = profile_figure("Fig. 8c: gap just before the instabilities, λ = 3/2 and 6", 1.6 * 3.16, &gq, &b, &[], &delta)?;
-    Ok(vec![fa, fb, fc])
+    let mut out = vec![fa];
+    for (p, leg, unloading, (x32, x6)) in [("b", "loading", false, (a0, c0)), ("c", "unloading", true, (b0, d0))] {
+        let mut lines = Vec::new();
+        for (l, abar, c, cs) in [(1.5, x32, 3, 6), (6.0, x6, 1, 5)] {
+            lines.push(model_line(l, R4C, abar, c, &format!(", {leg} turning point"), xmax)?);
+            lines.extend(solver_line(ctx, l, R4C, unloading, abar, cs)?);
+        }
+        let t = format!("Fig. 8{p}: traction and gap just before the {leg} instabilities, λ = 3/2 and 6");
+        out.push(profile_figure(&t, xmax, &q, &lines, &[], &delta)?);
+    }
+    Ok(out)
 }
 
 // ---------------------------------------------------------------- Figs. 9, 10
@@ -365,11 +367,11 @@ pub fn all() -> Vec<Figure> {
             title: "Fig. 8: traction and gap, λ = 3/2 and 6",
             caption: "(a) Traction at ā = 12/5 and 79/25 for λ = 3/2 and 6; (b) traction and (c) gap against |x̄|/ā just before the instabilities (ā ≈ 2.60, 2.71, 2.77, 3.16).",
             paper: "Semi-analytical and numerical profiles; the adhesive strip widens as λ falls, and the gap gradient in the strip is larger while loading than while unloading.",
-            ours: "The model's traction and gap at the same states (our turning points).",
-            differences: "Model only: the paper adds its numerical profiles in (b, c). We draw the solver's fields only where the contact cavitates (Figs. 9, 10, 12, 14); these states are continuous contacts, and λ = 3/2 is not simulated here.",
+            ours: "(a) The model's traction at ā = 12/5 and 79/25. (b, c) The model's traction and gap at our turning points, with the solver's state of the same leg whose total contact half-width is nearest (dashed).",
+            differences: "Our (b) and (c) are arranged by leg (b loading, c unloading), each with traction and gap; the paper's by quantity (b traction, c gap), each with loading on top and unloading below. The solver's state is the nearest of its leg, not refined to the turning point (labels give its ā).",
             files: &["fig08a", "fig08b", "fig08c"],
             curves: fig4c_runs(&[1.5, 6.0]),
-            sims: vec![],
+            sims: fig4c_runs(&[1.5, 6.0]),
             loci: no_loci,
             build: fig08,
         },
