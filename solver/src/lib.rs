@@ -51,5 +51,6 @@ pub mod map;
 pub mod path;
 pub mod profile;
 pub mod run;
+pub mod transition;
 
 pub use error::{Result, SolverError};

@@ -1,0 +1,87 @@
+//! lambda* against the Johnson parameter (issue 24, item 3): for each
+//! `chi = sqrt(beta/alpha^2)` at fixed `beta` (`alpha = sqrt(beta)/chi`) and each
+//! threshold fraction of `W_JKR`, the bisection of `maugis_solver::transition`.
+//!
+//! `cargo run --release -p maugis-solver --example transition -- OUT.csv BETA CHI,.. FRACTION,.. [LMIN LMAX SCAN]`
+//!
+//! The Johnson parameters run in parallel (threads, one per chi); a row per
+//! (chi, fraction) goes to stdout and the CSV.
+
+use std::time::Instant;
+
+use maugis_solver::map::ResolutionRule;
+use maugis_solver::transition::{transitions, TransitionSpec};
+
+fn list(s: &str) -> Vec<f64> {
+    s.split(',').map(|t| t.trim().parse().expect("a comma-separated list of numbers")).collect()
+}
+
+fn main() {
+    let a: Vec<String> = std::env::args().skip(1).collect();
+    let (out, beta, chis, fractions) = (&a[0], a[1].parse::<f64>().expect("beta"), list(&a[2]), list(&a[3]));
+    let num = |i: usize, d: f64| a.get(i).map_or(d, |s| s.parse().expect("a number"));
+    let (lmin, lmax, scan) = (num(4, 0.1), num(5, 10.0), num(6, 9.0) as usize);
+    let rows: Vec<String> = std::thread::scope(|sc| {
+        let handles: Vec<_> = chis
+            .iter()
+            .map(|&chi| {
+                let fractions = fractions.clone();
+                sc.spawn(move || {
+                    let mut rows = Vec::new();
+                    let t = Instant::now();
+                    let spec = TransitionSpec {
+                            alpha: beta.sqrt() / chi,
+                            beta,
+                            amax: 6.0,
+                            lambda_min: lmin,
+                            lambda_max: lmax,
+                            scan,
+                            fraction: fractions[0],
+                            rel_tol: 0.03,
+                            resolution: ResolutionRule::Auto,
+                        };
+                    let found = transitions(spec, &fractions, &mut |_| {});
+                    for (k, &fraction) in fractions.iter().enumerate() {
+                        let row = match &found {
+                            Ok(all) => {
+                                let tr = &all[k];
+                                let best = tr.refined.as_ref().unwrap_or(&tr.search);
+                                let evals = tr.search.evaluations.len() + tr.refined.as_ref().map_or(0, |r| r.evaluations.len());
+                                let curve: Vec<String> = tr.search.evaluations.iter().take(scan).map(|e| format!("{:.4}:{:.4}", e.lambda, e.excess())).collect();
+                                format!(
+                                    "{chi},{beta},{},{fraction},{},{},{},{},{},{},{},{},{},{},{evals},{:.0},\"{}\"",
+                                    spec.alpha,
+                                    tr.w_jkr,
+                                    tr.threshold,
+                                    tr.lambda_star().map_or(String::new(), |v| v.to_string()),
+                                    tr.search.lambda_star.map_or(String::new(), |v| v.to_string()),
+                                    tr.relative_uncertainty().map_or(String::new(), |v| v.to_string()),
+                                    tr.refined.is_some(),
+                                    best.bracket.map_or(String::new(), |b| b.0.to_string()),
+                                    best.bracket.map_or(String::new(), |b| b.1.to_string()),
+                                    tr.search.outside.or(best.outside).map_or("", |o| o.name()),
+                                    tr.search.non_monotone || best.non_monotone,
+                                    t.elapsed().as_secs_f64(),
+                                    curve.join(" ")
+                                )
+                            }
+                            Err(e) => format!("{chi},{beta},{},{fraction},,,,,,,,,\"error: {e}\",,,,", spec.alpha),
+                        };
+                        println!("{row}");
+                        rows.push(row);
+                    }
+                    rows
+                })
+            })
+            .collect();
+        handles.into_iter().flat_map(|h| h.join().expect("a search thread")).collect()
+    });
+    let mut csv = String::from(
+        "chi,beta,alpha,fraction,w_jkr,threshold,lambda_star,lambda_star_coarse,rel_uncertainty,refined,bracket_low,bracket_high,outside,non_monotone,evaluations,seconds,scan_excess\n",
+    );
+    for r in rows {
+        csv.push_str(&r);
+        csv.push('\n');
+    }
+    std::fs::write(out, csv).expect("write the CSV");
+}

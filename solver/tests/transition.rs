@@ -1,0 +1,63 @@
+//! lambda* by bisection (`transition`): on the Fig. 4c roughness at a coarse
+//! resolution (1024 cells, 100 steps; the refined search at 2048 and 200), the
+//! bracket holds the crossing of the threshold by the evaluations themselves,
+//! the uncertainty covers the two resolutions, and bad specs are typed errors.
+
+use maugis_solver::map::{Resolution, ResolutionRule};
+use maugis_solver::transition::{transition, Search, TransitionSpec};
+use maugis_solver::SolverError;
+
+fn spec() -> TransitionSpec {
+    TransitionSpec {
+        alpha: 2.0 * 2f64.sqrt() / 8.0,
+        beta: 1.125,
+        amax: 6.0,
+        lambda_min: 0.2,
+        lambda_max: 6.0,
+        scan: 2,
+        fraction: 0.1,
+        rel_tol: 0.25,
+        resolution: ResolutionRule::Fixed(Resolution { cells: 1024, steps_per_leg: 100 }),
+    }
+}
+
+/// The final bracket `(lo, hi)`: `lo` is the largest evaluated lambda inside
+/// the scan bracket at or below the threshold, `hi` the smallest above it.
+fn check_bracket(s: &Search, threshold: f64, rel_tol: f64) -> f64 {
+    let (lo, hi) = s.bracket.expect("a bracket");
+    assert!(hi / lo <= 1.0 + rel_tol && hi > lo, "{lo} {hi}");
+    let at = |l: f64| s.evaluations.iter().find(|e| e.lambda == l).unwrap_or_else(|| panic!("no evaluation at {l}")).excess();
+    assert!(at(lo) <= threshold && at(hi) > threshold, "E({lo}) = {}, E({hi}) = {}, t = {threshold}", at(lo), at(hi));
+    let star = s.lambda_star.unwrap();
+    assert!(star > lo && star < hi);
+    star
+}
+
+#[test]
+fn lambda_star_is_bracketed_with_an_uncertainty() {
+    let sp = spec();
+    let mut seen = 0;
+    let t = transition(sp, &mut |_| seen += 1).unwrap();
+    assert!(t.w_jkr > 1.0, "W_JKR {}", t.w_jkr);
+    assert_eq!(t.threshold, sp.fraction * t.w_jkr);
+    let refined = t.refined.as_ref().expect("the refined search runs");
+    assert_eq!(seen, t.search.evaluations.len() + refined.evaluations.len());
+    let coarse = check_bracket(&t.search, t.threshold, sp.rel_tol);
+    let fine = check_bracket(refined, t.threshold, sp.rel_tol);
+    assert_eq!(t.lambda_star(), Some(fine));
+    assert!(refined.evaluations.iter().all(|e| e.resolution == Resolution { cells: 2048, steps_per_leg: 200 }));
+    let u = t.relative_uncertainty().unwrap();
+    assert!(u >= (fine.ln() - coarse.ln()).abs() && u.is_finite(), "{u}");
+}
+
+#[test]
+fn bad_specs_are_errors() {
+    let sp = spec();
+    let domain = |s: TransitionSpec| matches!(transition(s, &mut |_| ()), Err(SolverError::Domain { .. }) | Err(SolverError::Model(_)));
+    assert!(domain(TransitionSpec { alpha: 0.0, ..sp }));
+    assert!(domain(TransitionSpec { lambda_max: 0.1, ..sp }));
+    assert!(domain(TransitionSpec { scan: 1, ..sp }));
+    assert!(domain(TransitionSpec { fraction: 0.0, ..sp }));
+    assert!(domain(TransitionSpec { rel_tol: f64::NAN, ..sp }));
+    assert!(domain(TransitionSpec { beta: -1.0, ..sp }));
+}
