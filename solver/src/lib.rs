@@ -28,6 +28,8 @@
 //! * [`map`]: regime maps drawn by the solver, one cycle per grid point of the
 //!   model's sweep grid, labelled next to the model (sharded, merged exactly;
 //!   parallel with the `parallel` feature);
+//! * [`transition`]: lambda*, below which the roughness-induced dissipation
+//!   vanishes, by bisection in lambda with a grid uncertainty;
 //! * [`run::simulate`]: one cycle from `(lambda, alpha, beta)`, set up as
 //!   `maugis simulate` and the Python package run it.
 //!
