@@ -258,7 +258,7 @@ fn check_names(obj: &Map<String, Value>, fname: &str, args: &[&str]) -> Req<()> 
 
 fn mp_response(id: &Value, ball: &Ball, prec: u32) -> Value {
     profile::timed(profile::RESPONSE, || {
-        let (mid, rad) = ball.to_decimal_fast(digits_for(prec));
+        let (mid, rad) = ball.to_decimal(digits_for(prec));
         json!({"id": id, "mid": mid, "rad": rad, "prec": prec})
     })
 }

@@ -165,32 +165,12 @@ impl Ball {
     pub fn from_decimal(text: &str, prec: u32) -> Result<Ball> {
         Ok(Decimal::parse(text)?.to_ball(prec))
     }
-
-    /// [`Ball::to_decimal`] at about a third of its cost (`maugis eval`'s
-    /// printing, issue 23 item 6: 1.5 -> 0.5 us at 128 bits): decimal midpoint
-    /// with `digits` significant digits and a decimal radius that bounds the
-    /// true radius plus the conversion error of the midpoint, so the printed
-    /// ball encloses.
-    ///
-    /// The midpoint is printed by MPFR's `mpfr_get_str` rounding to nearest
-    /// (rug's `to_string_radix`), so it is within half a unit of its last printed
-    /// digit of the binary midpoint; that half unit, bounded above
-    /// ([`half_unit_of_last_digit`]), is the conversion error. `to_decimal`
-    /// parses the printed text back and subtracts, which costs a parse at
-    /// `prec + 64` bits for a radius at most half a unit of the last digit
-    /// smaller. The radius is printed through f64 where it is a normal f64
-    /// ([`mag_decimal_upper`]).
-    pub fn to_decimal_fast(&self, digits: usize) -> (String, String) {
-        let mid_s = self.mid().to_string_radix(10, Some(digits.max(1)));
-        let conv = if self.mid().is_zero() { Mag::ZERO } else { half_unit_of_last_digit(&mid_s).unwrap_or_else(Mag::inf) };
-        (mid_s, mag_decimal_upper(self.rad_mag().add(conv)))
-    }
 }
 
 /// An upper bound of half a unit in the last digit of the decimal text `s`
 /// (`[-]digits[.digits][e[-]exp]`, rug's format), or `None` if `s` is not such
 /// a decimal (`inf`, `NaN`).
-fn half_unit_of_last_digit(s: &str) -> Option<Mag> {
+pub(super) fn half_unit_of_last_digit(s: &str) -> Option<Mag> {
     let body = s.strip_prefix('-').unwrap_or(s);
     let (mant, exp) = match body.find('e') {
         Some(i) => (&body[..i], body[i + 1..].parse::<i64>().ok()?),
@@ -222,7 +202,7 @@ fn pow10_upper(m: i64) -> Mag {
 /// f64 where the bound is a normal f64 (Rust prints an f64 exactly rounded to
 /// nearest, so printing `v (1 + 2^-16)` with six significant digits, relative
 /// error `<= 5e-6`, gives a decimal `>= v`), else through MPFR.
-fn mag_decimal_upper(m: Mag) -> String {
+pub(super) fn mag_decimal_upper(m: Mag) -> String {
     if m.is_zero() {
         return "0".to_string();
     }
@@ -389,7 +369,7 @@ mod tests {
                 let x = Float::with_val(180, Float::parse(t).unwrap()) / 3u32;
                 let mut b = Ball::from_float(&x, 180);
                 b.add_error(&Float::with_val(53, rad));
-                let (m, r) = b.to_decimal_fast(digits);
+                let (m, r) = b.to_decimal(digits);
                 let mid = Float::with_val(400, Float::parse(&m).unwrap());
                 let rr = Float::with_val(400, Float::parse(&r).unwrap());
                 // encloses the exact midpoint with room for the input radius
@@ -403,7 +383,7 @@ mod tests {
         }
         let mut z = Ball::from_float(&Float::new(53), 53);
         z.add_error(&Float::with_val(53, 1e-10));
-        let (m, r) = z.to_decimal_fast(10);
+        let (m, r) = z.to_decimal(10);
         assert_eq!(m, "0");
         assert!(Float::with_val(100, Float::parse(&r).unwrap()) >= 1e-10);
     }
