@@ -210,6 +210,12 @@ fn arg_int(obj: &Map<String, Value>, name: &str) -> Req<i64> {
 }
 
 fn arg_int_untimed(obj: &Map<String, Value>, name: &str) -> Req<i64> {
+    // a JSON integer as typed (no text copy); "5.0", "1e3" and strings take the text path
+    if let Some(Value::Number(n)) = obj.get(name) {
+        if let Some(v) = n.as_i64() {
+            return Ok(v);
+        }
+    }
     let t = arg_text(obj, name)?;
     if let Ok(v) = t.parse::<i64>() {
         return Ok(v);
