@@ -66,25 +66,53 @@ PYEOF
 else
     : > "$TMP/pyflint.tsv"
 fi
+# maugis eval: the same integrals as JSON Lines requests (expression text parsed per
+# request), time per request = (time of k requests - time of 1) / (k - 1), so that the
+# process start cancels
+cargo build -q --release --features maugis/gmp-no-check -p maugis-cli
+python3 - target/release/maugis > "$TMP/eval.tsv" <<'PYEOF'
+import subprocess, sys, time
+exe = sys.argv[1]
+CASES = [("atanderiv", "1/(1+x^2)", 0, 1), ("rump", "sin(x+exp(x))", 0, 8), ("exp", "exp(x)", 0, 1),
+         ("sqrt", "sqrt(x)", 1, 4), ("xJ0", "x*besselj(0,x)", 0, 1), ("sin100", "sin(x)", 0, 100)]
+for prec in (64, 333):
+    for ident, f, a, b in CASES:
+        req = '{"fn":"integrate","f":"%s","a":"%s","b":"%s","prec":%d}\n' % (f, a, b, prec)
+        def run(k):
+            t = time.perf_counter()
+            subprocess.run([exe, "eval"], input=req * k, capture_output=True, text=True, check=True)
+            return time.perf_counter() - t
+        t1 = min(run(1) for _ in range(3))
+        k = 2
+        while True:
+            tk = run(k)
+            if tk - t1 >= 0.3 or k >= 100000:
+                break
+            k *= 4
+        print(f"{ident}\t{prec}\t{1e3 * (tk - t1) / (k - 1):.6f}")
+PYEOF
 echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)" >&2
-python3 - "$TMP/arb.tsv" "$TMP/maugis.tsv" "$TMP/pyflint.tsv" <<'PYEOF'
+python3 - "$TMP/arb.tsv" "$TMP/maugis.tsv" "$TMP/pyflint.tsv" "$TMP/eval.tsv" <<'PYEOF'
 import sys
 def load(p):
     out = {}
     for line in open(p):
         f = line.rstrip("\n").split("\t")
-        if len(f) >= 4:
+        if len(f) >= 3:
             out[(f[0], f[1])] = f
     return out
-arb, mau, pyf = (load(p) for p in sys.argv[1:4])
-print("| integral | bits | C Arb ms | Arb evals | maugis ms | maugis evals | maugis / Arb | goal met | python-flint ms |")
-print("|---|---|---|---|---|---|---|---|---|")
+arb, mau, pyf, ev = (load(p) for p in sys.argv[1:5])
+print("| integral | bits | C Arb ms | Arb evals | maugis ms | maugis evals | maugis / Arb | goal met | python-flint ms | maugis eval ms | eval / python-flint |")
+print("|---|---|---|---|---|---|---|---|---|---|---|")
 for key, a in arb.items():
     m = mau.get(key)
     p = pyf.get(key)
     if m is None:
         continue
     ratio = float(m[2]) / float(a[2])
+    e = ev.get(key)
     pms = f"{float(p[2]):.3f}" if p else "-"
-    print(f"| {key[0]} | {key[1]} | {float(a[2]):.3f} | {a[3]} | {float(m[2]):.3f} | {m[3]} | {ratio:.1f}x | {m[5]} | {pms} |")
+    ems = f"{float(e[2]):.3f}" if e else "-"
+    eratio = f"{float(e[2]) / float(p[2]):.2f}x" if e and p else "-"
+    print(f"| {key[0]} | {key[1]} | {float(a[2]):.3f} | {a[3]} | {float(m[2]):.3f} | {m[3]} | {ratio:.1f}x | {m[5]} | {pms} | {ems} | {eratio} |")
 PYEOF

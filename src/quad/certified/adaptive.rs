@@ -256,10 +256,7 @@ where
     while xexp < wp.max(2) {
         let (rho, y) = ellipse(xexp);
         let xr = Mag::pow2(xexp as i64);
-        let wide = CBall::new(
-            Ball::with_mag(m.clone(), h_mag.mul(xr)),
-            Ball::with_mag(Float::new(m.prec()), h_mag.mul(y)),
-        );
+        let wide = CBall::new(Ball::with_mag(m.clone(), h_mag.mul(xr)).set_prec(wp), Ball::with_mag(Float::new(wp), h_mag.mul(y)));
         let v = f.eval(wide, Mode::Analytic);
         if !v.is_finite() {
             break;
@@ -283,8 +280,11 @@ where
     };
     let err = gl_bound(big_m, rho, n);
     let rule = legendre::rule(n, wp)?;
-    let mb = Ball::from_float(&m, m.prec());
-    let hb = Ball::from_float(&h, h.prec());
+    // The nodes at the working precision: m and h carry the endpoints' precision (the
+    // caller's, plus a bit per bisection), which would otherwise pass to every
+    // operation of the integrand; rounded to wp they are balls that contain them.
+    let mb = Ball::from_float(&m, m.prec()).set_prec(wp);
+    let hb = Ball::from_float(&h, h.prec()).set_prec(wp);
     let mut s = CBall::zero(wp);
     for (k, (x, w)) in rule.nodes.iter().zip(&rule.weights).enumerate() {
         let hx = hb.mul(x);
