@@ -46,6 +46,12 @@
 //!
 //! Integer arguments (`n`, `k`, `kmax`, `prec`) must be integers as typed.
 //! A bad line gets `{"id": ..., "error": "..."}` and the stream goes on.
+//!
+//! Responses are flushed whenever no further input waits, so an interactive
+//! client gets each answer before it sends its next line. With
+//! `MAUGIS_EVAL_PROFILE=1` the time per request by stage (JSON, arguments,
+//! evaluation, response, output) is printed to stderr at the end
+//! (`reference/bench_arb_bessel.py --eval` uses it).
 
 use std::io::{BufRead, Write};
 
