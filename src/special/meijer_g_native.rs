@@ -45,7 +45,7 @@
 //! cancels) and for `Y_NATIVE_MAX < y < 1` (the direct series converges slowly;
 //! the near-one expansion cancels by `e^{k w}`), the double-double paths of
 //! `meijer_g_dd.rs` run (0.5-4 us). Left to MP (counted by the caller):
-//! `k > TABLE_K_MAX`, and the one or two f64 `y` next to a zero of `G(k, .)`
+//! `k > TABLE_K_MAX`, and the two to four f64 `y` next to a zero of `G(k, .)`
 //! (`|G| <~ 1e-16`), where even the double-double bound (absolute, `~1e-30`)
 //! is not `1e-14` relative.
 
