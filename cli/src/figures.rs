@@ -52,15 +52,20 @@ pub struct FiguresArgs {
     #[arg(long)]
     pub no_solver: bool,
     /// Solver grid cells, a power of two.
-    #[arg(long, value_name = "N", default_value = "4096")]
+    #[arg(long, value_name = "N", default_value_t = DEFAULT_GRID)]
     pub grid: usize,
     /// Solver approach steps per leg.
-    #[arg(long, value_name = "S", default_value = "200")]
+    #[arg(long, value_name = "S", default_value_t = DEFAULT_STEPS)]
     pub steps: usize,
     /// Also write the page showing the figures (linked as figures/<name>.svg) to FILE.
     #[arg(long, value_name = "FILE")]
     pub write_doc: Option<PathBuf>,
 }
+
+/// Solver grid cells of the committed figures.
+const DEFAULT_GRID: usize = 4096;
+/// Solver approach steps per leg of the committed figures.
+const DEFAULT_STEPS: usize = 200;
 
 /// The roughness of Figs. 4a (and 4d's text): `{2 sqrt(2)/8, 2}`.
 const R4A: (f64, f64) = (FIG4C_ALPHA, 2.0);
@@ -77,7 +82,8 @@ fn roughness_name(r: (f64, f64)) -> &'static str {
         R4B => "{√2/3, 2}",
         R4C => "{2√2/8, 9/8}",
         SMOOTH => "{0, −}",
-        _ => "{2√2/8, 2}",
+        R4A => "{2√2/8, 2}",
+        _ => "{α, β}",
     }
 }
 
@@ -338,7 +344,7 @@ fn page(all: &[Figure], ctx: &Ctx) -> Result<String, String> {
             }
             let _ = writeln!(s);
         }
-        let solver = if f.sims.is_empty() { "" } else { " (solver: 4096 cells, 200 approach steps per leg)" };
+        let solver = if f.sims.is_empty() { String::new() } else { format!(" (solver: {DEFAULT_GRID} cells, {DEFAULT_STEPS} approach steps per leg)") };
         let _ = writeln!(s, "**Command.** `maugis figures --only {} --out DIR`{solver}\n", f.id);
         let _ = writeln!(s, "**Differences.** {}\n", f.differences);
     }
