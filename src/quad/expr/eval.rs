@@ -1,5 +1,7 @@
 //! Evaluating a tree in any number type that has the operations it needs.
 
+use std::borrow::Cow;
+
 use super::tree::{Expr, Function};
 use crate::ball::{Ball, CBall, Decimal};
 use crate::quad::certified::HoloBall;
@@ -78,9 +80,15 @@ macro_rules! apply_function {
 impl Expr {
     /// The value at `x`, computed in the type of `x` (constants take its precision).
     pub fn eval<V: ExprValue>(&self, x: &V) -> V {
-        let go = |e: &Expr| e.eval(x);
-        match self {
-            Expr::X => x.clone(),
+        self.eval_cow(x).into_owned()
+    }
+
+    /// [`Expr::eval`], with the variable itself borrowed rather than copied (every
+    /// operation takes its operands by reference, so `exp(x)` copies nothing).
+    fn eval_cow<'x, V: ExprValue>(&self, x: &'x V) -> Cow<'x, V> {
+        let go = |e: &Expr| e.eval_cow(x);
+        Cow::Owned(match self {
+            Expr::X => return Cow::Borrowed(x),
             Expr::Pi => V::pi(x),
             Expr::Number(d) => V::from_decimal(d, x),
             Expr::Neg(a) => go(a).neg(),
@@ -93,7 +101,7 @@ impl Expr {
             Expr::Pow(a, b) => go(a).pow(&go(b)),
             Expr::Call(f, a) => go(a).apply(*f),
             Expr::BesselJ(n, a) => go(a).bessel_j(*n),
-        }
+        })
     }
 
     /// The value at `x` in f64 (no bound: for a quick look and plots).
