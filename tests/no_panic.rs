@@ -79,3 +79,19 @@ fn nan_and_infinity_are_typed_errors() {
     let x = rug::Float::with_val(53, 999_999.5);
     assert!(bessel_j::bessel_j_mp(1_000_000, &x, 65_536).is_err());
 }
+
+/// Issue 26: orders and arguments whose sequence would not fit in memory (or whose
+/// start order overflowed `usize`) give the empty sequence of the documented contract.
+#[test]
+fn huge_sequence_orders_and_arguments_do_not_panic() {
+    use maugis::ball::Dd;
+    assert!(bessel_j::bessel_j_sequence_dd(usize::MAX, Dd::from_f64(1.0)).is_empty());
+    assert!(bessel_j::bessel_j_sequence(usize::MAX, 1.0).is_empty());
+    assert!(bessel_j::bessel_j_sequence(2, 1e20).is_empty());
+    assert!(bessel_j::bessel_j_sequence(bessel_j::MAX_SEQUENCE_ORDER + 1, 1.0).is_empty());
+    assert!(bessel_j::bessel_j_sequence(2, -2.0 * bessel_j::MAX_SEQUENCE_ARGUMENT).is_empty());
+    // at the edge of the range an answer
+    let s = bessel_j::bessel_j_sequence(3, 2.5);
+    assert_eq!(s.len(), 4);
+    assert!((s[0] - bessel_j::bessel_j(0, 2.5).unwrap()).abs() < 1e-15);
+}

@@ -66,7 +66,7 @@ mod three_term;
 
 pub use hankel::bessel_j_hankel;
 pub use native::{bessel_j_native, bessel_j_native_portable, choose_native, NativeMethod};
-pub use recurrence::{bessel_j_sequence, bessel_j_sequence_dd, bessel_j_sequence_mp};
+pub use recurrence::{bessel_j_sequence, bessel_j_sequence_dd, bessel_j_sequence_mp, MAX_SEQUENCE_ARGUMENT, MAX_SEQUENCE_ORDER};
 pub(crate) use native_hankel::{bessel_j01, HANKEL_MAX_X, HANKEL_MIN_X};
 pub(crate) use native_recurrence::forward_sequence;
 pub(crate) use native_series::{inv_factorials, MAX_TABLE_FACTORIAL, TABLE_ETA};

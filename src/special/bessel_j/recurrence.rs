@@ -45,9 +45,12 @@ pub fn bessel_j_sequence_mp(nmax: u64, x: &Float, wp: u32) -> Result<Vec<Ball>> 
 /// `|x|` that the neglected dominant solution is negligible at double-double
 /// accuracy (see `miller_start`). Absolute error about `1e-30` times
 /// `max_n |J_n(x)| <= 1` (an estimate, not a bound; the golden and cross-check
-/// tests measure it). Returns an empty vector for non-finite `x`.
+/// tests measure it). Returns an empty vector for non-finite `x`, and outside the
+/// range served: `nmax` above [`MAX_SEQUENCE_ORDER`] or `|x|` above
+/// [`MAX_SEQUENCE_ARGUMENT`] (the recurrence would run over more than `2^24` orders;
+/// [`bessel_j_sequence_mp`] and [`super::bessel_j_mp`] take such orders and arguments).
 pub fn bessel_j_sequence_dd(nmax: usize, x: Dd) -> Vec<Dd> {
-    if !x.hi.is_finite() {
+    if !x.hi.is_finite() || nmax > MAX_SEQUENCE_ORDER || x.hi.abs() > MAX_SEQUENCE_ARGUMENT {
         return Vec::new();
     }
     let mut out = vec![Dd::ZERO; nmax + 1];
@@ -94,7 +97,13 @@ pub fn bessel_j_sequence_dd(nmax: usize, x: Dd) -> Vec<Dd> {
     out
 }
 
-/// `J_0(x), ..., J_nmax(x)` in f64 (the double-double sequence, rounded).
+/// Largest `nmax` of [`bessel_j_sequence_dd`] and [`bessel_j_sequence`].
+pub const MAX_SEQUENCE_ORDER: usize = 1 << 24;
+/// Largest `|x|` of [`bessel_j_sequence_dd`] and [`bessel_j_sequence`].
+pub const MAX_SEQUENCE_ARGUMENT: f64 = (1u64 << 24) as f64;
+
+/// `J_0(x), ..., J_nmax(x)` in f64 (the double-double sequence, rounded; empty where
+/// [`bessel_j_sequence_dd`] is).
 pub fn bessel_j_sequence(nmax: usize, x: f64) -> Vec<f64> {
     bessel_j_sequence_dd(nmax, Dd::from_f64(x)).into_iter().map(Dd::to_f64).collect()
 }
