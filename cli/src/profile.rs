@@ -1,7 +1,7 @@
 //! `maugis profile`: the traction, displacement and gap profiles of one state
 //! (one contact half-width `abar`), like the paper's Figs. 6, 8 and 9.
 //!
-//! The strip ratio `m` comes from [`ContactSize::solve_m`]. Over the symmetric
+//! The state is solved and sampled by the library ([`sample_state`]). Over the symmetric
 //! half `xbar in [0, 1.5 m abar]` it writes `profile.csv` with the columns
 //! `xbar,pbar,ubar,gbar,hbar` (traction, substrate displacement, gap, rigid
 //! profile depth, all normalised) and `profile.svg` with three panels: traction;
@@ -18,10 +18,8 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use serde::Serialize;
 
-use maugis::contact::displacement::profile_depth;
-use maugis::contact::model::{ContactSize, Params, Validity};
-use maugis::contact::model_mp::solve_m_mp;
-use maugis::contact::traction_mp::traction_mp;
+use maugis::contact::model::{Params, Validity};
+use maugis::contact::state_profile::{sample_state, ProfileError, StateProfile};
 
 use maugis::contact::units::{Material, Scales};
 
@@ -138,6 +136,16 @@ fn validity_text(v: &Validity) -> String {
     }
 }
 
+/// A sampling error in the command's words.
+fn profile_error(e: ProfileError) -> String {
+    match e {
+        ProfileError::State { abar, error } => format!("abar = {}: {error}", num(abar)),
+        ProfileError::CertifiedStripRatio { abar, error } => format!("abar = {}: certified m: {error}", num(abar)),
+        ProfileError::Sample { xbar, error } => format!("at xbar = {}: {error}", num(xbar)),
+        other => other.to_string(),
+    }
+}
+
 /// Runs `maugis profile`.
 pub fn run(a: ProfileArgs) -> Result<(), String> {
     let si = a.si.resolve(&[
@@ -168,45 +176,23 @@ pub fn run(a: ProfileArgs) -> Result<(), String> {
     if a.format == ProfileFormat::Files {
         check_out_dir(&a.out)?;
     }
-    let cs = ContactSize::new(params, abar).map_err(|e| e.to_string())?;
-    let strip = cs.solve_strip().map_err(|e| format!("abar = {}: {e}", num(abar)))?;
-    let m = strip.m();
-    let load = cs.load_at(strip);
-    let validity = cs.validity_at(strip).map_err(|e| format!("abar = {}: {e}", num(abar)))?;
-    let c = m * abar;
-    let xmax = 1.5 * c;
-
-    // Uniform grid plus the contact edge and the strip end.
-    let mut xs: Vec<f64> = (0..a.points).map(|i| xmax * i as f64 / (a.points - 1) as f64).collect();
-    xs.push(abar);
-    xs.push(c);
-    xs.sort_by(f64::total_cmp);
-    xs.dedup();
-    // --prec: m as a certified ball, then the traction at each point as a ball
-    let m_ball = match a.prec {
-        Some(p) => Some(solve_m_mp(params, abar, p).map_err(|e| format!("abar = {}: certified m: {e}", num(abar)))?),
-        None => None,
+    let state = sample_state(params, abar, None, a.points).map_err(profile_error)?;
+    let (m, load, validity) = (state.m, state.load, state.validity);
+    let c = state.strip_end();
+    // --prec: the traction at each sample as a certified ball, printed in decimal
+    let certified: Vec<(String, String)> = match a.prec {
+        Some(p) => state.certified_traction(p).map_err(profile_error)?.iter().map(|b| b.to_decimal(digits_for(p))).collect(),
+        None => Vec::new(),
     };
-    let mut samples = Vec::with_capacity(xs.len());
-    for &x in &xs {
-        let e = |e: maugis::Error| format!("at xbar = {}: {e}", num(x));
-        let (pbar_mid, pbar_rad) = match (a.prec, &m_ball) {
-            (Some(p), Some(mb)) => {
-                let (mid, rad) = traction_mp(params, abar, mb, x, p).map_err(e)?.to_decimal(digits_for(p));
-                (Some(mid), Some(rad))
-            }
-            _ => (None, None),
-        };
-        samples.push(Sample {
-            pbar_mid,
-            pbar_rad,
-            xbar: x,
-            pbar: cs.traction_at(strip, x),
-            ubar: cs.displacement_at(strip, x).map_err(e)?,
-            gbar: cs.gap_at(strip, x).map_err(e)?,
-            hbar: profile_depth(1.0, alpha, beta, x).map_err(e)?,
-        });
-    }
+    let mut certified = certified.into_iter();
+    let samples: Vec<Sample> = state
+        .samples
+        .iter()
+        .map(|s| {
+            let (pbar_mid, pbar_rad) = certified.next().map_or((None, None), |(mid, rad)| (Some(mid), Some(rad)));
+            Sample { xbar: s.xbar, pbar: s.pbar, ubar: s.ubar, gbar: s.gbar, hbar: s.hbar, pbar_mid, pbar_rad }
+        })
+        .collect();
 
     if a.format == ProfileFormat::Json {
         let out = ProfileJson {
@@ -258,7 +244,7 @@ pub fn run(a: ProfileArgs) -> Result<(), String> {
         w.write_record(&row).map_err(err)?;
     }
     let csv_bytes = w.into_inner().map_err(|e| format!("could not format CSV: {e}"))?;
-    let svg = profile_svg(&samples, &cs, m, load, &validity)?;
+    let svg = profile_svg(&samples, &state)?;
     let files = [OutFile { name: "profile.csv".into(), bytes: csv_bytes }, OutFile::text("profile.svg", svg)];
     let written = write_atomically(&a.out, &files)?;
     let mut report = String::new();
@@ -375,11 +361,11 @@ fn panel(
     Ok(())
 }
 
-/// The three-panel profile plot (SVG text) of the state `(cs, m)`.
-fn profile_svg(s: &[Sample], cs: &ContactSize, m: f64, load: f64, v: &Validity) -> Result<String, String> {
-    let Params { lambda, alpha, beta } = cs.params();
-    let abar = cs.abar();
-    let c = m * abar;
+/// The three-panel profile plot (SVG text) of the state.
+fn profile_svg(s: &[Sample], state: &StateProfile) -> Result<String, String> {
+    let Params { lambda, alpha, beta } = state.params;
+    let (abar, m, load, v) = (state.abar, state.m, state.load, &state.validity);
+    let c = state.strip_end();
     let xmax = s.last().map(|p| p.xbar).unwrap_or(1.5 * c).max(1e-9);
     let pts = |f: fn(&Sample) -> f64| s.iter().map(|p| (p.xbar, f(p))).collect::<Vec<_>>();
     let mut svg = String::new();

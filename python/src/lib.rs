@@ -25,10 +25,9 @@ use rayon::prelude::*;
 use maugis::contact::curve::{self, load_area_curve, CurveOptions};
 use maugis::contact::summary::{CurveSummary, RunParams, RunSummary};
 use maugis::contact::sweep::{run_sweep, SweepGrid};
-use maugis::contact::displacement::{
-    du_wave, du_wave_bounded, profile_depth, u_wave, u_wave_bounded, wave_at_decimals,
-};
-use maugis::contact::model::{ContactSize, Params, Validity};
+use maugis::contact::displacement::{du_wave, du_wave_bounded, u_wave, u_wave_bounded, wave_at_decimals};
+use maugis::contact::model::Params;
+use maugis::contact::state_profile::{sample_state_at, ProfileError, ProfileSample};
 use maugis::ball::{eval_at_decimals, Decimal};
 use maugis::quad::certified::Options;
 use maugis::quad::expr::{integrate_expr, shortfall, significant_imaginary, DecaySpec, Expr, UpperLimit, WeightSpec};
@@ -530,24 +529,13 @@ fn simulate_json(py: Python<'_>, lam: f64, alpha: f64, beta: f64, amax: f64, cel
 fn profile_dict<'py>(py: Python<'py>, lam: f64, alpha: f64, beta: f64, abar: f64, x: PyReadonlyArray1<'py, f64>) -> PyResult<Bound<'py, PyDict>> {
     let p = params(lam, alpha, beta)?;
     let xs = slice(&x, "x")?;
-    type Columns = [Vec<f64>; 4];
-    let (m, load, v, [pbar, ubar, gbar, hbar]) = py.detach(|| -> Result<(f64, f64, Validity, Columns), PyErr> {
-        let cs = ContactSize::new(p, abar).map_err(lib_error)?;
-        let strip = cs.solve_strip().map_err(lib_error)?;
-        let validity = cs.validity_at(strip).map_err(lib_error)?;
-        let rows = map_elements(xs.len(), |i| {
-            let x = xs[i];
-            Ok([cs.traction_at(strip, x), cs.displacement_at(strip, x)?, cs.gap_at(strip, x)?, profile_depth(1.0, alpha, beta, x)?])
-        })
-        .map_err(|e| element_error(e, |i| format!("profile at xbar={:?}", xs[i])))?;
-        let mut cols: Columns = Default::default();
-        for row in rows {
-            for (col, value) in cols.iter_mut().zip(row) {
-                col.push(value);
-            }
-        }
-        Ok((strip.m(), cs.load_at(strip), validity, cols))
+    let state = py.detach(|| sample_state_at(p, abar, xs)).map_err(|e| match e {
+        ProfileError::Sample { xbar, error } => PyValueError::new_err(format!("profile at xbar={xbar:?}: {error}")),
+        other => lib_error(other.error().clone()),
     })?;
+    let (m, load, v) = (state.m, state.load, state.validity);
+    let column = |f: fn(&ProfileSample) -> f64| state.samples.iter().map(f).collect::<Vec<f64>>();
+    let [pbar, ubar, gbar, hbar] = [column(|s| s.pbar), column(|s| s.ubar), column(|s| s.gbar), column(|s| s.hbar)];
     let out = PyDict::new(py);
     for (key, value) in [("lambda", lam), ("alpha", alpha), ("beta", beta), ("abar", abar), ("m", m), ("load", load)] {
         out.set_item(key, value)?;
