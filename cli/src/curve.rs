@@ -14,7 +14,7 @@
 //! * `load-approach.svg`: `Lbar(Delta-bar)` of every curve, with pull-off.
 //!
 //! `--format json` writes no file and prints one JSON object instead (see
-//! [`JsonOut`]). The curves are computed in parallel (rayon); a progress bar is
+//! the library's [`RunSummary`]). The curves are computed in parallel (rayon); a progress bar is
 //! shown on stderr when it is a terminal. Files are written atomically
 //! ([`crate::output`]).
 
@@ -26,10 +26,9 @@ use std::time::{Duration, Instant};
 use clap::{Args, ValueEnum};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use plotters::prelude::*;
-use rayon::prelude::*;
 
-use maugis::contact::curve::{load_area_curve, Curve, CurveOptions, CurvePoint, JumpDirection, TurningKind};
-use maugis::contact::summary::{CurveSummary, RunParams, RunSummary};
+use maugis::contact::curve::{Curve, CurveOptions, CurvePoint, JumpDirection, TurningKind};
+use maugis::contact::summary::{load_area_curves, RunError, RunSummary};
 use maugis::contact::limits::{jkr_envelope, jkr_load, mdmt_envelope, mdmt_load};
 use maugis::contact::model::Params;
 
@@ -114,14 +113,10 @@ pub struct Run {
 
 // ---------------------------------------------------------------- output
 
-/// The run's summary: the library's schema ([`RunSummary`]), the same object
-/// for `summary.json` and `--format json`.
-fn summary(runs: &[Run], alpha: f64, beta: f64, opts: CurveOptions, mdmt_lambda: f64, with_csv: bool) -> RunSummary {
-    RunSummary {
-        params: RunParams::new(alpha, beta, opts),
-        mdmt_limit_lambda: mdmt_lambda,
-        curves: runs.iter().map(|r| CurveSummary::new(&r.curve, with_csv.then(|| csv_name(r.lambda)))).collect(),
-    }
+/// The run's summary: the library's schema ([`RunSummary::new`]), the same
+/// object for `summary.json` and `--format json`; files name the curves' CSVs.
+fn summary(runs: &[Run], alpha: f64, beta: f64, opts: CurveOptions, with_csv: bool) -> RunSummary {
+    RunSummary::new(alpha, beta, opts, runs.iter().map(|r| &r.curve), |c| with_csv.then(|| csv_name(c.params.lambda)))
 }
 
 /// The run as JSON; with `--units si` an `si` object ([`SiSummary`]) joins the
@@ -205,20 +200,16 @@ pub fn progress(len: u64, what: &str) -> ProgressBar {
     pb
 }
 
-/// Computes the curves (in parallel over lambda).
+/// Computes the curves (the library's [`load_area_curves`], in parallel over lambda).
 pub fn compute(lambdas: &[f64], alpha: f64, beta: f64, opts: CurveOptions) -> Result<Vec<Run>, String> {
     let pb = progress(lambdas.len() as u64, "load-area curves");
-    let runs = lambdas
-        .par_iter()
-        .map(|&lambda| {
-            let params = Params::new(lambda, alpha, beta).map_err(|e| e.to_string())?;
-            let curve = load_area_curve(params, opts).map_err(|e| format!("lambda = {}: {e}", num(lambda)))?;
-            pb.inc(1);
-            Ok(Run { lambda, curve })
-        })
-        .collect::<Result<Vec<_>, String>>();
+    let curves = load_area_curves(lambdas, alpha, beta, opts, || pb.inc(1));
     pb.finish_and_clear();
-    runs
+    let curves = curves.map_err(|e| match e {
+        RunError::Curve { lambda, error } => format!("lambda = {}: {error}", num(lambda)),
+        other => other.to_string(),
+    })?;
+    Ok(lambdas.iter().zip(curves).map(|(&lambda, curve)| Run { lambda, curve }).collect())
 }
 
 /// Runs `maugis curve`.
@@ -259,7 +250,7 @@ pub fn run(a: CurveArgs) -> Result<(), String> {
     let mdmt_lambda = lambdas.first().copied().unwrap_or(0.1);
 
     if a.format == CurveFormat::Json {
-        let out = summary(&runs, alpha, beta, opts, mdmt_lambda, false);
+        let out = summary(&runs, alpha, beta, opts, false);
         let text = with_si(&out, si.as_ref(), false)?;
         return print_stdout(&format!("{text}\n"));
     }
@@ -269,7 +260,7 @@ pub fn run(a: CurveArgs) -> Result<(), String> {
     for r in &runs {
         files.push(OutFile::text(csv_name(r.lambda), curve_csv(&r.curve, si.as_ref().map(|s| &s.scales))?));
     }
-    let summary = summary(&runs, alpha, beta, opts, mdmt_lambda, true);
+    let summary = summary(&runs, alpha, beta, opts, true);
     let mut text = with_si(&summary, si.as_ref(), true)?;
     text.push('\n');
     files.push(OutFile::text("summary.json", text));

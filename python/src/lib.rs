@@ -22,8 +22,8 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple};
 use rayon::prelude::*;
 
-use maugis::contact::curve::{self, load_area_curve, CurveOptions};
-use maugis::contact::summary::{CurveSummary, RunParams, RunSummary};
+use maugis::contact::curve::{self, CurveOptions};
+use maugis::contact::summary::{load_area_curves, RunError, RunSummary};
 use maugis::contact::sweep::{run_sweep, SweepGrid};
 use maugis::contact::displacement::{du_wave, du_wave_bounded, u_wave, u_wave_bounded, wave_at_decimals};
 use maugis::contact::model::Params;
@@ -462,21 +462,12 @@ fn to_json<T: serde::Serialize>(value: &T) -> PyResult<String> {
 #[pyfunction]
 #[allow(clippy::too_many_arguments)]
 fn curve_summary_json(py: Python<'_>, lams: Vec<f64>, alpha: f64, beta: f64, amax: f64, points: usize, datum: f64) -> PyResult<String> {
-    let params = lams.iter().map(|&l| params(l, alpha, beta)).collect::<PyResult<Vec<_>>>()?;
     let opts = CurveOptions { amax, points, datum };
-    let curves = py
-        .detach(|| {
-            params
-                .par_iter()
-                .map(|&p| load_area_curve(p, opts).map_err(|error| (p.lambda, error)))
-                .collect::<Result<Vec<_>, _>>()
-        })
-        .map_err(|(l, e)| PyValueError::new_err(format!("lambda = {l:?}: {e}")))?;
-    let summary = RunSummary {
-        params: RunParams::new(alpha, beta, opts),
-        mdmt_limit_lambda: lams.first().copied().unwrap_or(f64::NAN),
-        curves: curves.iter().map(|c| CurveSummary::new(c, None)).collect(),
-    };
+    let curves = py.detach(|| load_area_curves(&lams, alpha, beta, opts, || ())).map_err(|e| match e {
+        RunError::Curve { lambda, error } => PyValueError::new_err(format!("lambda = {lambda:?}: {error}")),
+        other => lib_error(other.error().clone()),
+    })?;
+    let summary = RunSummary::new(alpha, beta, opts, &curves, |_| None);
     to_json(&summary)
 }
 

@@ -5,10 +5,21 @@
 //! Maugis parameter: the grid states, turning points, the paths, jumps, loops
 //! and dissipation under load and displacement control, pull-off and the
 //! invalid stretches. Field names are the JSON keys.
+//!
+//! [`load_area_curves`] solves a run's curves and [`RunSummary::new`]
+//! assembles the summary from them: `maugis curve` and the Python
+//! `run_summary`/`curve` both call these two, and only present the result.
 
-use crate::contact::curve::{Curve, CurveOptions, CurvePoint, PullOff, TurningPoint};
+use std::fmt;
+
+#[cfg(feature = "parallel")]
+use rayon::prelude::*;
+
+use crate::contact::curve::{load_area_curve, Curve, CurveOptions, CurvePoint, PullOff, TurningPoint};
+use crate::contact::model::Params;
 use crate::contact::paths::{ControlPaths, HysteresisLoop, Jump, PathNode};
 use crate::contact::units::{Material, Scales};
+use crate::error::Error;
 
 /// The energy one loading-unloading cycle dissipates (units of `dgamma l_h`).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -175,6 +186,87 @@ impl CurveSummary {
     }
 }
 
+/// Why the curves of a run could not be solved.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum RunError {
+    /// A `lambda`, `alpha` or `beta` that [`Params::new`] refuses (checked for
+    /// every curve before any is solved).
+    Params(Error),
+    /// The curve at `lambda` failed.
+    Curve {
+        /// Its Maugis parameter.
+        lambda: f64,
+        /// The library's error.
+        error: Error,
+    },
+}
+
+impl RunError {
+    /// The library's error underneath.
+    pub fn error(&self) -> &Error {
+        match self {
+            RunError::Params(e) | RunError::Curve { error: e, .. } => e,
+        }
+    }
+}
+
+impl fmt::Display for RunError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            RunError::Params(e) => write!(f, "{e}"),
+            RunError::Curve { lambda, error } => write!(f, "lambda = {lambda}: {error}"),
+        }
+    }
+}
+
+impl std::error::Error for RunError {}
+
+/// Solves the load-area curve ([`load_area_curve`]) of each `lambda` at the
+/// shared roughness, in the given order (in parallel over `lambda` with the
+/// `parallel` feature). `on_curve` is called once as each curve is done (a
+/// progress bar's tick).
+pub fn load_area_curves(
+    lambdas: &[f64],
+    alpha: f64,
+    beta: f64,
+    opts: CurveOptions,
+    on_curve: impl Fn() + Sync + Send,
+) -> Result<Vec<Curve>, RunError> {
+    let params = lambdas.iter().map(|&l| Params::new(l, alpha, beta)).collect::<crate::error::Result<Vec<_>>>().map_err(RunError::Params)?;
+    let one = |p: &Params| {
+        let c = load_area_curve(*p, opts).map_err(|error| RunError::Curve { lambda: p.lambda, error })?;
+        on_curve();
+        Ok(c)
+    };
+    #[cfg(feature = "parallel")]
+    let out = params.par_iter().map(one).collect();
+    #[cfg(not(feature = "parallel"))]
+    let out = params.iter().map(one).collect();
+    out
+}
+
+impl RunSummary {
+    /// The summary of a run's curves (as [`load_area_curves`] returns them, at
+    /// the shared `alpha`, `beta` and grid `opts`): one [`CurveSummary`] per
+    /// curve in their order, `csv` naming each curve's file (if any), and the
+    /// first curve's `lambda` as the M-DMT limit's (NaN without curves).
+    pub fn new<'c>(
+        alpha: f64,
+        beta: f64,
+        opts: CurveOptions,
+        curves: impl IntoIterator<Item = &'c Curve>,
+        csv: impl Fn(&Curve) -> Option<String>,
+    ) -> RunSummary {
+        let curves: Vec<CurveSummary> = curves.into_iter().map(|c| CurveSummary::new(c, csv(c))).collect();
+        RunSummary {
+            params: RunParams::new(alpha, beta, opts),
+            mdmt_limit_lambda: curves.first().map_or(f64::NAN, |c| c.lambda),
+            curves,
+        }
+    }
+}
+
 impl RunParams {
     /// From the shared roughness and the grid options.
     pub fn new(alpha: f64, beta: f64, opts: CurveOptions) -> RunParams {
@@ -245,5 +337,44 @@ impl SiSummary {
                 })
                 .collect(),
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::sync::atomic::{AtomicUsize, Ordering};
+
+    #[test]
+    fn a_run_keeps_the_given_order_and_names_its_files() {
+        let opts = CurveOptions { amax: 3.0, points: 40, datum: 100.0 };
+        let (alpha, beta) = (std::f64::consts::SQRT_2 / 4.0, 1.125);
+        let done = AtomicUsize::new(0);
+        let curves = load_area_curves(&[3.0, 0.5], alpha, beta, opts, || {
+            done.fetch_add(1, Ordering::Relaxed);
+        })
+        .unwrap();
+        assert_eq!(done.load(Ordering::Relaxed), 2);
+        let run = RunSummary::new(alpha, beta, opts, &curves, |c| Some(format!("{}.csv", c.params.lambda)));
+        assert_eq!(run.mdmt_limit_lambda, 3.0);
+        assert_eq!(run.params, RunParams { alpha, beta, amax: 3.0, points: 40, datum: 100.0 });
+        assert_eq!(run.curves.iter().map(|c| c.lambda).collect::<Vec<_>>(), [3.0, 0.5]);
+        assert_eq!(run.curves[1].csv.as_deref(), Some("0.5.csv"));
+        assert_eq!(run.curves[0], CurveSummary::new(&curves[0], Some("3.csv".into())));
+        assert!(RunSummary::new(alpha, beta, opts, &[], |_| None).mdmt_limit_lambda.is_nan());
+    }
+
+    #[test]
+    fn a_run_names_what_failed() {
+        let opts = CurveOptions { amax: 3.0, points: 40, datum: 100.0 };
+        assert!(matches!(load_area_curves(&[1.0, -1.0], 0.1, 1.0, opts, || ()), Err(RunError::Params(_))));
+        let bad = CurveOptions { points: 1, ..opts };
+        match load_area_curves(&[2.0], 0.1, 1.0, bad, || ()) {
+            Err(e @ RunError::Curve { lambda, .. }) => {
+                assert_eq!(lambda, 2.0);
+                assert!(e.to_string().starts_with("lambda = 2: "), "{e}");
+            }
+            other => panic!("{other:?}"),
+        }
     }
 }
