@@ -29,7 +29,7 @@ use plotters::prelude::*;
 
 use maugis::contact::curve::{Curve, CurveOptions, CurvePoint, JumpDirection, TurningKind};
 use maugis::contact::summary::{load_area_curves, RunError, RunSummary};
-use maugis::contact::limits::{jkr_envelope, jkr_load, mdmt_envelope, mdmt_load};
+use maugis::contact::limits::{appendix_e_rows, AppendixE};
 use maugis::contact::model::Params;
 
 use maugis::contact::summary::SiSummary;
@@ -421,25 +421,11 @@ type LimitLine<'a> = (&'a [(f64, f64)], ShapeStyle, u32, u32, Option<String>);
 pub fn load_area_svg(runs: &[Run], alpha: f64, beta: f64, amax: f64, mdmt_lambda: f64, window: Window) -> Result<String, String> {
     // Limit curves on a fine grid.
     let n = 800usize;
-    let grid: Vec<f64> = (1..=n).map(|i| amax * i as f64 / n as f64).collect();
     let mdmt_params = Params::new(mdmt_lambda, alpha, beta).map_err(|e| e.to_string())?;
-    let mut jkr = Vec::with_capacity(n);
-    let mut jkr_lo = Vec::with_capacity(n);
-    let mut jkr_hi = Vec::with_capacity(n);
-    let mut mdmt = Vec::with_capacity(n);
-    let mut mdmt_lo = Vec::with_capacity(n);
-    let mut mdmt_hi = Vec::with_capacity(n);
-    for &x in &grid {
-        let e = |e: maugis::Error| format!("limits at abar = {}: {e}", num(x));
-        jkr.push((x, jkr_load(alpha, beta, x).map_err(e)?));
-        let (lo, hi) = jkr_envelope(alpha, beta, x).map_err(e)?;
-        jkr_lo.push((x, lo));
-        jkr_hi.push((x, hi));
-        mdmt.push((x, mdmt_load(mdmt_params, x).map_err(e)?));
-        let (lo, hi) = mdmt_envelope(mdmt_params, x).map_err(e)?;
-        mdmt_lo.push((x, lo));
-        mdmt_hi.push((x, hi));
-    }
+    let limits = appendix_e_rows(mdmt_params, amax, n).map_err(|e| crate::limits::limits_error(&e))?;
+    let line = |f: fn(&AppendixE) -> f64| limits.iter().map(|(x, l)| (*x, f(l))).collect::<Vec<_>>();
+    let (jkr, jkr_lo, jkr_hi) = (line(|l| l.jkr), line(|l| l.jkr_envelope.0), line(|l| l.jkr_envelope.1));
+    let (mdmt, mdmt_lo, mdmt_hi) = (line(|l| l.mdmt), line(|l| l.mdmt_envelope.0), line(|l| l.mdmt_envelope.1));
 
     // y window: the curves' range with a margin (the limits are clipped to it).
     let (mut ymin, mut ymax) = (f64::INFINITY, f64::NEG_INFINITY);

@@ -16,12 +16,9 @@ use std::path::PathBuf;
 
 use clap::{Args, ValueEnum};
 use plotters::prelude::*;
-use rayon::prelude::*;
 use serde::Serialize;
 
-use maugis::contact::limits::{
-    jkr_envelope, jkr_load, local_envelope, mdmt_envelope, mdmt_load, mdmt_pull_off, smooth_mdmt_load,
-};
+use maugis::contact::limits::{limit_rows, mdmt_pull_off, LimitError, LimitRow};
 use maugis::contact::model::Params;
 
 use crate::args::{self, num, short, Roughness};
@@ -62,55 +59,10 @@ pub struct LimitsArgs {
     pub format: LimitsFormat,
 }
 
-/// One row of the table.
-#[derive(Serialize, Clone, Copy)]
-struct Row {
-    abar: f64,
-    jkr: f64,
-    jkr_env_lower: f64,
-    jkr_env_upper: f64,
-    mdmt: f64,
-    mdmt_env_lower: f64,
-    mdmt_env_upper: f64,
-    smooth_mdmt: f64,
-    local_env_lower: f64,
-    local_env_upper: f64,
-}
-
-const COLUMNS: [&str; 10] = [
-    "abar",
-    "jkr",
-    "jkr_env_lower",
-    "jkr_env_upper",
-    "mdmt",
-    "mdmt_env_lower",
-    "mdmt_env_upper",
-    "smooth_mdmt",
-    "local_env_lower",
-    "local_env_upper",
-];
-
-impl Row {
-    fn values(&self) -> [f64; 10] {
-        [
-            self.abar,
-            self.jkr,
-            self.jkr_env_lower,
-            self.jkr_env_upper,
-            self.mdmt,
-            self.mdmt_env_lower,
-            self.mdmt_env_upper,
-            self.smooth_mdmt,
-            self.local_env_lower,
-            self.local_env_upper,
-        ]
-    }
-}
-
 #[derive(Serialize)]
 struct LimitsJson {
     params: LimitsParams,
-    rows: Vec<Row>,
+    rows: Vec<LimitRow>,
 }
 
 #[derive(Serialize)]
@@ -124,35 +76,23 @@ struct LimitsParams {
     mdmt_pull_off: f64,
 }
 
-fn row(params: Params, abar: f64) -> Result<Row, String> {
-    let Params { lambda, alpha, beta } = params;
-    let e = |e: maugis::Error| format!("limits at abar = {}: {e}", num(abar));
-    let (jl, jh) = jkr_envelope(alpha, beta, abar).map_err(e)?;
-    let (ml, mh) = mdmt_envelope(params, abar).map_err(e)?;
-    let (ll, lh) = local_envelope(params, abar).map_err(e)?;
-    Ok(Row {
-        abar,
-        jkr: jkr_load(alpha, beta, abar).map_err(e)?,
-        jkr_env_lower: jl,
-        jkr_env_upper: jh,
-        mdmt: mdmt_load(params, abar).map_err(e)?,
-        mdmt_env_lower: ml,
-        mdmt_env_upper: mh,
-        smooth_mdmt: smooth_mdmt_load(lambda, abar).map_err(e)?,
-        local_env_lower: ll,
-        local_env_upper: lh,
-    })
-}
-
-fn table_csv(rows: &[Row]) -> Result<String, String> {
+fn table_csv(rows: &[LimitRow]) -> Result<String, String> {
     let mut w = csv::Writer::from_writer(Vec::new());
     let err = |e: csv::Error| format!("could not format CSV: {e}");
-    w.write_record(COLUMNS).map_err(err)?;
+    w.write_record(LimitRow::COLUMNS).map_err(err)?;
     for r in rows {
         w.write_record(r.values().map(|v| v.to_string())).map_err(err)?;
     }
     let bytes = w.into_inner().map_err(|e| format!("could not format CSV: {e}"))?;
     String::from_utf8(bytes).map_err(|e| format!("could not format CSV: {e}"))
+}
+
+/// A limits error in the command's words.
+pub(crate) fn limits_error(e: &LimitError) -> String {
+    match e {
+        LimitError::At { abar, error } => format!("limits at abar = {}: {error}", num(*abar)),
+        other => other.to_string(),
+    }
 }
 
 /// Runs `maugis limits`.
@@ -164,10 +104,7 @@ pub fn run(a: LimitsArgs) -> Result<(), String> {
         check_out_dir(&a.out)?;
     }
     let n = a.points;
-    let rows = (1..=n)
-        .into_par_iter()
-        .map(|i| row(params, a.amax * i as f64 / n as f64))
-        .collect::<Result<Vec<_>, String>>()?;
+    let rows = limit_rows(params, a.amax, n).map_err(|e| limits_error(&e))?;
     let pull_off = mdmt_pull_off(params).map_err(|e| e.to_string())?;
     match a.format {
         LimitsFormat::Csv => {
@@ -211,7 +148,7 @@ pub fn run(a: LimitsArgs) -> Result<(), String> {
 type Series = (Option<String>, Vec<(f64, f64)>, ShapeStyle, u32, u32);
 
 /// The limits plot (SVG text).
-fn limits_svg(rows: &[Row], alpha: f64, beta: f64, lambda: f64, amax: f64) -> Result<String, String> {
+fn limits_svg(rows: &[LimitRow], alpha: f64, beta: f64, lambda: f64, amax: f64) -> Result<String, String> {
     let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
     for r in rows {
         for v in [r.jkr, r.mdmt, r.smooth_mdmt, r.local_env_lower, r.local_env_upper] {
@@ -226,7 +163,7 @@ fn limits_svg(rows: &[Row], alpha: f64, beta: f64, lambda: f64, amax: f64) -> Re
     }
     let span = (hi - lo).max(1.0);
     let (ymin, ymax) = (lo - 0.06 * span, hi + 0.06 * span);
-    let col = |f: fn(&Row) -> f64| rows.iter().map(|r| (r.abar, f(r))).collect::<Vec<_>>();
+    let col = |f: fn(&LimitRow) -> f64| rows.iter().map(|r| (r.abar, f(r))).collect::<Vec<_>>();
     let l = short(lambda);
     let style = |c: RGBColor, w: u32| ShapeStyle { color: c.to_rgba(), filled: false, stroke_width: w };
     // (label, points, style, dash, gap); dash 0 = solid

@@ -10,8 +10,17 @@
 //! * Smooth M-DMT, E.44: `pi a^2/4 - 2 sqrt(2 lambda)` (pull-off `2 sqrt(2 lambda)`).
 //! * Local envelope, Eq. 17: the smooth Maugis load at the same `lambda`
 //!   `+/- pi sqrt(alpha^2/beta) sqrt(a)`.
+//!
+//! Tabulated: [`appendix_e`] gives E.42a/b and E.43a/d at one contact size and
+//! [`appendix_e_rows`] on the grid `abar_i = amax i/points` (what the load-area
+//! plot draws); [`LimitRow`] adds E.44 and Eq. 17, and [`limit_rows`] is the
+//! table of `maugis limits` (its CSV columns [`LimitRow::COLUMNS`], its JSON rows).
 
 use std::f64::consts::PI;
+use std::fmt;
+
+#[cfg(feature = "parallel")]
+use rayon::prelude::*;
 
 use crate::contact::curve::load_at;
 use crate::contact::model::{brent, Params};
@@ -114,6 +123,175 @@ pub fn local_envelope(params: Params, abar: f64) -> Result<(f64, f64)> {
     Ok((l - h, l + h))
 }
 
+/// The Appendix E limits at one contact size: JKR (E.42a) and its envelope
+/// (E.42b) at the roughness, M-DMT (E.43a) and its envelope (E.43d) at the
+/// parameters' `lambda`. Envelopes are `(lower, upper)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AppendixE {
+    /// E.42a.
+    pub jkr: f64,
+    /// E.42b.
+    pub jkr_envelope: (f64, f64),
+    /// E.43a.
+    pub mdmt: f64,
+    /// E.43d.
+    pub mdmt_envelope: (f64, f64),
+}
+
+/// [`AppendixE`] at `abar > 0`.
+pub fn appendix_e(params: Params, abar: f64) -> Result<AppendixE> {
+    let Params { alpha, beta, .. } = params;
+    Ok(AppendixE {
+        jkr: jkr_load(alpha, beta, abar)?,
+        jkr_envelope: jkr_envelope(alpha, beta, abar)?,
+        mdmt: mdmt_load(params, abar)?,
+        mdmt_envelope: mdmt_envelope(params, abar)?,
+    })
+}
+
+/// One row of the limits table at `abar`: [`AppendixE`], the smooth M-DMT
+/// load (E.44) and the local envelope (Eq. 17, a smooth-model solve). Field
+/// names are the JSON keys and, in this order, the CSV columns.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct LimitRow {
+    /// Contact half-width.
+    pub abar: f64,
+    /// E.42a.
+    pub jkr: f64,
+    /// E.42b, lower.
+    pub jkr_env_lower: f64,
+    /// E.42b, upper.
+    pub jkr_env_upper: f64,
+    /// E.43a.
+    pub mdmt: f64,
+    /// E.43d, lower.
+    pub mdmt_env_lower: f64,
+    /// E.43d, upper.
+    pub mdmt_env_upper: f64,
+    /// E.44.
+    pub smooth_mdmt: f64,
+    /// Eq. 17, lower.
+    pub local_env_lower: f64,
+    /// Eq. 17, upper.
+    pub local_env_upper: f64,
+}
+
+impl LimitRow {
+    /// The column names, in the order of [`LimitRow::values`].
+    pub const COLUMNS: [&'static str; 10] = [
+        "abar",
+        "jkr",
+        "jkr_env_lower",
+        "jkr_env_upper",
+        "mdmt",
+        "mdmt_env_lower",
+        "mdmt_env_upper",
+        "smooth_mdmt",
+        "local_env_lower",
+        "local_env_upper",
+    ];
+
+    /// The row at `abar > 0`.
+    pub fn new(params: Params, abar: f64) -> Result<LimitRow> {
+        let e = appendix_e(params, abar)?;
+        let (local_env_lower, local_env_upper) = local_envelope(params, abar)?;
+        Ok(LimitRow {
+            abar,
+            jkr: e.jkr,
+            jkr_env_lower: e.jkr_envelope.0,
+            jkr_env_upper: e.jkr_envelope.1,
+            mdmt: e.mdmt,
+            mdmt_env_lower: e.mdmt_envelope.0,
+            mdmt_env_upper: e.mdmt_envelope.1,
+            smooth_mdmt: smooth_mdmt_load(params.lambda, abar)?,
+            local_env_lower,
+            local_env_upper,
+        })
+    }
+
+    /// The values in the order of [`LimitRow::COLUMNS`].
+    pub fn values(&self) -> [f64; 10] {
+        [
+            self.abar,
+            self.jkr,
+            self.jkr_env_lower,
+            self.jkr_env_upper,
+            self.mdmt,
+            self.mdmt_env_lower,
+            self.mdmt_env_upper,
+            self.smooth_mdmt,
+            self.local_env_lower,
+            self.local_env_upper,
+        ]
+    }
+}
+
+/// Largest grid of [`limit_rows`] and [`appendix_e_rows`].
+pub const MAX_LIMIT_POINTS: usize = 10_000_000;
+
+/// Where a table of limits failed.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum LimitError {
+    /// A bad grid: `points` outside `[1, MAX_LIMIT_POINTS]`.
+    Input(Error),
+    /// The limits at `abar` failed.
+    At {
+        /// The contact half-width.
+        abar: f64,
+        /// The library's error.
+        error: Error,
+    },
+}
+
+impl LimitError {
+    /// The library's error underneath.
+    pub fn error(&self) -> &Error {
+        match self {
+            LimitError::Input(e) | LimitError::At { error: e, .. } => e,
+        }
+    }
+}
+
+impl fmt::Display for LimitError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            LimitError::Input(e) => write!(f, "{e}"),
+            LimitError::At { abar, error } => write!(f, "limits at abar = {abar}: {error}"),
+        }
+    }
+}
+
+impl std::error::Error for LimitError {}
+
+/// `f` at `abar_i = amax i/points`, `i = 1..=points` (in parallel with the
+/// `parallel` feature), the first failure with its `abar`.
+fn on_grid<T: Send>(amax: f64, points: usize, f: impl Fn(f64) -> Result<T> + Sync + Send) -> std::result::Result<Vec<T>, LimitError> {
+    if !(1..=MAX_LIMIT_POINTS).contains(&points) {
+        return Err(LimitError::Input(Error::Domain { what: format!("points must lie in [1, 1e7] (got {points})") }));
+    }
+    let at = |i: usize| {
+        let abar = amax * i as f64 / points as f64;
+        f(abar).map_err(|error| LimitError::At { abar, error })
+    };
+    #[cfg(feature = "parallel")]
+    let out = (1..=points).into_par_iter().map(at).collect();
+    #[cfg(not(feature = "parallel"))]
+    let out = (1..=points).map(at).collect();
+    out
+}
+
+/// The table of `maugis limits`: a [`LimitRow`] at each `abar_i = amax i/points`.
+pub fn limit_rows(params: Params, amax: f64, points: usize) -> std::result::Result<Vec<LimitRow>, LimitError> {
+    on_grid(amax, points, |abar| LimitRow::new(params, abar))
+}
+
+/// [`AppendixE`] at each `abar_i = amax i/points`, with its `abar`.
+pub fn appendix_e_rows(params: Params, amax: f64, points: usize) -> std::result::Result<Vec<(f64, AppendixE)>, LimitError> {
+    on_grid(amax, points, |abar| Ok((abar, appendix_e(params, abar)?)))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -136,6 +314,28 @@ mod tests {
             let l = jkr_load(alpha, beta, a).unwrap();
             let (lo, hi) = jkr_envelope(alpha, beta, a).unwrap();
             assert!(l >= lo - 0.5 && l <= hi + 0.5, "a={a}: {lo} <= {l} <= {hi}");
+        }
+    }
+
+    #[test]
+    fn rows_hold_the_single_limits_on_the_grid() {
+        let p = Params::new(0.5, 2f64.sqrt() / 4.0, 1.125).unwrap();
+        let rows = limit_rows(p, 3.0, 7).unwrap();
+        let e = appendix_e_rows(p, 3.0, 7).unwrap();
+        assert_eq!(rows.len(), 7);
+        for (r, (abar, a)) in rows.iter().zip(&e) {
+            assert_eq!(r.abar, *abar);
+            assert_eq!(r.jkr, jkr_load(p.alpha, p.beta, r.abar).unwrap());
+            assert_eq!((r.mdmt_env_lower, r.mdmt_env_upper), mdmt_envelope(p, r.abar).unwrap());
+            assert_eq!((r.local_env_lower, r.local_env_upper), local_envelope(p, r.abar).unwrap());
+            assert_eq!((a.jkr, a.jkr_envelope, a.mdmt, a.mdmt_envelope), (r.jkr, (r.jkr_env_lower, r.jkr_env_upper), r.mdmt, (r.mdmt_env_lower, r.mdmt_env_upper)));
+            assert_eq!(r.values()[0], r.abar);
+        }
+        assert_eq!(rows[6].abar, 3.0);
+        assert!(matches!(limit_rows(p, 3.0, 0), Err(LimitError::Input(_))));
+        match limit_rows(p, f64::NAN, 3) {
+            Err(e @ LimitError::At { .. }) => assert!(e.to_string().starts_with("limits at abar = NaN: "), "{e}"),
+            other => panic!("{other:?}"),
         }
     }
 }
