@@ -28,7 +28,8 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use plotters::prelude::*;
 
 use maugis::contact::curve::{Curve, CurveOptions, CurvePoint, JumpDirection, TurningKind};
-use maugis::contact::summary::{load_area_curves, RunError, RunSummary};
+use maugis::contact::located::At;
+use maugis::contact::summary::{load_area_curves, RunSummary};
 use maugis::contact::limits::{appendix_e_rows, AppendixE};
 use maugis::contact::model::Params;
 
@@ -205,9 +206,9 @@ pub fn compute(lambdas: &[f64], alpha: f64, beta: f64, opts: CurveOptions) -> Re
     let pb = progress(lambdas.len() as u64, "load-area curves");
     let curves = load_area_curves(lambdas, alpha, beta, opts, || pb.inc(1));
     pb.finish_and_clear();
-    let curves = curves.map_err(|e| match e {
-        RunError::Curve { lambda, error } => format!("lambda = {}: {error}", num(lambda)),
-        other => other.to_string(),
+    let curves = curves.map_err(|e| match e.at {
+        At::Curve { lambda } => format!("lambda = {}: {}", num(lambda), e.error),
+        _ => e.to_string(),
     })?;
     Ok(lambdas.iter().zip(curves).map(|(&lambda, curve)| Run { lambda, curve }).collect())
 }

@@ -18,7 +18,8 @@ use clap::{Args, ValueEnum};
 use plotters::prelude::*;
 use serde::Serialize;
 
-use maugis::contact::limits::{limit_rows, mdmt_pull_off, LimitError, LimitRow};
+use maugis::contact::limits::{limit_rows, mdmt_pull_off, LimitRow};
+use maugis::contact::located::{At, LocatedError};
 use maugis::contact::model::Params;
 
 use crate::args::{self, num, short, Roughness};
@@ -88,10 +89,10 @@ fn table_csv(rows: &[LimitRow]) -> Result<String, String> {
 }
 
 /// A limits error in the command's words.
-pub(crate) fn limits_error(e: &LimitError) -> String {
-    match e {
-        LimitError::At { abar, error } => format!("limits at abar = {}: {error}", num(*abar)),
-        other => other.to_string(),
+pub(crate) fn limits_error(e: &LocatedError) -> String {
+    match e.at {
+        At::Limits { abar } => format!("limits at abar = {}: {}", num(abar), e.error),
+        _ => e.to_string(),
     }
 }
 

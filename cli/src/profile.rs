@@ -19,7 +19,8 @@ use plotters::prelude::*;
 use serde::Serialize;
 
 use maugis::contact::model::{Params, Validity};
-use maugis::contact::state_profile::{sample_state, ProfileError, StateProfile};
+use maugis::contact::located::{At, LocatedError};
+use maugis::contact::state_profile::{sample_state, StateProfile};
 
 use maugis::contact::units::{Material, Scales};
 
@@ -137,12 +138,13 @@ fn validity_text(v: &Validity) -> String {
 }
 
 /// A sampling error in the command's words.
-fn profile_error(e: ProfileError) -> String {
-    match e {
-        ProfileError::State { abar, error } => format!("abar = {}: {error}", num(abar)),
-        ProfileError::CertifiedStripRatio { abar, error } => format!("abar = {}: certified m: {error}", num(abar)),
-        ProfileError::Sample { xbar, error } => format!("at xbar = {}: {error}", num(xbar)),
-        other => other.to_string(),
+fn profile_error(e: LocatedError) -> String {
+    let error = &e.error;
+    match e.at {
+        At::State { abar } => format!("abar = {}: {error}", num(abar)),
+        At::CertifiedStripRatio { abar } => format!("abar = {}: certified m: {error}", num(abar)),
+        At::Sample { xbar } => format!("at xbar = {}: {error}", num(xbar)),
+        _ => e.to_string(),
     }
 }
 

@@ -23,11 +23,12 @@ use pyo3::types::{PyDict, PyList, PyTuple};
 use rayon::prelude::*;
 
 use maugis::contact::curve::{self, CurveOptions};
-use maugis::contact::summary::{load_area_curves, RunError, RunSummary};
+use maugis::contact::located::At;
+use maugis::contact::summary::{load_area_curves, RunSummary};
 use maugis::contact::sweep::{run_sweep, SweepGrid};
 use maugis::contact::displacement::{du_wave, du_wave_bounded, u_wave, u_wave_bounded, wave_at_decimals};
 use maugis::contact::model::Params;
-use maugis::contact::state_profile::{sample_state_at, ProfileError, ProfileSample};
+use maugis::contact::state_profile::{sample_state_at, ProfileSample};
 use maugis::ball::{eval_at_decimals, Decimal};
 use maugis::quad::certified::Options;
 use maugis::quad::expr::{integrate_expr, shortfall, significant_imaginary, DecaySpec, Expr, UpperLimit, WeightSpec};
@@ -463,9 +464,9 @@ fn to_json<T: serde::Serialize>(value: &T) -> PyResult<String> {
 #[allow(clippy::too_many_arguments)]
 fn curve_summary_json(py: Python<'_>, lams: Vec<f64>, alpha: f64, beta: f64, amax: f64, points: usize, datum: f64) -> PyResult<String> {
     let opts = CurveOptions { amax, points, datum };
-    let curves = py.detach(|| load_area_curves(&lams, alpha, beta, opts, || ())).map_err(|e| match e {
-        RunError::Curve { lambda, error } => PyValueError::new_err(format!("lambda = {lambda:?}: {error}")),
-        other => lib_error(other.error().clone()),
+    let curves = py.detach(|| load_area_curves(&lams, alpha, beta, opts, || ())).map_err(|e| match e.at {
+        At::Curve { lambda } => PyValueError::new_err(format!("lambda = {lambda:?}: {}", e.error)),
+        _ => lib_error(e.error),
     })?;
     let summary = RunSummary::new(alpha, beta, opts, &curves, |_| None);
     to_json(&summary)
@@ -520,9 +521,9 @@ fn simulate_json(py: Python<'_>, lam: f64, alpha: f64, beta: f64, amax: f64, cel
 fn profile_dict<'py>(py: Python<'py>, lam: f64, alpha: f64, beta: f64, abar: f64, x: PyReadonlyArray1<'py, f64>) -> PyResult<Bound<'py, PyDict>> {
     let p = params(lam, alpha, beta)?;
     let xs = slice(&x, "x")?;
-    let state = py.detach(|| sample_state_at(p, abar, xs)).map_err(|e| match e {
-        ProfileError::Sample { xbar, error } => PyValueError::new_err(format!("profile at xbar={xbar:?}: {error}")),
-        other => lib_error(other.error().clone()),
+    let state = py.detach(|| sample_state_at(p, abar, xs)).map_err(|e| match e.at {
+        At::Sample { xbar } => PyValueError::new_err(format!("profile at xbar={xbar:?}: {}", e.error)),
+        _ => lib_error(e.error),
     })?;
     let (m, load, v) = (state.m, state.load, state.validity);
     let column = |f: fn(&ProfileSample) -> f64| state.samples.iter().map(f).collect::<Vec<f64>>();

@@ -17,12 +17,12 @@
 //! table of `maugis limits` (its CSV columns [`LimitRow::COLUMNS`], its JSON rows).
 
 use std::f64::consts::PI;
-use std::fmt;
 
 #[cfg(feature = "parallel")]
 use rayon::prelude::*;
 
 use crate::contact::curve::load_at;
+use crate::contact::located::{At, LocatedError};
 use crate::contact::model::{brent, Params};
 use crate::error::{finite, Error, Result};
 use crate::special::bessel_j::bessel_j_sequence;
@@ -230,50 +230,16 @@ impl LimitRow {
 /// Largest grid of [`limit_rows`] and [`appendix_e_rows`].
 pub const MAX_LIMIT_POINTS: usize = 10_000_000;
 
-/// Where a table of limits failed.
-#[derive(Debug, Clone, PartialEq)]
-#[non_exhaustive]
-pub enum LimitError {
-    /// A bad grid: `points` outside `[1, MAX_LIMIT_POINTS]`.
-    Input(Error),
-    /// The limits at `abar` failed.
-    At {
-        /// The contact half-width.
-        abar: f64,
-        /// The library's error.
-        error: Error,
-    },
-}
-
-impl LimitError {
-    /// The library's error underneath.
-    pub fn error(&self) -> &Error {
-        match self {
-            LimitError::Input(e) | LimitError::At { error: e, .. } => e,
-        }
-    }
-}
-
-impl fmt::Display for LimitError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            LimitError::Input(e) => write!(f, "{e}"),
-            LimitError::At { abar, error } => write!(f, "limits at abar = {abar}: {error}"),
-        }
-    }
-}
-
-impl std::error::Error for LimitError {}
-
 /// `f` at `abar_i = amax i/points`, `i = 1..=points` (in parallel with the
-/// `parallel` feature), the first failure with its `abar`.
-fn on_grid<T: Send>(amax: f64, points: usize, f: impl Fn(f64) -> Result<T> + Sync + Send) -> std::result::Result<Vec<T>, LimitError> {
+/// `parallel` feature). Errors: `points` outside `[1, MAX_LIMIT_POINTS]`
+/// ([`At::Input`]), or the first failure met with its `abar` ([`At::Limits`]).
+fn on_grid<T: Send>(amax: f64, points: usize, f: impl Fn(f64) -> Result<T> + Sync + Send) -> std::result::Result<Vec<T>, LocatedError> {
     if !(1..=MAX_LIMIT_POINTS).contains(&points) {
-        return Err(LimitError::Input(Error::Domain { what: format!("points must lie in [1, 1e7] (got {points})") }));
+        return Err(At::Input.wrap(Error::Domain { what: format!("points must lie in [1, 1e7] (got {points})") }));
     }
     let at = |i: usize| {
         let abar = amax * i as f64 / points as f64;
-        f(abar).map_err(|error| LimitError::At { abar, error })
+        f(abar).map_err(|e| At::Limits { abar }.wrap(e))
     };
     #[cfg(feature = "parallel")]
     let out = (1..=points).into_par_iter().map(at).collect();
@@ -283,12 +249,12 @@ fn on_grid<T: Send>(amax: f64, points: usize, f: impl Fn(f64) -> Result<T> + Syn
 }
 
 /// The table of `maugis limits`: a [`LimitRow`] at each `abar_i = amax i/points`.
-pub fn limit_rows(params: Params, amax: f64, points: usize) -> std::result::Result<Vec<LimitRow>, LimitError> {
+pub fn limit_rows(params: Params, amax: f64, points: usize) -> std::result::Result<Vec<LimitRow>, LocatedError> {
     on_grid(amax, points, |abar| LimitRow::new(params, abar))
 }
 
 /// [`AppendixE`] at each `abar_i = amax i/points`, with its `abar`.
-pub fn appendix_e_rows(params: Params, amax: f64, points: usize) -> std::result::Result<Vec<(f64, AppendixE)>, LimitError> {
+pub fn appendix_e_rows(params: Params, amax: f64, points: usize) -> std::result::Result<Vec<(f64, AppendixE)>, LocatedError> {
     on_grid(amax, points, |abar| Ok((abar, appendix_e(params, abar)?)))
 }
 
@@ -332,9 +298,9 @@ mod tests {
             assert_eq!(r.values()[0], r.abar);
         }
         assert_eq!(rows[6].abar, 3.0);
-        assert!(matches!(limit_rows(p, 3.0, 0), Err(LimitError::Input(_))));
+        assert!(matches!(limit_rows(p, 3.0, 0), Err(LocatedError { at: At::Input, .. })));
         match limit_rows(p, f64::NAN, 3) {
-            Err(e @ LimitError::At { .. }) => assert!(e.to_string().starts_with("limits at abar = NaN: "), "{e}"),
+            Err(e @ LocatedError { at: At::Limits { .. }, .. }) => assert!(e.to_string().starts_with("limits at abar = NaN: "), "{e}"),
             other => panic!("{other:?}"),
         }
     }

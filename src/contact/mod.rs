@@ -21,6 +21,7 @@
 //! * [`limits`]: Appendix E (JKR, M-DMT) and the Eq. 17 envelope.
 //! * [`units`]: SI inputs and outputs (scales of Eq. 13a with two length scales).
 //! * [`state_profile`]: the profiles of one state sampled over x (traction, displacement, gap).
+//! * [`located`]: the error of a profile, a run of curves or a table of limits, and where it arose.
 //!
 //! Sign convention (docs/displacement.md): compressive traction is negative,
 //! `u` is positive "downward" like the profile depth
@@ -42,3 +43,4 @@ pub mod summary;
 pub mod sweep;
 pub mod units;
 pub mod state_profile;
+pub mod located;

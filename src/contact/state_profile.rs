@@ -12,17 +12,16 @@
 //! [`StateProfile::certified_traction`] adds the traction at the samples as
 //! certified balls.
 //!
-//! Errors are a [`ProfileError`]: which stage failed (the arguments, the
-//! state, the certified strip ratio or one sample) and the library's error,
-//! so that a front end words the context its own way.
-
-use std::fmt;
+//! Errors are a [`LocatedError`]: the library's error and where it arose
+//! (the arguments, the state, the certified strip ratio or one sample), so
+//! that a front end words the context its own way.
 
 use crate::ball::Ball;
 use crate::contact::displacement::profile_depth;
 use crate::contact::model::{ContactSize, Params, StripEnd, Validity};
 use crate::contact::model_mp::solve_m_mp;
 use crate::contact::traction_mp::traction_mp;
+use crate::contact::located::{At, LocatedError};
 use crate::error::Error;
 
 #[cfg(feature = "parallel")]
@@ -34,59 +33,6 @@ pub const PARALLEL_MIN_SAMPLES: usize = 2048;
 
 /// Largest number of grid points [`sample_state`] takes.
 pub const MAX_SAMPLES: usize = 10_000_000;
-
-/// Where sampling a state failed, with the library's error.
-#[derive(Debug, Clone, PartialEq)]
-#[non_exhaustive]
-pub enum ProfileError {
-    /// A bad argument: the parameters' contact half-width `abar`, the number
-    /// of points or `xmax`.
-    Input(Error),
-    /// The state at `abar` could not be solved (strip ratio) or checked (validity).
-    State {
-        /// The contact half-width.
-        abar: f64,
-        /// The library's error.
-        error: Error,
-    },
-    /// The certified strip ratio of [`StateProfile::certified_traction`] failed.
-    CertifiedStripRatio {
-        /// The contact half-width.
-        abar: f64,
-        /// The library's error.
-        error: Error,
-    },
-    /// One sample failed (f64 or certified).
-    Sample {
-        /// The position.
-        xbar: f64,
-        /// The library's error.
-        error: Error,
-    },
-}
-
-impl ProfileError {
-    /// The library's error underneath.
-    pub fn error(&self) -> &Error {
-        match self {
-            ProfileError::Input(e) => e,
-            ProfileError::State { error, .. } | ProfileError::CertifiedStripRatio { error, .. } | ProfileError::Sample { error, .. } => error,
-        }
-    }
-}
-
-impl fmt::Display for ProfileError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            ProfileError::Input(e) => write!(f, "{e}"),
-            ProfileError::State { abar, error } => write!(f, "abar = {abar}: {error}"),
-            ProfileError::CertifiedStripRatio { abar, error } => write!(f, "abar = {abar}: certified m: {error}"),
-            ProfileError::Sample { xbar, error } => write!(f, "at xbar = {xbar}: {error}"),
-        }
-    }
-}
-
-impl std::error::Error for ProfileError {}
 
 /// One sample of a state's profiles (normalised: `x` by `l_h`; `u`, `g`, `h`
 /// by `l_v`; the traction by the cohesive stress, tensile positive).
@@ -131,12 +77,12 @@ impl StateProfile {
     /// The traction at every sample as a certified ball at `prec` bits
     /// ([`traction_mp`], with the strip ratio certified by [`solve_m_mp`]), in
     /// the order of the samples.
-    pub fn certified_traction(&self, prec: u32) -> Result<Vec<Ball>, ProfileError> {
+    pub fn certified_traction(&self, prec: u32) -> Result<Vec<Ball>, LocatedError> {
         let (params, abar) = (self.params, self.abar);
-        let m = solve_m_mp(params, abar, prec).map_err(|error| ProfileError::CertifiedStripRatio { abar, error })?;
+        let m = solve_m_mp(params, abar, prec).map_err(|e| At::CertifiedStripRatio { abar }.wrap(e))?;
         self.samples
             .iter()
-            .map(|s| traction_mp(params, abar, &m, s.xbar, prec).map_err(|error| ProfileError::Sample { xbar: s.xbar, error }))
+            .map(|s| traction_mp(params, abar, &m, s.xbar, prec).map_err(|e| At::Sample { xbar: s.xbar }.wrap(e)))
             .collect()
     }
 }
@@ -159,9 +105,9 @@ struct Solved {
     validity: Validity,
 }
 
-fn solve(params: Params, abar: f64) -> Result<Solved, ProfileError> {
-    let cs = ContactSize::new(params, abar).map_err(ProfileError::Input)?;
-    let state = |error| ProfileError::State { abar, error };
+fn solve(params: Params, abar: f64) -> Result<Solved, LocatedError> {
+    let cs = ContactSize::new(params, abar).map_err(|e| At::Input.wrap(e))?;
+    let state = |e| At::State { abar }.wrap(e);
     let strip = cs.solve_strip().map_err(state)?;
     let validity = cs.validity_at(strip).map_err(state)?;
     let load = cs.load_at(strip);
@@ -169,9 +115,9 @@ fn solve(params: Params, abar: f64) -> Result<Solved, ProfileError> {
 }
 
 impl Solved {
-    fn sample(&self, x: f64) -> Result<ProfileSample, ProfileError> {
+    fn sample(&self, x: f64) -> Result<ProfileSample, LocatedError> {
         let (cs, strip) = (&self.cs, self.strip);
-        let at = |error| ProfileError::Sample { xbar: x, error };
+        let at = |e| At::Sample { xbar: x }.wrap(e);
         let p = cs.params();
         Ok(ProfileSample {
             xbar: x,
@@ -182,7 +128,7 @@ impl Solved {
         })
     }
 
-    fn sample_all(&self, xs: &[f64]) -> Result<Vec<ProfileSample>, ProfileError> {
+    fn sample_all(&self, xs: &[f64]) -> Result<Vec<ProfileSample>, LocatedError> {
         #[cfg(feature = "parallel")]
         if xs.len() >= PARALLEL_MIN_SAMPLES {
             return xs.par_iter().with_min_len(256).map(|&x| self.sample(x)).collect();
@@ -200,15 +146,15 @@ impl Solved {
 /// positions over `[0, xmax]` (`2 <= points <= MAX_SAMPLES`, `xmax > 0`;
 /// `None`: `1.5 m abar`), plus the contact edge and the strip end where they
 /// lie inside. Errors on bad input and where the model has no state.
-pub fn sample_state(params: Params, abar: f64, xmax: Option<f64>, points: usize) -> Result<StateProfile, ProfileError> {
+pub fn sample_state(params: Params, abar: f64, xmax: Option<f64>, points: usize) -> Result<StateProfile, LocatedError> {
     if !(2..=MAX_SAMPLES).contains(&points) {
-        return Err(ProfileError::Input(Error::Domain { what: format!("points must lie in [2, 1e7] (got {points})") }));
+        return Err(At::Input.wrap(Error::Domain { what: format!("points must lie in [2, 1e7] (got {points})") }));
     }
     let s = solve(params, abar)?;
     let c = s.strip.m() * abar;
     let xmax = xmax.unwrap_or(1.5 * c);
     if !(xmax.is_finite() && xmax > 0.0) {
-        return Err(ProfileError::Input(Error::Domain { what: format!("xmax must be finite and > 0 (got {xmax})") }));
+        return Err(At::Input.wrap(Error::Domain { what: format!("xmax must be finite and > 0 (got {xmax})") }));
     }
     let samples = s.sample_all(&grid(xmax, points, [abar, c]))?;
     Ok(s.profile(samples))
@@ -216,7 +162,7 @@ pub fn sample_state(params: Params, abar: f64, xmax: Option<f64>, points: usize)
 
 /// Solves the state at `abar` and samples its profiles at the positions `xs`,
 /// in their order (repeats and any order allowed; each must be finite).
-pub fn sample_state_at(params: Params, abar: f64, xs: &[f64]) -> Result<StateProfile, ProfileError> {
+pub fn sample_state_at(params: Params, abar: f64, xs: &[f64]) -> Result<StateProfile, LocatedError> {
     let s = solve(params, abar)?;
     let samples = s.sample_all(xs)?;
     Ok(s.profile(samples))
@@ -243,9 +189,9 @@ mod tests {
         for p in s.samples.iter().filter(|p| p.xbar > 2.0 && p.xbar < s.strip_end()) {
             assert_eq!(p.pbar, 1.0);
         }
-        assert!(matches!(sample_state(params, 2.0, None, 1), Err(ProfileError::Input(_))));
-        assert!(matches!(sample_state(params, 2.0, Some(f64::NAN), 10), Err(ProfileError::Input(_))));
-        assert!(matches!(sample_state(params, -1.0, None, 10), Err(ProfileError::Input(_))));
+        assert!(matches!(sample_state(params, 2.0, None, 1), Err(LocatedError { at: At::Input, .. })));
+        assert!(matches!(sample_state(params, 2.0, Some(f64::NAN), 10), Err(LocatedError { at: At::Input, .. })));
+        assert!(matches!(sample_state(params, -1.0, None, 10), Err(LocatedError { at: At::Input, .. })));
     }
 
     #[test]
@@ -267,7 +213,7 @@ mod tests {
         }
         assert!(sample_state_at(params, 2.0, &[]).unwrap().samples.is_empty());
         match sample_state_at(params, 2.0, &[0.5, f64::NAN]) {
-            Err(ProfileError::Sample { xbar, .. }) => assert!(xbar.is_nan()),
+            Err(LocatedError { at: At::Sample { xbar }, .. }) => assert!(xbar.is_nan()),
             other => panic!("{other:?}"),
         }
     }

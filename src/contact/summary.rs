@@ -10,16 +10,14 @@
 //! assembles the summary from them: `maugis curve` and the Python
 //! `run_summary`/`curve` both call these two, and only present the result.
 
-use std::fmt;
-
 #[cfg(feature = "parallel")]
 use rayon::prelude::*;
 
+use crate::contact::located::{At, LocatedError};
 use crate::contact::curve::{load_area_curve, Curve, CurveOptions, CurvePoint, PullOff, TurningPoint};
 use crate::contact::model::Params;
 use crate::contact::paths::{ControlPaths, HysteresisLoop, Jump, PathNode};
 use crate::contact::units::{Material, Scales};
-use crate::error::Error;
 
 /// The energy one loading-unloading cycle dissipates (units of `dgamma l_h`).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -186,56 +184,22 @@ impl CurveSummary {
     }
 }
 
-/// Why the curves of a run could not be solved.
-#[derive(Debug, Clone, PartialEq)]
-#[non_exhaustive]
-pub enum RunError {
-    /// A `lambda`, `alpha` or `beta` that [`Params::new`] refuses (checked for
-    /// every curve before any is solved).
-    Params(Error),
-    /// The curve at `lambda` failed.
-    Curve {
-        /// Its Maugis parameter.
-        lambda: f64,
-        /// The library's error.
-        error: Error,
-    },
-}
-
-impl RunError {
-    /// The library's error underneath.
-    pub fn error(&self) -> &Error {
-        match self {
-            RunError::Params(e) | RunError::Curve { error: e, .. } => e,
-        }
-    }
-}
-
-impl fmt::Display for RunError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            RunError::Params(e) => write!(f, "{e}"),
-            RunError::Curve { lambda, error } => write!(f, "lambda = {lambda}: {error}"),
-        }
-    }
-}
-
-impl std::error::Error for RunError {}
-
 /// Solves the load-area curve ([`load_area_curve`]) of each `lambda` at the
 /// shared roughness, in the given order (in parallel over `lambda` with the
 /// `parallel` feature). `on_curve` is called once as each curve is done (a
-/// progress bar's tick).
+/// progress bar's tick). Errors: a `lambda`, `alpha` or `beta` that
+/// [`Params::new`] refuses ([`At::Input`], checked for every curve before any
+/// is solved), or the curve that failed ([`At::Curve`]).
 pub fn load_area_curves(
     lambdas: &[f64],
     alpha: f64,
     beta: f64,
     opts: CurveOptions,
     on_curve: impl Fn() + Sync + Send,
-) -> Result<Vec<Curve>, RunError> {
-    let params = lambdas.iter().map(|&l| Params::new(l, alpha, beta)).collect::<crate::error::Result<Vec<_>>>().map_err(RunError::Params)?;
+) -> Result<Vec<Curve>, LocatedError> {
+    let params = lambdas.iter().map(|&l| Params::new(l, alpha, beta)).collect::<crate::error::Result<Vec<_>>>().map_err(|e| At::Input.wrap(e))?;
     let one = |p: &Params| {
-        let c = load_area_curve(*p, opts).map_err(|error| RunError::Curve { lambda: p.lambda, error })?;
+        let c = load_area_curve(*p, opts).map_err(|e| At::Curve { lambda: p.lambda }.wrap(e))?;
         on_curve();
         Ok(c)
     };
@@ -367,10 +331,10 @@ mod tests {
     #[test]
     fn a_run_names_what_failed() {
         let opts = CurveOptions { amax: 3.0, points: 40, datum: 100.0 };
-        assert!(matches!(load_area_curves(&[1.0, -1.0], 0.1, 1.0, opts, || ()), Err(RunError::Params(_))));
+        assert!(matches!(load_area_curves(&[1.0, -1.0], 0.1, 1.0, opts, || ()), Err(LocatedError { at: At::Input, .. })));
         let bad = CurveOptions { points: 1, ..opts };
         match load_area_curves(&[2.0], 0.1, 1.0, bad, || ()) {
-            Err(e @ RunError::Curve { lambda, .. }) => {
+            Err(e @ LocatedError { at: At::Curve { lambda }, .. }) => {
                 assert_eq!(lambda, 2.0);
                 assert!(e.to_string().starts_with("lambda = 2: "), "{e}");
             }
