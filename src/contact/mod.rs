@@ -16,9 +16,11 @@
 //! * [`curve`]: the load-area response, turning points, pull-off.
 //! * [`paths`]: load- and displacement-controlled paths, the jumps they meet,
 //!   hysteresis loops and the dissipated energy.
-//! * [`summary`]: the output schema of a run (summary.json, `--format json`).
+//! * [`summary`]: a run of curves over lambda and its summary, the output schema
+//!   of `maugis curve` (summary.json, `--format json`) and Python's `run_summary`.
 //! * [`sweep`]: regime maps over grids of lambda and alpha, beta or the Johnson parameter, sharded.
-//! * [`limits`]: Appendix E (JKR, M-DMT) and the Eq. 17 envelope.
+//! * [`limits`]: Appendix E (JKR, M-DMT) and the Eq. 17 envelope, one by one and
+//!   as the rows of `maugis limits`.
 //! * [`units`]: SI inputs and outputs (scales of Eq. 13a with two length scales).
 //! * [`state_profile`]: the profiles of one state sampled over x (traction, displacement, gap).
 //! * [`located`]: the error of a profile, a run of curves or a table of limits, and where it arose.
