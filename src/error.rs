@@ -184,3 +184,14 @@ pub fn check_prec(prec: u32) -> Result<()> {
         Ok(())
     }
 }
+
+/// Checks a *working* precision (what the building blocks take: the requested
+/// precision plus guard bits, raised by escalation): `2 ..= MAX_WORKING_PREC` bits.
+/// rug panics on 0, so every public function that takes one checks it first.
+pub fn check_working_prec(wp: u32) -> Result<()> {
+    if wp < 2 || wp > crate::MAX_WORKING_PREC {
+        Err(Error::Precision { requested: wp as u64 })
+    } else {
+        Ok(())
+    }
+}

@@ -136,6 +136,7 @@ impl ModelBalls {
 /// `F(m) = lambda gbar(m abar) - 1` over the input balls, at working precision
 /// `wp`, for a ball of `e = m - 1 >= 0`.
 pub fn strip_residual_ball_mp(inputs: &ModelBalls, m_minus_1: &Ball, wp: u32) -> Result<Ball> {
+    crate::error::check_working_prec(wp)?;
     if m_minus_1.upper() < 0 {
         return Err(Error::Domain { what: format!("the strip ratio m must be >= 1 (m - 1 lies in {})", interval(m_minus_1)) });
     }
@@ -163,6 +164,7 @@ pub fn strip_residual_ball_mp(inputs: &ModelBalls, m_minus_1: &Ball, wp: u32) ->
 /// `F(m) = lambda gbar(m abar) - 1` in ball arithmetic at working precision `wp`
 /// (`m >= 1` and the parameters exact binary numbers).
 pub fn strip_residual_mp(params: Params, abar: f64, m: &Float, wp: u32) -> Result<Ball> {
+    crate::error::check_working_prec(wp)?;
     if *m < 1 {
         return Err(Error::Domain { what: "the strip ratio m must be >= 1".into() });
     }

@@ -63,6 +63,7 @@ use crate::special::pfq::{hyp_pfq, hyp_pfq_mp};
 /// so once its value `rho_N < 1`, `sum_{n>=N} |t_n| <= |t_N|/(1 - rho_N)`.
 /// Compared with the generic pFq core in the tests.
 pub fn hyp1f2_model_ball(k: u32, s: &Ball, wp: u32) -> Result<Ball> {
+    crate::error::check_working_prec(wp)?;
     // F_k = Phi(2k + 1): the same series, with the same ratio and tail bound.
     model_phi_series(2 * u64::from(k) + 1, s, wp)
 }
@@ -136,6 +137,7 @@ fn model_phi_series(m: u64, s: &Ball, wp: u32) -> Result<Ball> {
 /// small `k` are summed one by one ([`hyp1f2_model_ball`]). All results are
 /// enclosures whichever route produced them.
 pub fn hyp1f2_model_family(kmax: u32, s: &Ball, wp: u32) -> Result<Vec<Ball>> {
+    crate::error::check_working_prec(wp)?;
     let top = 2 * kmax as u64 + 1;
     let mut phi: Vec<Option<Ball>> = vec![None; top as usize + 4];
     // The ball radius of the recurrence grows by up to ~3.3 D bits on the way down

@@ -160,6 +160,7 @@ pub struct MeijerConstants {
 impl MeijerConstants {
     /// The constants for `k` at working precision `wp`.
     pub fn new(k: u32, wp: u32) -> Result<Self> {
+        crate::error::check_working_prec(wp)?;
         let kf = Float::with_val(64, k);
         let half = Ball::from_float(&Float::with_val(64, &kf + 0.5), wp);
         let two = Ball::from_float(&Float::with_val(64, &kf + 2u32), wp);
@@ -232,6 +233,7 @@ impl MeijerConstants {
 
 /// `G(k, y)` by the direct series at working precision `wp`.
 pub fn meijer_g_k_direct(k: u32, y: &Float, wp: u32) -> Result<Ball> {
+    crate::error::check_working_prec(wp)?;
     meijer_g_k_direct_ball(&MeijerConstants::cached(k, wp)?, &Ball::from_float(y, wp), wp)
 }
 
@@ -279,6 +281,7 @@ fn direct_sum(k: u32, yb: &Ball, wp: u32) -> Result<Ball> {
 /// `kmax + 1`. All in balls; the tails are those of `direct_sum` and of the `H`
 /// series (ratio `<= y`).
 pub fn direct_sums_sweep(kmax: u32, yb: &Ball, wp: u32) -> Result<Vec<Ball>> {
+    crate::error::check_working_prec(wp)?;
     let y_up = yb.upper();
     if y_up >= 1 {
         return Err(Error::Domain { what: "the direct series needs y < 1".into() });
@@ -334,6 +337,7 @@ fn sums_by_recurrence(s0: Ball, h_top: Ball, kmax: u32, yb: &Ball) -> Result<Vec
 /// `2F1(1, b; -1/2; w)` has term ratio `w (b+n)/(n-1/2)`, decreasing for `n >= 1`,
 /// so its tail is geometric once that ratio is below 1.
 pub fn near_one_sums_sweep(kmax: u32, w: &Ball, wp: u32) -> Result<Vec<Ball>> {
+    crate::error::check_working_prec(wp)?;
     let w = if w.lower() < 0 { Ball::hull(&Float::new(wp), &w.upper(), wp) } else { w.clone() };
     if w.upper() > 0.5 {
         return Err(Error::Domain { what: "the near-one sweep needs 1 - y <= 1/2".into() });
@@ -395,6 +399,7 @@ pub fn meijer_g_k_direct_ball(consts: &MeijerConstants, yb: &Ball, wp: u32) -> R
 
 /// `G(k, y)` by the expansion in `w = 1 - y` at working precision `wp` (`y >= 1/2`).
 pub fn meijer_g_k_near_one(k: u32, y: &Float, wp: u32) -> Result<Ball> {
+    crate::error::check_working_prec(wp)?;
     if *y < 0.5 {
         return Err(Error::Domain { what: "the near-one expansion needs y >= 1/2".into() });
     }
@@ -481,6 +486,7 @@ pub fn meijer_g_k_near_one_ball(consts: &MeijerConstants, w: &Ball, wp: u32) -> 
 
 /// `G(k, 1) = C_k B(1)`.
 pub fn meijer_g_k_at_one(k: u32, wp: u32) -> Result<Ball> {
+    crate::error::check_working_prec(wp)?;
     Ok(meijer_g_k_at_one_with(&MeijerConstants::cached(k, wp)?))
 }
 

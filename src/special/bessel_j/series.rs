@@ -65,6 +65,7 @@ fn prefactor(n: u64, half_x: &Ball, wp: u32) -> Result<Ball> {
 
 /// `J_n(x)` by the power series at working precision `wp` (`x > 0`).
 pub fn bessel_j_series(n: u64, x: &Float, wp: u32) -> Result<Ball> {
+    crate::error::check_working_prec(wp)?;
     let xb = Ball::from_float(x, wp);
     let half_x = xb.mul_pow2(-1);
     let z = half_x.sqr().neg();
@@ -119,6 +120,7 @@ pub fn bessel_j_series(n: u64, x: &Float, wp: u32) -> Result<Ball> {
 /// The same series through the generic pFq core (balls at every step): the
 /// cross-check for [`bessel_j_series`].
 pub fn bessel_j_series_pfq(n: u64, x: &Float, wp: u32) -> Result<Ball> {
+    crate::error::check_working_prec(wp)?;
     let xb = Ball::from_float(x, wp);
     let half_x = xb.mul_pow2(-1);
     let z = half_x.sqr().neg();
