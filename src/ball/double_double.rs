@@ -154,7 +154,7 @@ impl Dd {
     /// One.
     pub const ONE: Dd = Dd { hi: 1.0, lo: 0.0 };
     /// `2 pi` to ~106 bits.
-    pub const TWO_PI: Dd = Dd { hi: 6.283185307179586, lo: 2.4492935982947064e-16 };
+    pub const TWO_PI: Dd = Dd { hi: std::f64::consts::TAU, lo: 2.4492935982947064e-16 };
 
     /// An exact f64.
     #[inline]

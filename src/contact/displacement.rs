@@ -1196,7 +1196,7 @@ fn wave_series_mp(
     }
     // The terms reach ~ e^D / sqrt(D): that many bits cancel.
     let d = 2.0 * std::f64::consts::PI * a.to_f64() / zeta.to_f64();
-    let guard = DEFAULT_GUARD_BITS + (1.4427 * d) as u32;
+    let guard = DEFAULT_GUARD_BITS + (std::f64::consts::LOG2_E * d).ceil() as u32;
     let name = match kind {
         SeriesKind::Displacement => "u_wave_series",
         SeriesKind::Gradient => "du_wave_series",

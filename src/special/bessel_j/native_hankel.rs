@@ -68,9 +68,9 @@ const HANKEL_TARGET: f64 = 8.271806125530277e-25;
 const MAX_TERMS: usize = 200;
 
 /// `pi/4` as a double-double with its error bound (MPFR: `7.49e-34`).
-const PI_4: BoundedDd = BoundedDd { v: Dd { hi: 0.7853981633974483, lo: 3.061616997868383e-17 }, e: 7.5e-34 };
+const PI_4: BoundedDd = BoundedDd { v: Dd { hi: std::f64::consts::FRAC_PI_4, lo: 3.061616997868383e-17 }, e: 7.5e-34 };
 /// `2/pi` as a double-double with its error bound (MPFR: `2.14e-33`).
-const TWO_OVER_PI: BoundedDd = BoundedDd { v: Dd { hi: 0.6366197723675814, lo: -3.935735335036497e-17 }, e: 2.2e-33 };
+const TWO_OVER_PI: BoundedDd = BoundedDd { v: Dd { hi: std::f64::consts::FRAC_2_PI, lo: -3.935735335036497e-17 }, e: 2.2e-33 };
 
 /// Highest `k` of the double-double head.
 const HEAD: usize = 3;
