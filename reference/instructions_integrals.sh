@@ -33,6 +33,6 @@ for prec in 64 333; do
     for id in atanderiv rump exp sqrt xJ0 sin100; do
         ia=$(per_call "$TMP/arb_integrals" $id $prec)
         im=$(per_call "$MAUGIS" $id $prec)
-        echo "| $id | $prec | $ia | $im | $(echo "scale=2; $im / $ia" | bc)x |"
+        echo "| $id | $prec | $ia | $im | $(awk -v m="$im" -v a="$ia" 'BEGIN { printf "%.2f", m / a }')x |"
     done
 done

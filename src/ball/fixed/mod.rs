@@ -1,8 +1,8 @@
 //! `exp`, `sin` and `cos` of a midpoint at working precisions up to 486 bits, in
 //! fixed-point arithmetic on 64-bit limbs, with a rigorous error bound: the kernels
 //! under [`super::Ball`]'s elementary functions, where MPFR's correctly rounded
-//! functions cost three to five times Arb's (1.2-2.7 us against 0.2-0.6 us per call at
-//! 64-400 bits, measured on this project's machine).
+//! `exp` and `sin` cost 2.5 to 6 times Arb's (0.70-2.4 us against 0.13-0.80 us per call
+//! at 64-400 bits, `reference/elementary_mpfr_arb.c` on this project's machine).
 //!
 //! # Method
 //!
