@@ -138,9 +138,11 @@ impl Ball {
                 let (e, einv) = (Ball { mid: ep, rad: ee }, Ball { mid: mp, rad: me });
                 Some((e.sub(&einv).mul_pow2(-1), e.add(&einv).mul_pow2(-1)))
             };
-            let far = if lo.clone().abs() > hi.clone().abs() { lo.clone().abs() } else { hi.clone().abs() };
-            let (s_lo, s_hi, c_hi, c_lo) = match (at(&lo), at(&hi), at(&far)) {
-                (Some((sl, cl)), Some((sh, ch)), Some((_, cf))) => {
+            let (s_lo, s_hi, c_hi, c_lo) = match (at(&lo), at(&hi)) {
+                (Some((sl, cl)), Some((sh, ch))) => {
+                    // cosh is even: its largest value is at the end farther from 0
+                    let (cl_up, ch_up) = (cl.upper(), ch.upper());
+                    let c_hi = if cl_up > ch_up { cl_up } else { ch_up };
                     let c_lo = if lo.is_sign_positive() {
                         cl.lower()
                     } else if hi.is_sign_negative() {
@@ -148,9 +150,10 @@ impl Ball {
                     } else {
                         Float::with_val(p, 1)
                     };
-                    (sl.lower(), sh.upper(), cf.upper(), c_lo)
+                    (sl.lower(), sh.upper(), c_hi, c_lo)
                 }
                 _ => {
+                    let far = if lo.clone().abs() > hi.clone().abs() { lo.clone().abs() } else { hi.clone().abs() };
                     let c_lo = if lo.is_sign_positive() {
                         Float::with_val_round(p, lo.cosh_ref(), Round::Down).0
                     } else if hi.is_sign_negative() {
