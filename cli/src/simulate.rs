@@ -12,6 +12,11 @@
 //!   stretches solid, invalid ones faded), and the load-controlled path of each
 //!   leg as a line (its jumps dashed).
 //!
+//! `--profile FILE.csv` replaces the built-in profile by a table (`x,h`,
+//! `maugis_solver::profile_file`); `--periodic` makes the domain one period of
+//! a periodic half-plane; `--half-width` sets the domain. A table with a bad
+//! line exits 2 naming the file and the line, before any work.
+//!
 //! `--format json` writes no file and prints one JSON object, with
 //! `"dissipation": {"load_control": W, "displacement_control": W_d, "datum": ..}`,
 //! W of the closed in-contact cycle as the model's curve defines it
@@ -27,7 +32,8 @@ use plotters::prelude::*;
 
 use maugis::contact::curve::{load_area_curve, CurveOptions};
 use maugis::contact::model::Params;
-use maugis_solver::run::{simulate, SimulationSpec, StateRecord};
+use maugis_solver::profile_file::ProfileTable;
+use maugis_solver::run::{simulate_with, Domain, SimulationOptions, SimulationSpec, StateRecord};
 
 use crate::args::{self, short};
 use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
@@ -69,6 +75,34 @@ pub struct SimulateArgs {
     /// `files` (default) or `json`.
     #[arg(long, value_name = "FORMAT", default_value = "files")]
     pub format: SimFormat,
+    /// A profile table in place of the built-in profile: CSV with the header
+    /// `x,h`, in the normalised units of the built-in profile, x strictly
+    /// increasing, covering the domain. --alpha and --beta then name the model
+    /// the states are compared with (and that sizes the domain).
+    #[arg(long, value_name = "FILE.csv")]
+    pub profile: Option<PathBuf>,
+    /// The domain half-width X (default: sized by the model for the free
+    /// domain; beta/2, or the table's extent, for the periodic one).
+    #[arg(long, value_name = "X", value_parser = args::positive, allow_negative_numbers = true)]
+    pub half_width: Option<f64>,
+    /// A periodic half-plane of period 2X: the built-in profile is then the
+    /// wave alone, alpha (1 - cos(2 pi x/beta)) on [-beta/2, beta/2].
+    #[arg(long)]
+    pub periodic: bool,
+}
+
+/// The solver's options from the flags: the profile table read and checked
+/// (a bad line is an error naming the file and the line).
+fn options(a: &SimulateArgs) -> Result<SimulationOptions, String> {
+    let profile = match &a.profile {
+        None => None,
+        Some(path) => {
+            let text = std::fs::read_to_string(path).map_err(|e| format!("--profile {}: {e}", path.display()))?;
+            Some(ProfileTable::parse(&text).map_err(|e| format!("--profile {}: {e}", path.display()))?)
+        }
+    };
+    let domain = if a.periodic { Domain::Periodic } else { Domain::Free };
+    Ok(SimulationOptions { profile, half_width: a.half_width, domain })
 }
 
 /// Runs the subcommand.
@@ -80,13 +114,18 @@ pub fn run(a: SimulateArgs) -> Result<(), String> {
         return Err(format!("--steps must lie in [2, 100000] (got {})", a.steps));
     }
     let params = Params::new(a.lambda, a.alpha, a.beta).map_err(|e| e.to_string())?;
+    let opts = options(&a)?;
+    let profile_path = a.profile.clone();
     let spec = SimulationSpec { lambda: a.lambda, alpha: a.alpha, beta: a.beta, amax: a.amax, cells: a.grid, steps_per_leg: a.steps };
     let pb = crate::curve::progress(2 * a.steps as u64, "simulating");
-    let sim = simulate(spec, &mut |k, total| {
+    let sim = simulate_with(spec, opts, &mut |k, total| {
         pb.set_length(total as u64);
         pb.set_position(k as u64);
     })
-    .map_err(|e| e.to_string())?;
+    .map_err(|e| match (&profile_path, &e) {
+        (Some(path), maugis_solver::SolverError::ProfileCoverage { .. }) => format!("--profile {}: {e}", path.display()),
+        _ => e.to_string(),
+    })?;
     pb.finish_and_clear();
     let (x, c) = (sim.half_width, &sim.cycle);
     let report = sim.report();
@@ -112,7 +151,7 @@ pub fn run(a: SimulateArgs) -> Result<(), String> {
             r.zone_ends_placed
         );
     }
-    let svg = overlay_svg(params, a.amax, all)?;
+    let svg = overlay_svg(params, a.amax, all, a.periodic)?;
     let files = [OutFile::text("simulate.csv", csv), OutFile::text("simulate.svg", svg)];
     let written = write_atomically(&a.out, &files)?;
     let mut text = format!(
@@ -138,8 +177,12 @@ pub fn run(a: SimulateArgs) -> Result<(), String> {
 }
 
 /// Simulated states (loading and unloading markers) over the model curve.
-fn overlay_svg(params: Params, amax: f64, rows: &[StateRecord]) -> Result<String, String> {
-    let curve = load_area_curve(params, CurveOptions { amax, points: 400, ..CurveOptions::default() }).map_err(|e| e.to_string())?;
+/// On the periodic domain the model (a cylinder) is not drawn.
+fn overlay_svg(params: Params, amax: f64, rows: &[StateRecord], periodic: bool) -> Result<String, String> {
+    let mut curve = load_area_curve(params, CurveOptions { amax, points: 400, ..CurveOptions::default() }).map_err(|e| e.to_string())?;
+    if periodic {
+        curve.points.clear();
+    }
     let loads = curve.points.iter().map(|p| p.load).chain(rows.iter().map(|r| r.load));
     let (lo, hi) = loads.fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), v| (l.min(v), h.max(v)));
     let pad = 0.05 * (hi - lo).max(1.0);
@@ -161,7 +204,11 @@ fn overlay_svg(params: Params, amax: f64, rows: &[StateRecord]) -> Result<String
                 legend.line(if valid { "model, valid" } else { "model, invalid (faded)" }, style, 0, 0);
             }
         }
-        for (leg, col, name) in [("loading", colour(3), "simulation, loading"), ("unloading", colour(2), "simulation, unloading")] {
+        for (leg, col, name) in [
+            ("loading", colour(3), "simulation, loading"),
+            ("unloading", colour(2), "simulation, unloading"),
+            ("reloading", colour(4), "simulation, reloading"),
+        ] {
             // The load-controlled path: consecutive path states joined, solid
             // where the leg visits them in turn, dashed across a jump.
             let leg_rows: Vec<&StateRecord> = rows.iter().filter(|r| r.leg == leg).collect();
@@ -183,6 +230,9 @@ fn overlay_svg(params: Params, amax: f64, rows: &[StateRecord]) -> Result<String
                 last = Some((i, p));
             }
             let pts: Vec<(f64, f64)> = rows.iter().filter(|r| r.leg == leg && r.abar > 0.0).map(|r| (r.abar, r.load)).collect();
+            if pts.is_empty() {
+                continue;
+            }
             chart.draw_series(pts.iter().map(|&p| Circle::new(p, 3, col.filled()))).map_err(plot_err)?;
             legend.entry(name, vec![Mark::circle(4, col.filled(), None)]);
         }

@@ -54,7 +54,7 @@ fn main() {
          W   solver {w:.5} model {mw:.5} diff {:+.2e} ({:+.3} %), loops {} vs {}, model invalid {:.3e}\n  \
          W_d solver {wd:.5} model {mwd:.5} diff {:+.2e} ({:+.3} %), loops {} vs {}\n  \
          pull-off solver {:.5} model {:?}; stiff-cycle work {:.4}; single interval {}",
-        sim.cycle.loading.len() + sim.cycle.unloading.len(),
+        sim.cycle.loading.len() + sim.cycle.unloading.len() + sim.cycle.reloading.len(),
         w - mw,
         100.0 * (w - mw) / mw.abs().max(1e-300),
         d.load_control.loops.len(),
@@ -70,7 +70,7 @@ fn main() {
         d.load_control.single_interval,
     );
     if std::env::var("DUMP").is_ok() {
-        for (leg, v) in [("L", &sim.cycle.loading), ("U", &sim.cycle.unloading)] {
+        for (leg, v) in [("L", &sim.cycle.loading), ("U", &sim.cycle.unloading), ("R", &sim.cycle.reloading)] {
             for st in v.iter() {
                 let dm =
                     maugis_solver::path::approach_on_model_datum(st.approach, st.load, sim.datum);

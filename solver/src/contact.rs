@@ -86,7 +86,7 @@
 //! snap-in or pull-off); warm starts keep the solver on the branch it is
 //! following, as in an experiment with a stiff machine.
 
-use crate::elastic::{log_antiderivative, HalfPlane};
+use crate::elastic::HalfPlane;
 use crate::error::{Result, SolverError};
 use crate::grid::Grid;
 use crate::profile::{Adhesion, Profile};
@@ -291,6 +291,16 @@ impl ZoneEnd {
 /// zone, gap, `kz`.
 type Snapshot = (Vec<f64>, Vec<f64>, Vec<bool>, Vec<f64>, Vec<f64>);
 
+/// A solved state's warm start ([`ContactSolver::warm_start`]): the next
+/// solve after [`ContactSolver::resume`] continues from it, as it would right
+/// after that state (the reloading leg of [`crate::path::cycle`] resumes from an
+/// unloading state).
+#[derive(Debug, Clone)]
+pub struct WarmStart {
+    saved: Snapshot,
+    last_ends: Vec<(i8, f64)>,
+}
+
 /// Runs of `true` in `mask` as `(first, last)` index pairs.
 fn runs(mask: impl Iterator<Item = bool>) -> Vec<(usize, usize)> {
     let mut out = Vec::new();
@@ -314,15 +324,28 @@ fn runs(mask: impl Iterator<Item = bool>) -> Vec<(usize, usize)> {
 }
 
 impl ContactSolver {
-    /// A solver for `profile` on `grid`, datum `datum` (`None`: the domain width).
+    /// A solver for `profile` on `grid` (a free half-plane), datum `datum`
+    /// (`None`: the domain width).
     pub fn new(grid: Grid, datum: Option<f64>, profile: &Profile, adhesion: Adhesion, opts: SolveOptions) -> Result<Self> {
+        ContactSolver::with_operator(HalfPlane::new(grid, datum)?, profile, adhesion, opts)
+    }
+
+    /// A solver on a periodic half-plane of period `2X` ([`HalfPlane::periodic`];
+    /// `datum` `None`: the period). The contact and the zone of each period
+    /// must stay inside `(-X, X)`: [`crate::path::cycle`] stops with
+    /// [`SolverError::DomainTooSmall`] when they reach an end.
+    pub fn periodic(grid: Grid, datum: Option<f64>, profile: &Profile, adhesion: Adhesion, opts: SolveOptions) -> Result<Self> {
+        ContactSolver::with_operator(HalfPlane::periodic(grid, datum)?, profile, adhesion, opts)
+    }
+
+    fn with_operator(op: HalfPlane, profile: &Profile, adhesion: Adhesion, opts: SolveOptions) -> Result<Self> {
         if !(opts.tol > 0.0 && opts.tol < 1.0) || opts.max_cg == 0 || opts.max_zone_updates == 0 {
             return Err(SolverError::Domain {
                 what: "solve options: tol must lie in (0, 1) and the iteration caps must be positive".into(),
             });
         }
+        let grid = op.grid();
         let h = profile.sample(&grid)?;
-        let op = HalfPlane::new(grid, datum)?;
         let n = grid.cells();
         let dx = grid.dx();
         let h_edge: Vec<f64> = (0..n).map(|i| profile.depth_at(grid.x(i) + 0.5 * dx, &grid, &h)).collect();
@@ -331,7 +354,7 @@ impl ContactSolver {
             .map(|k| {
                 // Unit traction on [-dx/2, dx/2]; the edge at (k + 1/2) dx, the
                 // centres at k dx and (k + 1) dx (the datum terms cancel).
-                let at = |t: f64| -2.0 / std::f64::consts::PI * (log_antiderivative(t + 0.5 * dx) - log_antiderivative(t - 0.5 * dx));
+                let at = |t: f64| op.segment_influence(t, -0.5 * dx, 0.5 * dx);
                 let kf = k as f64;
                 at((kf + 0.5) * dx) - 0.5 * (at(kf * dx) + at((kf + 1.0) * dx))
             })
@@ -403,6 +426,17 @@ impl ContactSolver {
         self.zone.iter_mut().for_each(|v| *v = false);
         self.theta.iter_mut().for_each(|v| *v = 0.0);
         self.last_ends.clear();
+    }
+
+    /// The warm start the next solve would use (the last solved state's).
+    pub fn warm_start(&self) -> WarmStart {
+        WarmStart { saved: self.snapshot(), last_ends: self.last_ends.clone() }
+    }
+
+    /// Continues from `start` (taken by [`Self::warm_start`] of this solver).
+    pub fn resume(&mut self, start: &WarmStart) {
+        self.restore(start.saved.clone());
+        self.last_ends.clone_from(&start.last_ends);
     }
 
     /// Solves for the equilibrium at approach `approach`, warm-started from the
@@ -745,7 +779,8 @@ impl ContactSolver {
 
     /// The gap at position `c` (cell units) from the traction of every cell,
     /// exact for piecewise-constant traction: `h(x) - Delta + u(x)`,
-    /// `u(x) = -(2/pi) sum_j p_j int_cell ln(|x - s|/L_d) ds`. A partial
+    /// `u(x) = -(2/pi) sum_j p_j int_cell ln(|x - s|/L_d) ds` (on the periodic
+    /// operator its images included, [`HalfPlane::segment_influence`]). A partial
     /// cohesive cell (`0 < theta < 1`, not in contact) carries `-sigma0` on its
     /// covered part (next to the zone) rather than `-sigma0 theta` on the whole
     /// cell: the traction of the zone ends where the zone ends.
@@ -756,11 +791,7 @@ impl ContactSolver {
         let dx = grid.dx();
         let x0 = -grid.half_width();
         let x = x0 + c * dx;
-        let ln_datum = self.op.datum().ln();
-        let segment = |p: f64, s0: f64, s1: f64| -> f64 {
-            p * (-(2.0 / std::f64::consts::PI) * (log_antiderivative(x - s0) - log_antiderivative(x - s1))
-                + 2.0 / std::f64::consts::PI * (s1 - s0) * ln_datum)
-        };
+        let segment = |p: f64, s0: f64, s1: f64| -> f64 { p * self.op.segment_influence(x, s0, s1) };
         let mut u = 0.0;
         for j in 0..n {
             let (q, t) = (self.q[j], self.theta[j]);

@@ -20,8 +20,9 @@
 //!
 //! # On a simulated cycle
 //!
-//! [`closed_cycle`] takes the in-contact states of both legs of a
-//! displacement-controlled [`Cycle`] (`abar > 0`), puts their approach on the
+//! [`closed_cycle`] takes the in-contact states of the three legs of a
+//! displacement-controlled [`Cycle`] (`abar > 0`: loading, unloading, and the
+//! reloading leg from the smallest contact the unloading leg held), puts their approach on the
 //! model's datum ([`approach_on_model_datum`]), orders them by `abar`, and walks
 //! them as the library walks its curve: unloading from the largest contact down
 //! the running minimum of the controlled variable, a jump at each local minimum
@@ -121,6 +122,7 @@ pub fn closed_cycle(cycle: &Cycle, solver_datum: f64, driver: Driver) -> Result<
         .loading
         .iter()
         .chain(&cycle.unloading)
+        .chain(&cycle.reloading)
         .filter(|s| s.abar > 0.0)
         .collect();
     if states.len() < 2 {
@@ -156,111 +158,21 @@ pub fn closed_cycle(cycle: &Cycle, solver_datum: f64, driver: Driver) -> Result<
             && (q.load - p.load).abs() <= SAME_STATE * p.load.abs().max(1.0)
     });
     let single_interval = pts.iter().all(|p| p.valid);
-    let y = |p: &PathNode| driver.value((p.load, p.approach));
     let n = pts.len();
-
-    // Unloading: running minimum of y from the largest contact. `at`: the
-    // index in `pts` of the path's last node, when it is a simulated state.
-    let mut levels = Vec::new();
-    let mut unloading = vec![pts[n - 1]];
-    // `run`: how many of the path's last nodes are consecutive simulated states.
-    let mut run = 1;
-    let mut end = None;
-    let mut k = n - 1;
-    while k > 0 {
-        k -= 1;
-        let last = unloading[unloading.len() - 1];
-        if y(&pts[k]) <= y(&last) {
-            unloading.push(pts[k]);
-            run += 1;
-            continue;
-        }
-        // `last` (pts[k + 1]) is a minimum: refine it, then jump down to the
-        // first smaller contact at its level.
-        let refined = if run >= 3 {
-            refine_extremum(
-                driver,
-                [pts[k + 3], pts[k + 2], pts[k + 1]],
-                pts[k].abar,
-                -1.0,
-            )
-        } else {
-            None
-        };
-        let from = match refined {
-            Some(r) => {
-                unloading.pop();
-                unloading.push(r);
-                r
-            }
-            None => last,
-        };
-        let level = y(&from);
-        match (0..=k).rev().find(|&j| y(&pts[j]) <= level) {
-            Some(j) => {
-                levels.push(level);
-                unloading.push(interpolate(driver, pts[j], pts[j + 1], level));
-                run = 0;
-                k = j + 1; // pts[j] is next
-            }
-            None => {
-                end = Some(from);
-                break;
-            }
-        }
-    }
-    let (end, end_at_edge) = match end {
+    // Unloading: the running minimum of the controlled variable from the
+    // largest contact; its end is the first minimum with no smaller contact at
+    // its level (or the smallest contact).
+    let unloading = walk(driver, &pts, pts[n - 1], true, n as isize - 2, -1);
+    let (end, end_at_edge) = match unloading.stopped {
         Some(e) => (e, false),
-        None => (unloading[unloading.len() - 1], true),
+        None => (unloading.path[unloading.path.len() - 1], true),
     };
-
-    // Reloading: running maximum of y from the end of unloading.
-    let mut reloading = vec![end];
-    let mut run = 0;
-    let mut truncated = false;
-    let mut i = pts.partition_point(|p| p.abar <= end.abar);
-    while i < n {
-        let last = reloading[reloading.len() - 1];
-        if y(&pts[i]) >= y(&last) {
-            reloading.push(pts[i]);
-            run += 1;
-            i += 1;
-            continue;
-        }
-        // `last` (pts[i - 1]) is a maximum: refine it, then jump up to the
-        // first larger contact at its level.
-        let refined = if run >= 3 {
-            refine_extremum(
-                driver,
-                [pts[i - 3], pts[i - 2], pts[i - 1]],
-                pts[i].abar,
-                1.0,
-            )
-        } else {
-            None
-        };
-        let from = match refined {
-            Some(r) => {
-                reloading.pop();
-                reloading.push(r);
-                r
-            }
-            None => last,
-        };
-        let level = y(&from);
-        match (i..n).find(|&j| y(&pts[j]) >= level) {
-            Some(j) => {
-                levels.push(level);
-                reloading.push(interpolate(driver, pts[j - 1], pts[j], level));
-                run = 0;
-                i = j;
-            }
-            None => {
-                truncated = true;
-                break;
-            }
-        }
-    }
+    // Reloading: the running maximum from the end of unloading.
+    let from = pts.partition_point(|p| p.abar <= end.abar) as isize;
+    let reloading = walk(driver, &pts, end, false, from, 1);
+    let truncated = reloading.stopped.is_some();
+    let levels: Vec<f64> = unloading.levels.iter().chain(&reloading.levels).copied().collect();
+    let (unloading, reloading) = (unloading.path, reloading.path);
     let (loops, dissipation) =
         loops_and_dissipation(driver, &reloading, &unloading, &levels, truncated);
     Ok(ClosedCycle {
@@ -275,6 +187,70 @@ pub fn closed_cycle(cycle: &Cycle, solver_datum: f64, driver: Driver) -> Result<
         dissipation,
         single_interval,
     })
+}
+
+/// A walk of the library's along the states ordered by `abar`: its nodes,
+/// the levels of its jumps, and the turning point where it stopped for want of
+/// a state beyond its level (`None`: it ran off the states).
+struct Walk {
+    path: Vec<PathNode>,
+    levels: Vec<f64>,
+    stopped: Option<PathNode>,
+}
+
+/// Walks `pts` (ordered by `abar`) from `first`, the next candidate state at
+/// index `next`, in the direction `s` of `abar` (`-1`: unloading, the running
+/// minimum of the controlled variable; `+1`: reloading, the running maximum).
+/// At a turning point (refined by [`refine_extremum`] when the path's last
+/// three nodes are consecutive states; `first_is_state`: `first` is one) it
+/// jumps at the turning level to the first state beyond it, interpolated; it
+/// stops at a turning point with no such state.
+fn walk(driver: Driver, pts: &[PathNode], first: PathNode, first_is_state: bool, next: isize, s: isize) -> Walk {
+    let y = |p: &PathNode| driver.value((p.load, p.approach));
+    let sign = s as f64;
+    let in_range = |c: isize| c >= 0 && (c as usize) < pts.len();
+    let at = |c: isize| pts[c as usize];
+    let mut path = vec![first];
+    let mut levels = Vec::new();
+    let mut run = usize::from(first_is_state);
+    let mut c = next;
+    while in_range(c) {
+        let last = path[path.len() - 1];
+        if sign * (y(&at(c)) - y(&last)) >= 0.0 {
+            path.push(at(c));
+            run += 1;
+            c += s;
+            continue;
+        }
+        // `last` (the state before `c`) turns: refine it, then jump at its
+        // level to the first state beyond it.
+        let refined = if run >= 3 {
+            refine_extremum(driver, [at(c - 3 * s), at(c - 2 * s), at(c - s)], at(c).abar, sign)
+        } else {
+            None
+        };
+        let from = match refined {
+            Some(r) => {
+                path.pop();
+                path.push(r);
+                r
+            }
+            None => last,
+        };
+        let level = y(&from);
+        let mut j = c;
+        while in_range(j) && sign * (y(&at(j)) - level) < 0.0 {
+            j += s;
+        }
+        if !in_range(j) {
+            return Walk { path, levels, stopped: Some(from) };
+        }
+        levels.push(level);
+        path.push(interpolate(driver, at(j - s), at(j), level));
+        run = 0;
+        c = j;
+    }
+    Walk { path, levels, stopped: None }
 }
 
 /// The state between `a` and `b` where the controlled variable is `level`

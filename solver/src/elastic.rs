@@ -34,6 +34,28 @@
 //! scratch buffers are made once per operator and reused by every product, so
 //! one product costs two real FFTs of length `2n`.
 //!
+//! # Periodic domain
+//!
+//! [`HalfPlane::periodic`] makes the domain `[-X, X]` one period `P = 2X` of a
+//! periodic surface, the traction's images included. Summing the images of
+//! `ln|t|` (the product `sin(pi z) = pi z prod (1 - z^2/m^2)`) gives the kernel
+//! `ln|2 sin(pi t/P)|` up to a constant, so
+//!
+//! ```text
+//! u(x) = -(2/pi) int_period p(s) [ln|2 sin(pi (x - s)/P)| - ln(2 pi L_d/P)] ds ,
+//! ```
+//!
+//! which tends to the free kernel `ln(|t|/L_d)` as `P -> infinity` at fixed
+//! `t`. In 2D a non-zero mean traction moves the surface without bound, so
+//! the datum `L_d` again fixes the approach; `ln|2 sin|` has zero mean over a
+//! period, so the mean traction `pbar` moves the surface by
+//! `(2/pi) P pbar ln(2 pi L_d/P)` into the body, and the kernel is positive definite only if
+//! `L_d > P/(2 pi)` (at `L_d = P/(2 pi)` the approach is the mean gap of
+//! Tamaas's periodic BEM; `docs/solver.md`). The cell coefficients are the
+//! exact integral of `ln|t|` plus the smooth remainder
+//! `ln(|2 sin(pi t/P)|/|t|)` by 6-point Gauss-Legendre, at the nearest image's
+//! offset; the product is a circular convolution of length `n` (no padding).
+//!
 //! # Positive definiteness
 //!
 //! The logarithmic kernel is positive definite on an interval of length `W`
@@ -61,6 +83,8 @@ use crate::grid::Grid;
 pub struct HalfPlane {
     grid: Grid,
     datum: f64,
+    /// Periodic of period `2X` (circular convolution) rather than free.
+    periodic: bool,
     /// Influence coefficients `K_k`, `k = 0..n` (the kernel is even).
     coeffs: Vec<f64>,
     /// Spectrum of the circulant embedding, divided by `2n` (the FFT normalisation).
@@ -86,46 +110,117 @@ pub(crate) fn log_antiderivative(t: f64) -> f64 {
     }
 }
 
+/// The kernel `G` of `u(x) = -(2/pi) int p(s) G(x - s) ds`: free,
+/// `G(t) = ln(|t|/L_d)`; periodic of period `P`,
+/// `G(t) = ln|2 sin(pi t/P)| - ln(2 pi L_d/P)`.
+#[derive(Debug, Clone, Copy)]
+struct Kernel {
+    period: f64,
+    ln_datum: f64,
+    periodic: bool,
+}
+
+/// Gauss-Legendre nodes and weights on `[-1, 1]`, 6 points (even: no node at
+/// the midpoint, where the periodic remainder's formula would divide 0 by 0).
+const GAUSS6: [(f64, f64); 6] = [
+    (-0.932_469_514_203_152, 0.171_324_492_379_170),
+    (-0.661_209_386_466_265, 0.360_761_573_048_139),
+    (-0.238_619_186_083_197, 0.467_913_934_572_691),
+    (0.238_619_186_083_197, 0.467_913_934_572_691),
+    (0.661_209_386_466_265, 0.360_761_573_048_139),
+    (0.932_469_514_203_152, 0.171_324_492_379_170),
+];
+
+impl Kernel {
+    /// `-(2/pi) int_a^b G(t) dt` for `b - a` at most a cell and, periodic,
+    /// `|a|, |b| <= P/2 + b - a`. The logarithm's part is exact (`F`); the
+    /// periodic remainder `R(t) = ln(|2 sin(pi t/P)|/|t|)`, analytic on
+    /// `|t| < P`, is integrated by 6-point Gauss-Legendre (error about
+    /// `((b - a)/P)^12`, far below rounding).
+    fn influence(&self, a: f64, b: f64) -> f64 {
+        let log_part = log_antiderivative(b) - log_antiderivative(a);
+        if !self.periodic {
+            return -2.0 / PI * (log_part - (b - a) * self.ln_datum);
+        }
+        let p = self.period;
+        let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
+        let remainder: f64 = GAUSS6
+            .iter()
+            .map(|&(z, w)| {
+                let t = mid + half * z;
+                let r = if t == 0.0 { (2.0 * PI / p).ln() } else { ((2.0 * (PI * t / p).sin()).abs() / t.abs()).ln() };
+                w * r
+            })
+            .sum::<f64>()
+            * half;
+        -2.0 / PI * (log_part + remainder - (b - a) * (2.0 * PI / p).ln() - (b - a) * self.ln_datum)
+    }
+}
+
 impl HalfPlane {
-    /// The operator on `grid` with datum distance `datum` (`None`: the domain
-    /// width `2X`). `datum` must be at least half the domain width.
+    /// The free-space operator on `grid` with datum distance `datum` (`None`:
+    /// the domain width `2X`). `datum` must be at least half the domain width.
     pub fn new(grid: Grid, datum: Option<f64>) -> Result<HalfPlane> {
+        HalfPlane::build(grid, datum, false)
+    }
+
+    /// The periodic operator (period `P = 2X`, see the module docs) on `grid`
+    /// with datum distance `datum` (`None`: `P`). `datum` must be at least
+    /// `P/4` (the kernel is positive definite for `datum > P/(2 pi)`).
+    pub fn periodic(grid: Grid, datum: Option<f64>) -> Result<HalfPlane> {
+        HalfPlane::build(grid, datum, true)
+    }
+
+    fn build(grid: Grid, datum: Option<f64>, periodic: bool) -> Result<HalfPlane> {
         let width = 2.0 * grid.half_width();
         let datum = datum.unwrap_or(width);
         finite(datum, "the datum distance")?;
-        if !(datum >= 0.5 * width && datum <= 1e12) {
+        let (least, why) = if periodic {
+            (0.25 * width, "a quarter of the period")
+        } else {
+            (0.5 * width, "half the domain width")
+        };
+        if !(datum >= least && datum <= 1e12) {
             return Err(SolverError::Domain {
                 what: format!(
-                    "the datum distance must be at least half the domain width {width} \
-                     (the log kernel is then positive definite) and at most 1e12 (got {datum})"
+                    "the datum distance must be at least {why}, {least} (the kernel is then positive definite), \
+                     and at most 1e12 (got {datum})"
                 ),
             });
         }
         let n = grid.cells();
         let dx = grid.dx();
-        let shift = 2.0 / PI * dx * datum.ln();
+        let op_kernel = Kernel { period: width, ln_datum: datum.ln(), periodic };
         let coeffs: Vec<f64> = (0..n)
             .map(|k| {
-                let t = k as f64 * dx;
-                -2.0 / PI * (log_antiderivative(t + 0.5 * dx) - log_antiderivative(t - 0.5 * dx)) + shift
+                // The periodic kernel's offsets past half a period are the
+                // nearest image's.
+                let t = if periodic && k > n / 2 { (k as f64 - n as f64) * dx } else { k as f64 * dx };
+                op_kernel.influence(t - 0.5 * dx, t + 0.5 * dx)
             })
             .collect();
+        let m = if periodic { n } else { 2 * n };
         let mut planner = RealFftPlanner::<f64>::new();
-        let forward = planner.plan_fft_forward(2 * n);
-        let inverse = planner.plan_fft_inverse(2 * n);
-        // Circulant embedding: c[k] = K_k, c[2n-k] = K_k (k = 1..n-1), c[n] = 0.
-        let mut circ = vec![0.0; 2 * n];
-        circ[0] = coeffs[0];
-        for k in 1..n {
-            circ[k] = coeffs[k];
-            circ[2 * n - k] = coeffs[k];
+        let forward = planner.plan_fft_forward(m);
+        let inverse = planner.plan_fft_inverse(m);
+        // Free: the circulant embedding c[k] = K_k, c[2n-k] = K_k (k = 1..n-1),
+        // c[n] = 0. Periodic: the circulant itself, c[k] = K_k.
+        let mut circ = vec![0.0; m];
+        if periodic {
+            circ.copy_from_slice(&coeffs);
+        } else {
+            circ[0] = coeffs[0];
+            for k in 1..n {
+                circ[k] = coeffs[k];
+                circ[2 * n - k] = coeffs[k];
+            }
         }
         let mut freq = forward.make_output_vec();
         let mut scratch_fwd = forward.make_scratch_vec();
         forward
             .process_with_scratch(&mut circ, &mut freq, &mut scratch_fwd)
             .map_err(|e| SolverError::Domain { what: format!("internal FFT error: {e}") })?;
-        let scale = 1.0 / (2 * n) as f64;
+        let scale = 1.0 / m as f64;
         let spectrum: Vec<f64> = freq.iter().map(|z| z.re * scale).collect();
         // The eigenvalues of the embedding are positive (checked in the tests);
         // a floor keeps the preconditioner finite if rounding made one tiny.
@@ -135,17 +230,36 @@ impl HalfPlane {
         Ok(HalfPlane {
             grid,
             datum,
+            periodic,
             coeffs,
             spectrum,
             inverse_spectrum,
             products: 0,
             forward,
             inverse,
-            padded: vec![0.0; 2 * n],
+            padded: vec![0.0; m],
             freq,
             scratch_fwd,
             scratch_inv,
         })
+    }
+
+    /// Whether the operator is periodic.
+    pub fn is_periodic(&self) -> bool {
+        self.periodic
+    }
+
+    /// The displacement at `x` from a unit traction on `[s0, s1]` (exact; on
+    /// the periodic operator the traction's images included).
+    pub fn segment_influence(&self, x: f64, s0: f64, s1: f64) -> f64 {
+        let width = 2.0 * self.grid.half_width();
+        let kernel = Kernel { period: width, ln_datum: self.datum.ln(), periodic: self.periodic };
+        let mut d = x - 0.5 * (s0 + s1);
+        if self.periodic {
+            d -= width * (d / width).round();
+        }
+        let w = s1 - s0;
+        kernel.influence(d - 0.5 * w, d + 0.5 * w)
     }
 
     /// The grid.
@@ -188,6 +302,7 @@ impl HalfPlane {
 
     fn convolve(&mut self, p: &[f64], u: &mut [f64], inverse: bool) {
         let n = self.grid.cells();
+        // Free: zero-padded to 2n (linear convolution); periodic: n (circular).
         debug_assert!(p.len() == n && u.len() == n);
         self.products += 1;
         self.padded[..n].copy_from_slice(p);
@@ -212,7 +327,12 @@ impl HalfPlane {
     pub fn apply_direct(&self, p: &[f64], u: &mut [f64]) {
         let n = self.grid.cells();
         for i in 0..n {
-            u[i] = (0..n).map(|j| self.coeffs[i.abs_diff(j)] * p[j]).sum();
+            u[i] = (0..n)
+                .map(|j| {
+                    let k = if self.periodic { (i + n - j) % n } else { i.abs_diff(j) };
+                    self.coeffs[k] * p[j]
+                })
+                .sum();
         }
     }
 }
@@ -265,6 +385,47 @@ mod tests {
         assert!((dot(&a, &cb) - dot(&b, &ca)).abs() <= 1e-12 * dot(&a, &ca).abs());
         assert!(dot(&a, &ca) > 0.0 && dot(&b, &cb) > 0.0);
         assert_eq!(op.products(), 2);
+    }
+
+    #[test]
+    fn periodic_operator_sums_the_images() {
+        let (n, x) = (256usize, 2.0);
+        let grid = Grid::new(n, x).unwrap();
+        let mut op = HalfPlane::periodic(grid, None).unwrap();
+        assert!(op.spectrum.iter().all(|&v| v > 0.0));
+        // A traction with no net load: +1 on cell 40, -1 on cell 200. Its
+        // images' free-space displacements converge (as 1/m^2).
+        let mut p = vec![0.0; n];
+        p[40] = 1.0;
+        p[200] = -1.0;
+        let (mut u, mut direct) = (vec![0.0; n], vec![0.0; n]);
+        op.apply(&p, &mut u);
+        op.apply_direct(&p, &mut direct);
+        let free = HalfPlane::new(grid, None).unwrap();
+        let period = 2.0 * x;
+        for i in [0usize, 40, 41, 128, 199, 255] {
+            assert!((u[i] - direct[i]).abs() < 1e-12, "{i}");
+            let xi = grid.x(i);
+            let mut images = 0.0;
+            for m in -20_000i32..=20_000 {
+                let shift = f64::from(m) * period;
+                for (j, sign) in [(40usize, 1.0), (200, -1.0)] {
+                    let s0 = grid.x(j) - 0.5 * grid.dx() + shift;
+                    images += sign * free.segment_influence(xi, s0, s0 + grid.dx());
+                }
+            }
+            assert!((u[i] - images).abs() < 1e-6, "cell {i}: {} vs image sum {images}", u[i]);
+            // The point influence agrees with the cell coefficients.
+            let s0 = grid.x(40) - 0.5 * grid.dx();
+            let at = op.segment_influence(xi, s0, s0 + grid.dx()) - op.segment_influence(xi, grid.x(200) - 0.5 * grid.dx(), grid.x(200) + 0.5 * grid.dx());
+            assert!((at - u[i]).abs() < 1e-12, "cell {i}");
+        }
+        // The mean traction moves the surface by (2/pi) P pbar ln(2 pi L_d/P).
+        let ones = vec![1.0; n];
+        op.apply(&ones, &mut u);
+        let expected = 2.0 / PI * period * (2.0 * PI * period / period).ln();
+        assert!(u.iter().all(|v| (v - expected).abs() < 1e-10 * expected), "{} vs {expected}", u[0]);
+        assert!(HalfPlane::periodic(grid, Some(0.2 * period)).is_err());
     }
 
     #[test]

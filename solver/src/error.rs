@@ -35,8 +35,82 @@ pub enum SolverError {
         /// Residual reached.
         residual: f64,
     },
+    /// A profile table (`x,h` CSV text, [`crate::profile_file`]) has a bad
+    /// line.
+    ProfileTable {
+        /// The 1-based line of the text.
+        line: usize,
+        /// What is wrong with it.
+        fault: TableFault,
+    },
+    /// A profile table does not cover the domain `[-half_width, half_width]`.
+    ProfileCoverage {
+        /// The table's first `x`.
+        first: f64,
+        /// The table's last `x`.
+        last: f64,
+        /// The domain half-width it must cover.
+        half_width: f64,
+    },
     /// An error from the `maugis` library (the semi-analytical model).
     Model(maugis::Error),
+}
+
+/// What is wrong with a line of a profile table.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum TableFault {
+    /// The first line is not the header `x,h`.
+    Header {
+        /// The line found.
+        found: String,
+    },
+    /// A row does not have two fields.
+    Fields {
+        /// Fields found.
+        found: usize,
+    },
+    /// A field is not a number.
+    Number {
+        /// `"x"` or `"h"`.
+        column: &'static str,
+        /// The field's text.
+        text: String,
+    },
+    /// A field is NaN or infinite.
+    NotFinite {
+        /// `"x"` or `"h"`.
+        column: &'static str,
+    },
+    /// `x` does not increase strictly.
+    NotIncreasing {
+        /// This row's `x`.
+        x: f64,
+        /// The previous row's `x`.
+        previous: f64,
+    },
+    /// Fewer rows than [`crate::profile_file::MIN_ROWS`] (`line`: the last line read).
+    TooFewRows {
+        /// Rows found.
+        rows: usize,
+    },
+}
+
+impl fmt::Display for TableFault {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            TableFault::Header { found } => write!(f, "the header must be `x,h` (found `{found}`)"),
+            TableFault::Fields { found } => write!(f, "a row must have two fields, x and h (found {found})"),
+            TableFault::Number { column, text } => write!(f, "{column} is not a number (`{text}`)"),
+            TableFault::NotFinite { column } => write!(f, "{column} must be a finite number"),
+            TableFault::NotIncreasing { x, previous } => {
+                write!(f, "x must increase strictly from row to row (x = {x} after {previous})")
+            }
+            TableFault::TooFewRows { rows } => {
+                write!(f, "the table needs at least {} rows (found {rows})", crate::profile_file::MIN_ROWS)
+            }
+        }
+    }
 }
 
 impl fmt::Display for SolverError {
@@ -52,7 +126,7 @@ impl fmt::Display for SolverError {
             SolverError::DomainTooSmall { half_width } => write!(
                 f,
                 "the contact or Dugdale zone reached the end of the domain (half-width {half_width}); \
-                 enlarge the domain or lower --amax"
+                 enlarge the domain or lower amax"
             ),
             SolverError::NeverTouches => {
                 write!(f, "the profile never comes within the adhesion range of the surface; nothing to simulate")
@@ -60,6 +134,12 @@ impl fmt::Display for SolverError {
             SolverError::NoConvergence { what, iterations, residual } => {
                 write!(f, "{what} did not converge in {iterations} iterations (residual {residual:e})")
             }
+            SolverError::ProfileTable { line, fault } => write!(f, "profile table, line {line}: {fault}"),
+            SolverError::ProfileCoverage { first, last, half_width } => write!(
+                f,
+                "the profile table covers x in [{first}, {last}], but the domain is [-{half_width}, {half_width}]: \
+                 extend the table or narrow the domain"
+            ),
             SolverError::Model(e) => write!(f, "{e}"),
         }
     }

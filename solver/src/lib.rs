@@ -18,6 +18,7 @@
 //! * [`elastic::HalfPlane`]: the free-space (zero-padded FFT) half-plane
 //!   operator, with the datum of the approach;
 //! * [`profile::Profile`], [`profile::Adhesion`]: the geometry and the law;
+//!   [`profile_file::ProfileTable`]: a profile read from `x,h` rows;
 //! * [`contact::ContactSolver`]: one equilibrium at a given approach
 //!   (Polonsky-Keer CG inside a Dugdale-zone fixed point), warm-started;
 //! * [`path`]: displacement-controlled loading and unloading, the work of the
@@ -52,7 +53,8 @@ pub mod grid;
 pub mod map;
 pub mod path;
 pub mod profile;
+pub mod profile_file;
 pub mod run;
 pub mod transition;
 
-pub use error::{Result, SolverError};
+pub use error::{Result, SolverError, TableFault};

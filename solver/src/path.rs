@@ -12,6 +12,13 @@
 //! previous one, so the path follows a branch as a stiff testing machine would:
 //! snap-in and pull-off appear as jumps between neighbouring states.
 //!
+//! A third leg, **reloading**, starts again from the smallest contact the
+//! unloading leg held (its warm start, [`crate::contact::WarmStart`]) and
+//! raises the approach on the same lattice of approaches until a state is the
+//! loading leg's state at that approach, or the contact reaches `amax`. It
+//! visits what the loading leg jumped over at snap-in, where the closed cycle of
+//! [`crate::dissipation`] reloads from the end of unloading.
+//!
 //! # Load control
 //!
 //! [`load_controlled`] reads the path of a soft machine (prescribed load) off a
@@ -56,6 +63,12 @@ pub struct Cycle {
     pub loading: Vec<State>,
     /// States in unloading order.
     pub unloading: Vec<State>,
+    /// The reloading leg (see [`cycle`]): from the smallest contact the
+    /// unloading leg held, the approach rises again in the same steps until a
+    /// state is the loading leg's state at the same approach (the rest would
+    /// repeat loading) or the contact reaches `amax`. Empty when the unloading
+    /// leg held no contact.
+    pub reloading: Vec<State>,
     /// Approach step.
     pub step: f64,
     /// `oint Lbar dDelta` over the simulated stiff-machine cycle, from out of
@@ -115,13 +128,38 @@ pub fn cycle(solver: &mut ContactSolver, opts: CycleOptions, progress: &mut dyn 
     }
     let mut unloading = Vec::new();
     let top = loading.len() - 1;
+    // The warm start of the last unloading state in contact, and its index on
+    // the approach lattice `start + m step`.
+    let mut held: Option<(i64, crate::contact::WarmStart)> = None;
     for j in 1.. {
         let s = checked(solver, start + (top as f64 - j as f64) * step, grid.cells())?;
         let done = s.contact.is_empty() && s.zone.is_empty();
+        if s.abar > 0.0 {
+            held = Some((top as i64 - j as i64, solver.warm_start()));
+        }
         unloading.push(s);
         progress(k + j, total.max(k + j + 1));
         if done || j > LEG_STEP_FACTOR * opts.steps_per_leg {
             break;
+        }
+    }
+    // Reloading from the smallest contact held: the stiff machine's own
+    // stable branch back up. It visits the stretches of small contact that the
+    // loading leg jumped over at snap-in (the library's closed cycle reloads
+    // from the end of unloading, so its turning points can lie there); once it
+    // meets the loading leg's state at the same approach it would repeat it.
+    let mut reloading = Vec::new();
+    if let Some((m0, warm)) = held {
+        solver.resume(&warm);
+        for m in m0 + 1.. {
+            let s = checked(solver, start + m as f64 * step, grid.cells())?;
+            let rejoined = usize::try_from(m).ok().and_then(|m| loading.get(m)).is_some_and(|l| same_state(l, &s));
+            let done = rejoined || s.abar >= opts.amax || m > (top + LEG_STEP_FACTOR * opts.steps_per_leg) as i64;
+            reloading.push(s);
+            progress(k + unloading.len() + reloading.len(), total.max(k + unloading.len() + reloading.len() + 1));
+            if done {
+                break;
+            }
         }
     }
     let work = |states: &[State]| -> f64 {
@@ -136,7 +174,19 @@ pub fn cycle(solver: &mut ContactSolver, opts: CycleOptions, progress: &mut dyn 
     if !stiff_work.is_finite() {
         stiff_work = f64::NAN;
     }
-    Ok(Cycle { loading, unloading, step, stiff_work })
+    Ok(Cycle { loading, unloading, reloading, step, stiff_work })
+}
+
+/// Relative difference in `abar` and in the load within which two states
+/// solved at the same approach are the same equilibrium (both are converged to
+/// `tol = 1e-9` and the zone ends to `1e-8 delta_c`).
+const SAME_STATE: f64 = 1e-6;
+
+/// Whether `a` and `b` (solved at the same approach) are the same equilibrium.
+fn same_state(a: &State, b: &State) -> bool {
+    a.contact_intervals() == b.contact_intervals()
+        && (a.abar - b.abar).abs() <= SAME_STATE * a.abar.abs().max(1.0)
+        && (a.load - b.load).abs() <= SAME_STATE * a.load.abs().max(1.0)
 }
 
 /// Direction of the load under load control.

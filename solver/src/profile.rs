@@ -5,6 +5,7 @@ use std::f64::consts::PI;
 
 use crate::error::{finite, Result, SolverError};
 use crate::grid::Grid;
+use crate::profile_file::ProfileTable;
 
 /// The indenter's profile.
 #[derive(Debug, Clone, PartialEq)]
@@ -18,8 +19,19 @@ pub enum Profile {
         /// Wavelength `beta = zeta/l_h > 0`.
         beta: f64,
     },
+    /// The wave alone, `h(x) = alpha (1 - cos(2 pi x/beta))`: one period of a
+    /// sinusoidal surface (for the periodic domain).
+    Sinusoid {
+        /// Wave amplitude `alpha > 0`.
+        alpha: f64,
+        /// Wavelength `beta > 0`.
+        beta: f64,
+    },
     /// Any profile, sampled at the cell centres of the grid it is used with.
     Sampled(Vec<f64>),
+    /// A profile table (`x,h` rows, [`crate::profile_file`]), interpolated by
+    /// cubic Hermite pieces; it must cover the grid's domain.
+    Table(ProfileTable),
 }
 
 impl Profile {
@@ -36,13 +48,23 @@ impl Profile {
         Ok(Profile::WavyCylinder { alpha, beta })
     }
 
-    /// The depth at every cell centre of `grid`.
+    /// The sinusoid, checked (`alpha > 0`: a flat surface has no contact to
+    /// follow).
+    pub fn sinusoid(alpha: f64, beta: f64) -> Result<Profile> {
+        match Profile::wavy_cylinder(alpha, beta)? {
+            _ if alpha == 0.0 => Err(SolverError::Domain { what: "the sinusoid needs alpha > 0".into() }),
+            _ => Ok(Profile::Sinusoid { alpha, beta }),
+        }
+    }
+
     /// The depth at any `x` of the grid's domain: exact for the wavy cylinder,
     /// linear between the cell centres for a sampled profile (`samples` is
     /// [`Profile::sample`] on the same grid).
     pub fn depth_at(&self, x: f64, grid: &Grid, samples: &[f64]) -> f64 {
         match self {
             Profile::WavyCylinder { alpha, beta } => 0.5 * x * x + alpha * (1.0 - (2.0 * PI * x / beta).cos()),
+            Profile::Sinusoid { alpha, beta } => alpha * (1.0 - (2.0 * PI * x / beta).cos()),
+            Profile::Table(t) => t.depth_at(x),
             Profile::Sampled(_) => {
                 let n = samples.len();
                 let u = ((x - grid.x(0)) / grid.dx()).clamp(0.0, (n - 1) as f64);
@@ -53,6 +75,9 @@ impl Profile {
         }
     }
 
+    /// The depth at every cell centre of `grid`. Errors: a sampled profile
+    /// of another length or with a non-finite value, a table that does not
+    /// cover the grid's domain.
     pub fn sample(&self, grid: &Grid) -> Result<Vec<f64>> {
         match self {
             Profile::WavyCylinder { alpha, beta } => Ok(grid
@@ -70,6 +95,11 @@ impl Profile {
                     finite(v, "every profile value")?;
                 }
                 Ok(h.clone())
+            }
+            Profile::Sinusoid { .. } => Ok(grid.centres().into_iter().map(|x| self.depth_at(x, grid, &[])).collect()),
+            Profile::Table(t) => {
+                t.check_covers(grid.half_width())?;
+                Ok(grid.centres().into_iter().map(|x| t.depth_at(x)).collect())
             }
         }
     }

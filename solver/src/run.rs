@@ -19,6 +19,7 @@ use crate::path::{
     compare_with_model, cycle, load_controlled, suggested_half_width, Cycle, CycleOptions, LoadControlled, LoadDirection, ModelComparison,
 };
 use crate::profile::{Adhesion, Profile};
+use crate::profile_file::ProfileTable;
 
 /// What to simulate.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -37,11 +38,55 @@ pub struct SimulationSpec {
     pub steps_per_leg: usize,
 }
 
+/// The elastic domain.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[non_exhaustive]
+pub enum Domain {
+    /// A free half-plane (the default): the contact of one indenter.
+    #[default]
+    Free,
+    /// A periodic half-plane of period `2X` ([`crate::elastic`]): one period
+    /// of a periodic surface, its images included. The built-in profile is
+    /// then the wave alone, `h = alpha (1 - cos(2 pi x/beta))` on one period
+    /// `[-beta/2, beta/2]`.
+    Periodic,
+}
+
+impl Domain {
+    /// `"free"` or `"periodic"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Domain::Free => "free",
+            Domain::Periodic => "periodic",
+        }
+    }
+}
+
+/// The options of a simulation beyond [`SimulationSpec`]; the default is the
+/// built-in wavy cylinder on a free half-plane, domain sized by
+/// [`suggested_half_width`].
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct SimulationOptions {
+    /// A profile table ([`crate::profile_file`]) in place of the built-in
+    /// profile. `alpha` and `beta` of the spec then only name the
+    /// semi-analytical model the states are compared with and that sizes the
+    /// domain.
+    pub profile: Option<ProfileTable>,
+    /// The domain half-width `X` (`None`: [`suggested_half_width`] for the
+    /// free domain; for the periodic domain `beta/2`, or with a table the
+    /// largest `X` it covers).
+    pub half_width: Option<f64>,
+    /// Free or periodic.
+    pub domain: Domain,
+}
+
 /// A simulated cycle with its setup and the model at the same half-widths.
 #[derive(Debug, Clone)]
 pub struct Simulation {
     /// The parameters.
     pub spec: SimulationSpec,
+    /// The options.
+    pub options: SimulationOptions,
     /// Half-width `X` of the domain `[-X, X]`.
     pub half_width: f64,
     /// The datum of the approach (see [`ContactSolver::datum`]).
@@ -52,13 +97,19 @@ pub struct Simulation {
     pub model_loading: Vec<ModelComparison>,
     /// The model at the unloading states' half-widths.
     pub model_unloading: Vec<ModelComparison>,
+    /// The model at the reloading states' half-widths.
+    pub model_reloading: Vec<ModelComparison>,
 }
 
 impl Simulation {
-    /// The model comparison of `state` (of leg `unloading` or not), when the
-    /// model has a state at its half-width.
-    pub fn model_at(&self, state: &State, unloading: bool) -> Option<&ModelComparison> {
-        let list = if unloading { &self.model_unloading } else { &self.model_loading };
+    /// The model comparison of `state` of leg `leg` (0 loading, 1 unloading,
+    /// 2 reloading), when the model has a state at its half-width.
+    pub fn model_at(&self, state: &State, leg: usize) -> Option<&ModelComparison> {
+        let list = match leg {
+            0 => &self.model_loading,
+            1 => &self.model_unloading,
+            _ => &self.model_reloading,
+        };
         list.iter().find(|r| r.abar == state.abar && state.abar > 0.0)
     }
 
@@ -87,14 +138,16 @@ impl Simulation {
     /// prints and the Python package returns.
     pub fn report(&self) -> SimulationReport {
         let (lc_loading, lc_unloading) = self.load_controlled();
+        let c = &self.cycle;
         let on_path = [
-            (0..self.cycle.loading.len()).map(|i| lc_loading.states.contains(&i)).collect::<Vec<bool>>(),
-            (0..self.cycle.unloading.len()).map(|i| lc_unloading.states.contains(&(i + 1))).collect::<Vec<bool>>(),
+            (0..c.loading.len()).map(|i| lc_loading.states.contains(&i)).collect::<Vec<bool>>(),
+            (0..c.unloading.len()).map(|i| lc_unloading.states.contains(&(i + 1))).collect::<Vec<bool>>(),
+            vec![false; c.reloading.len()],
         ];
-        let mut states = Vec::with_capacity(self.cycle.loading.len() + self.cycle.unloading.len());
-        for (unloading, leg, list) in [(false, "loading", &self.cycle.loading), (true, "unloading", &self.cycle.unloading)] {
+        let mut states = Vec::with_capacity(c.loading.len() + c.unloading.len() + c.reloading.len());
+        for (k, (leg, list)) in [("loading", &c.loading), ("unloading", &c.unloading), ("reloading", &c.reloading)].into_iter().enumerate() {
             for (i, s) in list.iter().enumerate() {
-                let m = self.model_at(s, unloading);
+                let m = self.model_at(s, k);
                 states.push(StateRecord {
                     leg,
                     approach: s.approach,
@@ -104,12 +157,18 @@ impl Simulation {
                     zone_cells: s.zone_cells,
                     model_load: m.map(|r| r.model_load),
                     model_valid: m.map(|r| r.model_valid),
-                    load_controlled: on_path[usize::from(unloading)][i],
+                    load_controlled: on_path[k][i],
                     zone_ends_placed: s.zone_ends_placed,
                 });
             }
         }
         SimulationReport {
+            domain: self.options.domain.name(),
+            profile: match (&self.options.profile, self.options.domain) {
+                (Some(_), _) => "table",
+                (None, Domain::Free) => "wavy_cylinder",
+                (None, Domain::Periodic) => "sinusoid",
+            },
             lambda: self.spec.lambda,
             alpha: self.spec.alpha,
             beta: self.spec.beta,
@@ -135,7 +194,8 @@ impl Simulation {
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct StateRecord {
-    /// `"loading"` or `"unloading"`.
+    /// `"loading"`, `"unloading"` or `"reloading"` (the leg from the smallest
+    /// contact the unloading leg held back up, [`Cycle::reloading`]).
     pub leg: &'static str,
     /// The approach `Delta-bar` (from the solver's datum).
     pub approach: f64,
@@ -154,7 +214,7 @@ pub struct StateRecord {
     /// Whether the state is on the load-controlled path of its leg
     /// ([`crate::path::load_controlled`]): a soft machine (prescribed load)
     /// visits it; between two such states of a leg with others in between, it
-    /// jumps.
+    /// jumps. Always `false` on the reloading leg.
     pub load_controlled: bool,
     /// Whether the Dugdale-zone ends were placed inside their cells
     /// ([`crate::contact::State::zone_ends_placed`]); `false`: the zone ends on
@@ -186,6 +246,11 @@ pub struct DissipationRecord {
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct SimulationReport {
+    /// `"free"` or `"periodic"` ([`Domain`]).
+    pub domain: &'static str,
+    /// `"wavy_cylinder"` (the built-in profile), `"sinusoid"` (the built-in
+    /// profile of the periodic domain) or `"table"` (a profile table).
+    pub profile: &'static str,
     /// Maugis parameter.
     pub lambda: f64,
     /// Wave amplitude.
@@ -207,28 +272,53 @@ pub struct SimulationReport {
     /// The pull-off load under load control (the most tensile load of the
     /// unloading leg), if the unloading leg carries tension.
     pub pull_off: Option<f64>,
-    /// The states, loading then unloading.
+    /// The states, loading, unloading, then reloading.
     pub states: Vec<StateRecord>,
 }
 
-/// Runs the simulation; `progress(done, estimated_total)` is called after every state.
+/// Runs the simulation of the built-in wavy cylinder on a free half-plane;
+/// `progress(done, estimated_total)` is called after every state.
 pub fn simulate(spec: SimulationSpec, progress: &mut dyn FnMut(usize, usize)) -> Result<Simulation> {
+    simulate_with(spec, SimulationOptions::default(), progress)
+}
+
+/// Runs the simulation with `options` (a profile table, the domain).
+pub fn simulate_with(spec: SimulationSpec, options: SimulationOptions, progress: &mut dyn FnMut(usize, usize)) -> Result<Simulation> {
     if !(2..=100_000).contains(&spec.steps_per_leg) {
         return Err(SolverError::Domain { what: format!("steps per leg must lie in [2, 100000] (got {})", spec.steps_per_leg) });
     }
     let params = Params::new(spec.lambda, spec.alpha, spec.beta)?;
-    let half_width = suggested_half_width(params, spec.amax)?;
+    let half_width = match (options.half_width, options.domain, &options.profile) {
+        (Some(x), _, _) => crate::error::finite(x, "the domain half-width")?,
+        (None, Domain::Free, _) => suggested_half_width(params, spec.amax)?,
+        (None, Domain::Periodic, None) => 0.5 * spec.beta,
+        (None, Domain::Periodic, Some(t)) => (-t.x()[0]).min(t.x()[t.x().len() - 1]),
+    };
     let grid = Grid::new(spec.cells, half_width)?;
-    let profile = Profile::wavy_cylinder(spec.alpha, spec.beta)?;
+    let profile = match (&options.profile, options.domain) {
+        (Some(t), _) => Profile::Table(t.clone()),
+        (None, Domain::Free) => Profile::wavy_cylinder(spec.alpha, spec.beta)?,
+        (None, Domain::Periodic) => Profile::sinusoid(spec.alpha, spec.beta)?,
+    };
     let adhesion = Adhesion::dugdale(spec.lambda)?;
-    let mut solver = ContactSolver::new(grid, None, &profile, adhesion, SolveOptions::default())?;
+    let mut solver = match options.domain {
+        Domain::Free => ContactSolver::new(grid, None, &profile, adhesion, SolveOptions::default())?,
+        Domain::Periodic => ContactSolver::periodic(grid, None, &profile, adhesion, SolveOptions::default())?,
+    };
     let cycle = cycle(&mut solver, CycleOptions { amax: spec.amax, steps_per_leg: spec.steps_per_leg }, progress)?;
+    // The model is the wavy cylinder on a free half-plane.
+    let compare = |states: &[State]| match options.domain {
+        Domain::Free => compare_with_model(params, solver.datum(), states),
+        Domain::Periodic => Vec::new(),
+    };
     Ok(Simulation {
         spec,
         half_width,
         datum: solver.datum(),
-        model_loading: compare_with_model(params, solver.datum(), &cycle.loading),
-        model_unloading: compare_with_model(params, solver.datum(), &cycle.unloading),
+        model_loading: compare(&cycle.loading),
+        model_unloading: compare(&cycle.unloading),
+        model_reloading: compare(&cycle.reloading),
+        options,
         cycle,
     })
 }
