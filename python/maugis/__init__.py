@@ -37,11 +37,11 @@ from ._model import (
     curve,
     profile,
     run_summary,
-    simulate,
     state,
     sweep,
 )
 from ._integrate import integrate
+from ._simulate import simulate
 from ._special import bessel_j, du_wave, hyp1f2, hyp1f2_model_family, hyp2f1, meijer_g_k, meijer_g_k_family, u_wave
 
 __version__ = "0.1.0"

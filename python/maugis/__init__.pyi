@@ -1,4 +1,5 @@
 # Type stubs of the maugis package (editors complete the names from here).
+import os
 from typing import Any, Literal, Sequence, Tuple, Union, overload
 
 import mpmath
@@ -91,4 +92,15 @@ def curve(lam: Sequence[float], alpha: float = ..., beta: float = ..., *, amax: 
 def state(lam: ArrayLike, alpha: ArrayLike, beta: ArrayLike, abar: ArrayLike) -> Record: ...
 def profile(lam: float, alpha: float, beta: float, abar: float, *, x: ArrayLike | None = ..., points: int = ...) -> Record: ...
 def sweep(lambda_min: float, lambda_max: float, lambda_n: int, axis: Literal["alpha", "beta", "johnson"], min: float, max: float, n: int, fixed: float, *, amax: float = ..., points: int = ...) -> Record: ...
-def simulate(lam: float, alpha: float = ..., beta: float = ..., *, amax: float = ..., cells: int = ..., steps: int = ...) -> Record: ...
+def simulate(
+    lam: float,
+    alpha: float = ...,
+    beta: float = ...,
+    *,
+    amax: float = ...,
+    cells: int = ...,
+    steps: int = ...,
+    profile: str | os.PathLike[str] | tuple[ArrayLike, ArrayLike] | None = ...,
+    half_width: float | None = ...,
+    periodic: bool = ...,
+) -> Record: ...

@@ -226,31 +226,3 @@ def sweep(lambda_min, lambda_max, lambda_n, axis, min, max, n, fixed, *, amax=6.
         "points": _count("points", points),
     }
     return _convert(json.loads(_ext.sweep_json(json.dumps(grid))))
-
-
-def simulate(lam, alpha=FIG4C_ALPHA, beta=FIG4C_BETA, *, amax=4.0, cells=4096, steps=100):
-    """One loading-unloading cycle of the numerical Dugdale-Maugis solver
-    (``maugis-solver``; ``maugis simulate --format json``): the states the
-    semi-analytical model cannot describe (cavitated contacts) and a check of
-    the model where it holds.
-
-    ``cells`` is the grid (a power of two), ``steps`` the approach steps per
-    leg. Returns a :class:`Record` with ``lambda``, ``alpha``, ``beta``,
-    ``cells``, ``half_width``, ``datum``, ``stiff_cycle_work`` (``oint L dDelta``
-    of the simulated stiff-machine cycle, not the dissipation),
-    ``dissipation`` (``load_control``, ``displacement_control``, ``datum``, ...:
-    W of the closed in-contact cycle, as ``curve(...).dissipation``; ``None``
-    with fewer than two states in contact), ``pull_off`` (the most
-    tensile load under load control) and ``states``: a :class:`Table` with
-    ``leg``, ``approach``, ``abar``, ``load``, ``contact_intervals``,
-    ``zone_cells``, ``model_load`` and ``model_valid`` (``None`` where the model
-    has no state at that half-width), ``load_controlled`` (the state lies on
-    the path a load-controlled experiment follows) and ``zone_ends_placed``
-    (``False`` where the Dugdale zone ends on cell edges, with the grid-pinning
-    error).
-    """
-    lam, alpha, beta, amax = (
-        _real_scalar(n, v) for n, v in (("lam", lam), ("alpha", alpha), ("beta", beta), ("amax", amax))
-    )
-    text = _ext.simulate_json(lam, alpha, beta, amax, _count("cells", cells), _count("steps", steps))
-    return _convert(json.loads(text))

@@ -16,6 +16,8 @@
 //! * Every library [`maugis::Error`] becomes a Python `ValueError` carrying the
 //!   library's message and the arguments of the element that failed.
 
+mod simulate;
+
 use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -33,7 +35,6 @@ use maugis::ball::{eval_at_decimals, Decimal};
 use maugis::quad::certified::Options;
 use maugis::quad::expr::{integrate_expr, shortfall, significant_imaginary, DecaySpec, Expr, UpperLimit, WeightSpec};
 use maugis::rug::{Float, Integer, Rational};
-use maugis_solver::run::{simulate, SimulationSpec};
 use maugis::special::bessel_j::{bessel_j, bessel_j_ball_mp, bessel_j_bounded};
 use maugis::special::hyp1f2::{hyp1f2, hyp1f2_ball_mp, hyp1f2_bounded, hyp1f2_model_family_f64};
 use maugis::special::hyp2f1::{hyp2f1, hyp2f1_ball_mp, hyp2f1_bounded};
@@ -505,16 +506,6 @@ fn states_json(
     to_json(&pts)
 }
 
-/// One loading-unloading cycle of the numerical solver (`maugis simulate`):
-/// JSON text of the solver's `SimulationReport`.
-#[pyfunction]
-#[allow(clippy::too_many_arguments)]
-fn simulate_json(py: Python<'_>, lam: f64, alpha: f64, beta: f64, amax: f64, cells: usize, steps: usize) -> PyResult<String> {
-    let spec = SimulationSpec { lambda: lam, alpha, beta, amax, cells, steps_per_leg: steps };
-    let sim = py.detach(|| simulate(spec, &mut |_, _| ())).map_err(|e| PyValueError::new_err(e.to_string()))?;
-    to_json(&sim.report())
-}
-
 /// One state and its traction, displacement, gap and surface depth at `x`: the
 /// fields of `maugis profile --format json`, samples as columns.
 #[pyfunction]
@@ -585,7 +576,7 @@ fn _maugis(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(states_json, m)?)?;
     m.add_function(wrap_pyfunction!(sweep_json, m)?)?;
     m.add_function(wrap_pyfunction!(profile_dict, m)?)?;
-    m.add_function(wrap_pyfunction!(simulate_json, m)?)?;
+    simulate::register(m)?;
     m.add_function(wrap_pyfunction!(_native_loop_seconds, m)?)?;
     m.add("PARALLEL_MIN_LEN", PARALLEL_MIN_LEN)?;
     m.add("MAX_PREC", maugis::MAX_PREC)?;

@@ -1,0 +1,86 @@
+"""``maugis.simulate``: the numerical Dugdale-Maugis solver with every option of
+``maugis simulate`` (the binding is ``python/src/simulate.rs``; the solver
+logic lives in the ``maugis-solver`` crate)."""
+
+from __future__ import annotations
+
+import json
+import os
+
+import numpy as np
+
+from . import _maugis as _ext
+from ._model import FIG4C_ALPHA, FIG4C_BETA, _convert, _count, _real_scalar
+
+
+def simulate(
+    lam,
+    alpha=FIG4C_ALPHA,
+    beta=FIG4C_BETA,
+    *,
+    amax=4.0,
+    cells=4096,
+    steps=100,
+    profile=None,
+    half_width=None,
+    periodic=False,
+):
+    """One displacement-controlled cycle of the numerical Dugdale-Maugis solver
+    (``maugis-solver``; ``maugis simulate --format json``): loading to the
+    contact half-width ``amax``, unloading until the contact is gone, and
+    reloading from the smallest contact the unloading held. It reaches the
+    states the semi-analytical model cannot describe (cavitated contacts) and
+    checks the model where it holds.
+
+    ``cells`` is the grid (a power of two), ``steps`` the approach steps per
+    leg. The options of the command line:
+
+    * ``profile``: a profile table in place of the built-in wavy cylinder,
+      either the path of a CSV file (header ``x,h``, ``x`` strictly
+      increasing; ``--profile``) or a pair of arrays ``(x, h)``, in the
+      normalised units of the built-in profile and covering the domain.
+      ``alpha`` and ``beta`` then name the model the states are compared with
+      and that sizes the domain;
+    * ``half_width``: the domain half-width ``X`` (``--half-width``);
+    * ``periodic``: a periodic half-plane of period ``2X`` (``--periodic``);
+      the built-in profile is then the wave ``alpha (1 - cos(2 pi x/beta))``
+      on one period ``[-beta/2, beta/2]``, and no model is compared.
+
+    Returns a :class:`Record` with ``domain``, ``profile``, ``lambda``,
+    ``alpha``, ``beta``, ``cells``, ``half_width``, ``datum``,
+    ``stiff_cycle_work`` (``oint L dDelta`` of the simulated stiff-machine
+    cycle, not the dissipation), ``dissipation`` (``load_control``,
+    ``displacement_control``, ``datum``, ...: W of the closed in-contact cycle,
+    as ``curve(...).dissipation``; ``None`` with fewer than two states in
+    contact), ``pull_off`` (the most tensile load under load control) and
+    ``states``: a :class:`Table` with ``leg`` (``loading``, ``unloading``,
+    ``reloading``), ``approach``, ``abar``, ``load``, ``contact_intervals``,
+    ``zone_cells``, ``model_load`` and ``model_valid`` (``None`` where the model
+    has no state at that half-width), ``load_controlled`` and
+    ``zone_ends_placed``.
+
+    Bad input raises ``ValueError``; a bad profile table names its line.
+    """
+    lam, alpha, beta, amax = (
+        _real_scalar(n, v) for n, v in (("lam", lam), ("alpha", alpha), ("beta", beta), ("amax", amax))
+    )
+    path = columns = None
+    if profile is not None:
+        if isinstance(profile, (str, os.PathLike)):
+            path = os.fspath(profile)
+        else:
+            try:
+                x, h = profile
+            except (TypeError, ValueError):
+                raise TypeError("profile must be a CSV file's path or a pair of arrays (x, h)") from None
+            x, h = (np.asarray(v, dtype=np.float64).reshape(-1).tolist() for v in (x, h))
+            columns = (x, h)
+    if half_width is not None:
+        half_width = _real_scalar("half_width", half_width)
+    if not isinstance(periodic, (bool, np.bool_)):
+        raise TypeError(f"periodic must be True or False (got {periodic!r})")
+    text = _ext.simulate_json(
+        lam, alpha, beta, amax, _count("cells", cells), _count("steps", steps),
+        path, columns, half_width, bool(periodic),
+    )
+    return _convert(json.loads(text))
