@@ -28,17 +28,22 @@
 //! the running minimum of the controlled variable, a jump at each local minimum
 //! to the first smaller contact at the same level, the end of unloading at the
 //! first minimum without such a state; then reloading from that end up the
-//! running maximum. The turning points are the simulated states (the
-//! library refines them on the model) and jump targets are interpolated
-//! linearly between the two states that bracket the level. The loops and their
-//! areas are then computed by the library's own
-//! [`loops_and_dissipation`], so the integration is the model's.
+//! running maximum (one [`walk`] serves both). Each turning point is refined
+//! by the vertex of a parabola through it and the two states before it
+//! ([`refine_extremum`]), and jump targets are interpolated linearly between
+//! the two states that bracket the level. The loops and their areas are then
+//! computed by the library's own [`loops_and_dissipation`], so the
+//! integration is the model's.
 //!
 //! The stiff machine of the simulation (datum `L_d = 2X`) jumps over the
-//! stretches where `Delta` falls with `abar`, and the two legs jump over
-//! different stretches; the soft paths of W (load control, or a datum of 100
-//! `l_h`) jump over wider stretches, so the states they visit and their
-//! turning points lie on the visited stretches, within one approach step.
+//! stretches where `Delta` falls with `abar`, and the legs jump over
+//! different stretches. A turning point of the soft paths of W (load control,
+//! or a datum of 100 `l_h`) can lie on a stretch that both the loading and the
+//! unloading leg jump over: at alpha = 1/6, beta = 9/8, lambda >= 4 the load
+//! maximum of the small-contact branch, where the closed cycle's reloading
+//! turns, lies between the unloading leg's jump (abar 2.01 to 1.50) and the
+//! loading leg's snap-in. The reloading leg ([`Cycle::reloading`]) climbs that
+//! branch; without it W was 20-27 % low there.
 //!
 //! A state is *valid* when it has at most one contact interval; loops through
 //! cavitated states count in [`Dissipation::invalid`]. With cavitation, states
