@@ -70,7 +70,7 @@ impl ProfileTable {
                 row[k] = value;
             }
             if let Some(&previous) = x.last() {
-                if !(row[0] > previous) {
+                if row[0] <= previous {
                     return Err(fault(i, TableFault::NotIncreasing { x: row[0], previous }));
                 }
             }
@@ -97,7 +97,7 @@ impl ProfileTable {
                     return Err(fault(k, TableFault::NotFinite { column }));
                 }
             }
-            if k > 0 && !(x[k] > x[k - 1]) {
+            if k > 0 && x[k] <= x[k - 1] {
                 return Err(fault(k, TableFault::NotIncreasing { x: x[k], previous: x[k - 1] }));
             }
         }
