@@ -87,3 +87,28 @@ fn a_malformed_table_exits_2_naming_the_line() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn bad_domain_options_exit_2() {
+    let dir = scratch("opts");
+    let out_dir = dir.join("out");
+    for extra in [
+        vec!["--alpha", "0", "--beta", "4", "--periodic"],
+        vec!["--alpha", "0", "--beta", "1", "--half-width", "-1"],
+        vec!["--alpha", "0", "--beta", "1", "--half-width", "nan"],
+        vec!["--alpha", "0", "--beta", "1", "--half-width", "1"],
+        vec!["--alpha", "0", "--beta", "1", "--profile", "/nonexistent/table.csv"],
+    ] {
+        let out = maugis()
+            .args(["simulate", "--lambda", "1", "--amax", "2", "--grid", "512", "--steps", "10"])
+            .args(&extra)
+            .arg("--out")
+            .arg(&out_dir)
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2), "{extra:?}");
+        assert_eq!(String::from_utf8_lossy(&out.stderr).lines().count(), 1, "{extra:?}");
+        assert!(!out_dir.exists(), "{extra:?}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
