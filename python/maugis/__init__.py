@@ -23,6 +23,8 @@ The model (results carry the fields of the ``maugis`` command's JSON)::
     run_summary(lam, alpha, beta)   the JSON object of `maugis curve --format json`
     state(lam, alpha, beta, abar)   solved states (broadcasting)
     profile(lam, alpha, beta, abar) traction, displacement and gap at one state
+    simulate(lam, alpha, beta, ...) one cycle of the numerical solver (maugis simulate:
+                                    profile=, half_width=, periodic=)
 
 Bad input raises ``ValueError`` with the library's message. See docs/python.md.
 """
