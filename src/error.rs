@@ -52,6 +52,47 @@ pub enum Error {
     Expression(crate::quad::expr::ExprError),
     /// A certified integral that cannot be done as asked ([`crate::quad::certified`]).
     Integration(IntegrationError),
+    /// A function name that [`crate::registry`] does not know.
+    UnknownFunction {
+        /// The name given.
+        name: String,
+        /// The names it knows.
+        known: Vec<&'static str>,
+    },
+    /// A call through [`crate::registry`] with the wrong number of arguments.
+    Arity {
+        /// The function.
+        function: &'static str,
+        /// How many it takes.
+        expected: usize,
+        /// How many were given.
+        got: usize,
+    },
+    /// An integer given where a real is wanted, or the reverse.
+    ArgumentKind {
+        /// The function.
+        function: &'static str,
+        /// The parameter.
+        arg: &'static str,
+        /// What it takes.
+        expected: ParamKind,
+    },
+    /// An integer argument outside `min ..= max`.
+    IntegerOutOfRange {
+        /// The parameter.
+        arg: &'static str,
+        /// The value given.
+        value: i64,
+        /// The smallest allowed.
+        min: i64,
+        /// The largest allowed.
+        max: i64,
+    },
+    /// The function has no f64 path with a proven bound (an estimating rule, a truncated series).
+    NoBoundedPath {
+        /// The function.
+        function: &'static str,
+    },
     /// An internal invariant failed. This is a bug; please report it.
     Internal {
         /// What failed.
@@ -81,12 +122,44 @@ impl fmt::Display for Error {
             Error::Overflow { what } => write!(f, "overflow in {what}: the result exceeds the exponent range"),
             Error::Expression(e) => write!(f, "{e}"),
             Error::Integration(e) => write!(f, "{e}"),
+            Error::UnknownFunction { name, known } => write!(f, "unknown function {name:?}; known: {}", known.join(", ")),
+            Error::Arity { function, expected, got } => {
+                write!(f, "{function} takes {expected} arguments, got {got}")
+            }
+            Error::ArgumentKind { function, arg, expected } => {
+                write!(f, "{function}: {arg} must be {}", expected.describe())
+            }
+            Error::IntegerOutOfRange { arg, value, min, max } => {
+                write!(f, "{arg} must be an integer in {min} ..= {max} (got {value})")
+            }
+            Error::NoBoundedPath { function } => {
+                write!(f, "{function} has no f64 path with a proven bound; use the certified (MP) path")
+            }
             Error::Internal { what } => write!(f, "internal error (please report): {what}"),
         }
     }
 }
 
 impl std::error::Error for Error {}
+
+/// What kind of value a parameter takes ([`crate::registry`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ParamKind {
+    /// An integer (an order, a number of terms).
+    Integer,
+    /// A real number.
+    Real,
+}
+
+impl ParamKind {
+    /// `"an integer"` or `"a real number"`.
+    pub fn describe(self) -> &'static str {
+        match self {
+            ParamKind::Integer => "an integer",
+            ParamKind::Real => "a real number",
+        }
+    }
+}
 
 /// What can go wrong in an integration, beyond the crate's common errors.
 #[derive(Debug, Clone, PartialEq)]

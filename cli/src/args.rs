@@ -16,19 +16,21 @@ use exmex::prelude::*;
 use exmex::{literal_matcher_from_pattern, FloatOpsFactory, MakeOperators, MatchLiteral, Operator};
 use maugis::contact::units::{Cohesion, Material, Physical, Scales};
 
-/// The paper's Fig. 4c amplitude `alpha = 2 sqrt(2)/8`.
-pub const FIG4C_ALPHA: f64 = std::f64::consts::SQRT_2 / 4.0;
+/// The paper's Fig. 4c amplitude `alpha = 2 sqrt(2)/8` ([`maugis::contact::paper::FIG_4C`]).
+pub const FIG4C_ALPHA: f64 = maugis::contact::paper::FIG_4C.alpha;
 /// The paper's Fig. 4c wavelength `beta = 9/8`.
-pub const FIG4C_BETA: f64 = 1.125;
+pub const FIG4C_BETA: f64 = maugis::contact::paper::FIG_4C.beta;
 /// Upper bound on `--points` (keeps a typo from running for hours).
 pub const MAX_POINTS: usize = 1_000_000;
 
-/// Largest contact half-width `abar` / `amax` accepted (the solver's cost grows
-/// linearly with it; the paper's range is `abar <= 6`).
-pub const MAX_ABAR: f64 = 1.0e4;
-/// Largest wave argument `2 pi abar/beta` accepted when `alpha > 0` (the wave
-/// term's Bessel series needs about that many terms per state).
-pub const MAX_WAVE_ARG: f64 = 1.0e5;
+/// Largest contact half-width `abar` / `amax` accepted: the library's
+/// [`maugis::contact::model::ABAR_MAX`] (the cost grows linearly with it; the
+/// paper's range is `abar <= 6`).
+pub const MAX_ABAR: f64 = maugis::contact::model::ABAR_MAX;
+/// Largest wave argument `2 pi abar/beta` accepted when `alpha > 0`: the
+/// library's [`maugis::contact::displacement::MAX_WAVE_D`] (the wave term's
+/// Bessel series needs about that many terms per state).
+pub const MAX_WAVE_ARG: f64 = maugis::contact::displacement::MAX_WAVE_D;
 
 /// Checks the size of the problem before any work: `abar <= MAX_ABAR`
 /// and, with waviness, `2 pi abar/beta <= MAX_WAVE_ARG`. `flag` names the option.
