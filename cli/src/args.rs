@@ -50,19 +50,17 @@ pub fn check_size(flag: &str, abar: f64, alpha: f64, beta: f64) -> Result<(), St
     Ok(())
 }
 
-/// Checks the model parameters against the library's ranges, naming the flag.
+/// Checks the model parameters with the library's own check
+/// ([`maugis::contact::model::Params::new`]), naming the flag.
 pub fn check_params(lambdas: &[f64], alpha: f64, beta: f64) -> Result<(), String> {
-    use maugis::contact::model::{ALPHA_MAX, BETA_RANGE, LAMBDA_RANGE};
+    use maugis::contact::model::Params;
+    // alpha and beta are checked even when no lambda is given (at lambda = 1)
+    let lambdas = if lambdas.is_empty() { &[1.0][..] } else { lambdas };
     for &l in lambdas {
-        if !(LAMBDA_RANGE.0..=LAMBDA_RANGE.1).contains(&l) {
-            return Err(format!("--lambda must lie in [{}, {}] (got {})", num(LAMBDA_RANGE.0), num(LAMBDA_RANGE.1), num(l)));
-        }
-    }
-    if !(0.0..=ALPHA_MAX).contains(&alpha) {
-        return Err(format!("--alpha must lie in [0, {}] (got {})", num(ALPHA_MAX), num(alpha)));
-    }
-    if !(BETA_RANGE.0..=BETA_RANGE.1).contains(&beta) {
-        return Err(format!("--beta must lie in [{}, {}] (got {})", num(BETA_RANGE.0), num(BETA_RANGE.1), num(beta)));
+        Params::new(l, alpha, beta).map_err(|e| match e {
+            maugis::Error::OutOfRange { arg, value, allowed } => format!("--{arg} must lie in {allowed} (got {})", num(value)),
+            other => other.to_string(),
+        })?;
     }
     Ok(())
 }

@@ -23,7 +23,7 @@ use rayon::prelude::*;
 use crate::contact::model::{brent, ContactSize, Params, Validity};
 pub use crate::contact::paths::{HysteresisLoop, Jump, JumpDirection};
 use crate::contact::paths::{control_paths, ControlPaths, Driver, PathNode};
-use crate::error::{Error, Result};
+use crate::error::{Error, Interval, Result};
 
 /// One solved state.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -159,11 +159,13 @@ fn load_slope(params: Params, abar: f64) -> Result<f64> {
 
 /// Solves the model on the grid and analyses stability.
 pub fn load_area_curve(params: Params, opts: CurveOptions) -> Result<Curve> {
-    if !(opts.amax.is_finite() && opts.amax > 0.0) {
-        return Err(Error::Domain { what: format!("amax must be > 0 (got {})", opts.amax) });
+    Interval::above(0.0).check("amax", opts.amax)?;
+    if !opts.amax.is_finite() {
+        return Err(Error::NonFinite { what: "amax" });
     }
     if opts.points < 2 {
-        return Err(Error::Domain { what: format!("points must be >= 2 (got {})", opts.points) });
+        let value = i64::try_from(opts.points).unwrap_or(i64::MAX);
+        return Err(Error::IntegerOutOfRange { arg: "points", value, min: 2, max: i64::MAX });
     }
     let n = opts.points;
     #[cfg(feature = "parallel")]
