@@ -68,6 +68,14 @@ pub enum Error {
         /// The largest strip width `c - a` (or `c`) searched.
         limit: f64,
     },
+    /// A result of the model that is not a finite f64 (the parameters are too
+    /// extreme for f64 arithmetic).
+    NotRepresentable {
+        /// The quantity (`"load"`, `"approach"`).
+        quantity: &'static str,
+        /// The contact half-width `abar` at which it arose.
+        abar: f64,
+    },
     /// A regime-map grid or shard that cannot be run or merged ([`crate::contact::sweep`]).
     Sweep(SweepError),
     /// A function name that [`crate::registry`] does not know.
@@ -141,6 +149,10 @@ impl fmt::Display for Error {
             Error::Expression(e) => write!(f, "{e}"),
             Error::Integration(e) => write!(f, "{e}"),
             Error::Sweep(e) => write!(f, "{e}"),
+            Error::NotRepresentable { quantity, abar } => write!(
+                f,
+                "the {quantity} at abar = {abar:e} is not a finite f64: the parameters are too extreme for the f64 model (use the MP path)"
+            ),
             Error::NoStripEnd { model, limit } => {
                 write!(f, "no end of the adhesive strip ({model}) within {limit:e}: the parameters are too extreme")
             }

@@ -139,16 +139,25 @@ pub fn state(params: Params, abar: f64) -> Result<CurvePoint> {
         abar,
         m: strip.m(),
         m_minus_1: strip.m_minus_1(),
-        load: cs.load_at(strip),
-        approach: cs.approach_at(strip),
+        load: representable("load", abar, cs.load_at(strip))?,
+        approach: representable("approach", abar, cs.approach_at(strip))?,
         validity: cs.validity_at(strip)?,
     })
+}
+
+/// `value`, or [`Error::NotRepresentable`] when it is not finite.
+fn representable(quantity: &'static str, abar: f64, value: f64) -> Result<f64> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(Error::NotRepresentable { quantity, abar })
+    }
 }
 
 /// The load at `abar` (solving for `m`).
 pub fn load_at(params: Params, abar: f64) -> Result<f64> {
     let cs = ContactSize::new(params, abar)?;
-    Ok(cs.load_at(cs.solve_strip()?))
+    representable("load", abar, cs.load_at(cs.solve_strip()?))
 }
 
 /// `dLbar/dabar` by a central difference of solved loads.

@@ -401,7 +401,12 @@ impl ContactSize {
 
     /// Eq. 14 at the strip end `m` (`m > 1`).
     pub fn load(&self, m: f64) -> Result<f64> {
-        Ok(self.load_at(check_m(m)?))
+        let load = self.load_at(check_m(m)?);
+        if load.is_finite() {
+            Ok(load)
+        } else {
+            Err(Error::NotRepresentable { quantity: "load", abar: self.abar })
+        }
     }
 
     /// Eq. 14: `pi abar^2/4 - 2 lambda abar sqrt(m^2-1) + (pi^2 alpha abar/beta) J1(2 pi abar/beta)`.
