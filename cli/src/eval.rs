@@ -458,3 +458,57 @@ pub fn run() -> i32 {
     }
     0
 }
+
+#[cfg(test)]
+mod fuzz {
+    //! The `eval` line parser on fuzzed input (issue 26, item 5): random JSON
+    //! objects over the registry's names and argument names, with numbers, decimal
+    //! strings, objects and junk as values, and raw bytes. `handle_line` catches a
+    //! panic and answers "internal error"; the test fails on that answer.
+
+    use super::*;
+    use bolero::check;
+
+    const NAMES: [&str; 6] = ["integrate", "nope", "", "bessel_j ", "BESSEL_J", "load"];
+    const VALUES: [&str; 16] = [
+        "1", "-1", "2.5", "\"2.5\"", "\"0.001\"", "1e400", "-0", "\"nan\"", "null", "{}", "[1]", "true", "\"x\"",
+        "9223372036854775808", "\"sqrt(x)\"", "{\"alpha\": -0.5, \"log\": 9}",
+    ];
+    const PRECS: [&str; 7] = ["0", "1", "53", "65537", "-5", "\"64\"", "4294967296"];
+
+    fn assert_answered(line: &str) {
+        let resp = handle_line(line);
+        let text = resp.to_string();
+        assert!(!text.contains("internal error"), "{line} -> {text}");
+        assert!(resp.get("error").is_some() || resp.get("f64").is_some() || resp.get("mid").is_some(), "{line} -> {text}");
+    }
+
+    #[test]
+    fn structured_requests() {
+        check!().with_type::<(u8, Vec<(u8, u8)>, Option<u8>)>().for_each(|(f, args, prec)| {
+            let all: Vec<&str> = registry::names().chain(NAMES).collect();
+            let name = all[*f as usize % all.len()];
+            let params: Vec<&str> = registry::function(name)
+                .map(|g| g.param_names().collect())
+                .unwrap_or_else(|_| vec!["f", "a", "b", "x", "weight", "decay"]);
+            let mut fields = vec![format!("\"fn\": \"{name}\"")];
+            for (k, v) in args.iter().take(6) {
+                let key = params.get(*k as usize % (params.len() + 1)).copied().unwrap_or("junk");
+                fields.push(format!("\"{key}\": {}", VALUES[*v as usize % VALUES.len()]));
+            }
+            if let Some(p) = prec {
+                fields.push(format!("\"prec\": {}", PRECS[*p as usize % PRECS.len()]));
+            }
+            assert_answered(&format!("{{{}}}", fields.join(", ")));
+        });
+    }
+
+    #[test]
+    fn raw_lines() {
+        check!().for_each(|bytes| {
+            let line = String::from_utf8_lossy(bytes);
+            let resp = handle_line(&line);
+            assert!(!resp.to_string().contains("internal error"), "{line:?}");
+        });
+    }
+}
