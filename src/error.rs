@@ -52,6 +52,73 @@ pub enum Error {
     Expression(crate::quad::expr::ExprError),
     /// A certified integral that cannot be done as asked ([`crate::quad::certified`]).
     Integration(IntegrationError),
+    /// A real argument outside its allowed interval (NaN included).
+    OutOfRange {
+        /// The argument.
+        arg: &'static str,
+        /// The value given.
+        value: f64,
+        /// The values allowed.
+        allowed: Interval,
+    },
+    /// The adhesive strip's end was not found within the range searched.
+    NoStripEnd {
+        /// Which model (e.g. `"Eq. 15b"`, `"M-DMT, E.43b"`).
+        model: &'static str,
+        /// The largest strip width `c - a` (or `c`) searched.
+        limit: f64,
+    },
+    /// A result of the model that is not a finite f64 (the parameters are too
+    /// extreme for f64 arithmetic).
+    NotRepresentable {
+        /// The quantity (`"load"`, `"approach"`).
+        quantity: &'static str,
+        /// The contact half-width `abar` at which it arose.
+        abar: f64,
+    },
+    /// A regime-map grid or shard that cannot be run or merged ([`crate::contact::sweep`]).
+    Sweep(SweepError),
+    /// A function name that [`crate::registry`] does not know.
+    UnknownFunction {
+        /// The name given.
+        name: String,
+        /// The names it knows.
+        known: Vec<&'static str>,
+    },
+    /// A call through [`crate::registry`] with the wrong number of arguments.
+    Arity {
+        /// The function.
+        function: &'static str,
+        /// How many it takes.
+        expected: usize,
+        /// How many were given.
+        got: usize,
+    },
+    /// An integer given where a real is wanted, or the reverse.
+    ArgumentKind {
+        /// The function.
+        function: &'static str,
+        /// The parameter.
+        arg: &'static str,
+        /// What it takes.
+        expected: ParamKind,
+    },
+    /// An integer argument outside `min ..= max`.
+    IntegerOutOfRange {
+        /// The parameter.
+        arg: &'static str,
+        /// The value given.
+        value: i64,
+        /// The smallest allowed.
+        min: i64,
+        /// The largest allowed.
+        max: i64,
+    },
+    /// The function has no f64 path with a proven bound (an estimating rule, a truncated series).
+    NoBoundedPath {
+        /// The function.
+        function: &'static str,
+    },
     /// An internal invariant failed. This is a bug; please report it.
     Internal {
         /// What failed.
@@ -81,12 +148,208 @@ impl fmt::Display for Error {
             Error::Overflow { what } => write!(f, "overflow in {what}: the result exceeds the exponent range"),
             Error::Expression(e) => write!(f, "{e}"),
             Error::Integration(e) => write!(f, "{e}"),
+            Error::Sweep(e) => write!(f, "{e}"),
+            Error::NotRepresentable { quantity, abar } => write!(
+                f,
+                "the {quantity} at abar = {abar:e} is not a finite f64: the parameters are too extreme for the f64 model (use the MP path)"
+            ),
+            Error::NoStripEnd { model, limit } => {
+                write!(f, "no end of the adhesive strip ({model}) within {limit:e}: the parameters are too extreme")
+            }
+            Error::OutOfRange { arg, value, allowed } => write!(f, "{arg} must lie in {allowed} (got {value:?})"),
+            Error::UnknownFunction { name, known } => write!(f, "unknown function {name:?}; known: {}", known.join(", ")),
+            Error::Arity { function, expected, got } => {
+                write!(f, "{function} takes {expected} arguments, got {got}")
+            }
+            Error::ArgumentKind { function, arg, expected } => {
+                write!(f, "{function}: {arg} must be {}", expected.describe())
+            }
+            Error::IntegerOutOfRange { arg, value, min, max } => {
+                if *max == i64::MAX {
+                    write!(f, "{arg} must be an integer >= {min} (got {value})")
+                } else {
+                    write!(f, "{arg} must be an integer in {min} ..= {max} (got {value})")
+                }
+            }
+            Error::NoBoundedPath { function } => {
+                write!(f, "{function} has no f64 path with a proven bound; use the certified (MP) path")
+            }
             Error::Internal { what } => write!(f, "internal error (please report): {what}"),
         }
     }
 }
 
 impl std::error::Error for Error {}
+
+/// What can be wrong with a regime-map grid, a shard, or a set of shards to merge.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum SweepError {
+    /// The lambda range is not `0 < min <= max`.
+    LambdaRange {
+        /// Its lower end.
+        min: f64,
+        /// Its upper end.
+        max: f64,
+    },
+    /// An axis has no values.
+    EmptyAxis,
+    /// The second axis has `max < min`.
+    AxisOrder {
+        /// Its lower end.
+        min: f64,
+        /// Its upper end.
+        max: f64,
+    },
+    /// The second axis starts below its smallest allowed value.
+    AxisStart {
+        /// The axis (`"alpha"`, `"beta"` or `"johnson"`).
+        axis: &'static str,
+        /// Its lower end.
+        min: f64,
+        /// Whether 0 itself is allowed (`alpha`) or not.
+        zero_allowed: bool,
+    },
+    /// A shard that is not `s/n` with `1 <= s <= n`.
+    Shard {
+        /// The shard's number.
+        s: usize,
+        /// The number of shards.
+        n: usize,
+    },
+    /// Nothing was given to merge.
+    NothingToMerge,
+    /// The shards were computed on different grids.
+    DifferentGrids,
+    /// A grid point appears in two shards.
+    DuplicatePoint {
+        /// The point's index.
+        index: usize,
+    },
+    /// A point's index lies outside the grid.
+    PointOutsideGrid {
+        /// The point's index.
+        index: usize,
+    },
+    /// Points of the grid are missing from the shards.
+    MissingPoints {
+        /// How many are missing.
+        missing: usize,
+        /// How many the grid has.
+        total: usize,
+    },
+}
+
+impl fmt::Display for SweepError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            SweepError::LambdaRange { min, max } => {
+                write!(f, "the lambda range must satisfy 0 < min <= max (got {min} .. {max})")
+            }
+            SweepError::EmptyAxis => write!(f, "sweep grids need at least one value per axis"),
+            SweepError::AxisOrder { min, max } => write!(f, "the second axis needs min <= max (got {min} .. {max})"),
+            SweepError::AxisStart { axis, min, zero_allowed } => {
+                write!(f, "the {axis} axis must be {} (got min = {min})", if *zero_allowed { ">= 0" } else { "> 0" })
+            }
+            SweepError::Shard { s, n } => write!(f, "shard must be s/n with 1 <= s <= n (got {s}/{n})"),
+            SweepError::NothingToMerge => write!(f, "nothing to merge"),
+            SweepError::DifferentGrids => write!(f, "the shards belong to different grids"),
+            SweepError::DuplicatePoint { index } => write!(f, "grid point {index} appears in two shards"),
+            SweepError::PointOutsideGrid { index } => write!(f, "grid point {index} lies outside the grid"),
+            SweepError::MissingPoints { missing, total } => {
+                write!(f, "{missing} of {total} grid points are missing: merge every shard")
+            }
+        }
+    }
+}
+
+/// An interval of allowed values: its ends and whether each belongs to it
+/// (an infinite end is always open).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Interval {
+    /// The lower end.
+    pub lo: f64,
+    /// The upper end.
+    pub hi: f64,
+    /// Whether `lo` is allowed.
+    pub lo_closed: bool,
+    /// Whether `hi` is allowed.
+    pub hi_closed: bool,
+}
+
+impl Interval {
+    /// `[lo, hi]`.
+    pub const fn closed(lo: f64, hi: f64) -> Interval {
+        Interval { lo, hi, lo_closed: true, hi_closed: true }
+    }
+
+    /// `(lo, hi]`.
+    pub const fn left_open(lo: f64, hi: f64) -> Interval {
+        Interval { lo, hi, lo_closed: false, hi_closed: true }
+    }
+
+    /// `(lo, +inf)`.
+    pub const fn above(lo: f64) -> Interval {
+        Interval { lo, hi: f64::INFINITY, lo_closed: false, hi_closed: false }
+    }
+
+    /// `[lo, +inf)`.
+    pub const fn at_least(lo: f64) -> Interval {
+        Interval { lo, hi: f64::INFINITY, lo_closed: true, hi_closed: false }
+    }
+
+    /// Whether `x` lies in the interval (never for NaN).
+    pub fn contains(&self, x: f64) -> bool {
+        let above_lo = if self.lo_closed { x >= self.lo } else { x > self.lo };
+        let below_hi = if self.hi_closed { x <= self.hi } else { x < self.hi };
+        above_lo && below_hi
+    }
+
+    /// `value` if it lies in the interval, else [`Error::OutOfRange`] naming `arg`.
+    pub fn check(&self, arg: &'static str, value: f64) -> Result<f64> {
+        if self.contains(value) {
+            Ok(value)
+        } else {
+            Err(Error::OutOfRange { arg, value, allowed: *self })
+        }
+    }
+}
+
+impl fmt::Display for Interval {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let end = |x: f64| {
+            if x.is_infinite() {
+                if x > 0.0 { "inf".to_string() } else { "-inf".to_string() }
+            } else if x != 0.0 && (x.abs() >= 1e5 || x.abs() < 1e-3) {
+                format!("{x:e}")
+            } else {
+                format!("{x}")
+            }
+        };
+        let open = if self.lo_closed { '[' } else { '(' };
+        let close = if self.hi_closed { ']' } else { ')' };
+        write!(f, "{open}{}, {}{close}", end(self.lo), end(self.hi))
+    }
+}
+
+/// What kind of value a parameter takes ([`crate::registry`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ParamKind {
+    /// An integer (an order, a number of terms).
+    Integer,
+    /// A real number.
+    Real,
+}
+
+impl ParamKind {
+    /// `"an integer"` or `"a real number"`.
+    pub fn describe(self) -> &'static str {
+        match self {
+            ParamKind::Integer => "an integer",
+            ParamKind::Real => "a real number",
+        }
+    }
+}
 
 /// What can go wrong in an integration, beyond the crate's common errors.
 #[derive(Debug, Clone, PartialEq)]

@@ -58,6 +58,7 @@ pub mod ball;
 pub mod contact;
 pub mod error;
 pub mod quad;
+pub mod registry;
 pub mod special;
 
 /// `rug` is in the public API (`Float` arguments, [`Ball`] midpoints); this is the

@@ -16,19 +16,21 @@ use exmex::prelude::*;
 use exmex::{literal_matcher_from_pattern, FloatOpsFactory, MakeOperators, MatchLiteral, Operator};
 use maugis::contact::units::{Cohesion, Material, Physical, Scales};
 
-/// The paper's Fig. 4c amplitude `alpha = 2 sqrt(2)/8`.
-pub const FIG4C_ALPHA: f64 = std::f64::consts::SQRT_2 / 4.0;
+/// The paper's Fig. 4c amplitude `alpha = 2 sqrt(2)/8` ([`maugis::contact::paper::FIG_4C`]).
+pub const FIG4C_ALPHA: f64 = maugis::contact::paper::FIG_4C.alpha;
 /// The paper's Fig. 4c wavelength `beta = 9/8`.
-pub const FIG4C_BETA: f64 = 1.125;
+pub const FIG4C_BETA: f64 = maugis::contact::paper::FIG_4C.beta;
 /// Upper bound on `--points` (keeps a typo from running for hours).
 pub const MAX_POINTS: usize = 1_000_000;
 
-/// Largest contact half-width `abar` / `amax` accepted (the solver's cost grows
-/// linearly with it; the paper's range is `abar <= 6`).
-pub const MAX_ABAR: f64 = 1.0e4;
-/// Largest wave argument `2 pi abar/beta` accepted when `alpha > 0` (the wave
-/// term's Bessel series needs about that many terms per state).
-pub const MAX_WAVE_ARG: f64 = 1.0e5;
+/// Largest contact half-width `abar` / `amax` accepted: the library's
+/// [`maugis::contact::model::ABAR_MAX`] (the cost grows linearly with it; the
+/// paper's range is `abar <= 6`).
+pub const MAX_ABAR: f64 = maugis::contact::model::ABAR_MAX;
+/// Largest wave argument `2 pi abar/beta` accepted when `alpha > 0`: the
+/// library's [`maugis::contact::displacement::MAX_WAVE_D`] (the wave term's
+/// Bessel series needs about that many terms per state).
+pub const MAX_WAVE_ARG: f64 = maugis::contact::displacement::MAX_WAVE_D;
 
 /// Checks the size of the problem before any work: `abar <= MAX_ABAR`
 /// and, with waviness, `2 pi abar/beta <= MAX_WAVE_ARG`. `flag` names the option.
@@ -48,19 +50,17 @@ pub fn check_size(flag: &str, abar: f64, alpha: f64, beta: f64) -> Result<(), St
     Ok(())
 }
 
-/// Checks the model parameters against the library's ranges, naming the flag.
+/// Checks the model parameters with the library's own check
+/// ([`maugis::contact::model::Params::new`]), naming the flag.
 pub fn check_params(lambdas: &[f64], alpha: f64, beta: f64) -> Result<(), String> {
-    use maugis::contact::model::{ALPHA_MAX, BETA_RANGE, LAMBDA_RANGE};
+    use maugis::contact::model::Params;
+    // alpha and beta are checked even when no lambda is given (at lambda = 1)
+    let lambdas = if lambdas.is_empty() { &[1.0][..] } else { lambdas };
     for &l in lambdas {
-        if !(LAMBDA_RANGE.0..=LAMBDA_RANGE.1).contains(&l) {
-            return Err(format!("--lambda must lie in [{}, {}] (got {})", num(LAMBDA_RANGE.0), num(LAMBDA_RANGE.1), num(l)));
-        }
-    }
-    if !(0.0..=ALPHA_MAX).contains(&alpha) {
-        return Err(format!("--alpha must lie in [0, {}] (got {})", num(ALPHA_MAX), num(alpha)));
-    }
-    if !(BETA_RANGE.0..=BETA_RANGE.1).contains(&beta) {
-        return Err(format!("--beta must lie in [{}, {}] (got {})", num(BETA_RANGE.0), num(BETA_RANGE.1), num(beta)));
+        Params::new(l, alpha, beta).map_err(|e| match e {
+            maugis::Error::OutOfRange { arg, value, allowed } => format!("--{arg} must lie in {allowed} (got {})", num(value)),
+            other => other.to_string(),
+        })?;
     }
     Ok(())
 }

@@ -42,7 +42,7 @@ use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
 use crate::plot::{arrow_head, clip_y, colour, finish_load_area_chart, plot_err, triangle_down, triangle_up, xy_chart, Legend, Mark, DARK_GREY, LEGEND_FONT, LIGHT_GREY};
 
 /// The Maugis parameters of the paper's Figs. 4 and 13 (default run).
-pub const DEFAULT_LAMBDAS: [f64; 7] = [0.1, 0.25, 0.5, 1.0, 1.5, 3.0, 6.0];
+pub const DEFAULT_LAMBDAS: [f64; 7] = maugis::contact::paper::MAIN_LAMBDAS;
 
 /// Output format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]

@@ -31,7 +31,7 @@
 //! * The other functions (`u_wave_series`, `u_wave_quad`, `u_hertz`,
 //!   `u_adhesive`) round each decimal to nearest at `max(prec, 53) + 64` bits
 //!   and certify (or, for the quadrature, estimate) the function at that binary
-//!   number (see `arg_float`).
+//!   number ([`maugis::registry::MpInputs::Rounded`]).
 //!
 //! * `integrate` takes the integrand as a string in x (`"f"`, the language of
 //!   [`maugis::quad::expr`]), the ends `"a"` and `"b"` as decimals (`"b": "inf"`
@@ -55,14 +55,11 @@
 
 use std::io::{BufRead, Write};
 
-use maugis::contact::model::{ContactSize, Params};
-use maugis::contact::{displacement, model_mp, wave_quadrature};
-use maugis::special::{bessel_j, hyp1f2, hyp2f1, meijer_g};
-use maugis::ball::{eval_at_decimals, Decimal};
+use maugis::ball::Decimal;
+use maugis::registry::{self, Answer, Arg, ParamKind};
 use maugis::quad::certified::Options;
 use maugis::quad::expr::{integrate_expr, shortfall, DecaySpec, Expr, UpperLimit, WeightSpec};
 use maugis::{Ball, Error, MAX_PREC};
-use rug::Float;
 use serde_json::{json, Map, Value};
 
 use crate::integrate::{ball_fields, digits_for};
@@ -144,25 +141,9 @@ impl From<Error> for BadRequest {
 
 type Req<T> = std::result::Result<T, BadRequest>;
 
-/// The functions `eval` knows, with their argument names.
-const FUNCTIONS: &[(&str, &[&str])] = &[
-    ("bessel_j", &["n", "x"]),
-    ("hyp1f2", &["a", "b1", "b2", "z"]),
-    ("hyp2f1", &["a", "b", "c", "z"]),
-    ("meijer_g_k", &["k", "y"]),
-    ("u_wave", &["a", "zeta", "amp", "x"]),
-    ("u_wave_series", &["a", "zeta", "amp", "x", "kmax"]),
-    ("du_wave", &["a", "zeta", "amp", "x"]),
-    ("u_wave_quad", &["a", "zeta", "amp", "x"]),
-    ("u_hertz", &["a", "r", "x"]),
-    ("u_adhesive", &["a", "c", "sigma", "e_star", "x"]),
-    ("strip_ratio", &MODEL_ARGS),
-    ("load", &MODEL_ARGS),
-    ("integrate", &["f", "a", "b", "weight", "decay"]),
-];
-
-/// The model's inputs (normalised, docs/model.md), for `strip_ratio` and `load`.
-const MODEL_ARGS: [&str; 4] = ["lambda", "alpha", "beta", "abar"];
+/// The request `integrate` and its fields: the one request that is not a
+/// function of the library's registry ([`maugis::registry`]).
+const INTEGRATE: (&str, &[&str]) = ("integrate", &["f", "a", "b", "weight", "decay"]);
 
 /// The argument as decimal text (JSON number text or string).
 fn arg_text<'a>(obj: &'a Map<String, Value>, name: &str) -> Req<String> {
@@ -193,22 +174,6 @@ fn arg_decimal(obj: &Map<String, Value>, name: &str) -> Req<Decimal> {
         let t = arg_text(obj, name)?;
         Decimal::parse(&t).map_err(|e| BadRequest(format!("argument \"{name}\": {e}")))
     })
-}
-
-/// The argument rounded to nearest at `max(prec, 53) + 64` bits (the legacy
-/// contract of functions not yet wired to ball inputs).
-fn arg_float(obj: &Map<String, Value>, name: &str, prec: u32) -> Req<Float> {
-    profile::timed(profile::ARGS, || arg_float_untimed(obj, name, prec))
-}
-
-fn arg_float_untimed(obj: &Map<String, Value>, name: &str, prec: u32) -> Req<Float> {
-    let t = arg_text(obj, name)?;
-    let parsed = Float::parse(&t).map_err(|_| BadRequest(format!("argument \"{name}\" = {t:?} is not a decimal number")))?;
-    let v = Float::with_val(prec.max(53) + 64, parsed);
-    if !v.is_finite() {
-        return Err(BadRequest(format!("argument \"{name}\" must be finite (got {t})")));
-    }
-    Ok(v)
 }
 
 fn arg_int(obj: &Map<String, Value>, name: &str) -> Req<i64> {
@@ -287,162 +252,66 @@ fn evaluate(obj: &Map<String, Value>) -> Req<Value> {
         Some(_) => return Err(BadRequest("\"fn\" must be a string".into())),
         None => return Err(BadRequest("missing \"fn\" (the function name)".into())),
     };
-    let Some((_, args)) = FUNCTIONS.iter().find(|(n, _)| *n == fname) else {
-        let names: Vec<&str> = FUNCTIONS.iter().map(|(n, _)| *n).collect();
-        return Err(BadRequest(format!("unknown fn \"{fname}\"; known: {}", names.join(", "))));
-    };
-    check_names(obj, fname, args)?;
+    if fname == INTEGRATE.0 {
+        check_names(obj, fname, INTEGRATE.1)?;
+        let prec = read_prec(obj)?;
+        return evaluate_integral(obj, &id, prec.unwrap_or(DEFAULT_INTEGRAL_PREC));
+    }
+    let function = registry::function(fname).map_err(|e| match e {
+        Error::UnknownFunction { name, known } => {
+            BadRequest(format!("unknown fn \"{name}\"; known: {}, {}", known.join(", "), INTEGRATE.0))
+        }
+        other => other.into(),
+    })?;
+    let names: Vec<&str> = function.param_names().collect();
+    check_names(obj, fname, &names)?;
     let prec = read_prec(obj)?;
-    let out = match (fname, prec) {
-        ("bessel_j", None) => f64_response(&id, bessel_j::bessel_j(arg_int(obj, "n")?, arg_f64(obj, "x")?)?),
-        ("bessel_j", Some(p)) => {
-            let n = arg_int(obj, "n")?;
-            let x = arg_decimal(obj, "x")?;
-            mp_response(&id, &eval_at_decimals(&[x], p, |b| bessel_j::bessel_j_ball_mp(n, &b[0], p))?, p)
-        }
-        ("hyp1f2", None) => f64_response(
-            &id,
-            hyp1f2::hyp1f2(arg_f64(obj, "a")?, arg_f64(obj, "b1")?, arg_f64(obj, "b2")?, arg_f64(obj, "z")?)?,
-        ),
-        ("hyp1f2", Some(p)) => {
-            let args = [arg_decimal(obj, "a")?, arg_decimal(obj, "b1")?, arg_decimal(obj, "b2")?, arg_decimal(obj, "z")?];
-            let b = eval_at_decimals(&args, p, |x| hyp1f2::hyp1f2_ball_mp(&x[0], &x[1], &x[2], &x[3], p))?;
-            mp_response(&id, &b, p)
-        }
-        ("hyp2f1", None) => f64_response(
-            &id,
-            hyp2f1::hyp2f1(arg_f64(obj, "a")?, arg_f64(obj, "b")?, arg_f64(obj, "c")?, arg_f64(obj, "z")?)?,
-        ),
-        ("hyp2f1", Some(p)) => {
-            let args = [arg_decimal(obj, "a")?, arg_decimal(obj, "b")?, arg_decimal(obj, "c")?, arg_decimal(obj, "z")?];
-            let b = eval_at_decimals(&args, p, |x| hyp2f1::hyp2f1_ball_mp(&x[0], &x[1], &x[2], &x[3], p))?;
-            mp_response(&id, &b, p)
-        }
-        ("meijer_g_k", None) => f64_response(&id, meijer_g::meijer_g_k(arg_u32(obj, "k")?, arg_f64(obj, "y")?)?),
-        ("meijer_g_k", Some(p)) => {
-            let k = arg_u32(obj, "k")?;
-            let y = arg_decimal(obj, "y")?;
-            mp_response(&id, &eval_at_decimals(&[y], p, |b| meijer_g::meijer_g_k_ball_mp(k, &b[0], p))?, p)
-        }
-        ("strip_ratio" | "load", _) => return evaluate_model(obj, fname, &id, prec),
-        ("integrate", _) => return evaluate_integral(obj, &id, prec.unwrap_or(DEFAULT_INTEGRAL_PREC)),
-        _ => return evaluate_contact(obj, fname, &id, prec),
-    };
-    Ok(out)
-}
-
-/// The four wave arguments, f64.
-fn wave_f64(obj: &Map<String, Value>) -> Req<(f64, f64, f64, f64)> {
-    Ok((arg_f64(obj, "a")?, arg_f64(obj, "zeta")?, arg_f64(obj, "amp")?, arg_f64(obj, "x")?))
-}
-
-/// The four wave arguments, MP.
-fn wave_mp(obj: &Map<String, Value>, p: u32) -> Req<(Float, Float, Float, Float)> {
-    Ok((arg_float(obj, "a", p)?, arg_float(obj, "zeta", p)?, arg_float(obj, "amp", p)?, arg_float(obj, "x", p)?))
-}
-
-/// `u_w` (or `du_w/dx` when `gradient`) on the ball contract
-/// ([`displacement::wave_at_decimals`]).
-fn wave_ball(obj: &Map<String, Value>, p: u32, gradient: bool) -> Req<Ball> {
-    let args = [arg_decimal(obj, "a")?, arg_decimal(obj, "zeta")?, arg_decimal(obj, "amp")?, arg_decimal(obj, "x")?];
-    Ok(displacement::wave_at_decimals(&args, p, gradient)?)
-}
-
-/// The contact-model functions (displacements).
-fn evaluate_contact(obj: &Map<String, Value>, fname: &str, id: &Value, prec: Option<u32>) -> Req<Value> {
-    let out = match (fname, prec) {
-        ("u_wave", None) => {
-            let (a, z, m, x) = wave_f64(obj)?;
-            f64_response(id, displacement::u_wave(a, z, m, x)?)
-        }
-        ("u_wave", Some(p)) => mp_response(id, &wave_ball(obj, p, false)?, p),
-        ("du_wave", None) => {
-            let (a, z, m, x) = wave_f64(obj)?;
-            f64_response(id, displacement::du_wave(a, z, m, x)?)
-        }
-        ("du_wave", Some(p)) => mp_response(id, &wave_ball(obj, p, true)?, p),
-        ("u_wave_series", _) => {
-            let kmax = arg_int(obj, "kmax")?;
-            let kmax = u64::try_from(kmax).map_err(|_| BadRequest(format!("\"kmax\" must be >= 0 (got {kmax})")))?;
-            match prec {
-                None => {
-                    let (a, z, m, x) = wave_f64(obj)?;
-                    let (v, trunc) = displacement::u_wave_series(a, z, m, x, kmax)?;
-                    json!({"id": id, "f64": v, "trunc": trunc})
-                }
-                Some(p) => {
-                    let (a, z, m, x) = wave_mp(obj, p)?;
-                    let r = displacement::u_wave_series_mp(&a, &z, &m, &x, kmax, p)?;
-                    let mut resp = mp_response(id, &r.full(), p);
-                    resp["trunc"] = Value::String(maugis::ball::decimal_upper(&r.trunc));
-                    resp
-                }
-            }
-        }
-        ("u_wave_quad", None) => {
-            let (a, z, m, x) = wave_f64(obj)?;
-            let q = wave_quadrature::u_wave_quad(a, z, m, x)?;
-            json!({"id": id, "f64": q.value, "error_estimate": q.error_estimate, "certified": false})
-        }
-        ("u_wave_quad", Some(p)) => {
-            let (a, z, m, x) = wave_mp(obj, p)?;
-            let q = wave_quadrature::u_wave_quad_mp(&a, &z, &m, &x, p)?;
-            json!({
-                "id": id,
-                "mid": q.value.to_string_radix(10, Some(digits_for(p))),
-                "error_estimate": maugis::ball::decimal_upper(&q.error_estimate),
-                "prec": p,
-                "certified": false
-            })
-        }
-        ("u_hertz", None) => f64_response(id, displacement::u_hertz(arg_f64(obj, "a")?, arg_f64(obj, "r")?, arg_f64(obj, "x")?)?),
-        ("u_hertz", Some(p)) => {
-            let b = displacement::u_hertz_mp(&arg_float(obj, "a", p)?, &arg_float(obj, "r", p)?, &arg_float(obj, "x", p)?, p)?;
-            mp_response(id, &b, p)
-        }
-        ("u_adhesive", None) => f64_response(
-            id,
-            displacement::u_adhesive(
-                arg_f64(obj, "a")?,
-                arg_f64(obj, "c")?,
-                arg_f64(obj, "sigma")?,
-                arg_f64(obj, "e_star")?,
-                arg_f64(obj, "x")?,
-            )?,
-        ),
-        ("u_adhesive", Some(p)) => {
-            let b = displacement::u_adhesive_mp(
-                &arg_float(obj, "a", p)?,
-                &arg_float(obj, "c", p)?,
-                &arg_float(obj, "sigma", p)?,
-                &arg_float(obj, "e_star", p)?,
-                &arg_float(obj, "x", p)?,
-                p,
-            )?;
-            mp_response(id, &b, p)
-        }
-        _ => return Err(BadRequest(format!("internal: no dispatch for {fname}"))),
-    };
-    Ok(out)
-}
-
-/// The model at one contact size: the strip ratio `m = c/a` (first root of
-/// Eq. 15b, corrected) and the load (Eq. 14) at that `m`.
-fn evaluate_model(obj: &Map<String, Value>, fname: &str, id: &Value, prec: Option<u32>) -> Req<Value> {
-    Ok(match prec {
+    let answer = match prec {
         None => {
-            let [lambda, alpha, beta, abar] = MODEL_ARGS.map(|n| arg_f64(obj, n));
-            let contact = ContactSize::new(Params::new(lambda?, alpha?, beta?)?, abar?)?;
-            let m = contact.solve_m()?;
-            f64_response(id, if fname == "load" { contact.load(m)? } else { m })
+            let args = function
+                .params
+                .iter()
+                .map(|p| Ok(match p.kind { ParamKind::Integer => Arg::Int(arg_int(obj, p.name)?), ParamKind::Real => Arg::Real(arg_f64(obj, p.name)?) }))
+                .collect::<Req<Vec<_>>>()?;
+            function.eval_f64(&args)?
         }
         Some(p) => {
-            let [lambda, alpha, beta, abar] = MODEL_ARGS.map(|n| arg_decimal(obj, n));
-            let args = [lambda?, alpha?, beta?, abar?];
-            let b = if fname == "load" { model_mp::load_at_decimals(&args, p)? } else { model_mp::strip_ratio_at_decimals(&args, p)? };
-            mp_response(id, &b, p)
+            let args = function
+                .params
+                .iter()
+                .map(|q| Ok(match q.kind { ParamKind::Integer => Arg::Int(arg_int(obj, q.name)?), ParamKind::Real => Arg::Real(arg_decimal(obj, q.name)?) }))
+                .collect::<Req<Vec<_>>>()?;
+            function.eval_mp(&args, p)?
         }
-    })
+    };
+    Ok(respond(&id, answer, prec))
+}
+
+/// The response object of an [`Answer`].
+fn respond(id: &Value, answer: Answer, prec: Option<u32>) -> Value {
+    let p = prec.unwrap_or(53);
+    match answer {
+        Answer::F64(v) => f64_response(id, v),
+        Answer::Ball(b) => mp_response(id, &b, p),
+        Answer::SeriesF64 { value, trunc } => json!({"id": id, "f64": value, "trunc": trunc}),
+        Answer::SeriesBall { mut value, trunc } => {
+            value.add_error(&trunc);
+            let mut resp = mp_response(id, &value, p);
+            resp["trunc"] = Value::String(maugis::ball::decimal_upper(&trunc));
+            resp
+        }
+        Answer::EstimateF64 { value, error_estimate } => {
+            json!({"id": id, "f64": value, "error_estimate": error_estimate, "certified": false})
+        }
+        Answer::EstimateMp { value, error_estimate } => json!({
+            "id": id,
+            "mid": value.to_string_radix(10, Some(digits_for(p))),
+            "error_estimate": maugis::ball::decimal_upper(&error_estimate),
+            "prec": p,
+            "certified": false
+        }),
+        other => json!({"id": id, "error": format!("internal: no presentation for {other:?}")}),
+    }
 }
 
 /// Precision of an `integrate` request without `"prec"` (bits).
@@ -588,4 +457,58 @@ pub fn run() -> i32 {
         return 0;
     }
     0
+}
+
+#[cfg(test)]
+mod fuzz {
+    //! The `eval` line parser on fuzzed input (issue 26, item 5): random JSON
+    //! objects over the registry's names and argument names, with numbers, decimal
+    //! strings, objects and junk as values, and raw bytes. `handle_line` catches a
+    //! panic and answers "internal error"; the test fails on that answer.
+
+    use super::*;
+    use bolero::check;
+
+    const NAMES: [&str; 6] = ["integrate", "nope", "", "bessel_j ", "BESSEL_J", "load"];
+    const VALUES: [&str; 16] = [
+        "1", "-1", "2.5", "\"2.5\"", "\"0.001\"", "1e400", "-0", "\"nan\"", "null", "{}", "[1]", "true", "\"x\"",
+        "9223372036854775808", "\"sqrt(x)\"", "{\"alpha\": -0.5, \"log\": 9}",
+    ];
+    const PRECS: [&str; 7] = ["0", "1", "53", "65537", "-5", "\"64\"", "4294967296"];
+
+    fn assert_answered(line: &str) {
+        let resp = handle_line(line);
+        let text = resp.to_string();
+        assert!(!text.contains("internal error"), "{line} -> {text}");
+        assert!(resp.get("error").is_some() || resp.get("f64").is_some() || resp.get("mid").is_some(), "{line} -> {text}");
+    }
+
+    #[test]
+    fn structured_requests() {
+        check!().with_type::<(u8, Vec<(u8, u8)>, Option<u8>)>().for_each(|(f, args, prec)| {
+            let all: Vec<&str> = registry::names().chain(NAMES).collect();
+            let name = all[*f as usize % all.len()];
+            let params: Vec<&str> = registry::function(name)
+                .map(|g| g.param_names().collect())
+                .unwrap_or_else(|_| vec!["f", "a", "b", "x", "weight", "decay"]);
+            let mut fields = vec![format!("\"fn\": \"{name}\"")];
+            for (k, v) in args.iter().take(6) {
+                let key = params.get(*k as usize % (params.len() + 1)).copied().unwrap_or("junk");
+                fields.push(format!("\"{key}\": {}", VALUES[*v as usize % VALUES.len()]));
+            }
+            if let Some(p) = prec {
+                fields.push(format!("\"prec\": {}", PRECS[*p as usize % PRECS.len()]));
+            }
+            assert_answered(&format!("{{{}}}", fields.join(", ")));
+        });
+    }
+
+    #[test]
+    fn raw_lines() {
+        check!().for_each(|bytes| {
+            let line = String::from_utf8_lossy(bytes);
+            let resp = handle_line(&line);
+            assert!(!resp.to_string().contains("internal error"), "{line:?}");
+        });
+    }
 }

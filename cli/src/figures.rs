@@ -28,13 +28,14 @@ use rayon::prelude::*;
 
 use maugis::contact::curve::{CurveOptions, JumpDirection};
 use maugis::contact::model::Params;
+use maugis::contact::paper as paper_sets;
 use maugis::contact::state_profile::sample_state;
 use maugis_solver::run::SimulationSpec;
 
-use crate::args::{short, FIG4C_ALPHA, FIG4C_BETA};
+use crate::args::short;
 use crate::curve::Run;
 use crate::output::{check_file_target, check_out_dir, print_stdout, write_atomically, write_file_atomically, OutFile};
-use crate::paper::{cavitating_stretch, jump_near, FIG11_ALPHA, FIG11_BETA};
+use crate::paper::{cavitating_stretch, jump_near};
 
 use draw::{load_area_panel, profile_figure, Locus, PanelCurve, ProfileLine};
 use solver::{profile_near, SolverRun};
@@ -68,23 +69,17 @@ const DEFAULT_GRID: usize = 4096;
 const DEFAULT_STEPS: usize = 200;
 
 /// The roughness of Figs. 4a (and 4d's text): `{2 sqrt(2)/8, 2}`.
-const R4A: (f64, f64) = (FIG4C_ALPHA, 2.0);
+const R4A: (f64, f64) = (paper_sets::FIG_4A.alpha, paper_sets::FIG_4A.beta);
 /// Figs. 2, 4b, 11-14: `{sqrt(2)/3, 2}`.
-const R4B: (f64, f64) = (FIG11_ALPHA, FIG11_BETA);
+const R4B: (f64, f64) = (paper_sets::FIG_4B.alpha, paper_sets::FIG_4B.beta);
 /// Figs. 4c, 5-10, 13-14: `{2 sqrt(2)/8, 9/8}`.
-const R4C: (f64, f64) = (FIG4C_ALPHA, FIG4C_BETA);
+const R4C: (f64, f64) = (paper_sets::FIG_4C.alpha, paper_sets::FIG_4C.beta);
 /// Fig. 3: the smooth cylinder (beta plays no role with alpha = 0).
-const SMOOTH: (f64, f64) = (0.0, 1.0);
+const SMOOTH: (f64, f64) = (paper_sets::SMOOTH.alpha, paper_sets::SMOOTH.beta);
 
 /// The roughness as the paper writes it.
 fn roughness_name(r: (f64, f64)) -> &'static str {
-    match r {
-        R4B => "{√2/3, 2}",
-        R4C => "{2√2/8, 9/8}",
-        SMOOTH => "{0, −}",
-        R4A => "{2√2/8, 2}",
-        _ => "{α, β}",
-    }
+    paper_sets::ROUGHNESSES.iter().find(|n| n.pair() == r).map_or("{α, β}", |n| n.label)
 }
 
 /// Marker shapes of the marked loci and the solver states.

@@ -35,8 +35,8 @@ pub const CITATION: &str = "J. S. Van Dokkum, F. Pérez-Ràfols and L. Nicola, \
 Institutional record: <https://research.unipd.it/handle/11577/3549746>.";
 
 /// Fig. 11-14 roughness `{alpha, beta} = {sqrt(2)/3, 2}`.
-pub(crate) const FIG11_ALPHA: f64 = std::f64::consts::SQRT_2 / 3.0;
-pub(crate) const FIG11_BETA: f64 = 2.0;
+pub(crate) const FIG11_ALPHA: f64 = maugis::contact::paper::FIG_4B.alpha;
+pub(crate) const FIG11_BETA: f64 = maugis::contact::paper::FIG_4B.beta;
 
 /// One compared number.
 struct Row {

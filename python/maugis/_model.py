@@ -13,7 +13,6 @@ entry per object (nested objects become nested tables). So the JSON path
 from __future__ import annotations
 
 import json
-import math
 
 import numpy as np
 
@@ -34,9 +33,9 @@ __all__ = [
 ]
 
 #: Normalised wave amplitude of the paper's Fig. 4c, ``2 sqrt(2)/8``.
-FIG4C_ALPHA = math.sqrt(2.0) / 4.0
+FIG4C_ALPHA = _ext.FIG4C_ALPHA
 #: Normalised wavelength of the paper's Fig. 4c.
-FIG4C_BETA = 9.0 / 8.0
+FIG4C_BETA = _ext.FIG4C_BETA
 #: Default datum of displacement control (units of ``l_h``).
 DEFAULT_DATUM = _ext.DEFAULT_DATUM
 

@@ -150,23 +150,18 @@ def _eval_mp(function, names, values, prec, output, digits):
     return mid.reshape(shape), rad.reshape(shape)
 
 
-def _call(function, names, kinds, values, bounded, prec, output, digits, fast):
+def _call(function, values, bounded, prec, output, digits):
+    """Runs the library's registry function `function` (its parameter names and
+    kinds come from the registry, ``_ext.signature``) over broadcast arguments."""
+    signature = _ext.signature(function)
+    names = [n for n, _ in signature]
     if prec is not None:
         if bounded:
             raise ValueError("choose one of bounded=True (float64 with an error bound) and prec= (certified balls)")
         return _eval_mp(function, names, values, prec, output, digits)
-    conv = [(_as_int if k == "int" else _as_real)(n, v) for n, k, v in zip(names, kinds, values)]
+    conv = [(_as_int if k == "int" else _as_real)(n, v) for (n, k), v in zip(signature, values)]
     flat, shape = _flat(conv)
-    return _shaped(fast(*flat, bool(bounded)), shape)
-
-
-def _call_real4(function, names, values, bounded, prec, output, digits):
-    """A function of four real arguments (the Rust side dispatches on its name)."""
-    fast = lambda a, b, c, d, bnd: _ext.real4_f64(function, a, b, c, d, bnd)  # noqa: E731
-    return _call(function, names, ("real",) * 4, values, bounded, prec, output, digits, fast)
-
-
-_WAVE_ARGS = ("a", "zeta", "amp", "x")
+    return _shaped(_ext.eval_f64(function, flat, bool(bounded)), shape)
 
 
 # ---------------------------------------------------------------- the functions
@@ -177,22 +172,22 @@ def bessel_j(n, x, *, bounded=False, prec=None, output="mpf", digits=None):
 
     float64: within 2 ulp. Domain: ``|n| <= 1e6``; see ``docs/special-functions.md``.
     """
-    return _call("bessel_j", ("n", "x"), ("int", "real"), (n, x), bounded, prec, output, digits, _ext.bessel_j_f64)
+    return _call("bessel_j", (n, x), bounded, prec, output, digits)
 
 
 def hyp1f2(a, b1, b2, z, *, bounded=False, prec=None, output="mpf", digits=None):
     """Hypergeometric function ``1F2(a; b1, b2; z)``, real parameters and argument (entire in z)."""
-    return _call_real4("hyp1f2", ("a", "b1", "b2", "z"), (a, b1, b2, z), bounded, prec, output, digits)
+    return _call("hyp1f2", (a, b1, b2, z), bounded, prec, output, digits)
 
 
 def hyp2f1(a, b, c, z, *, bounded=False, prec=None, output="mpf", digits=None):
     """Gauss hypergeometric function ``2F1(a, b; c; z)``, real, ``z <= 1`` (principal branch)."""
-    return _call_real4("hyp2f1", ("a", "b", "c", "z"), (a, b, c, z), bounded, prec, output, digits)
+    return _call("hyp2f1", (a, b, c, z), bounded, prec, output, digits)
 
 
 def meijer_g_k(k, y, *, bounded=False, prec=None, output="mpf", digits=None):
     """The Eq. 12 Meijer-G factor ``Re G^{2,2}_{3,3}(-y | 0, 1/2-k, 1; 0, 0, -k-1)``, ``0 < y <= 1``."""
-    return _call("meijer_g_k", ("k", "y"), ("int", "real"), (k, y), bounded, prec, output, digits, _ext.meijer_g_k_f64)
+    return _call("meijer_g_k", (k, y), bounded, prec, output, digits)
 
 
 def hyp1f2_model_family(kmax, z):
@@ -223,9 +218,9 @@ def u_wave(a, zeta, amp, x, *, bounded=False, prec=None, output="mpf", digits=No
 
     ``a``: contact half-width, ``zeta``: wavelength, ``amp``: wave amplitude, ``x``: position.
     """
-    return _call_real4("u_wave", _WAVE_ARGS, (a, zeta, amp, x), bounded, prec, output, digits)
+    return _call("u_wave", (a, zeta, amp, x), bounded, prec, output, digits)
 
 
 def du_wave(a, zeta, amp, x, *, bounded=False, prec=None, output="mpf", digits=None):
     """Gradient ``du_w/dx`` of the wave displacement (the seed paper's Eq. 11b), ``x >= a``."""
-    return _call_real4("du_wave", _WAVE_ARGS, (a, zeta, amp, x), bounded, prec, output, digits)
+    return _call("du_wave", (a, zeta, amp, x), bounded, prec, output, digits)

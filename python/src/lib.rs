@@ -28,17 +28,15 @@ use maugis::contact::curve::{self, CurveOptions};
 use maugis::contact::located::At;
 use maugis::contact::summary::{load_area_curves, RunSummary};
 use maugis::contact::sweep::{run_sweep, SweepGrid};
-use maugis::contact::displacement::{du_wave, du_wave_bounded, u_wave, u_wave_bounded, wave_at_decimals};
 use maugis::contact::model::Params;
 use maugis::contact::state_profile::{sample_state_at, ProfileSample};
-use maugis::ball::{eval_at_decimals, Decimal};
+use maugis::ball::Decimal;
+use maugis::registry::{self, Answer, Arg, Function, ParamKind};
 use maugis::quad::certified::Options;
 use maugis::quad::expr::{integrate_expr, shortfall, significant_imaginary, DecaySpec, Expr, UpperLimit, WeightSpec};
 use maugis::rug::{Float, Integer, Rational};
-use maugis::special::bessel_j::{bessel_j, bessel_j_ball_mp, bessel_j_bounded};
-use maugis::special::hyp1f2::{hyp1f2, hyp1f2_ball_mp, hyp1f2_bounded, hyp1f2_model_family_f64};
-use maugis::special::hyp2f1::{hyp2f1, hyp2f1_ball_mp, hyp2f1_bounded};
-use maugis::special::meijer_g::{meijer_g_k, meijer_g_k_ball_mp, meijer_g_k_bounded, meijer_g_k_family_f64};
+use maugis::special::hyp1f2::hyp1f2_model_family_f64;
+use maugis::special::meijer_g::meijer_g_k_family_f64;
 use maugis::{Ball, Bounded, Error};
 
 /// Arrays shorter than this are evaluated on the calling thread: below it,
@@ -92,9 +90,9 @@ fn same_len(lens: &[usize]) -> PyResult<usize> {
     Ok(n)
 }
 
-/// `k` for the Meijer-G family: a non-negative integer that fits `u32`.
+/// `kmax` of a model family: a non-negative integer that fits `u32`.
 fn order_u32(k: i64) -> maugis::Result<u32> {
-    u32::try_from(k).map_err(|_| Error::Domain { what: format!("k must be a non-negative integer (got {k})") })
+    u32::try_from(k).map_err(|_| Error::IntegerOutOfRange { arg: "kmax", value: k, min: 0, max: u32::MAX as i64 })
 }
 
 /// Evaluates `value` (or `bounded`) over `len` elements with the GIL released
@@ -116,75 +114,119 @@ where
     }
 }
 
-/// `J_n(x)` over flat arrays.
+/// One flat argument column of an f64 call: int64 for integer parameters, float64 for reals.
+enum Column<'py> {
+    Int(PyReadonlyArray1<'py, i64>),
+    Real(PyReadonlyArray1<'py, f64>),
+}
+
+/// The parameters of a registry function as `[(name, "int" | "real")]`: Python
+/// converts and broadcasts its arguments by them.
 #[pyfunction]
-fn bessel_j_f64<'py>(py: Python<'py>, n: PyReadonlyArray1<'py, i64>, x: PyReadonlyArray1<'py, f64>, bounded: bool) -> PyResult<Bound<'py, PyAny>> {
-    let (n, x) = (slice(&n, "n")?, slice(&x, "x")?);
-    let len = same_len(&[n.len(), x.len()])?;
+fn signature(function: &str) -> PyResult<Vec<(&'static str, &'static str)>> {
+    let f = registry::function(function).map_err(lib_error)?;
+    Ok(f.params
+        .iter()
+        .map(|p| (p.name, if p.kind == ParamKind::Integer { "int" } else { "real" }))
+        .collect())
+}
+
+/// A registry function ([`maugis::registry`]) over flat argument columns (one
+/// per parameter, int64 for integers and float64 for reals, all of one length):
+/// a float64 array, or with `bounded` the `(value, err)` pair of arrays.
+#[pyfunction]
+fn eval_f64<'py>(py: Python<'py>, function: &str, columns: Vec<Bound<'py, PyAny>>, bounded: bool) -> PyResult<Bound<'py, PyAny>> {
+    let f = registry::function(function).map_err(lib_error)?;
+    if columns.len() != f.params.len() || columns.len() > MAX_COLUMNS {
+        return Err(lib_error(Error::Arity { function: f.name, expected: f.params.len(), got: columns.len() }));
+    }
+    let cols = f
+        .params
+        .iter()
+        .zip(&columns)
+        .map(|(p, c)| {
+            Ok(match p.kind {
+                ParamKind::Integer => Column::Int(c.extract()?),
+                ParamKind::Real => Column::Real(c.extract()?),
+            })
+        })
+        .collect::<PyResult<Vec<Column>>>()?;
+    let slices = cols
+        .iter()
+        .zip(f.params)
+        .map(|(c, p)| {
+            Ok(match c {
+                Column::Int(a) => ColumnSlice::Int(slice(a, p.name)?),
+                Column::Real(a) => ColumnSlice::Real(slice(a, p.name)?),
+            })
+        })
+        .collect::<PyResult<Vec<ColumnSlice>>>()?;
+    let len = same_len(&slices.iter().map(ColumnSlice::len).collect::<Vec<_>>())?;
+    let describe = |i: usize| {
+        let args: Vec<String> = f.param_names().zip(&slices).map(|(n, c)| format!("{n}={}", show_arg(&c.at(i)))).collect();
+        format!("{function}({})", args.join(", "))
+    };
     run_f64(
         py,
         len,
         bounded,
-        |i| bessel_j(n[i], x[i]),
-        |i| bessel_j_bounded(n[i], x[i]),
-        |i| format!("bessel_j(n={}, x={:?})", n[i], x[i]),
+        |i| f64_value(f, &slices, i),
+        |i| {
+            let mut buf = [Arg::Int(0); MAX_COLUMNS];
+            f.eval_bounded(row(&slices, i, &mut buf))
+        },
+        describe,
     )
 }
 
-/// A function of four real arguments: its argument names, f64 value and bounded value.
-type Real4 = (&'static [&'static str; 4], fn(f64, f64, f64, f64) -> maugis::Result<f64>, fn(f64, f64, f64, f64) -> maugis::Result<Bounded>);
+/// More parameters than any registry function has.
+const MAX_COLUMNS: usize = 8;
 
-/// Arguments of the wave displacement and its gradient.
-const WAVE_ARGS: [&str; 4] = ["a", "zeta", "amp", "x"];
-
-/// The four-real-argument functions by name.
-fn real4(function: &str) -> Option<Real4> {
-    Some(match function {
-        "hyp1f2" => (&["a", "b1", "b2", "z"], hyp1f2, hyp1f2_bounded),
-        "hyp2f1" => (&["a", "b", "c", "z"], hyp2f1, hyp2f1_bounded),
-        "u_wave" => (&WAVE_ARGS, u_wave, u_wave_bounded),
-        "du_wave" => (&WAVE_ARGS, du_wave, du_wave_bounded),
-        _ => return None,
-    })
+/// Row `i` of the columns, in `buf` (no allocation per element).
+fn row<'b>(columns: &[ColumnSlice<'_>], i: usize, buf: &'b mut [Arg<f64>; MAX_COLUMNS]) -> &'b [Arg<f64>] {
+    let n = columns.len().min(MAX_COLUMNS);
+    for (slot, c) in buf.iter_mut().zip(columns) {
+        *slot = c.at(i);
+    }
+    &buf[..n]
 }
 
-/// `1F2(a; b1, b2; z)`, `2F1(a, b; c; z)`, `u_w` or `du_w/dx` (by `function`) over flat arrays.
-#[pyfunction]
-fn real4_f64<'py>(
-    py: Python<'py>,
-    function: &str,
-    a: PyReadonlyArray1<'py, f64>,
-    b: PyReadonlyArray1<'py, f64>,
-    c: PyReadonlyArray1<'py, f64>,
-    d: PyReadonlyArray1<'py, f64>,
-    bounded: bool,
-) -> PyResult<Bound<'py, PyAny>> {
-    let (names, value, bound) = real4(function).ok_or_else(|| PyValueError::new_err(format!("unknown function {function:?}")))?;
-    let (a, b, c, d) = (slice(&a, names[0])?, slice(&b, names[1])?, slice(&c, names[2])?, slice(&d, names[3])?);
-    let len = same_len(&[a.len(), b.len(), c.len(), d.len()])?;
-    run_f64(
-        py,
-        len,
-        bounded,
-        |i| value(a[i], b[i], c[i], d[i]),
-        |i| bound(a[i], b[i], c[i], d[i]),
-        |i| format!("{function}({}={:?}, {}={:?}, {}={:?}, {}={:?})", names[0], a[i], names[1], b[i], names[2], c[i], names[3], d[i]),
-    )
+/// The f64 value of `f` at row `i` (functions whose f64 answer is a plain value).
+fn f64_value(f: &Function, columns: &[ColumnSlice<'_>], i: usize) -> maugis::Result<f64> {
+    let mut buf = [Arg::Int(0); MAX_COLUMNS];
+    match f.eval_f64(row(columns, i, &mut buf))? {
+        Answer::F64(v) => Ok(v),
+        _ => Err(Error::NoBoundedPath { function: f.name }),
+    }
 }
 
-/// The Eq. 12 Meijer-G factor over flat arrays.
-#[pyfunction]
-fn meijer_g_k_f64<'py>(py: Python<'py>, k: PyReadonlyArray1<'py, i64>, y: PyReadonlyArray1<'py, f64>, bounded: bool) -> PyResult<Bound<'py, PyAny>> {
-    let (k, y) = (slice(&k, "k")?, slice(&y, "y")?);
-    let len = same_len(&[k.len(), y.len()])?;
-    run_f64(
-        py,
-        len,
-        bounded,
-        |i| meijer_g_k(order_u32(k[i])?, y[i]),
-        |i| meijer_g_k_bounded(order_u32(k[i])?, y[i]),
-        |i| format!("meijer_g_k(k={}, y={:?})", k[i], y[i]),
-    )
+/// A borrowed column.
+enum ColumnSlice<'a> {
+    Int(&'a [i64]),
+    Real(&'a [f64]),
+}
+
+impl ColumnSlice<'_> {
+    fn len(&self) -> usize {
+        match self {
+            ColumnSlice::Int(s) => s.len(),
+            ColumnSlice::Real(s) => s.len(),
+        }
+    }
+
+    fn at(&self, i: usize) -> Arg<f64> {
+        match self {
+            ColumnSlice::Int(s) => Arg::Int(s[i]),
+            ColumnSlice::Real(s) => Arg::Real(s[i]),
+        }
+    }
+}
+
+fn show_arg(a: &Arg<f64>) -> String {
+    match a {
+        Arg::Int(v) => v.to_string(),
+        Arg::Real(v) => format!("{v:?}"),
+    }
 }
 
 /// A model family over `k = 0..=kmax` at one argument (`"hyp1f2"`: the
@@ -275,40 +317,29 @@ impl std::fmt::Display for MpArg {
     }
 }
 
-/// Argument names of each MP function, in call order.
-fn mp_signature(function: &str) -> Option<&'static [&'static str]> {
-    Some(match function {
-        "bessel_j" => &["n", "x"],
-        "meijer_g_k" => &["k", "y"],
-        _ => return real4(function).map(|(names, _, _)| &names[..]),
-    })
-}
-
-/// One certified ball of `function` at the arguments `args`, on the ball
-/// contract of [`eval_at_decimals`]: it contains the function at the numbers
-/// given, and an edge inside the input balls is an error that names it.
-fn mp_one(function: &str, args: &[MpArg], prec: u32) -> maugis::Result<Ball> {
-    let names = mp_signature(function).unwrap_or(&[]);
-    let d = |i: usize| args[i].to_decimal(names[i]);
-    match function {
-        "bessel_j" => {
-            let n = args[0].to_i64("n")?;
-            eval_at_decimals(&[d(1)?], prec, |b| bessel_j_ball_mp(n, &b[0], prec))
+/// One certified ball of the registry function `f` at the arguments `args`, at
+/// `prec` bits (balls that contain the numbers given, or rounded inputs, as
+/// [`maugis::registry::MpInputs`] says for `f`); answers that are not certified
+/// balls (estimates) are refused.
+fn mp_one(f: &Function, args: &[MpArg], prec: u32) -> maugis::Result<Ball> {
+    let values = f
+        .params
+        .iter()
+        .zip(args)
+        .map(|(p, a)| {
+            Ok(match p.kind {
+                ParamKind::Integer => Arg::Int(a.to_i64(p.name)?),
+                ParamKind::Real => Arg::Real(a.to_decimal(p.name)?),
+            })
+        })
+        .collect::<maugis::Result<Vec<_>>>()?;
+    match f.eval_mp(&values, prec)? {
+        Answer::Ball(b) => Ok(b),
+        Answer::SeriesBall { mut value, trunc } => {
+            value.add_error(&trunc);
+            Ok(value)
         }
-        "meijer_g_k" => {
-            let k = order_u32(args[0].to_i64("k")?)?;
-            eval_at_decimals(&[d(1)?], prec, |b| meijer_g_k_ball_mp(k, &b[0], prec))
-        }
-        _ => {
-            let four = [d(0)?, d(1)?, d(2)?, d(3)?];
-            match function {
-                "hyp1f2" => eval_at_decimals(&four, prec, |b| hyp1f2_ball_mp(&b[0], &b[1], &b[2], &b[3], prec)),
-                "hyp2f1" => eval_at_decimals(&four, prec, |b| hyp2f1_ball_mp(&b[0], &b[1], &b[2], &b[3], prec)),
-                "u_wave" => wave_at_decimals(&four, prec, false),
-                "du_wave" => wave_at_decimals(&four, prec, true),
-                _ => Err(Error::Internal { what: format!("no MP function {function}") }),
-            }
-        }
+        _ => Err(Error::NoBoundedPath { function: f.name }),
     }
 }
 
@@ -358,9 +389,10 @@ impl<'py> IntoPyObject<'py> for MpOut {
 #[pyfunction]
 #[pyo3(signature = (function, columns, prec, digits=None))]
 fn eval_mp<'py>(py: Python<'py>, function: &str, columns: Vec<Vec<MpArg>>, prec: u32, digits: Option<usize>) -> PyResult<Bound<'py, PyList>> {
-    let names = mp_signature(function).ok_or_else(|| PyValueError::new_err(format!("unknown function {function:?}")))?;
+    let f = registry::function(function).map_err(lib_error)?;
+    let names: Vec<&str> = f.param_names().collect();
     if columns.len() != names.len() {
-        return Err(PyValueError::new_err(format!("{function} takes {} arguments, got {}", names.len(), columns.len())));
+        return Err(lib_error(Error::Arity { function: f.name, expected: names.len(), got: columns.len() }));
     }
     maugis::error::check_prec(prec).map_err(lib_error)?;
     let len = same_len(&columns.iter().map(Vec::len).collect::<Vec<_>>())?;
@@ -371,7 +403,7 @@ fn eval_mp<'py>(py: Python<'py>, function: &str, columns: Vec<Vec<MpArg>>, prec:
             (0..len)
                 .into_par_iter()
                 .map(|i| {
-                    let ball = mp_one(function, &row(i), prec).map_err(|error| ElementError { index: i, error })?;
+                    let ball = mp_one(f, &row(i), prec).map_err(|error| ElementError { index: i, error })?;
                     Ok(ball_out(&ball, digits))
                 })
                 .collect::<Result<Vec<MpOut>, ElementError>>()
@@ -544,18 +576,14 @@ fn profile_dict<'py>(py: Python<'py>, lam: f64, alpha: f64, beta: f64, abar: f64
 /// `python/benchmarks/timing.py`. Not part of the public API.
 #[pyfunction]
 fn _native_loop_seconds(py: Python<'_>, function: &str, n: PyReadonlyArray1<'_, i64>, x: PyReadonlyArray1<'_, f64>) -> PyResult<f64> {
-    let (n, x) = (slice(&n, "n")?, slice(&x, "x")?);
-    same_len(&[n.len(), x.len()])?;
-    let f: fn(i64, f64) -> maugis::Result<f64> = match function {
-        "bessel_j" => bessel_j,
-        "meijer_g_k" => |k, y| meijer_g_k(order_u32(k)?, y),
-        _ => return Err(PyValueError::new_err(format!("no native loop for {function:?}"))),
-    };
+    let f = registry::function(function).map_err(lib_error)?;
+    let columns = [ColumnSlice::Int(slice(&n, "n")?), ColumnSlice::Real(slice(&x, "x")?)];
+    let len = same_len(&[columns[0].len(), columns[1].len()])?;
     py.detach(|| {
         let t = std::time::Instant::now();
         let mut acc = 0.0;
-        for (&k, &v) in n.iter().zip(x) {
-            acc += f(k, v)?;
+        for i in 0..len {
+            acc += f64_value(f, &columns, i)?;
         }
         std::hint::black_box(acc);
         Ok::<f64, Error>(t.elapsed().as_secs_f64())
@@ -566,9 +594,8 @@ fn _native_loop_seconds(py: Python<'_>, function: &str, n: PyReadonlyArray1<'_, 
 /// The compiled module.
 #[pymodule]
 fn _maugis(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add_function(wrap_pyfunction!(bessel_j_f64, m)?)?;
-    m.add_function(wrap_pyfunction!(real4_f64, m)?)?;
-    m.add_function(wrap_pyfunction!(meijer_g_k_f64, m)?)?;
+    m.add_function(wrap_pyfunction!(signature, m)?)?;
+    m.add_function(wrap_pyfunction!(eval_f64, m)?)?;
     m.add_function(wrap_pyfunction!(family_f64, m)?)?;
     m.add_function(wrap_pyfunction!(eval_mp, m)?)?;
     m.add_function(wrap_pyfunction!(integrate_mp, m)?)?;
@@ -581,5 +608,7 @@ fn _maugis(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("PARALLEL_MIN_LEN", PARALLEL_MIN_LEN)?;
     m.add("MAX_PREC", maugis::MAX_PREC)?;
     m.add("DEFAULT_DATUM", curve::DEFAULT_DATUM)?;
+    m.add("FIG4C_ALPHA", maugis::contact::paper::FIG_4C.alpha)?;
+    m.add("FIG4C_BETA", maugis::contact::paper::FIG_4C.beta)?;
     Ok(())
 }

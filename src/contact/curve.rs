@@ -23,7 +23,7 @@ use rayon::prelude::*;
 use crate::contact::model::{brent, ContactSize, Params, Validity};
 pub use crate::contact::paths::{HysteresisLoop, Jump, JumpDirection};
 use crate::contact::paths::{control_paths, ControlPaths, Driver, PathNode};
-use crate::error::{Error, Result};
+use crate::error::{Error, Interval, Result};
 
 /// One solved state.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -139,16 +139,25 @@ pub fn state(params: Params, abar: f64) -> Result<CurvePoint> {
         abar,
         m: strip.m(),
         m_minus_1: strip.m_minus_1(),
-        load: cs.load_at(strip),
-        approach: cs.approach_at(strip),
+        load: representable("load", abar, cs.load_at(strip))?,
+        approach: representable("approach", abar, cs.approach_at(strip))?,
         validity: cs.validity_at(strip)?,
     })
+}
+
+/// `value`, or [`Error::NotRepresentable`] when it is not finite.
+fn representable(quantity: &'static str, abar: f64, value: f64) -> Result<f64> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(Error::NotRepresentable { quantity, abar })
+    }
 }
 
 /// The load at `abar` (solving for `m`).
 pub fn load_at(params: Params, abar: f64) -> Result<f64> {
     let cs = ContactSize::new(params, abar)?;
-    Ok(cs.load_at(cs.solve_strip()?))
+    representable("load", abar, cs.load_at(cs.solve_strip()?))
 }
 
 /// `dLbar/dabar` by a central difference of solved loads.
@@ -159,11 +168,13 @@ fn load_slope(params: Params, abar: f64) -> Result<f64> {
 
 /// Solves the model on the grid and analyses stability.
 pub fn load_area_curve(params: Params, opts: CurveOptions) -> Result<Curve> {
-    if !(opts.amax.is_finite() && opts.amax > 0.0) {
-        return Err(Error::Domain { what: format!("amax must be > 0 (got {})", opts.amax) });
+    Interval::above(0.0).check("amax", opts.amax)?;
+    if !opts.amax.is_finite() {
+        return Err(Error::NonFinite { what: "amax" });
     }
     if opts.points < 2 {
-        return Err(Error::Domain { what: format!("points must be >= 2 (got {})", opts.points) });
+        let value = i64::try_from(opts.points).unwrap_or(i64::MAX);
+        return Err(Error::IntegerOutOfRange { arg: "points", value, min: 2, max: i64::MAX });
     }
     let n = opts.points;
     #[cfg(feature = "parallel")]

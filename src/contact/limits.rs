@@ -24,14 +24,12 @@ use rayon::prelude::*;
 use crate::contact::curve::load_at;
 use crate::contact::located::{At, LocatedError};
 use crate::contact::model::{brent, Params};
-use crate::error::{finite, Error, Result};
+use crate::error::{finite, Error, Interval, Result};
 use crate::special::bessel_j::bessel_j_sequence;
 
 fn check_abar(abar: f64) -> Result<()> {
     finite(abar, "abar")?;
-    if abar <= 0.0 {
-        return Err(Error::Domain { what: format!("abar must be > 0 (got {abar})") });
-    }
+    Interval::above(0.0).check("abar", abar)?;
     Ok(())
 }
 
@@ -81,7 +79,7 @@ pub fn mdmt_strip_end(params: Params) -> Result<f64> {
         flo = fc;
         c += step.max(c * 1e-3);
     }
-    Err(Error::Domain { what: "no M-DMT strip end (E.43b) below c = 1e6: lambda too small".into() })
+    Err(Error::NoStripEnd { model: "M-DMT, E.43b, c", limit: 1e6 })
 }
 
 /// E.43c: the rigid pull-off load `L'_p = 2 lambda cbar`.
@@ -107,9 +105,7 @@ pub fn mdmt_envelope(params: Params, abar: f64) -> Result<(f64, f64)> {
 pub fn smooth_mdmt_load(lambda: f64, abar: f64) -> Result<f64> {
     check_abar(abar)?;
     finite(lambda, "lambda")?;
-    if lambda <= 0.0 {
-        return Err(Error::Domain { what: "lambda must be > 0".into() });
-    }
+    Interval::above(0.0).check("lambda", lambda)?;
     Ok(PI * abar * abar / 4.0 - 2.0 * (2.0 * lambda).sqrt())
 }
 
@@ -235,7 +231,8 @@ pub const MAX_LIMIT_POINTS: usize = 10_000_000;
 /// ([`At::Input`]), or the first failure met with its `abar` ([`At::Limits`]).
 fn on_grid<T: Send>(amax: f64, points: usize, f: impl Fn(f64) -> Result<T> + Sync + Send) -> std::result::Result<Vec<T>, LocatedError> {
     if !(1..=MAX_LIMIT_POINTS).contains(&points) {
-        return Err(At::Input.wrap(Error::Domain { what: format!("points must lie in [1, 1e7] (got {points})") }));
+        let value = i64::try_from(points).unwrap_or(i64::MAX);
+        return Err(At::Input.wrap(Error::IntegerOutOfRange { arg: "points", value, min: 1, max: MAX_LIMIT_POINTS as i64 }));
     }
     let at = |i: usize| {
         let abar = amax * i as f64 / points as f64;

@@ -37,6 +37,7 @@ pub mod wave_quadrature;
 pub mod wave_certified;
 pub mod traction_mp;
 pub mod model;
+pub mod paper;
 pub mod curve;
 pub mod limits;
 pub mod model_mp;

@@ -65,7 +65,7 @@
 use std::f64::consts::PI;
 
 use crate::contact::displacement::{profile_depth, u_adhesive, u_hertz, WaveBessel};
-use crate::error::{finite, Error, Result};
+use crate::error::{finite, Error, Interval, Result};
 
 /// Largest strip width `c - a` (in `l_h`) the root scan explores.
 pub const MAX_STRIP: f64 = 1.0e4;
@@ -87,13 +87,17 @@ const SERIES_Z: f64 = 1e-3;
 
 /// Supported Maugis parameters: beyond these the strip equation over- or
 /// underflows in f64 (`lambda^2 abar` terms) or the strip leaves [`MAX_STRIP`].
-pub const LAMBDA_RANGE: (f64, f64) = (1e-6, 1e6);
+pub const LAMBDA_RANGE: Interval = Interval::closed(1e-6, 1e6);
 /// Largest supported `alpha`.
 pub const ALPHA_MAX: f64 = 1e6;
+/// Supported `alpha` (0 is the smooth cylinder).
+pub const ALPHA_RANGE: Interval = Interval::closed(0.0, ALPHA_MAX);
 /// Supported `beta`.
-pub const BETA_RANGE: (f64, f64) = (1e-6, 1e6);
+pub const BETA_RANGE: Interval = Interval::closed(1e-6, 1e6);
 /// Largest supported contact size.
 pub const ABAR_MAX: f64 = 1e4;
+/// Supported contact sizes `abar`.
+pub const ABAR_RANGE: Interval = Interval::left_open(0.0, ABAR_MAX);
 
 /// Samples per extremum search in [`ContactSize::validity`].
 const VALIDITY_SAMPLES: usize = 48;
@@ -117,19 +121,9 @@ impl Params {
         finite(lambda, "lambda")?;
         finite(alpha, "alpha")?;
         finite(beta, "beta")?;
-        if !(LAMBDA_RANGE.0..=LAMBDA_RANGE.1).contains(&lambda) {
-            return Err(Error::Domain {
-                what: format!("lambda must lie in [{:e}, {:e}] (got {lambda:?})", LAMBDA_RANGE.0, LAMBDA_RANGE.1),
-            });
-        }
-        if !(0.0..=ALPHA_MAX).contains(&alpha) {
-            return Err(Error::Domain { what: format!("alpha must lie in [0, {ALPHA_MAX:e}] (got {alpha:?})") });
-        }
-        if !(BETA_RANGE.0..=BETA_RANGE.1).contains(&beta) {
-            return Err(Error::Domain {
-                what: format!("beta must lie in [{:e}, {:e}] (got {beta:?})", BETA_RANGE.0, BETA_RANGE.1),
-            });
-        }
+        LAMBDA_RANGE.check("lambda", lambda)?;
+        ALPHA_RANGE.check("alpha", alpha)?;
+        BETA_RANGE.check("beta", beta)?;
         Ok(Params { lambda, alpha, beta })
     }
 }
@@ -169,9 +163,7 @@ impl StripEnd {
     /// From `m - 1 > 0` (finite).
     pub fn from_m_minus_1(m_minus_1: f64) -> Result<StripEnd> {
         finite(m_minus_1, "m - 1")?;
-        if m_minus_1 <= 0.0 {
-            return Err(Error::Domain { what: format!("the strip end needs m - 1 > 0 (got {m_minus_1:?})") });
-        }
+        Interval::above(0.0).check("m - 1", m_minus_1)?;
         Ok(StripEnd { m_minus_1 })
     }
 
@@ -179,9 +171,7 @@ impl StripEnd {
     /// is close to 1; prefer [`StripEnd::from_m_minus_1`].
     pub fn from_m(m: f64) -> Result<StripEnd> {
         finite(m, "m")?;
-        if m <= 1.0 {
-            return Err(Error::Domain { what: format!("the strip ratio m = c/a must be > 1 (got {m:?})") });
-        }
+        Interval::above(1.0).check("the strip ratio m = c/a", m)?;
         Ok(StripEnd { m_minus_1: m - 1.0 })
     }
 
@@ -266,9 +256,7 @@ impl ContactSize {
     /// Prepares contact size `abar > 0`.
     pub fn new(params: Params, abar: f64) -> Result<ContactSize> {
         finite(abar, "abar")?;
-        if !(abar > 0.0 && abar <= ABAR_MAX) {
-            return Err(Error::Domain { what: format!("abar must lie in (0, {ABAR_MAX:e}] (got {abar:?})") });
-        }
+        ABAR_RANGE.check("abar", abar)?;
         let wave = if params.alpha > 0.0 { Some(WaveBessel::new(abar, params.beta, params.alpha)?) } else { None };
         let js = crate::special::bessel_j::bessel_j_sequence(1, 2.0 * PI * abar / params.beta);
         let j0 = js.first().copied().unwrap_or(1.0);
@@ -337,18 +325,14 @@ impl ContactSize {
     /// `F(m) = lambda gbar(m abar) - 1` (Eq. 15b, corrected), `m >= 1`.
     pub fn strip_residual(&self, m: f64) -> Result<f64> {
         finite(m, "m")?;
-        if m < 1.0 {
-            return Err(Error::Domain { what: format!("the strip ratio m = c/a must be >= 1 (got {m:?})") });
-        }
+        Interval::at_least(1.0).check("the strip ratio m = c/a", m)?;
         Ok(self.residual_z(m - 1.0))
     }
 
     /// `F` as a function of `z = m - 1 >= 0` (full relative accuracy in `z`).
     pub fn strip_residual_m_minus_1(&self, z: f64) -> Result<f64> {
         finite(z, "m - 1")?;
-        if z < 0.0 {
-            return Err(Error::Domain { what: format!("m - 1 must be >= 0 (got {z:?})") });
-        }
+        Interval::at_least(0.0).check("m - 1", z)?;
         Ok(self.residual_z(z))
     }
 
@@ -408,9 +392,7 @@ impl ContactSize {
                 return done(brent(f, s_prev / a, s / a, f_prev, fs));
             }
             if s > MAX_STRIP {
-                return Err(Error::Domain {
-                    what: format!("no end of the adhesive strip within c - a <= {MAX_STRIP:e} (abar = {a}): parameters too extreme"),
-                });
+                return Err(Error::NoStripEnd { model: "Eq. 15b, c - a", limit: MAX_STRIP });
             }
             s_prev = s;
             f_prev = fs;
@@ -419,7 +401,12 @@ impl ContactSize {
 
     /// Eq. 14 at the strip end `m` (`m > 1`).
     pub fn load(&self, m: f64) -> Result<f64> {
-        Ok(self.load_at(check_m(m)?))
+        let load = self.load_at(check_m(m)?);
+        if load.is_finite() {
+            Ok(load)
+        } else {
+            Err(Error::NotRepresentable { quantity: "load", abar: self.abar })
+        }
     }
 
     /// Eq. 14: `pi abar^2/4 - 2 lambda abar sqrt(m^2-1) + (pi^2 alpha abar/beta) J1(2 pi abar/beta)`.

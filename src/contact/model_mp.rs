@@ -101,9 +101,9 @@ impl ModelBalls {
             };
             Err(Error::Domain { what: format!("{what} must lie in {open}{}, {}] {got}", bound(lo), bound(hi)) })
         };
-        within(&lambda, "lambda", LAMBDA_RANGE.0, false, LAMBDA_RANGE.1)?;
+        within(&lambda, "lambda", LAMBDA_RANGE.lo, false, LAMBDA_RANGE.hi)?;
         within(&alpha, "alpha", 0.0, false, ALPHA_MAX)?;
-        within(&beta, "beta", BETA_RANGE.0, false, BETA_RANGE.1)?;
+        within(&beta, "beta", BETA_RANGE.lo, false, BETA_RANGE.hi)?;
         within(&abar, "abar", 0.0, true, ABAR_MAX)?;
         Ok(ModelBalls { lambda, alpha, beta, abar })
     }

@@ -69,7 +69,7 @@
 
 use crate::contact::curve::CurvePoint;
 use crate::contact::model::{brent, golden_section_min, ContactSize, Params};
-use crate::error::{Error, Result};
+use crate::error::{Error, Interval, Result};
 
 /// Which variable the machine controls.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -228,9 +228,7 @@ impl Driver {
     /// Displacement control at datum `x_d > 0` (finite).
     pub fn displacement(datum: f64) -> Result<Driver> {
         crate::error::finite(datum, "datum")?;
-        if datum <= 0.0 {
-            return Err(Error::Domain { what: format!("the displacement datum must be > 0 (got {datum:?})") });
-        }
+        Interval::above(0.0).check("the displacement datum", datum)?;
         Ok(Driver { control: Control::Displacement, ln_datum: datum.ln() })
     }
 
@@ -386,7 +384,8 @@ fn walk_loading(
 /// solved curve (`pts` by increasing `abar`, at least two).
 pub fn control_paths(params: Params, pts: &[CurvePoint], control: Driver) -> Result<ControlPaths> {
     if pts.len() < 2 {
-        return Err(Error::Domain { what: format!("a path needs at least 2 states (got {})", pts.len()) });
+        let value = i64::try_from(pts.len()).unwrap_or(i64::MAX);
+        return Err(Error::IntegerOutOfRange { arg: "the states of a path", value, min: 2, max: i64::MAX });
     }
     let y = |p: &CurvePoint| control.value((p.load, p.approach));
     let yn = |n: &PathNode| control.value((n.load, n.approach));

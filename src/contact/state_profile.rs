@@ -22,7 +22,7 @@ use crate::contact::model::{ContactSize, Params, StripEnd, Validity};
 use crate::contact::model_mp::solve_m_mp;
 use crate::contact::traction_mp::traction_mp;
 use crate::contact::located::{At, LocatedError};
-use crate::error::Error;
+use crate::error::{Error, Interval};
 
 #[cfg(feature = "parallel")]
 use rayon::prelude::*;
@@ -148,13 +148,14 @@ impl Solved {
 /// lie inside. Errors on bad input and where the model has no state.
 pub fn sample_state(params: Params, abar: f64, xmax: Option<f64>, points: usize) -> Result<StateProfile, LocatedError> {
     if !(2..=MAX_SAMPLES).contains(&points) {
-        return Err(At::Input.wrap(Error::Domain { what: format!("points must lie in [2, 1e7] (got {points})") }));
+        let value = i64::try_from(points).unwrap_or(i64::MAX);
+        return Err(At::Input.wrap(Error::IntegerOutOfRange { arg: "points", value, min: 2, max: MAX_SAMPLES as i64 }));
     }
     let s = solve(params, abar)?;
     let c = s.strip.m() * abar;
     let xmax = xmax.unwrap_or(1.5 * c);
-    if !(xmax.is_finite() && xmax > 0.0) {
-        return Err(At::Input.wrap(Error::Domain { what: format!("xmax must be finite and > 0 (got {xmax})") }));
+    if let Err(e) = Interval::above(0.0).check("xmax", xmax).and_then(|x| crate::error::finite(x, "xmax")) {
+        return Err(At::Input.wrap(e));
     }
     let samples = s.sample_all(&grid(xmax, points, [abar, c]))?;
     Ok(s.profile(samples))

@@ -24,7 +24,7 @@ use rayon::prelude::*;
 use crate::contact::curve::{load_area_curve, CurveOptions};
 use crate::contact::model::Params;
 use crate::contact::paths::JumpDirection;
-use crate::error::{finite, Error, Result};
+use crate::error::{finite, Error, Result, SweepError};
 
 /// The second axis of a sweep.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -37,6 +37,17 @@ pub enum SweepAxis {
     Beta,
     /// Johnson parameter `sqrt(beta/alpha^2)` (at fixed `beta`).
     Johnson,
+}
+
+impl SweepAxis {
+    /// The axis' name as the CLI and the JSON spell it: `"alpha"`, `"beta"` or `"johnson"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            SweepAxis::Alpha => "alpha",
+            SweepAxis::Beta => "beta",
+            SweepAxis::Johnson => "johnson",
+        }
+    }
 }
 
 /// The regime of one grid point.
@@ -134,20 +145,20 @@ impl SweepGrid {
             finite(v, w)?;
         }
         if !(self.lambda_min > 0.0 && self.lambda_max >= self.lambda_min) {
-            return Err(Error::Domain { what: format!("the lambda range must satisfy 0 < min <= max (got {} .. {})", self.lambda_min, self.lambda_max) });
+            return Err(Error::Sweep(SweepError::LambdaRange { min: self.lambda_min, max: self.lambda_max }));
         }
         if self.lambda_n == 0 || self.n == 0 {
-            return Err(Error::Domain { what: "sweep grids need at least one value per axis".into() });
+            return Err(Error::Sweep(SweepError::EmptyAxis));
         }
         if self.max < self.min {
-            return Err(Error::Domain { what: format!("the second axis needs min <= max (got {} .. {})", self.min, self.max) });
+            return Err(Error::Sweep(SweepError::AxisOrder { min: self.min, max: self.max }));
         }
         let lo_ok = match self.axis {
             SweepAxis::Alpha => self.min >= 0.0,
             SweepAxis::Beta | SweepAxis::Johnson => self.min > 0.0,
         };
         if !lo_ok {
-            return Err(Error::Domain { what: format!("the {:?} axis must be {} (got min = {})", self.axis, if self.axis == SweepAxis::Alpha { ">= 0" } else { "> 0" }, self.min) });
+            return Err(Error::Sweep(SweepError::AxisStart { axis: self.axis.name(), min: self.min, zero_allowed: self.axis == SweepAxis::Alpha }));
         }
         // every combination must be a valid parameter set
         for i in [0, self.lambda_n - 1] {
@@ -239,7 +250,7 @@ pub fn run_sweep<P: Fn() + Sync>(grid: SweepGrid, shard: Option<(usize, usize)>,
     grid.check()?;
     if let Some((s, n)) = shard {
         if n == 0 || s == 0 || s > n {
-            return Err(Error::Domain { what: format!("shard must be s/n with 1 <= s <= n (got {s}/{n})") });
+            return Err(Error::Sweep(SweepError::Shard { s, n }));
         }
     }
     let indices: Vec<usize> = (0..grid.len()).filter(|k| shard.map_or(true, |(s, n)| k % n == s - 1)).collect();
@@ -260,24 +271,24 @@ pub fn run_sweep<P: Fn() + Sync>(grid: SweepGrid, shard: Option<(usize, usize)>,
 /// Reassembles shards of one grid into the whole sweep (the shards may come in
 /// any order; together they must cover every point exactly once).
 pub fn merge(parts: &[Sweep]) -> Result<Sweep> {
-    let first = parts.first().ok_or_else(|| Error::Domain { what: "nothing to merge".into() })?;
+    let first = parts.first().ok_or_else(|| Error::Sweep(SweepError::NothingToMerge))?;
     let grid = first.grid;
     let mut slots: Vec<Option<SweepPoint>> = vec![None; grid.len()];
     for p in parts {
         if p.grid != grid {
-            return Err(Error::Domain { what: "the shards belong to different grids".into() });
+            return Err(Error::Sweep(SweepError::DifferentGrids));
         }
         for q in &p.points {
             match slots.get_mut(q.index) {
                 Some(slot @ None) => *slot = Some(*q),
-                Some(Some(_)) => return Err(Error::Domain { what: format!("grid point {} appears in two shards", q.index) }),
-                None => return Err(Error::Domain { what: format!("grid point {} lies outside the grid", q.index) }),
+                Some(Some(_)) => return Err(Error::Sweep(SweepError::DuplicatePoint { index: q.index })),
+                None => return Err(Error::Sweep(SweepError::PointOutsideGrid { index: q.index })),
             }
         }
     }
     let missing = slots.iter().filter(|s| s.is_none()).count();
     if missing > 0 {
-        return Err(Error::Domain { what: format!("{missing} of {} grid points are missing: merge every shard", grid.len()) });
+        return Err(Error::Sweep(SweepError::MissingPoints { missing, total: grid.len() }));
     }
     Ok(Sweep { grid, shard: None, points: slots.into_iter().flatten().collect() })
 }

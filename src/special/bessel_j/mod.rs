@@ -227,8 +227,8 @@ pub fn choose_algorithm(n: u64, x: f64, wp: u32) -> Algorithm {
 
 fn validate(n: i64, x: &Float) -> Result<()> {
     check_finite(x, "x")?;
-    if n.abs() > MAX_ORDER {
-        return Err(Error::Domain { what: format!("|n| = {} exceeds the supported order {MAX_ORDER}", n.abs()) });
+    if n.unsigned_abs() > MAX_ORDER as u64 {
+        return Err(Error::IntegerOutOfRange { arg: "n", value: n, min: -MAX_ORDER, max: MAX_ORDER });
     }
     Ok(())
 }
@@ -460,8 +460,8 @@ where
     F: FnOnce(u64, &Float) -> Result<Bounded>,
 {
     crate::error::finite(x, "x")?;
-    if n.abs() > MAX_ORDER {
-        return Err(Error::Domain { what: format!("|n| = {} exceeds the supported order {MAX_ORDER}", n.abs()) });
+    if n.unsigned_abs() > MAX_ORDER as u64 {
+        return Err(Error::IntegerOutOfRange { arg: "n", value: n, min: -MAX_ORDER, max: MAX_ORDER });
     }
     if x == 0.0 {
         return Ok(Bounded { value: if n == 0 { 1.0 } else { 0.0 }, err: 0.0 });

@@ -50,8 +50,13 @@ fn prefactor(n: u64, half_x: &Ball, wp: u32) -> Result<Ball> {
         return half_x.pow_u64(n).div(&fact);
     }
     let nf = n as f64;
-    let magnitude = nf * (nf.ln().abs() + half_x.mid().to_f64().ln().abs() + 1.0);
-    let p = wp + magnitude.log2().max(0.0) as u32 + 16;
+    // |ln(x/2)| from the binary exponent (to_f64 would under- or overflow for MP inputs)
+    let ln_half_x = half_x.mid().get_exp().map_or(0.0, |e| (e as f64).abs() * std::f64::consts::LN_2);
+    let magnitude = nf * (nf.ln().abs() + ln_half_x + 1.0);
+    // |ln(x/2)| is finite for the nonzero x that reach here; the sum saturates
+    // instead of overflowing, and the precision check below refuses it
+    let p = wp.saturating_add(magnitude.log2().max(0.0) as u32).saturating_add(16);
+    crate::error::check_working_prec(p)?;
     let n_i = i64::try_from(n).map_err(|_| Error::Domain { what: "Bessel order too large".into() })?;
     let lnfact_mid = Float::with_val(p, n_i + 1).ln_gamma();
     let ulp = match lnfact_mid.get_exp() {

@@ -1,0 +1,200 @@
+//! No public entry point panics, on any input: fuzzing on the stable toolchain
+//! with bolero's random engine (issue 26, item 5).
+//!
+//! Each target draws structured inputs (f64 bit patterns mixed with values at and
+//! next to the domain edges, huge and negative integers, precisions 0, 1, the
+//! maximum and beyond, arbitrary text for the parsers) and calls the library.
+//! A panic fails the test; so does an `Ok` that carries a non-finite number
+//! (bad input must be an error, never a NaN).
+//!
+//! `./dev test` runs each target for bolero's default 1000 inputs. A campaign:
+//!
+//! ```text
+//! BOLERO_RANDOM_ITERATIONS=1000000 cargo test --release --features maugis/gmp-no-check --test fuzz
+//! ```
+//!
+//! (docs/fuzzing.md records the campaigns run and their counts).
+
+use bolero::check;
+use maugis::ball::Decimal;
+use maugis::contact::curve::{load_area_curve, state, CurveOptions};
+use maugis::contact::model::{ContactSize, Params};
+use maugis::quad::certified::Options;
+use maugis::quad::expr::{integrate_expr, Expr, UpperLimit};
+use maugis::registry::{self, Answer, Arg, ParamKind, FUNCTIONS};
+use maugis::MAX_PREC;
+
+/// Values at and next to the edges of the functions' domains.
+const EDGES: [f64; 24] = [
+    0.0, -0.0, 1.0, -1.0, 0.5, -0.5, 1.5, 2.0, 1e-300, -1e-300, 5e-324, 1e300, -1e300, f64::MAX, f64::MIN,
+    f64::NAN, f64::INFINITY, f64::NEG_INFINITY, 1e-6, 1e6, 1e4, 1e5, 1.0 - f64::EPSILON, 1.0 + f64::EPSILON,
+];
+
+/// An f64 from 64 random bits: a raw bit pattern, a domain edge, a small
+/// multiple of 1/8, or a value of moderate size.
+fn real(bits: u64) -> f64 {
+    match bits >> 62 {
+        0 => f64::from_bits(bits),
+        1 => EDGES[(bits % EDGES.len() as u64) as usize],
+        2 => ((bits % 4001) as f64 - 2000.0) / 8.0,
+        _ => (bits >> 11) as f64 / (1u64 << 53) as f64 * 40.0 - 10.0,
+    }
+}
+
+/// An integer from 64 random bits: raw, small, or at the i64 edges.
+fn integer(bits: u64) -> i64 {
+    match bits >> 62 {
+        0 => bits as i64,
+        1 => [i64::MIN, i64::MAX, 0, -1, 1, 1 << 24, (1 << 24) + 1, 100_000, 100_001, 1_000_001][(bits % 10) as usize],
+        _ => (bits % 61) as i64 - 20,
+    }
+}
+
+/// A precision: 0, 1 and the edges of the allowed range often, otherwise a small one.
+fn precision(bits: u32) -> u32 {
+    match bits % 8 {
+        0 => [0, 1, 2, MAX_PREC + 1, u32::MAX][(bits / 8 % 5) as usize],
+        _ => 2 + bits / 8 % 160,
+    }
+}
+
+/// A decimal text from random bits: mostly well formed, sometimes not.
+fn decimal_text(bits: u64) -> String {
+    let v = real(bits);
+    match bits % 7 {
+        0 => format!("{v:e}"),
+        1 => format!("{}", integer(bits.rotate_left(7))),
+        2 => format!("{v}e{}", (bits >> 40) as i16),
+        3 => ["nan", "inf", "-", "", "1e", ".", "0x10", "1.2.3", "1e999999999999", " 2.5 "][(bits % 10) as usize].to_string(),
+        _ => format!("{v}"),
+    }
+}
+
+fn finite_answer(name: &str, args: &dyn std::fmt::Debug, a: &Answer) {
+    let ok = match a {
+        Answer::F64(v) => v.is_finite(),
+        Answer::SeriesF64 { value, trunc } => value.is_finite() && trunc.is_finite(),
+        Answer::EstimateF64 { value, error_estimate } => value.is_finite() && error_estimate.is_finite(),
+        Answer::Ball(b) | Answer::SeriesBall { value: b, .. } => b.mid().is_finite() && b.rad().is_finite(),
+        Answer::EstimateMp { value, error_estimate } => value.is_finite() && error_estimate.is_finite(),
+        _ => true,
+    };
+    assert!(ok, "{name}{args:?} answered a non-finite number: {a:?}");
+}
+
+#[test]
+fn registry_f64_paths() {
+    check!().with_type::<(u8, [u64; 5])>().for_each(|(which, bits)| {
+        let f = &FUNCTIONS[*which as usize % FUNCTIONS.len()];
+        let args: Vec<Arg<f64>> = f
+            .params
+            .iter()
+            .zip(bits)
+            .map(|(p, &b)| match p.kind {
+                ParamKind::Integer => Arg::Int(integer(b)),
+                ParamKind::Real => Arg::Real(real(b)),
+            })
+            .collect();
+        // the expensive f64 paths (quadrature, long series, the model's root) at huge
+        // arguments are refused by their domain checks, so every call is bounded
+        if let Ok(a) = f.eval_f64(&args) {
+            finite_answer(f.name, &args, &a);
+        }
+        if let Ok(b) = f.eval_bounded(&args) {
+            assert!(b.value.is_finite() && b.err.is_finite() && b.err >= 0.0, "{}{args:?}: {b:?}", f.name);
+        }
+    });
+}
+
+#[test]
+fn registry_mp_paths() {
+    check!().with_type::<(u8, [u64; 5], u32)>().for_each(|(which, bits, p)| {
+        let f = &FUNCTIONS[*which as usize % FUNCTIONS.len()];
+        let prec = precision(*p);
+        let mut args = Vec::new();
+        for (q, &b) in f.params.iter().zip(bits) {
+            match q.kind {
+                // orders within the domain's scale: a huge order is a quick error
+                ParamKind::Integer => args.push(Arg::Int(integer(b) % 2000)),
+                ParamKind::Real => match Decimal::parse(&decimal_text(b)) {
+                    Ok(d) => args.push(Arg::Real(d)),
+                    Err(_) => return,
+                },
+            }
+        }
+        if let Ok(a) = f.eval_mp(&args, prec) {
+            finite_answer(f.name, &args, &a);
+        }
+    });
+}
+
+#[test]
+fn decimal_parser() {
+    check!().for_each(|bytes| {
+        let text = String::from_utf8_lossy(bytes);
+        if let Ok(d) = Decimal::parse(&text) {
+            let b = d.to_ball(64);
+            assert!(b.mid().is_finite() && b.rad().is_finite());
+        }
+    });
+    check!().with_type::<u64>().for_each(|bits| {
+        let _ = Decimal::parse(&decimal_text(*bits));
+    });
+}
+
+#[test]
+fn registry_lookup() {
+    check!().for_each(|bytes| {
+        let name = String::from_utf8_lossy(bytes);
+        match registry::function(&name) {
+            Ok(f) => assert_eq!(f.name, name),
+            Err(e) => assert!(!e.to_string().is_empty()),
+        }
+    });
+}
+
+/// Pieces of the expression language, to build texts the parser mostly accepts.
+const TOKENS: [&str; 32] = [
+    "x", "x", "1", "2.5", "-", "+", "*", "/", "^", "(", ")", "sqrt(", "exp(", "log(", "sin(", "cos(", "tan(",
+    "sinh(", "cosh(", "tanh(", "atan(", "besselj(", ",", "pi", "0", "1e400", "-3", "(x", ")^2", "1/x", "nan", "y",
+];
+
+#[test]
+fn expression_parser_and_integrator() {
+    check!().for_each(|bytes| {
+        let _ = Expr::parse(&String::from_utf8_lossy(bytes));
+    });
+    check!().with_type::<(Vec<u8>, u64, u64)>().for_each(|(picks, a, b)| {
+        let text: String = picks.iter().take(24).map(|&i| TOKENS[i as usize % TOKENS.len()]).collect();
+        let Ok(expr) = Expr::parse(&text) else { return };
+        // the f64 evaluation is an estimate: any value, NaN included, but no panic
+        std::hint::black_box(expr.eval_f64(real(*a)));
+        // a cheap certified integral over a short range: bounded work whatever the expression
+        let (Ok(lo), Ok(hi)) = (Decimal::parse(&decimal_text(*a)), Decimal::parse(&decimal_text(*b))) else { return };
+        let Ok(opts) = Options::new().max_evaluations(2_000).and_then(|o| o.max_working_prec(256)) else { return };
+        if let Ok(r) = integrate_expr(&expr, &lo, &UpperLimit::Finite(hi), None, None, 32, &opts) {
+            assert!(r.value.re().mid().is_finite() && r.value.re().rad().is_finite(), "{text}: {r:?}");
+        }
+    });
+}
+
+#[test]
+fn model_entry_points() {
+    check!().with_type::<[u64; 4]>().for_each(|bits| {
+        let [lambda, alpha, beta, abar] = bits.map(real);
+        let Ok(params) = Params::new(lambda, alpha, beta) else { return };
+        // large contacts are valid but slow (the wave series grows with abar/beta); keep runs short
+        if abar.abs() > 50.0 || 2.0 * std::f64::consts::PI * abar / beta > 2e3 {
+            // construction only (its checks are what large inputs meet first)
+            std::hint::black_box(ContactSize::new(params, abar).is_ok());
+            return;
+        }
+        if let Ok(s) = state(params, abar) {
+            assert!(s.load.is_finite() && s.m.is_finite(), "{params:?} at {abar}: {s:?}");
+        }
+        let opts = CurveOptions { amax: abar, points: (bits[0] % 12) as usize, ..CurveOptions::default() };
+        if let Ok(c) = load_area_curve(params, opts) {
+            assert!(c.points.iter().all(|p| p.load.is_finite()));
+        }
+    });
+}
