@@ -27,7 +27,7 @@
 //! `k <= 1000`; there the parameters grow with `k` and the cancellation shrinks
 //! (`sum |t_n|/|F| ~ e^{2s} s^{-2k-3/2}` at `z = -s^2`), so large `k` is cheap: the
 //! f64 series certifies `1e-14` for about `k >= s`, the double-word series
-//! (`hyp1f2_dd.rs`) from `k >= 7` at `s = 35` (every `k` at `s <= 15`).
+//! (`dd.rs`) from `k >= 7` at `s = 35` (every `k` at `s <= 15`).
 //!
 //! # Accuracy
 //!
@@ -44,7 +44,10 @@
 //! Domain: finite real parameters with `b1, b2` not non-positive integers
 //! (unless the series terminates first), finite real `z`; `|z| <= 10^4` is tested.
 
-pub use crate::special::hyp1f2_family::{hyp1f2_model_family_f64, FAMILY_MAX_K};
+mod dd;
+mod family;
+
+pub use family::{hyp1f2_model_family_f64, FAMILY_MAX_K};
 
 use rug::Float;
 
@@ -271,13 +274,13 @@ pub fn hyp1f2(a: f64, b1: f64, b2: f64, z: f64) -> Result<f64> {
     hyp_pfq(&[a], &[b1, b2], z)
 }
 
-/// The f64 series, else the double-double series (`hyp1f2_dd.rs`), if
+/// The f64 series, else the double-double series (`dd.rs`), if
 /// either bound is at most [`NATIVE_REL_TOL`] relative.
 fn hyp1f2_native_or_dd(a: f64, b1: f64, b2: f64, z: f64) -> Option<Bounded> {
     let accept = |b: Bounded| (b.value.is_finite() && b.err <= NATIVE_REL_TOL * b.value.abs()).then_some(b);
     hyp1f2_native_bounded(a, b1, b2, z)
         .and_then(accept)
-        .or_else(|| crate::special::hyp1f2_dd::hyp1f2_series_dd(a, b1, b2, z)?.finish().and_then(accept))
+        .or_else(|| dd::hyp1f2_series_dd(a, b1, b2, z)?.finish().and_then(accept))
 }
 
 /// `1F2(a; b1, b2; z)` in f64 with a proven error bound for the f64 inputs as given:
