@@ -4,6 +4,8 @@
 //!   for k across 0..=1000 (the issue's target: under a millisecond each);
 //! * `hyp1f2(1/2; k+1, k+3/2; -300)` at 128 bits (the Eq. 12 factor at abar = 6,
 //!   beta = 9/8 is about -280);
+//! * `hyp1f2_large_grid`: `hyp1f2_mp` at 128 bits on the issue-23 grid of large
+//!   parameters and `1F2(1/2; 1, 3/2; z)` down to `z = -10^6` at 53, 128, 400 bits;
 //! * `hyp2f1(1, k+1/2; k+2; y)` at 128 bits near and at y = 1;
 //! * `bessel_j` MP at fixed points; f64 over the issue-8 domain (`bessel_j_f64`);
 //! * `bessel_j_large`: `bessel_j_mp` over the issue-13 grid (n in {0, 1, 7, 60,
@@ -16,6 +18,9 @@ use maugis::special::{bessel_j, exact, hyp1f2, hyp2f1, meijer_g};
 
 #[path = "common/meijer_domain.rs"]
 mod meijer_domain;
+
+#[path = "common/hyp1f2_large_grid.rs"]
+mod hyp1f2_large_grid;
 
 const KS: [u32; 5] = [0, 1, 10, 100, 1000];
 
@@ -54,6 +59,31 @@ fn bench_hyp1f2(c: &mut Criterion) {
     c.bench_function("hyp1f2_f64/k=100,z=-300", |b| {
         b.iter(|| hyp1f2::hyp1f2(0.5, 101.0, 101.5, black_box(-300.0)).unwrap())
     });
+}
+
+/// `hyp1f2_mp` at 128 bits over the issue-23 grid (`a`, `b1`, `b2`, `z` in
+/// `[-500, 500]`, `benches/common/hyp1f2_large_grid.rs`; target 50 ms a point), and
+/// `1F2(1/2; 1, 3/2; z)` for `z` down to `-10^6` at 53, 128 and 400 bits (target
+/// 10 ms). Arb beside it on the same points: `reference/bench_arb_hyp1f2_grid.py`.
+fn bench_hyp1f2_large(c: &mut Criterion) {
+    let mut g = c.benchmark_group("hyp1f2_large_grid");
+    g.sample_size(10).warm_up_time(std::time::Duration::from_millis(100)).measurement_time(std::time::Duration::from_millis(400));
+    let ex = |p: (f64, f64, f64, f64)| (exact(p.0), exact(p.1), exact(p.2), exact(p.3));
+    for (i, p) in hyp1f2_large_grid::large_grid().into_iter().enumerate() {
+        let (a, b1, b2, z) = ex(p);
+        g.bench_function(BenchmarkId::new("prec=128", format!("{i}:a={},b1={},b2={},z={}", p.0, p.1, p.2, p.3)), |b| {
+            b.iter(|| hyp1f2::hyp1f2_mp(&a, &b1, &b2, black_box(&z), 128).unwrap())
+        });
+    }
+    for prec in [53u32, 128, 400] {
+        for &zf in &hyp1f2_large_grid::MODEL_Z {
+            let (a, b1, b2, z) = ex((0.5, 1.0, 1.5, zf));
+            g.bench_function(BenchmarkId::new(format!("model,prec={prec}"), format!("z={zf}")), |b| {
+                b.iter(|| hyp1f2::hyp1f2_mp(&a, &b1, &b2, black_box(&z), prec).unwrap())
+            });
+        }
+    }
+    g.finish();
 }
 
 /// `hyp1f2_bounded(1/2; k+1, k+3/2; -s^2)` over the issue-8 domain k <= 1000,
@@ -283,6 +313,6 @@ fn bench_bessel_large(c: &mut Criterion) {
 criterion_group! {
     name = benches;
     config = Criterion::default().sample_size(20).warm_up_time(std::time::Duration::from_millis(300)).measurement_time(std::time::Duration::from_secs(1));
-    targets = bench_meijer, bench_hyp1f2, bench_hyp1f2_domain, bench_meijer_domain, bench_hyp2f1, bench_hyp2f1_f64, bench_bessel, bench_bessel_large, bench_bessel_f64
+    targets = bench_meijer, bench_hyp1f2, bench_hyp1f2_large, bench_hyp1f2_domain, bench_meijer_domain, bench_hyp2f1, bench_hyp2f1_f64, bench_bessel, bench_bessel_large, bench_bessel_f64
 }
 criterion_main!(benches);
