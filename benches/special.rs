@@ -119,6 +119,18 @@ fn bench_hyp1f2_domain(c: &mut Criterion) {
         pts.len(),
         hyp1f2::hyp1f2_fallbacks() - before
     );
+    // Issue 23's table: k in {0, 1, 2, 5, 10, 50, 200, 1000}, 64 s per k in (0, 35]
+    let before = hyp1f2::hyp1f2_fallbacks();
+    let mut g = c.benchmark_group("hyp1f2_f64_per_k");
+    g.throughput(criterion::Throughput::Elements(64));
+    for k in [0.0f64, 1.0, 2.0, 5.0, 10.0, 50.0, 200.0, 1000.0] {
+        let ss: Vec<f64> = (1..=64).map(|i| 35.0 * ((i as f64 * 0.618_033_988_749_895).fract()).max(1.0 / 64.0)).collect();
+        g.bench_with_input(BenchmarkId::new("hyp1f2_bounded,k", k), &k, |b, &k| {
+            b.iter(|| ss.iter().map(|&s| hyp1f2::hyp1f2_bounded(0.5, k + 1.0, k + 1.5, black_box(-s * s)).unwrap().value).sum::<f64>())
+        });
+    }
+    g.finish();
+    eprintln!("hyp1f2_f64_per_k: MP fallbacks during the run: {}", hyp1f2::hyp1f2_fallbacks() - before);
     // The whole family k = 0..=1000 at one z = -s^2 (elements: 1001 values per call).
     let before = hyp1f2::hyp1f2_fallbacks();
     let mut g = c.benchmark_group("hyp1f2_model_family_f64");

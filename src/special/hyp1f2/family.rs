@@ -22,7 +22,7 @@
 //! `z = -1225`). The
 //! remaining small `k`, and any value whose rounded bound is not `1e-14`
 //! relative, are evaluated per `k` by [`super::hyp1f2::hyp1f2_bounded`] (f64
-//! series, double-word series, then MP), so every returned bound is proven and
+//! series, double-word series, Bessel route, then MP), so every returned bound is proven and
 //! `1e-14` relative.
 
 use crate::ball::cpu_dispatch;
