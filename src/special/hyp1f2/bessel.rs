@@ -192,3 +192,27 @@ mod tests {
         assert!(model_family_bessel(600, &exact(-1e6), 128).unwrap().is_none());
     }
 }
+
+#[cfg(test)]
+mod edge_tests {
+    use crate::special::exact;
+    use crate::special::hyp1f2::{hyp1f2_bounded, hyp1f2_mp};
+
+    #[test]
+    fn huge_negative_z_answers_or_refuses_without_panic() {
+        for &z in &[-1e12, -1e30, -1e300, -f64::MAX] {
+            for prec in [53u32, 128] {
+                match hyp1f2_mp(&exact(0.5), &exact(1.0), &exact(1.5), &exact(z), prec) {
+                    Ok(b) => {
+                        assert!(b.meets_rel(prec), "z={z}: {b:?}");
+                        // leading term (k+1/2)/x with k = 0
+                        let lead = 0.5 / (-z).sqrt();
+                        assert!((b.to_f64() / lead - 1.0).abs() < 1e-3, "z={z}: {b:?}");
+                    }
+                    Err(e) => eprintln!("z={z} prec={prec}: {e}"),
+                }
+            }
+            let _ = hyp1f2_bounded(0.5, 1.0, 1.5, z);
+        }
+    }
+}
