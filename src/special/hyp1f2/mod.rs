@@ -243,7 +243,7 @@ const BESSEL_F64_MIN_X2: f64 = 289.0;
 fn model_family_index_f64(a: f64, b1: f64, b2: f64) -> Option<u32> {
     let (lo, hi) = if b1 < b2 { (b1, b2) } else { (b2, b1) };
     let k = lo - 1.0;
-    (a == 0.5 && k >= 0.0 && k <= 1e6 && k == k.floor() && hi - k == 1.5).then_some(k as u32)
+    (a == 0.5 && (0.0..=1e6).contains(&k) && k == k.floor() && hi - k == 1.5).then_some(k as u32)
 }
 
 /// `Some(k)` when `(a; b1, b2) = (1/2; k+1, k+3/2)` (either order) with an integer
