@@ -4,6 +4,8 @@
 //!   for k across 0..=1000 (the issue's target: under a millisecond each);
 //! * `hyp1f2(1/2; k+1, k+3/2; -300)` at 128 bits (the Eq. 12 factor at abar = 6,
 //!   beta = 9/8 is about -280);
+//! * `hyp1f2_large_grid`: `hyp1f2_mp` at 128 bits on the issue-23 grid of large
+//!   parameters and `1F2(1/2; 1, 3/2; z)` down to `z = -10^6` at 53, 128, 400 bits;
 //! * `hyp2f1(1, k+1/2; k+2; y)` at 128 bits near and at y = 1;
 //! * `bessel_j` MP at fixed points; f64 over the issue-8 domain (`bessel_j_f64`);
 //! * `bessel_j_large`: `bessel_j_mp` over the issue-13 grid (n in {0, 1, 7, 60,
@@ -16,6 +18,9 @@ use maugis::special::{bessel_j, exact, hyp1f2, hyp2f1, meijer_g};
 
 #[path = "common/meijer_domain.rs"]
 mod meijer_domain;
+
+#[path = "common/hyp1f2_large_grid.rs"]
+mod hyp1f2_large_grid;
 
 const KS: [u32; 5] = [0, 1, 10, 100, 1000];
 
@@ -56,6 +61,31 @@ fn bench_hyp1f2(c: &mut Criterion) {
     });
 }
 
+/// `hyp1f2_mp` at 128 bits over the issue-23 grid (`a`, `b1`, `b2`, `z` in
+/// `[-500, 500]`, `benches/common/hyp1f2_large_grid.rs`; target 50 ms a point), and
+/// `1F2(1/2; 1, 3/2; z)` for `z` down to `-10^6` at 53, 128 and 400 bits (target
+/// 10 ms). Arb beside it on the same points: `reference/bench_arb_hyp1f2_grid.py`.
+fn bench_hyp1f2_large(c: &mut Criterion) {
+    let mut g = c.benchmark_group("hyp1f2_large_grid");
+    g.sample_size(10).warm_up_time(std::time::Duration::from_millis(100)).measurement_time(std::time::Duration::from_millis(400));
+    let ex = |p: (f64, f64, f64, f64)| (exact(p.0), exact(p.1), exact(p.2), exact(p.3));
+    for (i, p) in hyp1f2_large_grid::large_grid().into_iter().enumerate() {
+        let (a, b1, b2, z) = ex(p);
+        g.bench_function(BenchmarkId::new("prec=128", format!("{i}:a={},b1={},b2={},z={}", p.0, p.1, p.2, p.3)), |b| {
+            b.iter(|| hyp1f2::hyp1f2_mp(&a, &b1, &b2, black_box(&z), 128).unwrap())
+        });
+    }
+    for prec in [53u32, 128, 400] {
+        for &zf in &hyp1f2_large_grid::MODEL_Z {
+            let (a, b1, b2, z) = ex((0.5, 1.0, 1.5, zf));
+            g.bench_function(BenchmarkId::new(format!("model,prec={prec}"), format!("z={zf}")), |b| {
+                b.iter(|| hyp1f2::hyp1f2_mp(&a, &b1, &b2, black_box(&z), prec).unwrap())
+            });
+        }
+    }
+    g.finish();
+}
+
 /// `hyp1f2_bounded(1/2; k+1, k+3/2; -s^2)` over the issue-8 domain k <= 1000,
 /// s <= 35 (64 fixed low-discrepancy points; elements per second), with the number
 /// of MP fallbacks printed (large negative z against small k cancels: those fall back).
@@ -89,6 +119,18 @@ fn bench_hyp1f2_domain(c: &mut Criterion) {
         pts.len(),
         hyp1f2::hyp1f2_fallbacks() - before
     );
+    // Issue 23's table: k in {0, 1, 2, 5, 10, 50, 200, 1000}, 64 s per k in (0, 35]
+    let before = hyp1f2::hyp1f2_fallbacks();
+    let mut g = c.benchmark_group("hyp1f2_f64_per_k");
+    g.throughput(criterion::Throughput::Elements(64));
+    for k in [0.0f64, 1.0, 2.0, 5.0, 10.0, 50.0, 200.0, 1000.0] {
+        let ss: Vec<f64> = (1..=64).map(|i| 35.0 * ((i as f64 * 0.618_033_988_749_895).fract()).max(1.0 / 64.0)).collect();
+        g.bench_with_input(BenchmarkId::new("hyp1f2_bounded,k", k), &k, |b, &k| {
+            b.iter(|| ss.iter().map(|&s| hyp1f2::hyp1f2_bounded(0.5, k + 1.0, k + 1.5, black_box(-s * s)).unwrap().value).sum::<f64>())
+        });
+    }
+    g.finish();
+    eprintln!("hyp1f2_f64_per_k: MP fallbacks during the run: {}", hyp1f2::hyp1f2_fallbacks() - before);
     // The whole family k = 0..=1000 at one z = -s^2 (elements: 1001 values per call).
     let before = hyp1f2::hyp1f2_fallbacks();
     let mut g = c.benchmark_group("hyp1f2_model_family_f64");
@@ -283,6 +325,6 @@ fn bench_bessel_large(c: &mut Criterion) {
 criterion_group! {
     name = benches;
     config = Criterion::default().sample_size(20).warm_up_time(std::time::Duration::from_millis(300)).measurement_time(std::time::Duration::from_secs(1));
-    targets = bench_meijer, bench_hyp1f2, bench_hyp1f2_domain, bench_meijer_domain, bench_hyp2f1, bench_hyp2f1_f64, bench_bessel, bench_bessel_large, bench_bessel_f64
+    targets = bench_meijer, bench_hyp1f2, bench_hyp1f2_large, bench_hyp1f2_domain, bench_meijer_domain, bench_hyp2f1, bench_hyp2f1_f64, bench_bessel, bench_bessel_large, bench_bessel_f64
 }
 criterion_main!(benches);

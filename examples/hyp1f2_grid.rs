@@ -5,10 +5,11 @@
 //! Each point is called until 20 ms have passed (at least once); the figure is
 //! the mean time per call within one process.
 
-use std::time::Instant;
-
 use maugis::special::exact;
 use maugis::special::hyp1f2::hyp1f2_mp;
+
+#[path = "../benches/common/per_call.rs"]
+mod per_call;
 
 /// `(a, b1, b2, z)`: the model family `1F2(1/2; k+1, k+3/2; -s)` (Eq. 12) at
 /// `abar = 1, 3, 6` (`s = (pi abar/beta)^2` ~ 7.8, 70, 281), issue 8's point
@@ -37,15 +38,7 @@ fn main() {
     for &prec in &precs {
         for &(a, b1, b2, z) in &POINTS {
             let (ae, b1e, b2e, ze) = (exact(a), exact(b1), exact(b2), exact(z));
-            let t0 = Instant::now();
-            let mut calls = 0u32;
-            let mut res = hyp1f2_mp(&ae, &b1e, &b2e, &ze, prec);
-            calls += 1;
-            while t0.elapsed().as_secs_f64() < 0.02 {
-                res = hyp1f2_mp(&ae, &b1e, &b2e, &ze, prec);
-                calls += 1;
-            }
-            let us = t0.elapsed().as_secs_f64() * 1e6 / calls as f64;
+            let (res, us) = per_call::per_call(|| hyp1f2_mp(&ae, &b1e, &b2e, &ze, prec));
             match res {
                 Ok(b) => println!("{prec},{a},{b1},{b2},{z},{:.1},{us:.2}", b.rel_accuracy_bits().min(99999.0)),
                 Err(e) => println!("{prec},{a},{b1},{b2},{z},error: {e},{us:.2}"),

@@ -5,12 +5,12 @@ below a marker line so that the prose above it survives a rerun."""
 import os
 
 
-def footer(script):
-    """The line naming the script and the load average at the end of the run."""
+def footer(script, timing="wall time per call in one process"):
+    """The line naming the script, how it timed, and the load average at the end of the run."""
     load = "load average %.2f / %.2f / %.2f (1/5/15 min) on %d cores at the end of the run" % (
         os.getloadavg() + (os.cpu_count(),))
-    return ("Measured by `reference/%s` (wall time per call in one process, both libraries "
-            "in the same session); %s." % (script, load))
+    return ("Measured by `reference/%s` (%s, both libraries "
+            "in the same session); %s." % (script, timing, load))
 
 
 def write_below_marker(path, marker, text):

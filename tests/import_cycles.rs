@@ -55,11 +55,6 @@ const KNOWN_CYCLES: &[(&[&str], &str)] = &[
         "issue 26: special/meijer_g/ as one folder",
     ),
     (
-        &["src/special/hyp1f2.rs", "src/special/hyp1f2_family.rs"],
-        // hyp1f2 re-exports the family's model function, the family calls hyp1f2_bounded
-        "issue 26: special/hyp1f2/ as one folder",
-    ),
-    (
         &[
             "src/special/hyp2f1/power.rs",
             "src/special/hyp2f1/power_f64.rs",

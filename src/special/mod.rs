@@ -42,8 +42,6 @@
 pub mod bessel_j;
 pub(crate) mod gamma;
 pub mod hyp1f2;
-pub(crate) mod hyp1f2_dd;
-pub(crate) mod hyp1f2_family;
 pub mod hyp2f1;
 pub mod meijer_g;
 pub(crate) mod meijer_g_dd;

@@ -302,10 +302,15 @@ pub(crate) fn pfq_f64(a: &[f64], b: &[f64], z: f64) -> Option<(f64, f64, f64)> {
     }
 }
 
+/// Largest working precision of [`pfq_series_exact`]: its f64 bound needs
+/// `2^-wp` (and `2^-2wp`, in the stopping target) far above the f64 underflow.
+const MAX_EXACT_SERIES_PREC: u32 = 480;
+
 /// `pFq(a; b; z)` for exact (binary-float) parameters and `z`, summed in plain MPFR
 /// floats with a running error bound instead of ball arithmetic: `Ok(None)` where it
 /// does not apply (`p > q`, a pole among the `b`, magnitudes outside the f64
-/// exponent range of the bound), and the caller uses [`pfq_series`].
+/// exponent range of the bound, `wp` above [`MAX_EXACT_SERIES_PREC`]), and the caller
+/// uses [`pfq_series`].
 ///
 /// **Method.** `P_n = z prod_i (a_i + n)` and `Q_n = (n + 1) prod_j (b_j + n)` are
 /// formed exactly (sums and products of binary floats at the precision that holds
@@ -321,8 +326,8 @@ pub(crate) fn pfq_f64(a: &[f64], b: &[f64], z: f64) -> Option<(f64, f64, f64)> {
 /// `2.01 u sum_n n |t~_n| + u sum_k |s~_k|`. **Tail**: as in [`pfq_series`], once
 /// `n >= N` passes every negative parameter and `rho_N < 1`,
 /// `sum_{n>=N} |t_n| <= |t_N|/(1 - rho_N)` with `|t_N| <= (1 + 2.01 N u) |t~_N|`.
-/// The magnitudes are bounded by `|x| <= 2^exp(x)` (exact f64 powers of two, at
-/// most a factor 2 high, cheaper than a conversion) and the bound is summed in f64
+/// The magnitudes are bounded by `|x| <= 2^exp(x)` (exact f64 powers of two,
+/// subnormal ones included, at most a factor 2 high, cheaper than a conversion) and the bound is summed in f64
 /// (fewer than `2^22` operations of relative error `2^-53` each) and inflated by
 /// `1 + 2^-28`, plus `4 (N+1) 2^-1074` for f64 roundings in the subnormal range;
 /// a sum below `1e-280` goes to the ball series instead.
@@ -334,7 +339,8 @@ pub(crate) fn pfq_f64(a: &[f64], b: &[f64], z: f64) -> Option<(f64, f64, f64)> {
 fn pfq_series_exact(a: &[Float], b: &[Float], z: &Float, wp: u32) -> Result<Option<Ball>> {
     use crate::special::{exact_add, is_nonpositive_integer};
     let (p, q) = (a.len(), b.len());
-    if p > q || b.iter().any(is_nonpositive_integer) || wp < 24 {
+    // (above ~1000 bits u = 2^-wp underflows the f64 bound: the ball series then)
+    if p > q || b.iter().any(is_nonpositive_integer) || !(24..=MAX_EXACT_SERIES_PREC).contains(&wp) {
         return Ok(None);
     }
     let u = (-(wp as f64)).exp2();
@@ -343,6 +349,8 @@ fn pfq_series_exact(a: &[Float], b: &[Float], z: &Float, wp: u32) -> Result<Opti
         None => if x.is_zero() { 0.0 } else { f64::INFINITY },
         Some(e) if e > 1023 => f64::INFINITY,
         Some(e) if e < -1073 => f64::from_bits(1),
+        // 2^e as a subnormal (exact): bit e + 1074 of the significand
+        Some(e) if e < -1021 => f64::from_bits(1u64 << (e + 1074)),
         Some(e) => f64::from_bits(((e + 1023) as u64) << 52),
     };
     let exact_balls = |xs: &[Float]| xs.iter().map(|x| Ball::from_float(x, x.prec())).collect::<Vec<Ball>>();
@@ -636,6 +644,8 @@ mod tests {
             (&[], &[], -20.0),
             (&[], &[0.5], -1000.0),
             (&[2.0, 3.0], &[0.25, 0.125], -0.5),
+            // terms below 2^-1022 (f64 subnormal bounds; once summed as negative numbers)
+            (&[-337.8177490234375], &[427.4927978515625, 294.2845458984375], -63.8824462890625),
         ];
         for &(a, b, z) in cases {
             let (ae, be, ze): (Vec<Float>, Vec<Float>, Float) = (a.iter().map(|&x| exact(x)).collect(), b.iter().map(|&x| exact(x)).collect(), exact(z));

@@ -1,5 +1,5 @@
 //! `1F2(a; b1, b2; z)` summed in double-double with a proven bound: the native
-//! path where the f64 series of [`super::hyp1f2::hyp1f2_native_bounded`] loses
+//! path where the f64 series of [`super::hyp1f2_native_bounded`] loses
 //! too much to cancellation (large negative `z` against small parameters).
 //!
 //! # Method
@@ -14,7 +14,8 @@
 //! times the value (`~1e30` at `k = 0`, `s = 35`). Measured (unit tests): double
 //! words certify `1e-14` for `k >= 7` at `s = 35`, `k >= 5` at 30, `k >= 3` at
 //! 25, `k >= 1` at 20 and every `k` at `s <= 15`; the f64 series needs about
-//! `k >= s`. Below that (`k <= 6`, `s > 15`) the caller falls back to MP.
+//! `k >= s`. Below that (`k <= 6`, `s > 15`) the caller takes the Bessel route
+//! (`bessel_f64.rs`) from `s = 17`.
 //!
 //! **Tail** (as in the f64 series): once `a+N, b1+N, b2+N > 0`,
 //! `|t_{n+1}/t_n| <= rho_N = |z| max(1, (a+N)/(b1+N)) / ((b2+N)(N+1))` for all
@@ -38,6 +39,21 @@ const MAX_TERMS: u64 = 20_000;
 fn shifted(x: f64, n: f64) -> BoundedDd {
     let (hi, lo) = two_sum(x, n);
     BoundedDd { v: Dd { hi, lo }, e: 0.0 }
+}
+
+/// `(a+n, (b1+n)(b2+n)(n+1))` as two f64 when both are exact (`num` is the exact
+/// double word `a+n`; the sums' and products' rounding errors are all zero), else
+/// `None`. Then the term update is `t z (a+n) / den` with exact operands, the
+/// operations charged as in the general case ([`BoundedDd::mul_f64_p`],
+/// [`BoundedDd::div_f64_p`]). Holds in the model family (`b1 = k+1`,
+/// `b2 = k+3/2`) while the product stays below `2^53`.
+#[inline(always)]
+fn exact_ratio<P: ExactProduct>(num: BoundedDd, b1: f64, b2: f64, n: f64) -> Option<(f64, f64)> {
+    let (d1, e1) = two_sum(b1, n);
+    let (d2, e2) = two_sum(b2, n);
+    let (p1, f1) = P::two_prod(d1, d2);
+    let (p2, f2) = P::two_prod(p1, n + 1.0);
+    (num.v.lo == 0.0 && e1 == 0.0 && e2 == 0.0 && f1 == 0.0 && f2 == 0.0 && p2 != 0.0).then_some((num.v.hi, p2))
 }
 
 cpu_dispatch! {
@@ -72,14 +88,22 @@ fn series_with<P: ExactProduct>(a: f64, b1: f64, b2: f64, z: f64) -> Option<Boun
             // a = -n: the series terminates, and every term so far was exact in its bound
             return Some(s);
         }
-        let den = shifted(b1, nf).mul_p::<P>(shifted(b2, nf)).mul_f64_p::<P>(nf + 1.0);
-        t = t.mul_f64_p::<P>(z).mul_p::<P>(num).div(den)?;
+        t = match exact_ratio::<P>(num, b1, b2, nf) {
+            // a+n exact, (b1+n)(b2+n)(n+1) an exact f64: two products and one
+            // division by an f64 instead of a double-word division
+            Some((num, den)) => t.mul_f64_p::<P>(z).mul_f64_p::<P>(num).div_f64_p::<P>(den),
+            None => {
+                let den = shifted(b1, nf).mul_p::<P>(shifted(b2, nf)).mul_f64_p::<P>(nf + 1.0);
+                t.mul_f64_p::<P>(z).mul_p::<P>(num).div(den)?
+            }
+        };
         n += 1;
         if !(t.v.hi.is_finite() && t.e.is_finite()) || n > MAX_TERMS {
             return None;
         }
         let nf = n as f64;
-        if nf >= n_pos {
+        // (the tail test needs |t_N| <= 2^-70 |s| at least: checked first, without divisions)
+        if nf >= n_pos && t.mag() <= TAIL_REL * s.mag() {
             let rho = z.abs() * ((a + nf) / (b1 + nf)).max(1.0) / ((b2 + nf) * (nf + 1.0)) * (1.0 + 8.0 * u);
             if rho <= 0.5 {
                 let tail = (t.mag() + t.e) * (1.0 + 4.0 * u) / (1.0 - rho);

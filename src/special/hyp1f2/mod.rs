@@ -27,7 +27,32 @@
 //! `k <= 1000`; there the parameters grow with `k` and the cancellation shrinks
 //! (`sum |t_n|/|F| ~ e^{2s} s^{-2k-3/2}` at `z = -s^2`), so large `k` is cheap: the
 //! f64 series certifies `1e-14` for about `k >= s`, the double-word series
-//! (`hyp1f2_dd.rs`) from `k >= 7` at `s = 35` (every `k` at `s <= 15`).
+//! (`dd.rs`) from `k >= 7` at `s = 35` (every `k` at `s <= 15`), and the Bessel
+//! route in double words (`bessel_f64.rs`) the small `k` at `s >= 17`.
+//!
+//! # Model family at large `|z|` (`bessel.rs`)
+//!
+//! `1F2(1/2; k+1, k+3/2; -x^2) = (2k+1) int_0^1 (1-t)^{2k} J_0(2xt) dt`, which
+//! reduces to `J_0(2x)`, `J_1(2x)` and the two asymptotic series of the Struve
+//! differences `H_0 - Y_0`, `H_1 - Y_1` (DLMF 10.22.2, 11.6.1), whose remainder is
+//! bounded by the first omitted term (proof in `bessel.rs`). [`hyp1f2_mp`] takes it
+//! for the model family (`a = 1/2`, `{b1, b2} = {k+1, k+3/2}`, `0 <= k <= 10^6`,
+//! `4k <= 2x`) when that asymptotic series reaches the working precision
+//! (about `2x >= 0.7 wp`): there the series would carry `2.9 x` guard bits
+//! (`x = 1000`: 2900) and `e x` terms. `1F2(1/2; 1, 3/2; z)` at 53, 128 and 400
+//! bits: 40 us to 2.4 ms for `z` from `-300` to `-10^6` (the series at `-10^4`, 400
+//! bits, is the slowest), where the series was refused from `z = -5 10^4` at 128
+//! bits.
+//!
+//! # Large parameters
+//!
+//! With `a`, `b1`, `b2` of a few hundred and either sign the terms fall below
+//! `2^-1022` before the series may stop (it must pass `-a`), so the bound of the
+//! exact-parameter series (`pfq.rs`) sums subnormal f64 magnitudes; that bound is
+//! proven for them (issue 23: a bug there made the bound useless and the Ziv loop
+//! climbed to 1200 bits, 3.5 s a call). On the issue-23 grid (`a`, `b1`, `b2`, `z`
+//! in `[-500, 500]`, 64 points, `benches/common/hyp1f2_large_grid.rs`) every point
+//! now takes under 0.2 ms at 128 bits.
 //!
 //! # Accuracy
 //!
@@ -42,9 +67,16 @@
 //!   a typed error.
 //!
 //! Domain: finite real parameters with `b1, b2` not non-positive integers
-//! (unless the series terminates first), finite real `z`; `|z| <= 10^4` is tested.
+//! (unless the series terminates first), finite real `z`; tested: `|z| <= 10^4`
+//! (golden table), parameters and `z` in `[-500, 500]` (the issue-23 grid, against
+//! Arb), and the model family down to `z = -10^6`.
 
-pub use crate::special::hyp1f2_family::{hyp1f2_model_family_f64, FAMILY_MAX_K};
+mod bessel;
+mod bessel_f64;
+mod dd;
+mod family;
+
+pub use family::{hyp1f2_model_family_f64, FAMILY_MAX_K};
 
 use rug::Float;
 
@@ -175,8 +207,55 @@ pub fn hyp1f2_model_family(kmax: u32, s: &Ball, wp: u32) -> Result<Vec<Ball>> {
 }
 
 /// Certified `1F2(a; b1, b2; z)` with `rad <= 2^-prec |mid|`.
+///
+/// The model family `1F2(1/2; k+1, k+3/2; z)` (either order of the `b`) at
+/// large negative `z` goes through `J_0`, `J_1` and the Struve asymptotics
+/// (`bessel.rs`) where that series reaches the working precision; everything
+/// else sums the series (`pfq`).
 pub fn hyp1f2_mp(a: &Float, b1: &Float, b2: &Float, z: &Float, prec: u32) -> Result<Ball> {
+    if let Some(k) = model_family_index(a, b1, b2) {
+        crate::error::check_prec(prec)?;
+        crate::special::check_finite(z, "hypergeometric argument")?;
+        let y = 2.0 * (-z.to_f64()).sqrt();
+        let guard = crate::special::DEFAULT_GUARD_BITS + 2 * k as u32 + y.log2().max(0.0) as u32;
+        if *z < 0 && bessel::applies(k, y, prec + guard) {
+            let mut declined = false;
+            let b = crate::special::ziv("hyp1f2", prec, guard, |wp| match bessel::model_family_bessel(k, z, wp)? {
+                Some(b) => Ok(b),
+                None => {
+                    declined = true;
+                    Err(crate::error::Error::PrecisionExhausted { function: "hyp1f2 (Bessel route)", working_prec: wp })
+                }
+            });
+            if !declined {
+                return b;
+            }
+        }
+    }
     hyp_pfq_mp(std::slice::from_ref(a), &[b1.clone(), b2.clone()], z, prec)
+}
+
+/// `x^2` above which the f64 Bessel route is tried for the model family (`y = 2x >= 34`:
+/// below, the smallest term of its asymptotic series is above `1e-14`).
+const BESSEL_F64_MIN_X2: f64 = 289.0;
+
+/// [`model_family_index`] for f64 parameters.
+fn model_family_index_f64(a: f64, b1: f64, b2: f64) -> Option<u32> {
+    let (lo, hi) = if b1 < b2 { (b1, b2) } else { (b2, b1) };
+    let k = lo - 1.0;
+    (a == 0.5 && (0.0..=1e6).contains(&k) && k == k.floor() && hi - k == 1.5).then_some(k as u32)
+}
+
+/// `Some(k)` when `(a; b1, b2) = (1/2; k+1, k+3/2)` (either order) with an integer
+/// `0 <= k <= 10^6`: the seed's model family.
+fn model_family_index(a: &Float, b1: &Float, b2: &Float) -> Option<u64> {
+    if *a != 0.5 {
+        return None;
+    }
+    let (lo, hi) = if b1 < b2 { (b1, b2) } else { (b2, b1) };
+    let k = crate::special::exact_sub(lo, &Float::with_val(2, 1));
+    let ok = k.is_integer() && k >= 0 && k <= 1e6 && crate::special::exact_sub(hi, &k) == 1.5;
+    ok.then(|| k.to_f64() as u64)
 }
 
 /// Certified `1F2(a; b1, b2; z)` over balls of inputs (Arb's convention): the
@@ -186,6 +265,9 @@ pub fn hyp1f2_mp(a: &Float, b1: &Float, b2: &Float, z: &Float, prec: u32) -> Res
 /// balls ([`crate::special::pfq::hyp_pfq_ball_mp`] has the argument). Exact
 /// inputs give [`hyp1f2_mp`]'s answer.
 pub fn hyp1f2_ball_mp(a: &Ball, b1: &Ball, b2: &Ball, z: &Ball, prec: u32) -> Result<Ball> {
+    if [a, b1, b2, z].iter().all(|x| x.is_exact() && x.is_finite()) {
+        return hyp1f2_mp(a.mid(), b1.mid(), b2.mid(), z.mid(), prec);
+    }
     crate::special::pfq::hyp_pfq_ball_mp(std::slice::from_ref(a), &[b1.clone(), b2.clone()], z, prec)
 }
 
@@ -271,21 +353,41 @@ pub fn hyp1f2(a: f64, b1: f64, b2: f64, z: f64) -> Result<f64> {
     hyp_pfq(&[a], &[b1, b2], z)
 }
 
-/// The f64 series, else the double-double series (`hyp1f2_dd.rs`), if
+/// The f64 series, else the double-double series (`dd.rs`), if
 /// either bound is at most [`NATIVE_REL_TOL`] relative.
 fn hyp1f2_native_or_dd(a: f64, b1: f64, b2: f64, z: f64) -> Option<Bounded> {
     let accept = |b: Bounded| (b.value.is_finite() && b.err <= NATIVE_REL_TOL * b.value.abs()).then_some(b);
+    // the model family where its series cancel (k <= x/2 at z = -x^2): the Bessel
+    // route; below its range, the f64 series only where it can certify (about
+    // k >= x: the cancellation is e^{2x} x^{-2k-3/2}), else straight to double words
+    let family = model_family_index_f64(a, b1, b2);
+    if let (Some(k), true) = (family, z < 0.0) {
+        let x = (-z).sqrt();
+        if (4 * k as u64) as f64 <= 2.0 * x && z < -BESSEL_F64_MIN_X2 {
+            if let Some(b) = bessel_f64::model_family_bessel_f64(k, z).and_then(accept) {
+                return Some(b);
+            }
+        }
+        if (k as f64) < 0.5 * x - 2.0 {
+            return dd::hyp1f2_series_dd(a, b1, b2, z)?.finish().and_then(accept);
+        }
+    }
     hyp1f2_native_bounded(a, b1, b2, z)
         .and_then(accept)
-        .or_else(|| crate::special::hyp1f2_dd::hyp1f2_series_dd(a, b1, b2, z)?.finish().and_then(accept))
+        .or_else(|| dd::hyp1f2_series_dd(a, b1, b2, z)?.finish().and_then(accept))
 }
 
 /// `1F2(a; b1, b2; z)` in f64 with a proven error bound for the f64 inputs as given:
-/// the native series ([`hyp1f2_native_bounded`]) when its bound is at most
-/// [`NATIVE_REL_TOL`] relative, else the same series in double-double (cancellation:
-/// large negative `z` against the parameters; in the model family
-/// `1F2(1/2; k+1, k+3/2; -s^2)`, `s <= 35`, all `k >= 2`); otherwise (`k = 0, 1` at
-/// large `s`) the certified MP value at 64 bits, counted by [`hyp1f2_fallbacks`].
+/// for the model family `1F2(1/2; k+1, k+3/2; -s^2)` at `s >= 17`, `k <= s/2`, the
+/// Bessel route in double words (`bessel_f64.rs`); else the native series
+/// ([`hyp1f2_native_bounded`]) when its bound is at most [`NATIVE_REL_TOL`]
+/// relative (skipped for the family at `k < s/2 - 2`, where it cannot be), else
+/// the same series in double-double (cancellation: large negative `z` against the
+/// parameters); otherwise the certified MP value at 64 bits, counted by
+/// [`hyp1f2_fallbacks`] (none over the family at `k <= 1000`, `s <= 35`:
+/// `examples/hyp1f2_f64_cpu.rs`, 0.75 us per value on average over `k` in
+/// {0, 1, 2, 5, 10, 50, 200, 1000}, CPU time at load 8.7; it was 28 us with
+/// MP fallbacks).
 pub fn hyp1f2_bounded(a: f64, b1: f64, b2: f64, z: f64) -> Result<Bounded> {
     for (v, what) in [(a, "a"), (b1, "b1"), (b2, "b2"), (z, "z")] {
         crate::error::finite(v, what)?;

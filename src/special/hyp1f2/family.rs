@@ -13,7 +13,7 @@
 //! ```
 //!
 //! (`4 z` exact). Start: `Phi(M..M+3)`, `M = 2 kmax + 1`, by the double-word
-//! series of [`super::hyp1f2_dd`]. The recurrence loses accuracy where the
+//! series of [`super::dd`]. The recurrence loses accuracy where the
 //! family cancels (small `m` against large `|z|`: about `3.3 * 2 sqrt|z|` bits
 //! down to `m = 0`, measured in MP); the running bound shows it, and the
 //! recurrence stops as soon as a value's bound exceeds `2^-60` relative (the
@@ -22,14 +22,14 @@
 //! `z = -1225`). The
 //! remaining small `k`, and any value whose rounded bound is not `1e-14`
 //! relative, are evaluated per `k` by [`super::hyp1f2::hyp1f2_bounded`] (f64
-//! series, double-word series, then MP), so every returned bound is proven and
+//! series, double-word series, Bessel route, then MP), so every returned bound is proven and
 //! `1e-14` relative.
 
 use crate::ball::cpu_dispatch;
 use crate::ball::{Bounded, BoundedDd, ExactProduct};
 use crate::error::{Error, Result};
-use crate::special::hyp1f2::{hyp1f2_bounded, NATIVE_REL_TOL};
-use crate::special::hyp1f2_dd::hyp1f2_series_dd;
+use super::{hyp1f2_bounded, NATIVE_REL_TOL};
+use super::dd::hyp1f2_series_dd;
 
 /// Largest relative bound a recurrence value may carry before the recurrence
 /// stops (`2^-60`).
