@@ -486,6 +486,32 @@ impl Ball {
         Ball { mid, rad }
     }
 
+    /// `self += a * b` in place, with `tmp` as scratch for the product (no
+    /// allocation once `tmp` and `self` have their storage): the radius covers both
+    /// roundings and the input radii, as `self.add(&a.mul(b))` would.
+    pub(crate) fn add_mul_assign(&mut self, a: &Ball, b: &Ball, tmp: &mut Float) {
+        let p = self.prec().max(a.prec()).max(b.prec());
+        if tmp.prec() != p {
+            tmp.set_prec(p);
+        }
+        let ord = tmp.assign_round(&a.mid * &b.mid, Round::Nearest);
+        let mut rad = self.rad.add(rounding_error(tmp, ord));
+        if !b.rad.is_zero() {
+            rad = rad.add(Mag::from_float_up(&a.mid).mul(b.rad));
+        }
+        if !a.rad.is_zero() {
+            rad = rad.add(Mag::from_float_up(&b.mid).mul(a.rad));
+            if !b.rad.is_zero() {
+                rad = rad.add(a.rad.mul(b.rad));
+            }
+        }
+        if self.mid.prec() < p {
+            self.mid.set_prec(p); // exact: more bits
+        }
+        let ord = rug::ops::AddAssignRound::add_assign_round(&mut self.mid, &*tmp, Round::Nearest);
+        self.rad = rad.add(rounding_error(&self.mid, ord));
+    }
+
     /// `self * 2^e` (exact).
     pub fn mul_pow2(&self, e: i32) -> Ball {
         let mut mid = self.mid.clone();

@@ -302,18 +302,23 @@ where
     // operation of the integrand; rounded to wp they are balls that contain them.
     let mb = Ball::from_float(&m, m.prec()).set_prec(wp);
     let hb = Ball::from_float(&h, h.prec()).set_prec(wp);
-    let mut s = CBall::zero(wp);
+    // sum_k w_k f(x_k), accumulated in place (real and imaginary parts apart; an
+    // imaginary part that is exactly zero, as at real nodes of a real integrand, adds
+    // nothing)
+    let (mut s_re, mut s_im, mut tmp) = (Ball::zero(wp), Ball::zero(wp), Float::new(wp));
     for (k, (x, w)) in rule.nodes.iter().zip(&rule.weights).enumerate() {
         let hx = hb.mul(x);
-        let right = f.eval(CBall::from_real(mb.add(&hx)), Mode::Point);
-        let pair = if n % 2 == 1 && k == rule.nodes.len() - 1 {
-            right
-        } else {
-            right.add(&f.eval(CBall::from_real(mb.sub(&hx)), Mode::Point))
-        };
-        s = s.add(&pair.mul_real(w));
+        let last_odd = n % 2 == 1 && k == rule.nodes.len() - 1;
+        let points = if last_odd { [Some(mb.add(&hx)), None] } else { [Some(mb.add(&hx)), Some(mb.sub(&hx))] };
+        for t in points.into_iter().flatten() {
+            let v = f.eval(CBall::from_real(t), Mode::Point);
+            s_re.add_mul_assign(v.re(), w, &mut tmp);
+            if !v.is_real() {
+                s_im.add_mul_assign(v.im(), w, &mut tmp);
+            }
+        }
     }
-    let mut v = s.mul_real(&hb);
+    let mut v = CBall::new(s_re, s_im).mul_real(&hb);
     v.add_error_mag(err);
     Ok(Some((v, err)))
 }
