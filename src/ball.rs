@@ -424,12 +424,13 @@ impl Ball {
         Ball { mid: Float::with_val(self.prec(), -&self.mid), rad: self.rad }
     }
 
-    /// `self * other`.
-    pub fn mul(&self, other: &Ball) -> Ball {
-        let (mid, ord) = Float::with_val_round(self.out_prec(other), &self.mid * &other.mid, Round::Nearest);
-        let mut rad = rounding_error(&mid, ord);
+    #[inline]
+    /// `|mid_a| r_b + |mid_b| r_a + r_a r_b`: how far `a b` strays from
+    /// `mid_a mid_b` over the two balls (rounding not included).
+    fn product_spread(&self, other: &Ball) -> Mag {
+        let mut rad = Mag::ZERO;
         if !other.rad.is_zero() {
-            rad = rad.add(Mag::from_float_up(&self.mid).mul(other.rad));
+            rad = Mag::from_float_up(&self.mid).mul(other.rad);
         }
         if !self.rad.is_zero() {
             rad = rad.add(Mag::from_float_up(&other.mid).mul(self.rad));
@@ -437,6 +438,13 @@ impl Ball {
                 rad = rad.add(self.rad.mul(other.rad));
             }
         }
+        rad
+    }
+
+    /// `self * other`.
+    pub fn mul(&self, other: &Ball) -> Ball {
+        let (mid, ord) = Float::with_val_round(self.out_prec(other), &self.mid * &other.mid, Round::Nearest);
+        let rad = rounding_error(&mid, ord).add(self.product_spread(other));
         Ball { mid, rad }
     }
 
@@ -495,16 +503,7 @@ impl Ball {
             tmp.set_prec(p);
         }
         let ord = tmp.assign_round(&a.mid * &b.mid, Round::Nearest);
-        let mut rad = self.rad.add(rounding_error(tmp, ord));
-        if !b.rad.is_zero() {
-            rad = rad.add(Mag::from_float_up(&a.mid).mul(b.rad));
-        }
-        if !a.rad.is_zero() {
-            rad = rad.add(Mag::from_float_up(&b.mid).mul(a.rad));
-            if !b.rad.is_zero() {
-                rad = rad.add(a.rad.mul(b.rad));
-            }
-        }
+        let rad = self.rad.add(rounding_error(tmp, ord)).add(a.product_spread(b));
         if self.mid.prec() < p {
             self.mid.set_prec(p); // exact: more bits
         }
