@@ -288,6 +288,9 @@ impl Ball {
 
     /// Lower end of the ball, rounded down, at the midpoint's precision.
     pub fn lower(&self) -> Float {
+        if let Some(r) = self.rad.to_f64_exact() {
+            return Float::with_val_round(self.prec(), &self.mid - r, Round::Down).0;
+        }
         let mut r = Float::new(self.prec());
         r.assign_round(&self.mid - &self.rad.to_float(), Round::Down);
         r
@@ -295,9 +298,28 @@ impl Ball {
 
     /// Upper end of the ball, rounded up, at the midpoint's precision.
     pub fn upper(&self) -> Float {
+        if let Some(r) = self.rad.to_f64_exact() {
+            return Float::with_val_round(self.prec(), &self.mid + r, Round::Up).0;
+        }
         let mut r = Float::new(self.prec());
         r.assign_round(&self.mid + &self.rad.to_float(), Round::Up);
         r
+    }
+
+    /// [`Ball::lower`] or [`Ball::upper`], reusing the midpoint's storage.
+    pub(crate) fn into_end(mut self, upper: bool) -> Float {
+        match self.rad.to_f64_exact() {
+            Some(r) if upper => {
+                rug::ops::AddAssignRound::add_assign_round(&mut self.mid, r, Round::Up);
+                self.mid
+            }
+            Some(r) => {
+                rug::ops::SubAssignRound::sub_assign_round(&mut self.mid, r, Round::Down);
+                self.mid
+            }
+            None if upper => self.upper(),
+            None => self.lower(),
+        }
     }
 
     /// True when every point of the ball is `> 0`.
@@ -402,12 +424,13 @@ impl Ball {
         Ball { mid: Float::with_val(self.prec(), -&self.mid), rad: self.rad }
     }
 
-    /// `self * other`.
-    pub fn mul(&self, other: &Ball) -> Ball {
-        let (mid, ord) = Float::with_val_round(self.out_prec(other), &self.mid * &other.mid, Round::Nearest);
-        let mut rad = rounding_error(&mid, ord);
+    #[inline]
+    /// `|mid_a| r_b + |mid_b| r_a + r_a r_b`: how far `a b` strays from
+    /// `mid_a mid_b` over the two balls (rounding not included).
+    fn product_spread(&self, other: &Ball) -> Mag {
+        let mut rad = Mag::ZERO;
         if !other.rad.is_zero() {
-            rad = rad.add(Mag::from_float_up(&self.mid).mul(other.rad));
+            rad = Mag::from_float_up(&self.mid).mul(other.rad);
         }
         if !self.rad.is_zero() {
             rad = rad.add(Mag::from_float_up(&other.mid).mul(self.rad));
@@ -415,6 +438,13 @@ impl Ball {
                 rad = rad.add(self.rad.mul(other.rad));
             }
         }
+        rad
+    }
+
+    /// `self * other`.
+    pub fn mul(&self, other: &Ball) -> Ball {
+        let (mid, ord) = Float::with_val_round(self.out_prec(other), &self.mid * &other.mid, Round::Nearest);
+        let rad = rounding_error(&mid, ord).add(self.product_spread(other));
         Ball { mid, rad }
     }
 
@@ -462,6 +492,23 @@ impl Ball {
         let (mid, ord) = Float::with_val_round(self.prec(), &self.mid + n, Round::Nearest);
         let rad = self.rad.add(rounding_error(&mid, ord));
         Ball { mid, rad }
+    }
+
+    /// `self += a * b` in place, with `tmp` as scratch for the product (no
+    /// allocation once `tmp` and `self` have their storage): the radius covers both
+    /// roundings and the input radii, as `self.add(&a.mul(b))` would.
+    pub(crate) fn add_mul_assign(&mut self, a: &Ball, b: &Ball, tmp: &mut Float) {
+        let p = self.prec().max(a.prec()).max(b.prec());
+        if tmp.prec() != p {
+            tmp.set_prec(p);
+        }
+        let ord = tmp.assign_round(&a.mid * &b.mid, Round::Nearest);
+        let rad = self.rad.add(rounding_error(tmp, ord)).add(a.product_spread(b));
+        if self.mid.prec() < p {
+            self.mid.set_prec(p); // exact: more bits
+        }
+        let ord = rug::ops::AddAssignRound::add_assign_round(&mut self.mid, &*tmp, Round::Nearest);
+        self.rad = rad.add(rounding_error(&self.mid, ord));
     }
 
     /// `self * 2^e` (exact).
@@ -521,16 +568,14 @@ impl Ball {
 
     /// The smallest ball (at `prec` bits) containing `[lo, hi]`.
     pub fn hull(lo: &Float, hi: &Float, prec: u32) -> Ball {
-        let (mid, _) = Float::with_val_round(prec, lo + hi, Round::Nearest);
-        let mid = mid / 2u32;
-        let p = prec.max(lo.prec()).max(hi.prec()) + 8;
-        let mut r1 = Float::new(p);
-        r1.assign_round(hi - &mid, Round::Up);
-        let mut r2 = Float::new(p);
-        r2.assign_round(&mid - lo, Round::Up);
-        let m1 = if r1.is_sign_negative() { Mag::ZERO } else { Mag::from_float_up(&r1) };
-        let m2 = if r2.is_sign_negative() { Mag::ZERO } else { Mag::from_float_up(&r2) };
-        Ball { mid, rad: m1.max(m2) }
+        // mid = round(lo + hi) / 2 (the halving is exact), off (lo + hi)/2 by at most
+        // half an ulp of mid; rad = (hi - lo)/2 rounded up, plus one ulp of mid.
+        let (mut mid, ord) = Float::with_val_round(prec, lo + hi, Round::Nearest);
+        mid >>= 1;
+        let mut w = Float::new(MAG_PREC);
+        w.assign_round(hi - lo, Round::Up);
+        let half_width = if w.is_sign_negative() { Mag::ZERO } else { Mag::from_float_up(&w).mul_2exp(-1) };
+        Ball { rad: half_width.add(rounding_error(&mid, ord)), mid }
     }
 
     /// `sqrt(self)`; an error if the ball reaches below zero.
@@ -583,17 +628,18 @@ impl Ball {
     }
 
     /// `(sin(self), cos(self))`. Both are 1-Lipschitz, so the input radius
-    /// carries over unchanged; MPFR's correctly rounded values add one ulp each.
+    /// carries over unchanged; MPFR's correctly rounded values add one ulp each. A
+    /// wide result (radius above 1/2) is intersected with `[-1, 1]`.
     pub fn sin_cos(&self) -> (Ball, Ball) {
         if let Some(((s, es), (c, ec))) = self.is_finite().then(|| fixed::sin_cos(&self.mid, self.prec())).flatten() {
-            return (Ball { mid: s, rad: self.rad.add(es) }, Ball { mid: c, rad: self.rad.add(ec) });
+            return (elementary::within_unit(Ball { mid: s, rad: self.rad.add(es) }), elementary::within_unit(Ball { mid: c, rad: self.rad.add(ec) }));
         }
         let mut s = self.mid.clone();
         let mut c = Float::new(self.prec());
         let (os, oc) = s.sin_cos_round(&mut c, Round::Nearest);
         let rs = self.rad.add(rounding_error(&s, os));
         let rc = self.rad.add(rounding_error(&c, oc));
-        (Ball { mid: s, rad: rs }, Ball { mid: c, rad: rc })
+        (elementary::within_unit(Ball { mid: s, rad: rs }), elementary::within_unit(Ball { mid: c, rad: rc }))
     }
 
     /// `ln(1 + self)` for `self > -1` (accurate for small arguments).

@@ -76,6 +76,33 @@ fn with_lipschitz(mid: Float, err: Mag, scale_mid: &Float, r: Mag) -> Ball {
     Ball { mid, rad }
 }
 
+/// Radius above which a sine or cosine ball is intersected with `[-1, 1]`.
+const UNIT_CLAMP: Mag = Mag::pow2_const(-1);
+
+/// A sine or cosine ball of a real argument intersected with `[-1, 1]`, which holds
+/// every value: the 1-Lipschitz bound `mid +/- r` alone grows without limit with `r`
+/// (on the Bernstein-ellipse boxes of the integrator, `cos [0 +/- 256]` would be
+/// `[1 +/- 256]` instead of `[-1, 1]`). Only wide balls (radius above 1/2) are looked
+/// at; a NaN ball stays as it is.
+pub(crate) fn within_unit(b: Ball) -> Ball {
+    if b.rad.le(&UNIT_CLAMP) || !b.is_finite() {
+        return b;
+    }
+    if Mag::pow2(0).le(&b.rad) {
+        // radius >= 1: [mid - r, mid + r] reaches past -1 or 1 on at least one side;
+        // [0 +/- 1] holds every value, without the ends' arithmetic
+        return Ball { mid: Float::with_val(b.prec(), 0), rad: Mag::pow2(0) };
+    }
+    let (lo, hi) = (b.lower(), b.upper());
+    if lo >= -1 && hi <= 1 {
+        return b;
+    }
+    let p = b.prec();
+    let lo = if lo < -1 { Float::with_val(p, -1) } else { lo };
+    let hi = if hi > 1 { Float::with_val(p, 1) } else { hi };
+    Ball::hull(&lo, &hi, p)
+}
+
 /// The rounding error of an MPFR result, where an underflow to zero is bounded by
 /// the smallest positive float instead of an infinite radius.
 fn mpfr_error(y: &Float, ord: std::cmp::Ordering) -> Mag {
@@ -98,8 +125,7 @@ impl Ball {
             let (lo, hi) = (self.lower(), self.upper());
             // an end of the fixed-point ball when the kernel serves it, else MPFR rounded outward
             let end = |x: &Float, round: Round| match super::fixed::exp(x, p) {
-                Some((y, rad)) if round == Round::Down => Ball { mid: y, rad }.lower(),
-                Some((y, rad)) => Ball { mid: y, rad }.upper(),
+                Some((y, rad)) => Ball { mid: y, rad }.into_end(round == Round::Up),
                 None => Float::with_val_round(p, x.exp_ref(), round).0,
             };
             let (a, b) = (end(&lo, Round::Down), end(&hi, Round::Up));
@@ -222,9 +248,9 @@ impl Ball {
     /// `sin(self)`.
     pub fn sin(&self) -> Ball {
         if let Some((y, err)) = self.is_finite().then(|| super::fixed::sin(&self.mid, self.prec())).flatten() {
-            return Ball { mid: y, rad: self.rad.add(err) };
+            return within_unit(Ball { mid: y, rad: self.rad.add(err) });
         }
-        self.lipschitz1(|m, p| Float::with_val_round(p, m.sin_ref(), Round::Nearest))
+        within_unit(self.lipschitz1(|m, p| Float::with_val_round(p, m.sin_ref(), Round::Nearest)))
     }
 
     /// `tanh(self)` (`|tanh'| = sech^2 <= 1`).

@@ -7,7 +7,6 @@
 //! in `[0.5, 1)`, so no f64 operation here can overflow or underflow; the `i64`
 //! exponent never does in practice. This is Arb's `mag_t` with a 53-bit mantissa.
 
-use rug::float::Round;
 use rug::Float;
 
 /// Non-negative magnitude bound `man * 2^exp`; `man` in `[0.5, 1)`, or zero, or infinity.
@@ -28,6 +27,26 @@ fn frexp(x: f64) -> (f64, i64) {
     }
     let m = f64::from_bits((bits & !(0x7ffu64 << 52)) | (1022u64 << 52));
     (m, biased - 1022)
+}
+
+/// The significand limbs `D` and exponent `e` of a finite nonzero float:
+/// `|x| = D 2^(e - 64 len(D))`, the top limb with its high bit set.
+pub(crate) fn raw_parts(x: &Float) -> (&[u64], i64) {
+    const _: () = assert!(std::mem::size_of::<gmp_mpfr_sys::gmp::limb_t>() == 8 || cfg!(not(target_pointer_width = "64")));
+    // SAFETY: `x` is a valid, finite, nonzero MPFR number; its significand has
+    // `ceil(prec / bits_per_limb)` limbs at `d`, borrowed for the lifetime of `x`.
+    unsafe {
+        let r = &*x.as_raw();
+        let k = (r.prec as usize).div_ceil(64);
+        (std::slice::from_raw_parts(r.d.as_ptr() as *const u64, k), r.exp as i64)
+    }
+}
+
+/// The top limb of a finite nonzero float's significand and its exponent:
+/// `|x| = 0.top... 2^e`.
+fn top_limb(x: &Float) -> (u64, i64) {
+    let (d, e) = raw_parts(x);
+    (d[d.len() - 1], e)
 }
 
 /// `2^-d` for `0 <= d <= 60`, exact, built from its bits (`powi` is a libcall).
@@ -72,7 +91,8 @@ impl Mag {
         Mag::norm(x.abs(), 0)
     }
 
-    /// Upper bound of `|x|`.
+    /// Upper bound of `|x|`: the top 53 bits of the significand plus one unit of the
+    /// 53rd, read from the limbs (no MPFR call; at most `2^-52` relative above `|x|`).
     pub fn from_float_up(x: &Float) -> Mag {
         if x.is_zero() {
             return Mag::ZERO;
@@ -80,11 +100,17 @@ impl Mag {
         if !x.is_finite() {
             return Mag::inf();
         }
-        let (m, e) = x.as_abs().to_f64_exp_round(Round::Up);
-        Mag::norm(m, e as i64)
+        let (top, e) = top_limb(x);
+        // |x| = 0.top... 2^e < (floor(top / 2^11) + 1) 2^(e - 53); the sum is <= 2^53 (exact)
+        let m = ((top >> 11) + 1) as f64 * pow2_neg(53);
+        if m == 1.0 {
+            Mag { man: 0.5, exp: e + 1 }
+        } else {
+            Mag { man: m, exp: e }
+        }
     }
 
-    /// Lower bound of `|x|`.
+    /// Lower bound of `|x|`: the top 53 bits of the significand, truncated.
     pub fn from_float_down(x: &Float) -> Mag {
         if x.is_zero() || x.is_nan() {
             return Mag::ZERO;
@@ -92,8 +118,20 @@ impl Mag {
         if x.is_infinite() {
             return Mag::inf();
         }
-        let (m, e) = x.as_abs().to_f64_exp_round(Round::Down);
-        Mag::norm(m, e as i64)
+        let (top, e) = top_limb(x);
+        Mag { man: (top >> 11) as f64 * pow2_neg(53), exp: e }
+    }
+
+    /// `self` as an f64, exactly, when its exponent is in the normal range of f64
+    /// (`None` otherwise, and for infinity).
+    pub fn to_f64_exact(&self) -> Option<f64> {
+        if self.man == 0.0 {
+            return Some(0.0);
+        }
+        if !self.man.is_finite() || !(-1000..=1000).contains(&self.exp) {
+            return None;
+        }
+        Some(self.man * f64::from_bits(((1023 + self.exp) as u64) << 52))
     }
 
     /// The exact value as a 53-bit float (infinite for [`Mag::inf`]).

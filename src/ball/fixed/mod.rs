@@ -64,6 +64,7 @@ use std::sync::OnceLock;
 use rug::float::Round;
 use rug::Float;
 
+use super::mag::raw_parts;
 use super::Mag;
 use limbs::MAX_LIMBS;
 
@@ -251,19 +252,6 @@ fn tables(l: usize) -> &'static Tables {
 fn limbs_for(wp: u32) -> Option<usize> {
     let l = (wp + GUARD + 2).div_ceil(64) as usize;
     (l <= MAX_LIMBS && cfg!(target_pointer_width = "64")).then_some(l.max(1))
-}
-
-/// The significand limbs `D` and exponent `e` of a finite nonzero float:
-/// `|x| = D 2^(e - 64 len(D))`.
-fn raw_parts(x: &Float) -> (&[u64], i64) {
-    const _: () = assert!(std::mem::size_of::<gmp_mpfr_sys::gmp::limb_t>() == 8 || cfg!(not(target_pointer_width = "64")));
-    // SAFETY: `x` is a valid, finite, nonzero MPFR number; its significand has
-    // `ceil(prec / bits_per_limb)` limbs at `d`, borrowed for the lifetime of `x`.
-    unsafe {
-        let r = &*x.as_raw();
-        let k = (r.prec as usize).div_ceil(64);
-        (std::slice::from_raw_parts(r.d.as_ptr() as *const u64, k), r.exp as i64)
-    }
 }
 
 /// `|m|` as an f64 from the top limb of its significand (a guess for the reduction,

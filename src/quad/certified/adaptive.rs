@@ -120,7 +120,7 @@ fn midpoint(lo: &Float, hi: &Float) -> Float {
 }
 
 /// Exact difference `hi - lo` (enough precision for it to be exact).
-fn exact_diff(lo: &Float, hi: &Float) -> Float {
+pub(crate) fn exact_diff(lo: &Float, hi: &Float) -> Float {
     let elo = lo.get_exp().unwrap_or(0) as i64;
     let ehi = hi.get_exp().unwrap_or(0) as i64;
     let spread = (elo - ehi).unsigned_abs() as u32;
@@ -130,7 +130,7 @@ fn exact_diff(lo: &Float, hi: &Float) -> Float {
 
 /// The crude enclosure `(hi - lo) f([lo, hi])` of a piece (`None` where `f` is
 /// unbounded on the segment).
-fn crude<F>(f: &mut Counted<'_, F>, lo: &Float, hi: &Float, wp: u32) -> Option<CBall>
+pub(crate) fn crude<F>(f: &mut Counted<'_, F>, lo: &Float, hi: &Float, wp: u32) -> Option<CBall>
 where
     F: FnMut(CBall, Mode) -> CBall,
 {
@@ -164,7 +164,11 @@ impl Piece {
 /// approximates). Of two halves, the one with more work left is done first, so large
 /// pieces raise the tolerance early. The sum of the pieces' errors can exceed one
 /// piece's tolerance; the driver checks the goal and retries with a smaller one.
-pub(crate) fn adaptive<F>(f: &mut Counted<'_, F>, a: &Float, b: &Float, wp: u32, tol: Mag, goal: i64, lim: RunLimits) -> Result<Outcome>
+///
+/// `first` is the crude enclosure of the whole `[a, b]` at `wp` when the caller has it
+/// already (it is then not evaluated again).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn adaptive<F>(f: &mut Counted<'_, F>, a: &Float, b: &Float, wp: u32, tol: Mag, goal: i64, lim: RunLimits, first: Option<CBall>) -> Result<Outcome>
 where
     F: FnMut(CBall, Mode) -> CBall,
 {
@@ -175,7 +179,10 @@ where
             *t = m;
         }
     };
-    let first = crude(f, a, b, wp);
+    let first = match first {
+        Some(c) => c.is_finite().then_some(c),
+        None => crude(f, a, b, wp),
+    };
     if let Some(c) = &first {
         raise(&mut dyn_tol, c);
     }
@@ -252,6 +259,8 @@ where
     let h_mag = Mag::from_float_up(&h);
     let tol_log2 = tol.log2();
     let mut best: Option<(usize, Mag, Mag)> = None; // (n, rho, M)
+    // the degree the bound asks for at the last ellipse, unrounded (f64, a heuristic)
+    let mut last_need = f64::INFINITY;
     let mut xexp: u32 = 1;
     while xexp < wp.max(2) {
         let (rho, y) = ellipse(xexp);
@@ -262,6 +271,14 @@ where
             break;
         }
         let big_m = v.abs_upper_mag().mul(h_mag);
+        // Larger ellipses stop paying once the degree they need grows again (M grows
+        // faster than rho^(2n) falls): stop there instead of evaluating the rest of the
+        // ladder. Only the choice of degree depends on this; every bound is checked.
+        let need = (gl_bound_log2(big_m, rho, 0) - tol_log2) / (2.0 * rho.log2());
+        if best.is_some() && need >= last_need {
+            break;
+        }
+        last_need = need;
         for &n in DEGREES.iter().take_while(|&&n| n <= max_degree) {
             if gl_bound_log2(big_m, rho, n) < tol_log2 {
                 if best.is_none_or(|(bn, _, _)| n < bn) {
@@ -285,18 +302,23 @@ where
     // operation of the integrand; rounded to wp they are balls that contain them.
     let mb = Ball::from_float(&m, m.prec()).set_prec(wp);
     let hb = Ball::from_float(&h, h.prec()).set_prec(wp);
-    let mut s = CBall::zero(wp);
+    // sum_k w_k f(x_k), accumulated in place (real and imaginary parts apart; an
+    // imaginary part that is exactly zero, as at real nodes of a real integrand, adds
+    // nothing)
+    let (mut s_re, mut s_im, mut tmp) = (Ball::zero(wp), Ball::zero(wp), Float::new(wp));
     for (k, (x, w)) in rule.nodes.iter().zip(&rule.weights).enumerate() {
         let hx = hb.mul(x);
-        let right = f.eval(CBall::from_real(mb.add(&hx)), Mode::Point);
-        let pair = if n % 2 == 1 && k == rule.nodes.len() - 1 {
-            right
-        } else {
-            right.add(&f.eval(CBall::from_real(mb.sub(&hx)), Mode::Point))
-        };
-        s = s.add(&pair.mul_real(w));
+        let last_odd = n % 2 == 1 && k == rule.nodes.len() - 1;
+        let points = if last_odd { [Some(mb.add(&hx)), None] } else { [Some(mb.add(&hx)), Some(mb.sub(&hx))] };
+        for t in points.into_iter().flatten() {
+            let v = f.eval(CBall::from_real(t), Mode::Point);
+            s_re.add_mul_assign(v.re(), w, &mut tmp);
+            if !v.is_real() {
+                s_im.add_mul_assign(v.im(), w, &mut tmp);
+            }
+        }
     }
-    let mut v = s.mul_real(&hb);
+    let mut v = CBall::new(s_re, s_im).mul_real(&hb);
     v.add_error_mag(err);
     Ok(Some((v, err)))
 }

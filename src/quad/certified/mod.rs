@@ -321,11 +321,12 @@ fn finite_ball(x: &Ball, what: &'static str) -> Result<()> {
 }
 
 /// The magnitude from one evaluation per part: the crude enclosure `(b - a) f([a, b])`
-/// of every part, summed with the tails. Where the sum keeps off zero within a factor
-/// 16 (`|upper| <= 16 |lower|`), its lower bound is a magnitude of the integral that
-/// costs at most four bits of extra work (it is below the integral); otherwise `None`
-/// and the 8-point rule decides.
-fn crude_magnitude<F>(f: &mut F, parts: &[Part<'_>], evaluations: &mut u64) -> Option<(Mag, Mag)>
+/// of every part at the working precision `wp`, summed with the tails. Where the sum
+/// keeps off zero within a factor 16 (`|upper| <= 16 |lower|`), its lower bound is a
+/// magnitude of the integral that costs at most four bits of extra work (it is below
+/// the integral); otherwise `None` and the 8-point rule decides. The enclosures are
+/// rigorous (exact widths) and kept in `crudes`, one per part, for the first attempt.
+fn crude_magnitude<F>(f: &mut F, parts: &[Part<'_>], wp: u32, evaluations: &mut u64, crudes: &mut Vec<Option<CBall>>) -> Option<(Mag, Mag)>
 where
     F: FnMut(&HoloBall) -> HoloBall,
 {
@@ -333,16 +334,19 @@ where
     for part in parts {
         sum.add_error_mag(part.tail);
         if part.lo == part.hi {
+            crudes.push(None);
             continue;
         }
-        let seg = CBall::from_real(Ball::hull(&part.lo, &part.hi, 64));
+        let seg = CBall::from_real(Ball::hull(&part.lo, &part.hi, wp));
         let v = (part.wrap)(&HoloBall::new(seg, Mode::Point), f).into_inner();
         *evaluations += 1;
         if !v.is_finite() {
             return None;
         }
-        let width = Float::with_val(64, &part.hi - &part.lo);
-        sum = sum.add(&v.mul_real(&Ball::from_float(&width, 64)));
+        let width = adaptive::exact_diff(&part.lo, &part.hi);
+        let c = v.mul_real(&Ball::from_float(&width, width.prec()));
+        sum = sum.add(&c);
+        crudes.push(Some(c));
     }
     let (lower, upper) = (sum.abs_lower_mag(), sum.abs_upper_mag());
     (!lower.is_zero() && upper.le(&lower.mul_2exp(4))).then_some((lower, upper))
@@ -351,11 +355,11 @@ where
 /// A rough, uncertified magnitude of the integral and of `int |f|`: an 8-point rule
 /// on each part at 64 bits (MPFR's exponent range: integrals like `e^-1010` do not
 /// underflow). It only sets the tolerance; the result is checked.
-fn rough_magnitude<F>(f: &mut F, parts: &[Part<'_>], evaluations: &mut u64) -> (Mag, Mag)
+fn rough_magnitude<F>(f: &mut F, parts: &[Part<'_>], wp: u32, evaluations: &mut u64, crudes: &mut Vec<Option<CBall>>) -> (Mag, Mag)
 where
     F: FnMut(&HoloBall) -> HoloBall,
 {
-    if let Some(m) = crude_magnitude(f, parts, evaluations) {
+    if let Some(m) = crude_magnitude(f, parts, wp, evaluations, crudes) {
         return m;
     }
     let Ok(rule) = legendre::rule(8, 64) else {
@@ -431,10 +435,16 @@ where
     let limits = opts.limits(prec);
     let cap = opts.working_cap(prec);
     let mut wp = (prec + 20).min(cap);
+    let first_wp = wp;
     let mut evaluations = 0u64;
-    // First estimate, at 64 bits, with parts built for a provisional tolerance.
-    let provisional = builder(Mag::pow2(-(goal as i64)), 64, f)?;
-    let (mut mag, mut l1) = rough_magnitude(f, &provisional, &mut evaluations);
+    // First estimate, with parts built for a provisional tolerance. The crude
+    // enclosures of its parts serve the first attempt where its parts are the same.
+    let provisional = builder(Mag::pow2(-(goal as i64)), wp, f)?;
+    let mut crudes = Vec::new();
+    let (mut mag, mut l1) = rough_magnitude(f, &provisional, wp, &mut evaluations, &mut crudes);
+    let mut reusable: Vec<Option<CBall>> =
+        provisional.iter().zip(crudes.into_iter().chain(std::iter::repeat(None))).map(|(p, c)| c.filter(|_| p.lo != p.hi)).collect();
+    let spans: Vec<(Float, Float)> = provisional.iter().map(|p| (p.lo.clone(), p.hi.clone())).collect();
     drop(provisional);
     let mut last: Option<Integral> = None;
     // log2 of a factor on the tolerance, lowered when truncation kept the goal out of reach
@@ -450,12 +460,15 @@ where
         let mut truncation = Mag::ZERO;
         let mut stats = Stats::default();
         let mut limit = None;
-        for part in &parts {
+        let same_parts = parts.len() == spans.len() && parts.iter().zip(&spans).all(|(p, (lo, hi))| p.lo == *lo && p.hi == *hi);
+        for (i, part) in parts.iter().enumerate() {
             if part.lo != part.hi {
+                // the crude enclosure of the estimate, once, at the precision it was made at
+                let first = if same_parts && wp == first_wp { reusable.get_mut(i).and_then(Option::take) } else { None };
                 let mut g = |z: CBall, mode: Mode| (part.wrap)(&HoloBall::new(z, mode), f).into_inner();
                 let mut counted = Counted { f: &mut g, stats };
                 let part_tol = tol.mul_2exp(-1).div(Mag::from_f64(n_parts as f64));
-                let out = adaptive::adaptive(&mut counted, &part.lo, &part.hi, wp, part_tol, goal as i64 + 3 - tol_shift - zero_shift, limits)?;
+                let out = adaptive::adaptive(&mut counted, &part.lo, &part.hi, wp, part_tol, goal as i64 + 3 - tol_shift - zero_shift, limits, first)?;
                 stats = counted.stats;
                 if !out.value.is_finite() {
                     return Err(adaptive::unbounded_error(out.unbounded_near, &stats));
