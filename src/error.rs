@@ -76,6 +76,12 @@ pub enum Error {
         /// The contact half-width `abar` at which it arose.
         abar: f64,
     },
+    /// An f64 routine whose result is not a finite f64 at these arguments
+    /// (extreme scales); the MP path answers there.
+    NonFiniteResult {
+        /// The function.
+        function: &'static str,
+    },
     /// A regime-map grid or shard that cannot be run or merged ([`crate::contact::sweep`]).
     Sweep(SweepError),
     /// A function name that [`crate::registry`] does not know.
@@ -149,6 +155,10 @@ impl fmt::Display for Error {
             Error::Expression(e) => write!(f, "{e}"),
             Error::Integration(e) => write!(f, "{e}"),
             Error::Sweep(e) => write!(f, "{e}"),
+            Error::NonFiniteResult { function } => write!(
+                f,
+                "{function}: the f64 result is not finite at these arguments (extreme scales); use the MP path"
+            ),
             Error::NotRepresentable { quantity, abar } => write!(
                 f,
                 "the {quantity} at abar = {abar:e} is not a finite f64: the parameters are too extreme for the f64 model (use the MP path)"

@@ -836,7 +836,14 @@ fn wave_f64_pair(a: f64, zeta: f64, amp: f64, x: f64) -> Result<(f64, f64)> {
     if let Some((u, du)) = CertifiedBessel::native_only(a, zeta).and_then(|c| c.eval_bounded(a, amp, x)) {
         return Ok((u.value, du.value));
     }
-    wave_bessel_f64(a, zeta, amp, x)
+    let (u, du) = wave_bessel_f64(a, zeta, amp, x)?;
+    if u.is_finite() && du.is_finite() {
+        return Ok((u, du));
+    }
+    // the double-double route under- or overflows at extreme scales (found by
+    // tests/fuzz.rs: a = x = 5e-324, zeta = 3.6e-217): the certified MP values
+    let (u, du) = wave_bounded_fallback(a, zeta, amp, x)?;
+    Ok((u.value, du.value))
 }
 
 /// Wave displacement `u_w(x)` in f64 (Bessel form), from scratch in about

@@ -54,6 +54,16 @@ enum Quantity {
     Increment,
 }
 
+impl Quantity {
+    /// The public function computing this quantity.
+    fn name(self) -> &'static str {
+        match self {
+            Quantity::Gradient => "du_wave_quad",
+            Quantity::Increment => "u_wave_quad",
+        }
+    }
+}
+
 fn check(a: f64, zeta: f64, amp: f64, x: f64) -> Result<()> {
     finite(a, "a")?;
     finite(zeta, "zeta")?;
@@ -333,6 +343,10 @@ fn f64_quadrature(kind: Quantity, a: f64, zeta: f64, amp: f64, x: f64) -> Result
     }
     // A fixed rule has no built-in estimate; report the rounding level of the sums.
     let error_estimate = 1e-15 * (1.0 + d) * factor.abs().max(amp.abs());
+    if !(value.is_finite() && error_estimate.is_finite()) {
+        // extreme scales (found by tests/fuzz.rs: a = x = 5e-324, zeta = 5.5e-222)
+        return Err(Error::NonFiniteResult { function: kind.name() });
+    }
     Ok(QuadEstimate { value, error_estimate, evaluations })
 }
 

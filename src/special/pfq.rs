@@ -242,7 +242,7 @@ pub(crate) fn pfq_f64(a: &[f64], b: &[f64], z: f64) -> Option<(f64, f64, f64)> {
         return None;
     }
     let neg_params = a.iter().chain(b.iter()).fold(0.0f64, |m, &x| m.max(-x));
-    let n_pos = if neg_params > 0.0 { neg_params.ceil() as u64 + 1 } else { 0 };
+    let n_pos = if neg_params > 0.0 { (neg_params.ceil() as u64).saturating_add(1) } else { 0 };
     let mut t = 1.0f64;
     let mut s = 1.0f64;
     let mut comp = 0.0f64;

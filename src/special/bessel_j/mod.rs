@@ -189,7 +189,8 @@ fn recurrence_choice(n: u64, x: f64, wp: u32) -> Option<Choice> {
         return None;
     }
     let (steps, guard) = three_term::plan(n, x, wp);
-    let start = choose(0, x, wp + guard as u32).cost + choose(1, x, wp + guard as u32).cost;
+    let start_wp = wp.saturating_add(guard.min(4.0e6) as u32);
+    let start = choose(0, x, start_wp).cost + choose(1, x, start_wp).cost;
     let cost = RECURRENCE_NS_PER_STEP_BIT * steps * op_bits(wp as f64 + guard, RECURRENCE_STEP_OVERHEAD_BITS) + start;
     Some(Choice { algorithm: Algorithm::Recurrence, guard: guard.min(4.0e6) as u32, cost })
 }
