@@ -71,8 +71,14 @@ const IDS: [&str; 19] = [
 /// I12 4.1 s, I13 4.1 s with the node computation, I14 1.0 s, I24 0.2 s, e^x 1.5 s,
 /// sqrt 0.04 s, x J0 0.1 s, atan 0.9 s). The others pass at 3333 bits in
 /// `golden_3333_all` (ignored for time: I3 14 s, I10 17 s, I15 67 s, I17 9 s, I18 8 s,
-/// I19 14 s, I20 14 s, I31 8 s), except I2, whose algebraic decay x^-2 needs a cut at
-/// T = 2^3335, beyond the f64 the cut is computed in: a typed error, not a ball.
+/// I19 14 s, I20 14 s, I31 8 s), except I2. Its algebraic decay x^-2 is no longer cut
+/// at T = 2^3335 (beyond f64) but mapped by x = e^s and cut at S ~ 2310; the cost is
+/// what keeps it out: 1/(1+x^2) on the rectangle of e^(box) reaches a pole unless the
+/// pieces in s are about 0.1 wide (60332 evaluations at 333 bits), and at 3333 bits the
+/// degree such a piece needs is above the cap of 362, so it bisects further (an
+/// estimate of 10^7 evaluations; a run was stopped after 6 CPU minutes). Run again on
+/// 2026-11-26 (after the speed work, load 8-10): the eight passed, 0 failures, 666 s wall
+/// and 144 s CPU for all of them.
 const IDS_3333: [&str; 10] = ["I0", "I1", "I12", "I13", "I14", "I24", "Xexp", "Xsqrt", "XxJ0", "Xatan"];
 
 fn compute(id: &str, p: u32) -> Outcome {

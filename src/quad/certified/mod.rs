@@ -27,9 +27,12 @@
 //!   tail bounded in closed form by `sup |h|` next to the endpoint, itself a ball
 //!   evaluation. No user truncation, no user tail bound.
 //! * **Semi-infinite ranges**: `[a, inf)` with a declared bound `|f(x)| <= m e^{-c x}` or
-//!   `|f(x)| <= m x^{-p}` (`p > 1`) for `x >= a`; the range is cut where the declared
-//!   tail is below a quarter of the tolerance. The result is certified *given the
-//!   declaration*, which the caller vouches for.
+//!   `|f(x)| <= m x^{-p}` (`p > 1`) for `x >= a`. An exponential decay is cut where the
+//!   declared tail is below a quarter of the tolerance; an algebraic one is first
+//!   mapped by `x = c e^s` (`c = a`), which turns `x^{-p}` into `e^{-(p-1)s}`, and cut in
+//!   `s` at `S ~ goal ln 2/(p-1)` with the declared tail `m (c e^S)^{1-p}/(p-1)`
+//!   (`singular.rs`). The result is certified *given the declaration*, which the caller
+//!   vouches for.
 //! * **Precision escalation**: the working precision starts at `prec + 20` bits and is
 //!   raised when rounding (cancellation), not truncation, keeps the radius above the
 //!   goal.
