@@ -220,11 +220,13 @@ pub fn hyp1f2_mp(a: &Float, b1: &Float, b2: &Float, z: &Float, prec: u32) -> Res
         let guard = crate::special::DEFAULT_GUARD_BITS + 2 * k as u32 + y.log2().max(0.0) as u32;
         if *z < 0 && bessel::applies(k, y, prec + guard) {
             let mut declined = false;
-            let b = crate::special::ziv("hyp1f2", prec, guard, |wp| match bessel::model_family_bessel(k, z, wp)? {
-                Some(b) => Ok(b),
-                None => {
+            // any failure of the route (it declines at a raised precision, or a
+            // Bessel value is refused) hands the point to the series
+            let b = crate::special::ziv("hyp1f2", prec, guard, |wp| match bessel::model_family_bessel(k, z, wp) {
+                Ok(Some(b)) => Ok(b),
+                other => {
                     declined = true;
-                    Err(crate::error::Error::PrecisionExhausted { function: "hyp1f2 (Bessel route)", working_prec: wp })
+                    other.and(Err(crate::error::Error::PrecisionExhausted { function: "hyp1f2 (Bessel route)", working_prec: wp }))
                 }
             });
             if !declined {
