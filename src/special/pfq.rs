@@ -303,8 +303,10 @@ pub(crate) fn pfq_f64(a: &[f64], b: &[f64], z: f64) -> Option<(f64, f64, f64)> {
 }
 
 /// Largest working precision of [`pfq_series_exact`]: its f64 bound needs
-/// `2^-wp` (and `2^-2wp`, in the stopping target) far above the f64 underflow.
-const MAX_EXACT_SERIES_PREC: u32 = 480;
+/// `u = 2^-wp` a normal f64 (at 1100 bits `u` was 0, the stopping test never
+/// passed and the loop ran to its 5M-term cap). (`u^2` in the stopping target may
+/// underflow to 0 from 538 bits: that only makes the series stop later.)
+const MAX_EXACT_SERIES_PREC: u32 = 1000;
 
 /// `pFq(a; b; z)` for exact (binary-float) parameters and `z`, summed in plain MPFR
 /// floats with a running error bound instead of ball arithmetic: `Ok(None)` where it
@@ -339,7 +341,6 @@ const MAX_EXACT_SERIES_PREC: u32 = 480;
 fn pfq_series_exact(a: &[Float], b: &[Float], z: &Float, wp: u32) -> Result<Option<Ball>> {
     use crate::special::{exact_add, is_nonpositive_integer};
     let (p, q) = (a.len(), b.len());
-    // (above ~1000 bits u = 2^-wp underflows the f64 bound: the ball series then)
     if p > q || b.iter().any(is_nonpositive_integer) || !(24..=MAX_EXACT_SERIES_PREC).contains(&wp) {
         return Ok(None);
     }
@@ -649,8 +650,8 @@ mod tests {
         ];
         for &(a, b, z) in cases {
             let (ae, be, ze): (Vec<Float>, Vec<Float>, Float) = (a.iter().map(|&x| exact(x)).collect(), b.iter().map(|&x| exact(x)).collect(), exact(z));
-            let reference = pfq_series(&to_balls(&ae, 600), &to_balls(&be, 600), &Ball::from_float(&ze, 600), 600).unwrap().sum;
-            for wp in [64u32, 128, 300] {
+            let reference = pfq_series(&to_balls(&ae, 1200), &to_balls(&be, 1200), &Ball::from_float(&ze, 1200), 1200).unwrap().sum;
+            for wp in [64u32, 128, 300, 1000] {
                 let fast = pfq_series_exact(&ae, &be, &ze, wp).unwrap().unwrap_or_else(|| panic!("{a:?} {b:?} {z}: no fast path"));
                 assert!(fast.overlaps(&reference) && fast.rad() >= Float::with_val(600, fast.mid() - reference.mid()).abs() - reference.rad(), "{a:?} {b:?} {z} wp={wp}: {fast:?} vs {reference:?}");
                 let ball = pfq_series(&to_balls(&ae, wp), &to_balls(&be, wp), &Ball::from_float(&ze, wp), wp).unwrap().sum;
