@@ -82,6 +82,24 @@ pub enum Error {
         /// The function.
         function: &'static str,
     },
+    /// A function evaluated at one of its poles.
+    Pole {
+        /// The function.
+        function: &'static str,
+        /// The pole (approximate).
+        at: f64,
+    },
+    /// Text that is not a plain decimal number (`[+-]digits[.digits][e[+-]digits]`).
+    NotADecimal {
+        /// The text given.
+        text: String,
+    },
+    /// A decimal with more than [`crate::ball::MAX_DECIMAL_DIGITS`] digits or an
+    /// exponent beyond `±`[`crate::ball::MAX_DECIMAL_EXPONENT`].
+    DecimalTooLarge {
+        /// The text given (its first 24 characters).
+        text: String,
+    },
     /// A regime-map grid or shard that cannot be run or merged ([`crate::contact::sweep`]).
     Sweep(SweepError),
     /// A function name that [`crate::registry`] does not know.
@@ -155,6 +173,16 @@ impl fmt::Display for Error {
             Error::Expression(e) => write!(f, "{e}"),
             Error::Integration(e) => write!(f, "{e}"),
             Error::Sweep(e) => write!(f, "{e}"),
+            Error::NotADecimal { text } => {
+                write!(f, "{text:?} is not a decimal number (expected e.g. 2.5, -0.125, 3.8317e-2)")
+            }
+            Error::DecimalTooLarge { text } => write!(
+                f,
+                "the decimal {text:?} is too large: at most {} digits and exponents up to ±{} are accepted",
+                crate::ball::MAX_DECIMAL_DIGITS,
+                crate::ball::MAX_DECIMAL_EXPONENT
+            ),
+            Error::Pole { function, at } => write!(f, "{function} at its pole {at}"),
             Error::NonFiniteResult { function } => write!(
                 f,
                 "{function}: the f64 result is not finite at these arguments (extreme scales); use the MP path"

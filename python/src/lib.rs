@@ -282,7 +282,7 @@ impl MpArg {
             MpArg::Decimal(s) => Decimal::parse(s).map_err(|e| match e {
                 // unparseable text: say which argument; other errors (exponent or
                 // length out of range) carry their own message
-                Error::Domain { what: w } if w.contains("is not a decimal number") => Error::Domain {
+                Error::NotADecimal { .. } => Error::Domain {
                     what: format!("{what} = {s:?} is not a number (expected a decimal such as 2.5, -0.125 or 3.8317e-2)"),
                 },
                 other => other,

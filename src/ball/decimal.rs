@@ -49,9 +49,7 @@ impl Decimal {
     /// Parses `[+-]digits[.digits][(e|E)[+-]digits]` (surrounding whitespace allowed).
     pub fn parse(text: &str) -> Result<Decimal> {
         let t = text.trim();
-        let bad = || Error::Domain {
-            what: format!("{t:?} is not a decimal number (expected e.g. 2.5, -0.125, 3.8317e-2)"),
-        };
+        let bad = || Error::NotADecimal { text: t.to_string() };
         let (neg, rest) = match t.as_bytes().first() {
             Some(b'-') => (true, &t[1..]),
             Some(b'+') => (false, &t[1..]),
@@ -70,9 +68,7 @@ impl Decimal {
             return Err(bad());
         }
         if int_part.len() + frac_part.len() > MAX_DECIMAL_DIGITS {
-            return Err(Error::Domain {
-                what: format!("decimal with more than {MAX_DECIMAL_DIGITS} digits; shorten {:.20}...", t),
-            });
+            return Err(Error::DecimalTooLarge { text: t.chars().take(24).collect() });
         }
         let exp: i64 = match exp_text {
             None => 0,
@@ -97,9 +93,7 @@ impl Decimal {
         let scale = exp.saturating_sub(frac_part.len() as i64).saturating_add(trailing);
         let magnitude = scale.saturating_add(trimmed.len() as i64);
         if !(-MAX_DECIMAL_EXPONENT..=MAX_DECIMAL_EXPONENT).contains(&magnitude) {
-            return Err(Error::Domain {
-                what: format!("{t:?} is out of range: decimal exponents up to ±{MAX_DECIMAL_EXPONENT} are accepted"),
-            });
+            return Err(Error::DecimalTooLarge { text: t.chars().take(24).collect() });
         }
         let mut num = Integer::from_str_radix(trimmed, 10).map_err(|_| bad())?;
         if neg {

@@ -1259,11 +1259,11 @@ pub fn u_hertz(a: f64, r: f64, x: f64) -> Result<f64> {
     finite(x, "x")?;
     let ax = x.abs();
     if ax <= a {
-        return Ok(x * x / (2.0 * r));
+        return crate::special::finite_result("u_hertz", x * x / (2.0 * r));
     }
     let sq = ((ax - a) * (ax + a)).sqrt();
     let acosh = ((ax - a) / a + sq / a).ln_1p();
-    Ok(a * a / (2.0 * r) * (ax / (ax + sq) + acosh))
+    crate::special::finite_result("u_hertz", a * a / (2.0 * r) * (ax / (ax + sq) + acosh))
 }
 
 /// Certified Hertz displacement `u_H(x)` (Eq. 10).
@@ -1328,7 +1328,7 @@ pub fn u_adhesive(a: f64, c: f64, sigma: f64, e_star: f64, x: f64) -> Result<f64
         let yy = c2a2 / ((ax - c) * (ax + c)).sqrt();
         c * (ax * yy / a).asinh() - ax * yy.asinh() - c2a2 * acosh_xa
     };
-    Ok(kfac * v)
+    crate::special::finite_result("u_adhesive", kfac * v)
 }
 
 /// Certified adhesive displacement `u_a(x)` (Box I, A.5a/A.5b).

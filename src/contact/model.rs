@@ -311,9 +311,7 @@ impl ContactSize {
     /// The three gap contributions at `c = m abar` (`m >= 1`): (Hertz, adhesive, wave).
     pub fn strip_gap_terms(&self, m: f64) -> Result<(f64, f64, f64)> {
         finite(m, "m")?;
-        if m < 1.0 {
-            return Err(Error::Domain { what: format!("the strip ratio m = c/a must be >= 1 (got {m:?})") });
-        }
+        Interval::at_least(1.0).check("the strip ratio m = c/a", m)?;
         Ok(self.strip_terms(m - 1.0))
     }
 

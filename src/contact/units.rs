@@ -25,7 +25,7 @@
 //! [`Error`] naming the quantity.
 
 use crate::contact::model::Params;
-use crate::error::{finite, Error, Result};
+use crate::error::{finite, Error, Interval, Result};
 
 /// Material and geometry of the contact.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -64,21 +64,18 @@ pub struct Scales {
     pub energy: f64,
 }
 
-fn positive(x: f64, what: &'static str, unit: &str) -> Result<f64> {
+/// `x > 0`; `what` names the quantity with its unit, e.g. `"E* (Pa)"`.
+fn positive(x: f64, what: &'static str) -> Result<f64> {
     finite(x, what)?;
-    if x > 0.0 {
-        Ok(x)
-    } else {
-        Err(Error::Domain { what: format!("{what} must be > 0 {unit} (got {x:?})") })
-    }
+    Interval::above(0.0).check(what, x)
 }
 
 impl Scales {
     /// The scales of a material. Errors: a non-finite or non-positive input.
     pub fn new(m: Material) -> Result<Scales> {
-        let e = positive(m.e_star, "E*", "Pa")?;
-        let r = positive(m.radius, "R", "m")?;
-        let g = positive(m.dgamma, "dgamma", "J/m^2")?;
+        let e = positive(m.e_star, "E* (Pa)")?;
+        let r = positive(m.radius, "R (m)")?;
+        let g = positive(m.dgamma, "dgamma (J/m^2)")?;
         let horizontal = (g * r * r / e).cbrt();
         // l_v = l_h^2/R, written out so that it is accurate on its own
         let vertical = (g * g * r / (e * e)).cbrt();
@@ -96,8 +93,8 @@ impl Scales {
     /// `lambda` of an adhesive stress `sigma_0` (Pa) or range `delta_c` (m).
     pub fn lambda(&self, c: Cohesion) -> Result<f64> {
         match c {
-            Cohesion::Stress(s) => Ok(positive(s, "sigma_0", "Pa")? / self.stress),
-            Cohesion::Range(d) => Ok(self.vertical / positive(d, "delta_c", "m")?),
+            Cohesion::Stress(s) => Ok(positive(s, "sigma_0 (Pa)")? / self.stress),
+            Cohesion::Range(d) => Ok(self.vertical / positive(d, "delta_c (m)")?),
         }
     }
 
@@ -115,14 +112,14 @@ impl Scales {
     pub fn alpha(&self, amplitude: f64) -> Result<f64> {
         finite(amplitude, "A")?;
         if amplitude < 0.0 {
-            return Err(Error::Domain { what: format!("A must be >= 0 m (got {amplitude:?})") });
+            return Err(Error::OutOfRange { arg: "A (m)", value: amplitude, allowed: Interval::at_least(0.0) });
         }
         Ok(amplitude / self.vertical)
     }
 
     /// `beta` of a wavelength `zeta > 0` (m).
     pub fn beta(&self, wavelength: f64) -> Result<f64> {
-        Ok(positive(wavelength, "zeta", "m")? / self.horizontal)
+        Ok(positive(wavelength, "zeta (m)")? / self.horizontal)
     }
 
     /// A horizontal length (m) of its normalised value (`a`, `c`, `x`, `zeta`).

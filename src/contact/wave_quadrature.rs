@@ -40,7 +40,7 @@
 use rug::float::Constant;
 use rug::Float;
 
-use crate::error::{finite, Error, Result};
+use crate::error::{finite, Error, Interval, Result};
 use crate::quad::{gauss_legendre, tanh_sinh, QuadEstimate, QuadEstimateMp, TanhSinhOptions};
 use crate::special::bessel_j::{bessel_j_mp, bessel_j_sequence};
 use crate::special::{check_finite, exact_sub};
@@ -73,11 +73,12 @@ fn check(a: f64, zeta: f64, amp: f64, x: f64) -> Result<()> {
         return Err(Error::Domain { what: "a and zeta must be > 0".into() });
     }
     if x < a {
-        return Err(Error::Domain { what: format!("the wave displacement is for x >= a (got x = {x} < a = {a})") });
+        return Err(Error::OutOfRange { arg: "x (the wave displacement is for x >= a)", value: x, allowed: Interval::at_least(a) });
     }
     let d = 2.0 * std::f64::consts::PI * a / zeta;
     if !(d <= MAX_QUAD_D) {
-        return Err(Error::Domain { what: format!("2 pi a/zeta = {d:e} exceeds {MAX_QUAD_D:e}: the quadrature cost grows like D^2") });
+        // the quadrature's cost grows like D^2
+        return Err(Error::OutOfRange { arg: "2 pi a/zeta", value: d, allowed: Interval::left_open(0.0, MAX_QUAD_D) });
     }
     Ok(())
 }

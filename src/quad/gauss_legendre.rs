@@ -108,7 +108,8 @@ impl GaussLegendreRule {
 
 fn check_order(n: usize) -> Result<()> {
     if n == 0 || n > MAX_ORDER {
-        return Err(Error::Domain { what: format!("Gauss-Legendre order n = {n}: use 1 ..= {MAX_ORDER}") });
+        let value = i64::try_from(n).unwrap_or(i64::MAX);
+        return Err(Error::IntegerOutOfRange { arg: "the Gauss-Legendre order n", value, min: 1, max: MAX_ORDER as i64 });
     }
     Ok(())
 }
@@ -238,7 +239,8 @@ where
     finite(a, "lower bound a")?;
     finite(b, "upper bound b")?;
     if panels == 0 || panels > MAX_PANELS {
-        return Err(Error::Domain { what: format!("number of panels = {panels}: use 1 ..= {MAX_PANELS}") });
+        let value = i64::try_from(panels).unwrap_or(i64::MAX);
+        return Err(Error::IntegerOutOfRange { arg: "the number of panels", value, min: 1, max: MAX_PANELS as i64 });
     }
     let r = rule(n)?;
     let m = panels as f64;
@@ -372,8 +374,8 @@ mod tests {
 
     #[test]
     fn bad_input_is_an_error() {
-        assert!(matches!(rule(0), Err(Error::Domain { .. })));
-        assert!(matches!(rule(MAX_ORDER + 1), Err(Error::Domain { .. })));
+        assert!(matches!(rule(0), Err(Error::IntegerOutOfRange { value: 0, .. })));
+        assert!(matches!(rule(MAX_ORDER + 1), Err(Error::IntegerOutOfRange { .. })));
         assert!(integrate(|x| x, 0.0, 1.0, 0).is_err());
         assert!(matches!(integrate(|x| x, f64::NAN, 1.0, 4), Err(Error::NonFinite { .. })));
         assert!(matches!(integrate(|x| x, 0.0, f64::INFINITY, 4), Err(Error::NonFinite { .. })));

@@ -155,15 +155,18 @@ impl TanhSinhOptions {
     fn validate(&self) -> Result<u32> {
         check_prec(self.prec)?;
         if self.guard_bits > MAX_GUARD_BITS {
-            return Err(Error::Domain { what: format!("guard_bits = {} exceeds {MAX_GUARD_BITS}", self.guard_bits) });
+            return Err(Error::IntegerOutOfRange { arg: "guard_bits", value: self.guard_bits as i64, min: 0, max: MAX_GUARD_BITS as i64 });
         }
         let wp = self.prec.saturating_add(self.guard_bits);
         if wp > MAX_WORKING_PREC {
             return Err(Error::Precision { requested: wp as u64 });
         }
         if !(MIN_LEVEL..=MAX_LEVEL_CAP).contains(&self.max_level) {
-            return Err(Error::Domain {
-                what: format!("max_level = {}: use {MIN_LEVEL} ..= {MAX_LEVEL_CAP}", self.max_level),
+            return Err(Error::IntegerOutOfRange {
+                arg: "max_level",
+                value: self.max_level as i64,
+                min: MIN_LEVEL as i64,
+                max: MAX_LEVEL_CAP as i64,
             });
         }
         check_finite(&self.abs_tol, "abs_tol")?;
@@ -511,9 +514,9 @@ mod tests {
         assert!(matches!(integrate(f, &fl(0.0), &Float::with_val(53, rug::float::Special::Infinity), &o), Err(Error::NonFinite { .. })));
         assert!(matches!(integrate(f, &fl(0.0), &fl(1.0), &TanhSinhOptions::with_prec(1)), Err(Error::Precision { .. })));
         let bad = TanhSinhOptions { max_level: MAX_LEVEL_CAP + 1, ..o.clone() };
-        assert!(matches!(integrate(f, &fl(0.0), &fl(1.0), &bad), Err(Error::Domain { .. })));
+        assert!(matches!(integrate(f, &fl(0.0), &fl(1.0), &bad), Err(Error::IntegerOutOfRange { arg: "max_level", .. })));
         let bad = TanhSinhOptions { max_level: 1, ..o.clone() };
-        assert!(matches!(integrate(f, &fl(0.0), &fl(1.0), &bad), Err(Error::Domain { .. })));
+        assert!(matches!(integrate(f, &fl(0.0), &fl(1.0), &bad), Err(Error::IntegerOutOfRange { arg: "max_level", .. })));
         let bad = TanhSinhOptions { abs_tol: fl(-1e-30), ..o.clone() };
         assert!(matches!(integrate(f, &fl(0.0), &fl(1.0), &bad), Err(Error::Domain { .. })));
         let bad = TanhSinhOptions { abs_tol: nan.clone(), ..o.clone() };

@@ -130,7 +130,7 @@ pub(crate) fn gamma_ratio(num: &[&Float], den: &[&Float], wp: u32) -> Result<Bal
     let mut r = Ball::one(wp);
     for x in num {
         if is_nonpositive_integer(x) {
-            return Err(Error::Domain { what: format!("Gamma at the pole {}", x.to_f64()) });
+            return Err(Error::Pole { function: "Gamma", at: x.to_f64() });
         }
         let mut best: Option<(usize, Float)> = None;
         for (j, y) in den.iter().enumerate() {
@@ -178,7 +178,7 @@ pub(crate) fn gamma_ratio(num: &[&Float], den: &[&Float], wp: u32) -> Result<Bal
 pub(crate) fn gamma_ball(x: &Float, wp: u32) -> Result<Ball> {
     const SMALL: f64 = 64.0;
     if is_nonpositive_integer(x) {
-        return Err(Error::Domain { what: format!("Gamma at the pole {}", x.to_f64()) });
+        return Err(Error::Pole { function: "Gamma", at: x.to_f64() });
     }
     let xf = x.to_f64();
     if x.is_integer() && xf <= SMALL {

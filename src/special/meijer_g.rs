@@ -132,7 +132,7 @@ pub fn choose_algorithm(k: u32, y: f64) -> Algorithm {
 fn validate(k: u32, y: &Float) -> Result<()> {
     check_finite(y, "y")?;
     if k > MAX_K {
-        return Err(Error::Domain { what: format!("k = {k} exceeds the supported maximum {MAX_K}") });
+        return Err(Error::IntegerOutOfRange { arg: "k", value: k as i64, min: 0, max: MAX_K as i64 });
     }
     if !(*y > 0 && *y <= 1) {
         return Err(Error::Domain { what: "meijer_g_k needs 0 < y <= 1 (y = (a/x)^2 with x >= a)".into() });

@@ -70,7 +70,8 @@ pub fn meijer_g_k_family_f64(kmax: u32, y: f64) -> Result<Vec<Bounded>> {
         return Err(Error::Domain { what: "meijer_g_k_family_f64 needs 0 < y <= 1 (y = (a/x)^2 with x >= a)".into() });
     }
     if kmax > crate::special::meijer_g::MAX_K {
-        return Err(Error::Domain { what: format!("kmax = {kmax} exceeds the supported maximum {}", crate::special::meijer_g::MAX_K) });
+        let max = crate::special::meijer_g::MAX_K as i64;
+        return Err(Error::IntegerOutOfRange { arg: "kmax", value: kmax as i64, min: 0, max });
     }
     let top = kmax.min(TABLE_K_MAX);
     let swept = family_dd(top, y);

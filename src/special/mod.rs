@@ -154,10 +154,17 @@ where
 {
     let b = ziv(function, F64_FALLBACK_PREC, guard, eval)?;
     let v = b.to_f64();
+    finite_result(function, v)
+}
+
+/// `v` if it is a finite f64, else [`Error::NonFiniteResult`] naming `function`
+/// (a result beyond the f64 range, or an f64 formula that breaks down at
+/// extreme scales: the MP path answers there).
+pub(crate) fn finite_result(function: &'static str, v: f64) -> Result<f64> {
     if v.is_finite() {
         Ok(v)
     } else {
-        Err(Error::Overflow { what: format!("{function} (result exceeds the f64 range)") })
+        Err(Error::NonFiniteResult { function })
     }
 }
 
@@ -168,10 +175,7 @@ where
 /// This is the MP fallback of the `*_bounded` functions: always valid, slower
 /// than a native f64 algorithm with its own running error analysis.
 pub(crate) fn bounded_from_ball(function: &'static str, b: &Ball) -> Result<Bounded> {
-    let value = b.to_f64();
-    if !value.is_finite() {
-        return Err(Error::Overflow { what: format!("{function} (result exceeds the f64 range)") });
-    }
+    let value = finite_result(function, b.to_f64())?;
     // mid - value is exact at this precision (both are binary floats).
     let rounding = exact_sub(b.mid(), &exact(value));
     let mut err = Float::with_val(crate::ball::MAG_PREC, 0);

@@ -548,7 +548,7 @@ pub fn hyp_pfq_ball_mp(a: &[Ball], b: &[Ball], z: &Ball, prec: u32) -> Result<Ba
     let degree = a
         .iter()
         .filter(|x| x.is_exact_nonpositive_integer())
-        .map(|x| (-x.mid().to_f64()) as u64 + 1)
+        .map(|x| ((-x.mid().to_f64()) as u64).saturating_add(1))
         .min();
     for (j, bj) in b.iter().enumerate() {
         if let Some(pole) = contains_pole(bj, degree) {

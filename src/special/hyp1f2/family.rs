@@ -48,7 +48,7 @@ pub const FAMILY_MAX_K: u32 = 1_000_000;
 pub fn hyp1f2_model_family_f64(kmax: u32, z: f64) -> Result<Vec<Bounded>> {
     crate::error::finite(z, "z")?;
     if kmax > FAMILY_MAX_K {
-        return Err(Error::Domain { what: format!("kmax = {kmax} exceeds the supported maximum {FAMILY_MAX_K}") });
+        return Err(Error::IntegerOutOfRange { arg: "kmax", value: kmax as i64, min: 0, max: FAMILY_MAX_K as i64 });
     }
     let swept = phi_downward(kmax, z);
     (0..=kmax)

@@ -31,7 +31,7 @@ use rug::Float;
 use super::series::{abs_upper_precise, first_positive_index, negligible, negligible_scaled, ratio_bound, TailFactor};
 use super::{one, MAX_LOG_M, MIN_SERIES_PREC};
 use crate::ball::{Ball, MAG_PREC};
-use crate::error::{Error, Result};
+use crate::error::{Error, Interval, Result};
 use crate::special::gamma::{gamma_ratio, int_float, mag_abs, mag_add, mag_div, mag_inf, mag_min, mag_mul, xball};
 use crate::special::pfq::MAX_SERIES_TERMS;
 use crate::special::{exact_add, exact_sub, is_nonpositive_integer};
@@ -63,7 +63,7 @@ pub(super) fn log_core(a: &Float, b: &Float, c: &Float, u: &Ball, wp: u32) -> Re
     }
     let mf = s.to_f64();
     if mf.abs() > MAX_LOG_M as f64 {
-        return Err(Error::Domain { what: format!("2F1: |c - a - b| = {} exceeds {MAX_LOG_M}", mf.abs()) });
+        return Err(Error::OutOfRange { arg: "|c - a - b| (2F1)", value: mf.abs(), allowed: Interval::closed(0.0, MAX_LOG_M as f64) });
     }
     let m = mf.abs() as u64;
     if mf >= 0.0 {
