@@ -21,7 +21,7 @@ impl Grid {
     /// `cells` a power of two in `[MIN_CELLS, MAX_CELLS]`, `half_width > 0` finite.
     pub fn new(cells: usize, half_width: f64) -> Result<Grid> {
         if !cells.is_power_of_two() || !(MIN_CELLS..=MAX_CELLS).contains(&cells) {
-            return Err(SolverError::Grid { cells });
+            return Err(SolverError::Grid { cells, min: MIN_CELLS, max: MAX_CELLS });
         }
         finite(half_width, "the domain half-width")?;
         if !(half_width > 0.0 && half_width <= 1e6) {

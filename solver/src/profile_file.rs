@@ -48,7 +48,7 @@ impl ProfileTable {
         match header {
             Some((_, l)) if l.trim_start_matches('\u{feff}').replace(' ', "") == "x,h" => {}
             Some((i, l)) => return Err(fault(i, TableFault::Header { found: l.to_string() })),
-            None => return Err(fault(1, TableFault::TooFewRows { rows: 0 })),
+            None => return Err(fault(1, TableFault::TooFewRows { rows: 0, min: MIN_ROWS })),
         }
         let (mut x, mut h) = (Vec::new(), Vec::new());
         let mut last_line = 1;
@@ -78,7 +78,7 @@ impl ProfileTable {
             h.push(row[1]);
         }
         if x.len() < MIN_ROWS {
-            return Err(fault(last_line, TableFault::TooFewRows { rows: x.len() }));
+            return Err(fault(last_line, TableFault::TooFewRows { rows: x.len(), min: MIN_ROWS }));
         }
         ProfileTable::new(x, h)
     }
@@ -89,7 +89,7 @@ impl ProfileTable {
     pub fn new(x: Vec<f64>, h: Vec<f64>) -> Result<ProfileTable> {
         let fault = |row: usize, fault: TableFault| SolverError::ProfileTable { line: row + 2, fault };
         if x.len() != h.len() || x.len() < MIN_ROWS {
-            return Err(fault(x.len().min(h.len()), TableFault::TooFewRows { rows: x.len().min(h.len()) }));
+            return Err(fault(x.len().min(h.len()), TableFault::TooFewRows { rows: x.len().min(h.len()), min: MIN_ROWS }));
         }
         for k in 0..x.len() {
             for (v, column) in [(x[k], "x"), (h[k], "h")] {
@@ -172,8 +172,8 @@ mod tests {
         assert!(matches!(line_of("x,h\n0,1\n1,2,3\n"), (3, TableFault::Fields { found: 3 })));
         assert!(matches!(line_of("x,h\n0,1\n1,2\n\n1,3\n4,4\n"), (5, TableFault::NotIncreasing { .. })));
         assert!(matches!(line_of("x,h\n0,1\nNaN,2\n"), (3, TableFault::NotFinite { column: "x" })));
-        assert!(matches!(line_of("x,h\n0,1\n1,2\n"), (3, TableFault::TooFewRows { rows: 2 })));
-        assert!(matches!(line_of(""), (1, TableFault::TooFewRows { rows: 0 })));
+        assert!(matches!(line_of("x,h\n0,1\n1,2\n"), (3, TableFault::TooFewRows { rows: 2, .. })));
+        assert!(matches!(line_of(""), (1, TableFault::TooFewRows { rows: 0, min: MIN_ROWS })));
     }
 
     #[test]

@@ -67,7 +67,7 @@
 //! removes the hysteresis, so the dissipation of invalid loops is reported
 //! apart.
 
-use crate::contact::curve::CurvePoint;
+use crate::contact::curve_state::CurvePoint;
 use crate::contact::model::{brent, golden_section_min, ContactSize, Params};
 use crate::error::{Error, Interval, Result};
 
