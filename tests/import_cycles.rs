@@ -54,14 +54,6 @@ const KNOWN_CYCLES: &[(&[&str], &str)] = &[
         // hyp1f2 re-exports the family's model function, the family calls hyp1f2_bounded
         "issue 26: special/hyp1f2/ as one folder",
     ),
-    (
-        &[
-            "src/special/hyp2f1/power.rs",
-            "src/special/hyp2f1/power_f64.rs",
-        ],
-        // power calls power_f64::round_small, power_f64 takes power's Dw and ln 2 constants
-        "issue 26: one double-word type (ball::Dd) for both",
-    ),
 ];
 
 /// A token of stripped Rust source: an identifier, `::`, or one punctuation character.

@@ -71,10 +71,10 @@
 //! cancel, [`series_hybrid`] sums a double-word head and continues in f64,
 //! instead of the double-word sum throughout.
 
-use super::power::{dw_add, dw_div, dw_div_p, dw_mul, dw_mul_p, pow_dw, Dw, U};
-use super::power_f64::{floor_any, ln_f64, pow_dw_exponent, pow_from_ln, round_small};
+use super::power::{pow_dw, round_small, U};
+use super::power_f64::{floor_any, ln_f64, pow_dw_exponent, pow_from_ln};
 use super::rgamma_f64::rgamma_batch;
-use crate::ball::{cpu_dispatch, two_sum, Bounded, ExactProduct, F64x2};
+use crate::ball::{cpu_dispatch, two_sum, Bounded, Dd, ExactProduct, F64x2};
 
 /// Cap on the terms of a native series (beyond it, MP).
 pub(super) const MAX_NATIVE_TERMS: u64 = 3000;
@@ -120,7 +120,7 @@ impl Param {
         Param { hi: x, lo: 0.0 }
     }
 
-    fn from_dw(d: Dw) -> Param {
+    fn from_dw(d: Dd) -> Param {
         Param { hi: d.hi, lo: d.lo }
     }
 
@@ -616,14 +616,14 @@ fn series_tail(
 /// of [`series_dw`], `49 u^2` relative, charged `128 u^2`); `None` at a zero
 /// denominator.
 #[inline(always)]
-fn dw_next_term<P: ExactProduct>(p1: Dw, p2: Dw, q: Dw, x: Dw, t: Dw, n: u64) -> Option<Dw> {
+fn dw_next_term<P: ExactProduct>(p1: Dd, p2: Dd, q: Dd, x: Dd, t: Dd, n: u64) -> Option<Dd> {
     let nf = n as f64;
-    let num = dw_mul_p::<P>(dw_add(p1, Dw::new(nf)), dw_add(p2, Dw::new(nf)));
-    let den = dw_mul_p::<P>(dw_add(q, Dw::new(nf)), Dw::new(nf + 1.0));
+    let num = p1.add_accurate(Dd::from_f64(nf)).mul_accurate_p::<P>(p2.add_accurate(Dd::from_f64(nf)));
+    let den = q.add_accurate(Dd::from_f64(nf)).mul_accurate_p::<P>(Dd::from_f64(nf + 1.0));
     if den.hi == 0.0 {
         return None;
     }
-    Some(dw_mul_p::<P>(t, dw_div_p::<P>(dw_mul_p::<P>(num, x), den)))
+    Some(t.mul_accurate_p::<P>(num.mul_accurate_p::<P>(x).div_accurate_p::<P>(den)))
 }
 
 cpu_dispatch! {
@@ -634,17 +634,17 @@ cpu_dispatch! {
     /// product by `x` `7u^2`, one DW division `15u^2 + 56u^3`, the update `7u^2`:
     /// `49 u^2`, charged `128 u^2`) and `3u^2 |s~_k|` per addition; parameters are
     /// exact double words (`theta` bounds the relative error of `x`).
-    fn series_dw(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64) -> Option<(Dw, f64)> => series_dw_with
+    fn series_dw(p1: Dd, p2: Dd, q: Dd, x: Dd, x_rel: f64) -> Option<(Dd, f64)> => series_dw_with
 }
 
 /// [`series_dw`] with the exact product `P` (the result is bit-identical for
 /// every `P`: both products are exact).
 #[inline(always)]
-fn series_dw_with<P: ExactProduct>(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64) -> Option<(Dw, f64)> {
+fn series_dw_with<P: ExactProduct>(p1: Dd, p2: Dd, q: Dd, x: Dd, x_rel: f64) -> Option<(Dd, f64)> {
     let pa = Param::from_dw(p1);
     let pb = Param::from_dw(p2);
     let pq = Param::from_dw(q);
-    let exact_int = |p: &Dw| p.lo == 0.0 && p.hi <= 0.0 && p.hi == floor_any(p.hi);
+    let exact_int = |p: &Dd| p.lo == 0.0 && p.hi <= 0.0 && p.hi == floor_any(p.hi);
     let deg = [p1, p2].iter().filter(|p| exact_int(p)).map(|p| (-p.hi) as u64).min();
     if exact_int(&q) && deg.map_or(true, |d| d > (-q.hi) as u64) {
         return None;
@@ -656,8 +656,8 @@ fn series_dw_with<P: ExactProduct>(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64) -> 
     let n_pos = first_positive_index([p1.hi, p2.hi, q.hi])?;
     // The tail only needs to be far below the rounding bound (u |s|): 2^-60.
     const STOP: f64 = 8.673617379884035e-19; // 2^-60
-    let mut t = Dw::new(1.0);
-    let mut s = Dw::new(1.0);
+    let mut t = Dd::from_f64(1.0);
+    let mut s = Dd::from_f64(1.0);
     let (mut sum_abs_s, mut sum_nt, mut tail) = (0.0f64, 0.0f64, 0.0f64);
     let mut n = 0u64;
     loop {
@@ -678,7 +678,7 @@ fn series_dw_with<P: ExactProduct>(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64) -> 
                 }
             }
         }
-        s = dw_add(s, t);
+        s = s.add_accurate(t);
         sum_abs_s += s.hi.abs();
         sum_nt += nf * t.hi.abs();
         if n > MAX_NATIVE_TERMS || !s.hi.is_finite() || !t.hi.is_finite() {
@@ -710,13 +710,13 @@ cpu_dispatch! {
     /// already charge (`E >= 10 u`, `K >= 1`); the f64 argument `x.hi` errs by
     /// `theta = 1.01 (|x.lo| + x_rel |x|) / |x.hi|` relative, passed as its
     /// `x_rel`; the final `fl(s_f + s_K.lo)` adds `u |v|`.
-    fn series_hybrid(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64, stop: f64) -> Option<(f64, f64)> => series_hybrid_with
+    fn series_hybrid(p1: Dd, p2: Dd, q: Dd, x: Dd, x_rel: f64, stop: f64) -> Option<(f64, f64)> => series_hybrid_with
 }
 
 #[inline(always)]
-fn series_hybrid_with<P: ExactProduct>(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64, stop: f64) -> Option<(f64, f64)> {
+fn series_hybrid_with<P: ExactProduct>(p1: Dd, p2: Dd, q: Dd, x: Dd, x_rel: f64, stop: f64) -> Option<(f64, f64)> {
     const MAX_HEAD: u64 = 96;
-    let exact_int = |p: &Dw| p.lo == 0.0 && p.hi <= 0.0 && p.hi == floor_any(p.hi);
+    let exact_int = |p: &Dd| p.lo == 0.0 && p.hi <= 0.0 && p.hi == floor_any(p.hi);
     if [p1, p2, q].iter().any(exact_int) || !(x.hi.abs() < 1.0) {
         return None; // polynomials and poles: the other paths
     }
@@ -730,15 +730,15 @@ fn series_hybrid_with<P: ExactProduct>(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64,
     // (|t_K| (K + 1) w <= |s| with w = 16 u / (32 stop (1 - rho)^2)).
     let mut w_switch = f64::INFINITY;
     let mut rho_tried_at = -1.0f64;
-    let mut t = Dw::new(1.0);
-    let mut s = Dw::new(1.0);
+    let mut t = Dd::from_f64(1.0);
+    let mut s = Dd::from_f64(1.0);
     let (mut sum_abs_s, mut sum_nt) = (0.0f64, 0.0f64);
     let mut n = 0u64;
     loop {
         t = dw_next_term::<P>(p1, p2, q, x, t, n)?;
         n += 1;
         let nf = n as f64;
-        s = dw_add(s, t);
+        s = s.add_accurate(t);
         sum_abs_s += s.hi.abs();
         sum_nt += nf * t.hi.abs();
         if !s.hi.is_finite() || !t.hi.is_finite() {
@@ -773,7 +773,7 @@ fn series_hybrid_with<P: ExactProduct>(p1: Dw, p2: Dw, q: Dw, x: Dw, x_rel: f64,
 /// `p + 1` for a double word `p`, as a series parameter. The low word is
 /// rounded once (`<= u |lo|`); [`series`] uses it only through `|lo|` (the
 /// perturbation bound), so it is stored enlarged by `4u` to cover that.
-fn plus_one(p: Dw) -> Param {
+fn plus_one(p: Dd) -> Param {
     let (hi, e) = two_sum(p.hi, 1.0);
     let lo = e + p.lo;
     Param { hi, lo: lo * (1.0 + 4.0 * U) }
@@ -833,17 +833,17 @@ fn add_connection_term(acc: (f64, f64), (coef, coef_rel): (f64, f64), (pw, pw_re
 /// [`gamma_coefficient`], both powers from one [`ln_f64`] of the exact double
 /// word `1 - z`; `x = fl(1/(1-z)_hi)` is within `2.01 u` relative.
 fn connection_inv_one_minus_z(a: f64, b: f64, c: f64, z: f64, stop: f64) -> Option<(f64, f64)> {
-    let amb = Dw::diff(a, b);
+    let amb = Dd::diff(a, b);
     if !(z <= -1.0) || (amb.hi - round_small(amb.hi)).abs() < CONNECTION_MIN_FRAC {
         return None;
     }
-    let omz = Dw::diff(1.0, z);
+    let omz = Dd::diff(1.0, z);
     let x = 1.0 / omz.hi; // |x - 1/(1-z)| <= 2.01 u x
     let ln_omz = ln_f64(omz.hi, omz.lo)?;
     // the seven reciprocal Gammas at once (interleaved Horner sums)
     let [g_c, g_a, g_b, g_ca, g_cb, g_amb, g_bma] =
-        rgamma_batch([Dw::new(c), Dw::new(a), Dw::new(b), Dw::diff(c, a), Dw::diff(c, b), amb, Dw::diff(b, a)]);
-    let lanes = [(a, b), (b, a)].map(|(p, q)| [Param::exact(p), Param::from_dw(Dw::diff(c, q)), plus_one(Dw::diff(p, q))]);
+        rgamma_batch([Dd::from_f64(c), Dd::from_f64(a), Dd::from_f64(b), Dd::diff(c, a), Dd::diff(c, b), amb, Dd::diff(b, a)]);
+    let lanes = [(a, b), (b, a)].map(|(p, q)| [Param::exact(p), Param::from_dw(Dd::diff(c, q)), plus_one(Dd::diff(p, q))]);
     // both series in one two-lane loop where it applies, else one by one
     let both = series_two(lanes, x, 2.01 * U, stop);
     let mut acc = (0.0f64, 0.0f64);
@@ -882,21 +882,21 @@ fn connection_one_minus_z(a: f64, b: f64, c: f64, z: f64, stop: f64) -> Option<(
     }
     let (h1, l1) = two_sum(c, -a);
     let (h2, l2) = two_sum(h1, -b);
-    let s = Dw { hi: h2, lo: l1 + l2 };
+    let s = Dd { hi: h2, lo: l1 + l2 };
     if (s.hi - round_small(s.hi)).abs() < CONNECTION_MIN_FRAC {
         return None;
     }
     const S_SLACK: f64 = 8.271806125530277e-25; // 2^-80
-    let neg_s = Dw { hi: -s.hi, lo: -s.lo };
+    let neg_s = Dd { hi: -s.hi, lo: -s.lo };
     let x = 1.0 - z;
     let mut acc = (0.0f64, 0.0f64);
     let widen = |p: Param| Param { hi: p.hi, lo: p.lo.abs() * (1.0 + 4.0 * U) + 2.0 * U * s.lo.abs() };
     // the seven reciprocal Gammas at once (interleaved Horner sums)
     let [g_ca, g_cb, g_c, g_s, g_a, g_b, g_neg_s] =
-        rgamma_batch([Dw::diff(c, a), Dw::diff(c, b), Dw::new(c), s, Dw::new(a), Dw::new(b), neg_s]);
+        rgamma_batch([Dd::diff(c, a), Dd::diff(c, b), Dd::from_f64(c), s, Dd::from_f64(a), Dd::from_f64(b), neg_s]);
     let lanes = [
         [Param::exact(a), Param::exact(b), widen(plus_one(neg_s))],
-        [Param::from_dw(Dw::diff(c, a)), Param::from_dw(Dw::diff(c, b)), widen(plus_one(s))],
+        [Param::from_dw(Dd::diff(c, a)), Param::from_dw(Dd::diff(c, b)), widen(plus_one(s))],
     ];
     // both series in one two-lane loop where it applies, else one by one
     let both = series_two(lanes, x, 0.0, stop);
@@ -941,11 +941,11 @@ pub(super) fn hyp2f1_native(a: f64, b: f64, c: f64, z: f64, rel_tol: f64) -> Opt
             }
         }
         // ... a double-word head where the first terms cancel, then f64 ...
-        if let Some(r) = series_hybrid(Dw::new(a), Dw::new(b), Dw::new(c), Dw::new(z), 0.0, stop).and_then(|(v, err)| accept(v, err)) {
+        if let Some(r) = series_hybrid(Dd::from_f64(a), Dd::from_f64(b), Dd::from_f64(c), Dd::from_f64(z), 0.0, stop).and_then(|(v, err)| accept(v, err)) {
             return Some(r);
         }
         // ... then double words throughout (cancellation, many terms).
-        let (s, err) = series_dw(Dw::new(a), Dw::new(b), Dw::new(c), Dw::new(z), 0.0)?;
+        let (s, err) = series_dw(Dd::from_f64(a), Dd::from_f64(b), Dd::from_f64(c), Dd::from_f64(z), 0.0)?;
         let v = s.hi + s.lo;
         return accept(v, (err + U * v.abs()) * (1.0 + 2.0 * U));
     }
@@ -963,9 +963,9 @@ pub(super) fn hyp2f1_native(a: f64, b: f64, c: f64, z: f64, rel_tol: f64) -> Opt
         }
     }
     // Pfaff: w = z/(z-1) = -z / (1 - z); 1 - z exact as a double word.
-    let omz = Dw::diff(1.0, z);
-    let ca = Dw::diff(c, a);
-    let cb = Dw::diff(c, b);
+    let omz = Dd::diff(1.0, z);
+    let ca = Dd::diff(c, a);
+    let cb = Dd::diff(c, b);
     let neg = |x: f64| (x < 0.0) as u8;
     let first_a = neg(a) + neg(cb.hi) <= neg(b) + neg(ca.hi);
     let candidates = if first_a { [(a, cb), (b, ca)] } else { [(b, ca), (a, cb)] };
@@ -996,18 +996,18 @@ pub(super) fn hyp2f1_native(a: f64, b: f64, c: f64, z: f64, rel_tol: f64) -> Opt
     // (not the connection formula where it did not go first: over random
     // points where the first f64 sum fails, it certifies only 23% of those the
     // second one does not, at the cost of two series and seven Gammas) ...
-    let w = dw_div(Dw::new(-z), omz);
+    let w = Dd::from_f64(-z).div_accurate(omz);
     for (p, q) in candidates {
         let pre = ln_omz.and_then(|l| pow_from_ln(l, -p));
-        if let Some(r) = pre.zip(series_hybrid(Dw::new(p), q, Dw::new(c), w, 32.0 * U * U, stop)).and_then(|(pre, sum)| pfaff(pre, sum)) {
+        if let Some(r) = pre.zip(series_hybrid(Dd::from_f64(p), q, Dd::from_f64(c), w, 32.0 * U * U, stop)).and_then(|(pre, sum)| pfaff(pre, sum)) {
             return Some(r);
         }
     }
     // ... then double words throughout.
     let (p, q) = candidates[0];
-    let (s, err_s) = series_dw(Dw::new(p), q, Dw::new(c), w, 32.0 * U * U)?;
-    let (pre, pre_rel) = pow_dw(omz, Dw::new(-p), 0.0)?;
-    let prod = dw_mul(pre, s);
+    let (s, err_s) = series_dw(Dd::from_f64(p), q, Dd::from_f64(c), w, 32.0 * U * U)?;
+    let (pre, pre_rel) = pow_dw(omz, Dd::from_f64(-p), 0.0)?;
+    let prod = pre.mul_accurate(s);
     let v = prod.hi + prod.lo;
     let s_abs = s.hi.abs() * (1.0 + 2.0 * U);
     let pre_abs = pre.hi.abs() * (1.0 + 2.0 * U);
@@ -1102,7 +1102,7 @@ mod tests {
         let mut rng = Lcg(0xf0a);
         for _ in 0..500 {
             let (a, b, c, x) = (rng.uniform(-3.0, 3.0), rng.uniform(-3.0, 3.0), rng.uniform(0.5, 6.0), rng.uniform(-0.9, 0.9));
-            let args = (Dw::new(a), Dw::diff(c, b), Dw::new(c), Dw::new(x));
+            let args = (Dd::from_f64(a), Dd::diff(c, b), Dd::from_f64(c), Dd::from_f64(x));
             let fast = series_dw(args.0, args.1, args.2, args.3, 0.0);
             let portable = series_dw_with::<Dekker>(args.0, args.1, args.2, args.3, 0.0);
             assert_eq!(fast, portable, "2F1({a}, {c} - {b}; {c}; {x})");
@@ -1129,7 +1129,7 @@ mod tests {
                 continue;
             }
             cancelling += 1;
-            let Some((v, err)) = series_hybrid(Dw::new(a), Dw::new(p2), Dw::new(c), Dw::new(x), 0.0, stop) else { continue };
+            let Some((v, err)) = series_hybrid(Dd::from_f64(a), Dd::from_f64(p2), Dd::from_f64(c), Dd::from_f64(x), 0.0, stop) else { continue };
             let m = hyp2f1_mp(&exact(a), &exact(p2), &exact(c), &exact(x), 120).unwrap();
             let diff_up = Float::with_val(200, m.mid() - v).abs().to_f64() + m.rad().to_f64();
             assert!(diff_up <= err, "hybrid 2F1({a}, {p2}; {c}; {x}): |error| {diff_up:e} > bound {err:e}");
