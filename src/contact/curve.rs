@@ -21,7 +21,8 @@
 use rayon::prelude::*;
 
 pub use crate::contact::curve_state::{load_at, state, CurvePoint};
-use crate::contact::model::{brent, ContactSize, Params, Validity};
+use crate::contact::model::{ContactSize, Params, Validity};
+use crate::roots::brent;
 pub use crate::contact::paths::{HysteresisLoop, Jump, JumpDirection};
 use crate::contact::paths::{control_paths, ControlPaths, Driver, PathNode};
 use crate::error::{Error, Interval, Result};

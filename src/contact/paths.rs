@@ -68,7 +68,8 @@
 //! apart.
 
 use crate::contact::curve_state::CurvePoint;
-use crate::contact::model::{brent, golden_section_min, ContactSize, Params};
+use crate::contact::model::{ContactSize, Params};
+use crate::roots::{brent, golden_section_min};
 use crate::error::{Error, Interval, Result};
 
 /// Which variable the machine controls.
