@@ -97,6 +97,12 @@ pub enum TableFault {
         /// The previous row's `x`.
         previous: f64,
     },
+    /// The interpolant's slope at this row is not a finite f64: the rows
+    /// around it are too close for the rise of `h` between them.
+    SlopeNotFinite {
+        /// This row's `x`.
+        x: f64,
+    },
     /// Fewer rows than [`crate::profile_file::MIN_ROWS`] (`line`: the last line read).
     TooFewRows {
         /// Rows found.
@@ -115,6 +121,9 @@ impl fmt::Display for TableFault {
             TableFault::NotFinite { column } => write!(f, "{column} must be a finite number"),
             TableFault::NotIncreasing { x, previous } => {
                 write!(f, "x must increase strictly from row to row (x = {x} after {previous})")
+            }
+            TableFault::SlopeNotFinite { x } => {
+                write!(f, "the slope at x = {x} is not a finite number: the rows around it are too close for their rise")
             }
             TableFault::TooFewRows { rows, min } => write!(f, "the table needs at least {min} rows (found {rows})"),
         }

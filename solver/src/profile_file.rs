@@ -21,7 +21,8 @@
 //! # Errors
 //!
 //! A line that is not a row of two finite numbers in increasing `x`, a header
-//! other than `x,h`, or fewer than 4 rows is [`SolverError::ProfileTable`]
+//! other than `x,h`, fewer than 4 rows, or rows so close for their rise that a
+//! slope is not a finite f64 is [`SolverError::ProfileTable`]
 //! with the 1-based line and a [`TableFault`]; a table that does not cover the
 //! domain is [`SolverError::ProfileCoverage`].
 
@@ -112,6 +113,11 @@ impl ProfileTable {
         let end = |s0: f64, s1: f64, d0: f64, d1: f64| s0 + (s0 - s1) * d0 / (d0 + d1);
         slope[0] = end(secant(0), secant(1), x[1] - x[0], x[2] - x[1]);
         slope[n - 1] = end(secant(n - 2), secant(n - 3), x[n - 1] - x[n - 2], x[n - 2] - x[n - 3]);
+        // Rows too close for their rise (a subnormal step, or h differences near
+        // f64::MAX) give a slope that is not a number: the interpolant would be NaN.
+        if let Some(k) = slope.iter().position(|s| !s.is_finite()) {
+            return Err(fault(k, TableFault::SlopeNotFinite { x: x[k] }));
+        }
         Ok(ProfileTable { x, h, slope })
     }
 
@@ -137,8 +143,13 @@ impl ProfileTable {
 
     /// The interpolated depth at `x` (held at the end rows' values outside the
     /// table; [`Self::check_covers`] keeps a solver's grid inside it).
+    /// A NaN `x` gives NaN.
     pub fn depth_at(&self, x: f64) -> f64 {
         let n = self.x.len();
+        if x.is_nan() {
+            // no row brackets it (partition_point would give 0, and 0 - 1 panics)
+            return f64::NAN;
+        }
         if x <= self.x[0] {
             return self.h[0];
         }
