@@ -19,7 +19,13 @@
 //! BOLERO_RANDOM_TEST_TIME_MS=600000 cargo test --features maugis/gmp-no-check -p maugis-solver --test fuzz -- --nocapture
 //! ```
 //!
-//! Found and fixed so far: a subnormal domain half-width (cell width 0), a
+//! Campaign of 2026-11-26 (test profile, 240 s a target, one thread, at
+//! 7b960b0): building blocks 75 038 753 inputs, profile tables 101 938 439
+//! raw-text plus 4 471 661 near-valid tables, simulations 67 365 inputs (5 571
+//! of them simulated to the end); 0 failures, with
+//! `BOLERO_RANDOM_TEST_TIME_MS=240000` and `-- --test-threads=1`.
+//!
+//! Found and fixed before it: a subnormal domain half-width (cell width 0), a
 //! subnormal `beta` (a NaN profile), table rows too close for their rise (a NaN
 //! slope), and `ProfileTable::depth_at(NaN)` (an index underflow: a panic).
 
