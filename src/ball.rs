@@ -42,7 +42,7 @@ mod dd_bounded;
 mod double_double;
 mod elementary;
 mod fixed;
-pub(crate) use double_double::{quick_two_sum, two_prod, two_sum};
+pub(crate) use double_double::{two_prod, two_sum};
 mod lanes;
 pub(crate) use lanes::F64x2;
 mod mag;

@@ -59,6 +59,7 @@ pub mod contact;
 pub mod error;
 pub mod quad;
 pub mod registry;
+pub mod roots;
 pub mod special;
 
 /// `rug` is in the public API (`Float` arguments, [`Ball`] midpoints); this is the

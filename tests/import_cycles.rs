@@ -40,11 +40,6 @@ const KNOWN_CYCLES: &[(&[&str], &str)] = &[
         "issue 26: contact/displacement/ absorbs wave_bounded",
     ),
     (
-        &["src/contact/curve.rs", "src/contact/paths.rs"],
-        // curve re-exports paths' HysteresisLoop/Jump, paths takes curve's CurvePoint
-        "issue 26: split the shared state solver out of curve",
-    ),
-    (
         &[
             "src/special/meijer_g.rs",
             "src/special/meijer_g_dd.rs",
@@ -53,19 +48,6 @@ const KNOWN_CYCLES: &[(&[&str], &str)] = &[
         ],
         // meijer_g, its family, native and dd paths import each other (family <-> meijer_g, native <-> dd)
         "issue 26: special/meijer_g/ as one folder",
-    ),
-    (
-        &[
-            "src/special/hyp2f1/power.rs",
-            "src/special/hyp2f1/power_f64.rs",
-        ],
-        // power calls power_f64::round_small, power_f64 takes power's Dw and ln 2 constants
-        "issue 26: one double-word type (ball::Dd) for both",
-    ),
-    (
-        &["solver/src/error.rs", "solver/src/grid.rs"],
-        // SolverError's message cites grid::MIN_CELLS, grid returns SolverError
-        "issue 26: structured errors carry the limits as fields",
     ),
 ];
 

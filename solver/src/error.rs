@@ -1,5 +1,9 @@
 //! The solver's error type: every public entry point that can fail on user input
 //! returns [`Result`]; nothing panics on bad input.
+//!
+//! Each variant carries the values it reports (the limits too, as fields), and
+//! its message is made from them: this file imports no other module of the
+//! solver, and no message names a front end's flag (a library user has none).
 
 use std::fmt;
 
@@ -16,6 +20,10 @@ pub enum SolverError {
     Grid {
         /// The requested number of cells.
         cells: usize,
+        /// Fewest cells accepted ([`crate::grid::MIN_CELLS`]).
+        min: usize,
+        /// Most cells accepted ([`crate::grid::MAX_CELLS`]).
+        max: usize,
     },
     /// The interaction zone (contact or Dugdale zone) reached the end of the domain:
     /// the free-space solution would be truncated.
@@ -89,10 +97,18 @@ pub enum TableFault {
         /// The previous row's `x`.
         previous: f64,
     },
+    /// The interpolant's slope at this row is not a finite f64: the rows
+    /// around it are too close for the rise of `h` between them.
+    SlopeNotFinite {
+        /// This row's `x`.
+        x: f64,
+    },
     /// Fewer rows than [`crate::profile_file::MIN_ROWS`] (`line`: the last line read).
     TooFewRows {
         /// Rows found.
         rows: usize,
+        /// Fewest rows accepted ([`crate::profile_file::MIN_ROWS`]).
+        min: usize,
     },
 }
 
@@ -106,9 +122,10 @@ impl fmt::Display for TableFault {
             TableFault::NotIncreasing { x, previous } => {
                 write!(f, "x must increase strictly from row to row (x = {x} after {previous})")
             }
-            TableFault::TooFewRows { rows } => {
-                write!(f, "the table needs at least {} rows (found {rows})", crate::profile_file::MIN_ROWS)
+            TableFault::SlopeNotFinite { x } => {
+                write!(f, "the slope at x = {x} is not a finite number: the rows around it are too close for their rise")
             }
+            TableFault::TooFewRows { rows, min } => write!(f, "the table needs at least {min} rows (found {rows})"),
         }
     }
 }
@@ -117,16 +134,13 @@ impl fmt::Display for SolverError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             SolverError::Domain { what } => write!(f, "{what}"),
-            SolverError::Grid { cells } => write!(
-                f,
-                "grid must be a power of two between {} and {} cells (got {cells})",
-                crate::grid::MIN_CELLS,
-                crate::grid::MAX_CELLS
-            ),
+            SolverError::Grid { cells, min, max } => {
+                write!(f, "grid must be a power of two between {min} and {max} cells (got {cells})")
+            }
             SolverError::DomainTooSmall { half_width } => write!(
                 f,
                 "the contact or Dugdale zone reached the end of the domain (half-width {half_width}); \
-                 enlarge the domain or lower amax"
+                 enlarge the domain or lower the largest contact half-width (amax)"
             ),
             SolverError::NeverTouches => {
                 write!(f, "the profile never comes within the adhesion range of the surface; nothing to simulate")

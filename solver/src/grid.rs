@@ -10,6 +10,13 @@ pub const MIN_CELLS: usize = 64;
 /// Most cells accepted (2^24: the zero-padded FFT then has 2^25 points).
 pub const MAX_CELLS: usize = 1 << 24;
 
+/// Smallest domain half-width accepted (`l_h`): far below any contact the
+/// model describes, and it keeps the cell width `2X/n` a normal f64 at every
+/// grid size (a subnormal half-width made `dx = 0`; found by `tests/fuzz.rs`).
+pub const MIN_HALF_WIDTH: f64 = 1e-6;
+/// Largest domain half-width accepted (`l_h`).
+pub const MAX_HALF_WIDTH: f64 = 1e6;
+
 /// A uniform grid of `n` cells (a power of two) on `[-half_width, half_width]`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Grid {
@@ -18,15 +25,18 @@ pub struct Grid {
 }
 
 impl Grid {
-    /// `cells` a power of two in `[MIN_CELLS, MAX_CELLS]`, `half_width > 0` finite.
+    /// `cells` a power of two in `[MIN_CELLS, MAX_CELLS]`, `half_width` in
+    /// `[MIN_HALF_WIDTH, MAX_HALF_WIDTH]`.
     pub fn new(cells: usize, half_width: f64) -> Result<Grid> {
         if !cells.is_power_of_two() || !(MIN_CELLS..=MAX_CELLS).contains(&cells) {
-            return Err(SolverError::Grid { cells });
+            return Err(SolverError::Grid { cells, min: MIN_CELLS, max: MAX_CELLS });
         }
         finite(half_width, "the domain half-width")?;
-        if !(half_width > 0.0 && half_width <= 1e6) {
+        if !((MIN_HALF_WIDTH..=MAX_HALF_WIDTH).contains(&half_width)) {
             return Err(SolverError::Domain {
-                what: format!("the domain half-width must lie in (0, 1e6] (got {half_width})"),
+                what: format!(
+                    "the domain half-width must lie in [{MIN_HALF_WIDTH:e}, {MAX_HALF_WIDTH:e}] (got {half_width})"
+                ),
             });
         }
         Ok(Grid { cells, half_width })

@@ -3,6 +3,8 @@
 
 use std::f64::consts::PI;
 
+use maugis::contact::model::{ALPHA_RANGE, BETA_RANGE};
+
 use crate::error::{finite, Result, SolverError};
 use crate::grid::Grid;
 use crate::profile_file::ProfileTable;
@@ -39,11 +41,13 @@ impl Profile {
     pub fn wavy_cylinder(alpha: f64, beta: f64) -> Result<Profile> {
         finite(alpha, "alpha")?;
         finite(beta, "beta")?;
-        if alpha < 0.0 || alpha > 1e6 {
-            return Err(SolverError::Domain { what: format!("alpha must lie in [0, 1e6] (got {alpha})") });
+        // The model's ranges: a subnormal beta made 2 pi x/beta overflow and the
+        // sampled profile NaN (found by tests/fuzz.rs).
+        if !ALPHA_RANGE.contains(alpha) {
+            return Err(SolverError::Domain { what: format!("alpha must lie in {ALPHA_RANGE} (got {alpha})") });
         }
-        if !(beta > 0.0 && beta <= 1e6) {
-            return Err(SolverError::Domain { what: format!("beta must lie in (0, 1e6] (got {beta})") });
+        if !BETA_RANGE.contains(beta) {
+            return Err(SolverError::Domain { what: format!("beta must lie in {BETA_RANGE} (got {beta})") });
         }
         Ok(Profile::WavyCylinder { alpha, beta })
     }

@@ -21,7 +21,8 @@
 //! # Errors
 //!
 //! A line that is not a row of two finite numbers in increasing `x`, a header
-//! other than `x,h`, or fewer than 4 rows is [`SolverError::ProfileTable`]
+//! other than `x,h`, fewer than 4 rows, or rows so close for their rise that a
+//! slope is not a finite f64 is [`SolverError::ProfileTable`]
 //! with the 1-based line and a [`TableFault`]; a table that does not cover the
 //! domain is [`SolverError::ProfileCoverage`].
 
@@ -48,7 +49,7 @@ impl ProfileTable {
         match header {
             Some((_, l)) if l.trim_start_matches('\u{feff}').replace(' ', "") == "x,h" => {}
             Some((i, l)) => return Err(fault(i, TableFault::Header { found: l.to_string() })),
-            None => return Err(fault(1, TableFault::TooFewRows { rows: 0 })),
+            None => return Err(fault(1, TableFault::TooFewRows { rows: 0, min: MIN_ROWS })),
         }
         let (mut x, mut h) = (Vec::new(), Vec::new());
         let mut last_line = 1;
@@ -78,7 +79,7 @@ impl ProfileTable {
             h.push(row[1]);
         }
         if x.len() < MIN_ROWS {
-            return Err(fault(last_line, TableFault::TooFewRows { rows: x.len() }));
+            return Err(fault(last_line, TableFault::TooFewRows { rows: x.len(), min: MIN_ROWS }));
         }
         ProfileTable::new(x, h)
     }
@@ -89,7 +90,7 @@ impl ProfileTable {
     pub fn new(x: Vec<f64>, h: Vec<f64>) -> Result<ProfileTable> {
         let fault = |row: usize, fault: TableFault| SolverError::ProfileTable { line: row + 2, fault };
         if x.len() != h.len() || x.len() < MIN_ROWS {
-            return Err(fault(x.len().min(h.len()), TableFault::TooFewRows { rows: x.len().min(h.len()) }));
+            return Err(fault(x.len().min(h.len()), TableFault::TooFewRows { rows: x.len().min(h.len()), min: MIN_ROWS }));
         }
         for k in 0..x.len() {
             for (v, column) in [(x[k], "x"), (h[k], "h")] {
@@ -112,6 +113,11 @@ impl ProfileTable {
         let end = |s0: f64, s1: f64, d0: f64, d1: f64| s0 + (s0 - s1) * d0 / (d0 + d1);
         slope[0] = end(secant(0), secant(1), x[1] - x[0], x[2] - x[1]);
         slope[n - 1] = end(secant(n - 2), secant(n - 3), x[n - 1] - x[n - 2], x[n - 2] - x[n - 3]);
+        // Rows too close for their rise (a subnormal step, or h differences near
+        // f64::MAX) give a slope that is not a number: the interpolant would be NaN.
+        if let Some(k) = slope.iter().position(|s| !s.is_finite()) {
+            return Err(fault(k, TableFault::SlopeNotFinite { x: x[k] }));
+        }
         Ok(ProfileTable { x, h, slope })
     }
 
@@ -137,8 +143,13 @@ impl ProfileTable {
 
     /// The interpolated depth at `x` (held at the end rows' values outside the
     /// table; [`Self::check_covers`] keeps a solver's grid inside it).
+    /// A NaN `x` gives NaN.
     pub fn depth_at(&self, x: f64) -> f64 {
         let n = self.x.len();
+        if x.is_nan() {
+            // no row brackets it (partition_point would give 0, and 0 - 1 panics)
+            return f64::NAN;
+        }
         if x <= self.x[0] {
             return self.h[0];
         }
@@ -172,8 +183,8 @@ mod tests {
         assert!(matches!(line_of("x,h\n0,1\n1,2,3\n"), (3, TableFault::Fields { found: 3 })));
         assert!(matches!(line_of("x,h\n0,1\n1,2\n\n1,3\n4,4\n"), (5, TableFault::NotIncreasing { .. })));
         assert!(matches!(line_of("x,h\n0,1\nNaN,2\n"), (3, TableFault::NotFinite { column: "x" })));
-        assert!(matches!(line_of("x,h\n0,1\n1,2\n"), (3, TableFault::TooFewRows { rows: 2 })));
-        assert!(matches!(line_of(""), (1, TableFault::TooFewRows { rows: 0 })));
+        assert!(matches!(line_of("x,h\n0,1\n1,2\n"), (3, TableFault::TooFewRows { rows: 2, .. })));
+        assert!(matches!(line_of(""), (1, TableFault::TooFewRows { rows: 0, min: MIN_ROWS })));
     }
 
     #[test]

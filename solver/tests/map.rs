@@ -76,7 +76,7 @@ fn bad_merges_and_options_are_errors() {
     domain(run_map(g, MapOptions { margin: -1.0, ..o }, None, || ()).map(|_| ()), "margin");
     domain(run_map(g, MapOptions { margin: f64::NAN, ..o }, None, || ()).map(|_| ()), "margin");
     let fixed = |cells, steps_per_leg| MapOptions { resolution: ResolutionRule::Fixed(Resolution { cells, steps_per_leg }), ..o };
-    assert!(matches!(run_map(g, fixed(1000, 100), None, || ()), Err(SolverError::Grid { cells: 1000 })));
+    assert!(matches!(run_map(g, fixed(1000, 100), None, || ()), Err(SolverError::Grid { cells: 1000, .. })));
     domain(run_map(g, fixed(1024, 1), None, || ()).map(|_| ()), "steps");
     domain(run_map(g, o, Some((0, 2)), || ()).map(|_| ()), "shard");
     domain(run_map(g, o, Some((3, 2)), || ()).map(|_| ()), "shard");

@@ -7,7 +7,9 @@
 //! quad-double arithmetic", 2007]. Addition and multiplication are the
 //! "sloppy" variants with relative error about `2^-104` (a few units of `u^2`);
 //! division uses one Newton correction. These are estimates for fast f64 paths,
-//! not certified bounds (those live in [`Ball`](super::Ball)).
+//! not certified bounds (those live in [`Ball`](super::Ball)). The *accurate*
+//! variants (`add_accurate`, `mul_accurate`, `div_accurate`: Joldes, Muller and
+//! Popescu 2017) carry proven relative error bounds, for the certified f64 paths.
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
@@ -243,6 +245,75 @@ impl Dd {
     /// Reciprocal.
     pub fn recip(self) -> Dd {
         Dd::ONE / self
+    }
+}
+
+/// The *accurate* double-word operations of Joldes, Muller and Popescu, "Tight
+/// and rigorous error bounds for basic building blocks of double-word
+/// arithmetic", ACM TOMS 44 (2017), with their proven relative error bounds
+/// (`u = 2^-53`). The operators above are the cheaper "sloppy" variants with
+/// estimated errors; the certified f64 paths (`hyp2f1`'s power and series
+/// prefactors) use these. Each `_p` variant takes the exact product `P` and is
+/// bit-identical for every `P`.
+impl Dd {
+    /// AccurateDWPlusDW [JMP 2017, Alg. 6]: relative error `<= 3u^2/(1-4u)`.
+    #[inline]
+    pub(crate) fn add_accurate(self, y: Dd) -> Dd {
+        let (sh, sl) = two_sum(self.hi, y.hi);
+        let (th, tl) = two_sum(self.lo, y.lo);
+        let c = sl + th;
+        let (vh, vl) = quick_two_sum(sh, c);
+        let w = tl + vl;
+        let (hi, lo) = quick_two_sum(vh, w);
+        Dd { hi, lo }
+    }
+
+    /// DWTimesDW1 [JMP 2017, Alg. 10]: relative error `<= 7u^2`.
+    #[inline]
+    pub(crate) fn mul_accurate(self, y: Dd) -> Dd {
+        self.mul_accurate_p::<Dekker>(y)
+    }
+
+    /// [`Dd::mul_accurate`] with the exact product `P`.
+    #[inline(always)]
+    pub(crate) fn mul_accurate_p<P: ExactProduct>(self, y: Dd) -> Dd {
+        let (ch, cl1) = P::two_prod(self.hi, y.hi);
+        let tl1 = self.hi * y.lo;
+        let tl2 = self.lo * y.hi;
+        let cl2 = tl1 + tl2;
+        let cl3 = cl1 + cl2;
+        let (hi, lo) = quick_two_sum(ch, cl3);
+        Dd { hi, lo }
+    }
+
+    /// DWTimesFP1 [JMP 2017, Alg. 7]: relative error `<= 2u^2`.
+    #[inline(always)]
+    pub(crate) fn mul_f64_accurate_p<P: ExactProduct>(self, y: f64) -> Dd {
+        let (ch, cl1) = P::two_prod(self.hi, y);
+        let cl2 = self.lo * y;
+        let (th, tl1) = quick_two_sum(ch, cl2);
+        let tl2 = tl1 + cl1;
+        let (hi, lo) = quick_two_sum(th, tl2);
+        Dd { hi, lo }
+    }
+
+    /// DWDivDW2 [JMP 2017, Alg. 17]: relative error `<= 15u^2 + 56u^3`.
+    #[inline]
+    pub(crate) fn div_accurate(self, y: Dd) -> Dd {
+        self.div_accurate_p::<Dekker>(y)
+    }
+
+    /// [`Dd::div_accurate`] with the exact product `P`.
+    #[inline(always)]
+    pub(crate) fn div_accurate_p<P: ExactProduct>(self, y: Dd) -> Dd {
+        let th = self.hi / y.hi;
+        let r = y.mul_f64_accurate_p::<P>(th);
+        let pi_h = self.hi - r.hi;
+        let dl = self.lo - r.lo;
+        let d = pi_h + dl;
+        let tl = d / y.hi;
+        let (hi, lo) = quick_two_sum(th, tl);
+        Dd { hi, lo }
     }
 }
 

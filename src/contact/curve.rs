@@ -20,28 +20,12 @@
 #[cfg(feature = "parallel")]
 use rayon::prelude::*;
 
-use crate::contact::model::{brent, ContactSize, Params, Validity};
+pub use crate::contact::curve_state::{load_at, state, CurvePoint};
+use crate::contact::model::{ContactSize, Params, Validity};
+use crate::roots::brent;
 pub use crate::contact::paths::{HysteresisLoop, Jump, JumpDirection};
 use crate::contact::paths::{control_paths, ControlPaths, Driver, PathNode};
 use crate::error::{Error, Interval, Result};
-
-/// One solved state.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct CurvePoint {
-    /// Contact half-width.
-    pub abar: f64,
-    /// Strip ratio `c/a` (rounded; see `m_minus_1`).
-    pub m: f64,
-    /// `m - 1` to full relative accuracy.
-    pub m_minus_1: f64,
-    /// Load, Eq. 14.
-    pub load: f64,
-    /// Approach from a datum at infinity ([`ContactSize::approach_at`]).
-    pub approach: f64,
-    /// Validity diagnostics.
-    pub validity: Validity,
-}
 
 /// Maximum or minimum of the load.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -129,35 +113,6 @@ impl Default for CurveOptions {
     fn default() -> Self {
         CurveOptions { amax: 6.0, points: 600, datum: DEFAULT_DATUM }
     }
-}
-
-/// Solves and checks one state.
-pub fn state(params: Params, abar: f64) -> Result<CurvePoint> {
-    let cs = ContactSize::new(params, abar)?;
-    let strip = cs.solve_strip()?;
-    Ok(CurvePoint {
-        abar,
-        m: strip.m(),
-        m_minus_1: strip.m_minus_1(),
-        load: representable("load", abar, cs.load_at(strip))?,
-        approach: representable("approach", abar, cs.approach_at(strip))?,
-        validity: cs.validity_at(strip)?,
-    })
-}
-
-/// `value`, or [`Error::NotRepresentable`] when it is not finite.
-fn representable(quantity: &'static str, abar: f64, value: f64) -> Result<f64> {
-    if value.is_finite() {
-        Ok(value)
-    } else {
-        Err(Error::NotRepresentable { quantity, abar })
-    }
-}
-
-/// The load at `abar` (solving for `m`).
-pub fn load_at(params: Params, abar: f64) -> Result<f64> {
-    let cs = ContactSize::new(params, abar)?;
-    representable("load", abar, cs.load_at(cs.solve_strip()?))
 }
 
 /// `dLbar/dabar` by a central difference of solved loads.

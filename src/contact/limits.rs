@@ -23,7 +23,8 @@ use rayon::prelude::*;
 
 use crate::contact::curve::load_at;
 use crate::contact::located::{At, LocatedError};
-use crate::contact::model::{brent, Params};
+use crate::contact::model::Params;
+use crate::roots::brent;
 use crate::error::{finite, Error, Interval, Result};
 use crate::special::bessel_j::bessel_j_sequence;
 

@@ -39,6 +39,7 @@ pub mod traction_mp;
 pub mod model;
 pub mod paper;
 pub mod curve;
+pub mod curve_state;
 pub mod limits;
 pub mod model_mp;
 pub mod paths;

@@ -66,12 +66,15 @@ use std::f64::consts::PI;
 
 use crate::contact::displacement::{profile_depth, u_adhesive, u_hertz, WaveBessel};
 use crate::error::{finite, Error, Interval, Result};
+/// Brent's method lives in [`crate::roots`]; re-exported here, its former path.
+pub use crate::roots::brent;
+use crate::roots::{golden_section_min, BRENT_REL_TOL};
 
 /// Largest strip width `c - a` (in `l_h`) the root scan explores.
 pub const MAX_STRIP: f64 = 1.0e4;
 
 /// Relative tolerance of the root `m - 1` (the solver's variable).
-pub const M_REL_TOL: f64 = 1e-13;
+pub const M_REL_TOL: f64 = BRENT_REL_TOL;
 
 /// Relative slack of the gap test: a state interpenetrates when its strip gap is
 /// below `-GAP_REL_TOL delta` (`delta = 1/lambda`, the gap scale of the strip)
@@ -622,110 +625,6 @@ fn refine_extremum<F: Fn(f64) -> f64>(f: F, lo: f64, hi: f64, minimize: bool) ->
         _ => best,
     };
     (x, sign * v)
-}
-
-/// Golden-section search for a minimum of `g` on `[a, b]`, until the bracket is
-/// below `rel_tol (1 + |a|)` or after `max_iter` steps. Returns `(x, g(x))`.
-pub(crate) fn golden_section_min<E, G: FnMut(f64) -> std::result::Result<f64, E>>(
-    mut g: G,
-    a: f64,
-    b: f64,
-    rel_tol: f64,
-    max_iter: usize,
-) -> std::result::Result<(f64, f64), E> {
-    let (mut a, mut b) = (a, b);
-    let gr = 0.5 * (5f64.sqrt() - 1.0);
-    let mut x1 = b - gr * (b - a);
-    let mut x2 = a + gr * (b - a);
-    let (mut f1, mut f2) = (g(x1)?, g(x2)?);
-    for _ in 0..max_iter {
-        if (b - a) <= rel_tol * (1.0 + a.abs()) {
-            break;
-        }
-        if f1 < f2 {
-            b = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = b - gr * (b - a);
-            f1 = g(x1)?;
-        } else {
-            a = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = a + gr * (b - a);
-            f2 = g(x2)?;
-        }
-    }
-    Ok(if f1 < f2 { (x1, f1) } else { (x2, f2) })
-}
-
-/// Brent's root finder on a bracket `[a, b]` with `f(a) < 0 <= f(b)`
-/// (R. P. Brent, "Algorithms for Minimization without Derivatives", 1973, ch. 4).
-pub fn brent<F: Fn(f64) -> f64>(f: F, a: f64, b: f64, fa: f64, fb: f64) -> Result<f64> {
-    let (mut a, mut b, mut fa, mut fb) = (a, b, fa, fb);
-    if fa * fb > 0.0 {
-        return Err(Error::Internal { what: "brent: not a bracket".into() });
-    }
-    if fb == 0.0 {
-        return Ok(b);
-    }
-    let (mut c, mut fc) = (a, fa);
-    let mut d = b - a;
-    let mut e = d;
-    for _ in 0..200 {
-        if fb * fc > 0.0 {
-            c = a;
-            fc = fa;
-            d = b - a;
-            e = d;
-        }
-        if fc.abs() < fb.abs() {
-            a = b;
-            b = c;
-            c = a;
-            fa = fb;
-            fb = fc;
-            fc = fa;
-        }
-        let tol = 2.0 * f64::EPSILON * b.abs() + 0.5 * M_REL_TOL * b.abs();
-        let m = 0.5 * (c - b);
-        if m.abs() <= tol || fb == 0.0 {
-            return Ok(b);
-        }
-        if e.abs() >= tol && fa.abs() > fb.abs() {
-            let s = fb / fa;
-            let (mut p, mut q);
-            if a == c {
-                p = 2.0 * m * s;
-                q = 1.0 - s;
-            } else {
-                let qq = fa / fc;
-                let r = fb / fc;
-                p = s * (2.0 * m * qq * (qq - r) - (b - a) * (r - 1.0));
-                q = (qq - 1.0) * (r - 1.0) * (s - 1.0);
-            }
-            if p > 0.0 {
-                q = -q;
-            } else {
-                p = -p;
-            }
-            if 2.0 * p < (3.0 * m * q - (tol * q).abs()).min((e * q).abs()) {
-                e = d;
-                d = p / q;
-            } else {
-                d = m;
-                e = m;
-            }
-        } else {
-            d = m;
-            e = m;
-        }
-        a = b;
-        fa = fb;
-        b += if d.abs() > tol { d } else { tol.copysign(m) };
-        fb = f(b);
-    }
-    Err(Error::NoConvergence { function: "brent", terms: 200 })
 }
 
 #[cfg(test)]

@@ -67,8 +67,9 @@
 //! removes the hysteresis, so the dissipation of invalid loops is reported
 //! apart.
 
-use crate::contact::curve::CurvePoint;
-use crate::contact::model::{brent, golden_section_min, ContactSize, Params};
+use crate::contact::curve_state::CurvePoint;
+use crate::contact::model::{ContactSize, Params};
+use crate::roots::{brent, golden_section_min};
 use crate::error::{Error, Interval, Result};
 
 /// Which variable the machine controls.

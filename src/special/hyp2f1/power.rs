@@ -3,11 +3,11 @@
 //!
 //! # Method
 //!
-//! Double-double (DW) numbers `hi + lo` with the *accurate* operations of
+//! Double-double (DW) numbers `hi + lo` ([`Dd`], the crate's one double-word type) with the *accurate* operations of
 //! Joldes, Muller and Popescu, "Tight and rigorous error bounds for basic
 //! building blocks of double-word arithmetic", ACM TOMS 44 (2017):
-//! `dw_add` (their Alg. 6, AccurateDWPlusDW, relative error `<= 3u^2/(1-4u)`)
-//! and `dw_mul` (Alg. 10, DWTimesDW1, `<= 7u^2`), `u = 2^-53`. Below, every DW
+//! [`Dd::add_accurate`] (their Alg. 6, AccurateDWPlusDW, relative error `<= 3u^2/(1-4u)`)
+//! and [`Dd::mul_accurate`] (Alg. 10, DWTimesDW1, `<= 7u^2`), `u = 2^-53`. Below, every DW
 //! operation is charged `8u^2` relative.
 //!
 //! * `exp(y)`, `|y| <= EXP_MAX_ARG`: `k = round(y / ln 2)`,
@@ -30,12 +30,12 @@
 //!   errs by at most `|p| ln_abs_err + |ln x| dp + 8u^2 |p ln x|`, and
 //!   `|e^{y+delta} - e^y| <= e^y expm1(|delta|)`; with [`EXP_REL_ERR`] and the
 //!   [`pow_dw`] returns the double word and its relative error bound.
-//! * Division: DWDivDW2 (Alg. 17 of the same paper, `<= 15u^2 + 56u^3`).
+//! * Division: [`Dd::div_accurate`], DWDivDW2 (Alg. 17 of the same paper, `<= 15u^2 + 56u^3`).
 //!
 //! Everything is refused (`None`) outside the ranges above (then the caller
 //! falls back to MP): no overflow, underflow or subnormal can occur inside.
 
-use crate::ball::{quick_two_sum, two_prod, two_sum, Dekker, ExactProduct};
+use crate::ball::{two_prod, Dd};
 
 /// `u = 2^-53`, the unit roundoff of f64.
 pub(super) const U: f64 = f64::EPSILON / 2.0;
@@ -46,53 +46,12 @@ pub(super) const EXP_MAX_ARG: f64 = 600.0;
 /// Declared relative error bound of [`exp_dw`] (the method block derives `2^-90`).
 pub(super) const EXP_REL_ERR: f64 = 5.169878828456423e-26; // 2^-84
 
-/// A double-word number `hi + lo`, `|lo| <= ulp(hi)/2`.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) struct Dw {
-    pub(super) hi: f64,
-    pub(super) lo: f64,
-}
-
-impl Dw {
-    pub(super) const fn new(hi: f64) -> Dw {
-        Dw { hi, lo: 0.0 }
-    }
-
-    /// The exact `a - b` of two doubles.
-    pub(super) fn diff(a: f64, b: f64) -> Dw {
-        let (hi, lo) = two_sum(a, -b);
-        Dw { hi, lo }
-    }
-}
-
-/// AccurateDWPlusDW [Joldes-Muller-Popescu 2017, Alg. 6]: relative error `<= 3u^2/(1-4u)`.
+/// `x` rounded to an integer (ties to even) for `|x| < 2^51`, without a libm
+/// call (the portable x86-64 target has no `roundsd`).
 #[inline]
-pub(super) fn dw_add(x: Dw, y: Dw) -> Dw {
-    let (sh, sl) = two_sum(x.hi, y.hi);
-    let (th, tl) = two_sum(x.lo, y.lo);
-    let c = sl + th;
-    let (vh, vl) = quick_two_sum(sh, c);
-    let w = tl + vl;
-    let (hi, lo) = quick_two_sum(vh, w);
-    Dw { hi, lo }
-}
-
-/// DWTimesDW1 [Joldes-Muller-Popescu 2017, Alg. 10]: relative error `<= 7u^2`.
-#[inline]
-pub(super) fn dw_mul(x: Dw, y: Dw) -> Dw {
-    dw_mul_p::<Dekker>(x, y)
-}
-
-/// [`dw_mul`] with the exact product `P` (bit-identical for every `P`).
-#[inline(always)]
-pub(super) fn dw_mul_p<P: ExactProduct>(x: Dw, y: Dw) -> Dw {
-    let (ch, cl1) = P::two_prod(x.hi, y.hi);
-    let tl1 = x.hi * y.lo;
-    let tl2 = x.lo * y.hi;
-    let cl2 = tl1 + tl2;
-    let cl3 = cl1 + cl2;
-    let (hi, lo) = quick_two_sum(ch, cl3);
-    Dw { hi, lo }
+pub(super) fn round_small(x: f64) -> f64 {
+    const MAGIC: f64 = 6755399441055744.0; // 1.5 * 2^52
+    (x + MAGIC) - MAGIC
 }
 
 /// `ln 2 = LN2_C1 + LN2_C2 + LN2_C3` to about 160 bits; `LN2_C1` has 42 significant bits.
@@ -100,74 +59,43 @@ pub(super) const LN2_C1: f64 = 0.6931471805598903;
 pub(super) const LN2_C2: f64 = 5.497923018708371e-14;
 pub(super) const LN2_C3: f64 = 1.94704509238075e-31;
 
-/// DWTimesFP1 [Joldes-Muller-Popescu 2017, Alg. 7]: relative error `<= 2u^2`.
-#[inline(always)]
-fn dw_mul_f64_p<P: ExactProduct>(x: Dw, y: f64) -> Dw {
-    let (ch, cl1) = P::two_prod(x.hi, y);
-    let cl2 = x.lo * y;
-    let (th, tl1) = quick_two_sum(ch, cl2);
-    let tl2 = tl1 + cl1;
-    let (hi, lo) = quick_two_sum(th, tl2);
-    Dw { hi, lo }
-}
-
-/// DWDivDW2 [Joldes-Muller-Popescu 2017, Alg. 17]: relative error `<= 15u^2 + 56u^3`
-/// (charged `32u^2` by the callers).
-#[inline]
-pub(super) fn dw_div(x: Dw, y: Dw) -> Dw {
-    dw_div_p::<Dekker>(x, y)
-}
-
-/// [`dw_div`] with the exact product `P` (bit-identical for every `P`).
-#[inline(always)]
-pub(super) fn dw_div_p<P: ExactProduct>(x: Dw, y: Dw) -> Dw {
-    let th = x.hi / y.hi;
-    let r = dw_mul_f64_p::<P>(y, th);
-    let pi_h = x.hi - r.hi;
-    let dl = x.lo - r.lo;
-    let d = pi_h + dl;
-    let tl = d / y.hi;
-    let (hi, lo) = quick_two_sum(th, tl);
-    Dw { hi, lo }
-}
-
 /// `1/j!` for `j = 2..=10` as double words (from mpmath at 300 bits).
-const INV_FACT: [Dw; 9] = [
-    Dw { hi: 0.5, lo: 0.0 },
-    Dw { hi: 0.16666666666666666, lo: 9.25185853854297e-18 },
-    Dw { hi: 0.041666666666666664, lo: 2.3129646346357427e-18 },
-    Dw { hi: 0.008333333333333333, lo: 1.1564823173178714e-19 },
-    Dw { hi: 0.001388888888888889, lo: -5.300543954373577e-20 },
-    Dw { hi: 0.0001984126984126984, lo: 1.7209558293420705e-22 },
-    Dw { hi: 2.48015873015873e-05, lo: 2.1511947866775882e-23 },
-    Dw { hi: 2.7557319223985893e-06, lo: -1.858393274046472e-22 },
-    Dw { hi: 2.755731922398589e-07, lo: 2.3767714622250297e-23 },
+const INV_FACT: [Dd; 9] = [
+    Dd { hi: 0.5, lo: 0.0 },
+    Dd { hi: 0.16666666666666666, lo: 9.25185853854297e-18 },
+    Dd { hi: 0.041666666666666664, lo: 2.3129646346357427e-18 },
+    Dd { hi: 0.008333333333333333, lo: 1.1564823173178714e-19 },
+    Dd { hi: 0.001388888888888889, lo: -5.300543954373577e-20 },
+    Dd { hi: 0.0001984126984126984, lo: 1.7209558293420705e-22 },
+    Dd { hi: 2.48015873015873e-05, lo: 2.1511947866775882e-23 },
+    Dd { hi: 2.7557319223985893e-06, lo: -1.858393274046472e-22 },
+    Dd { hi: 2.755731922398589e-07, lo: 2.3767714622250297e-23 },
 ];
 
 /// `e^y` with relative error at most [`EXP_REL_ERR`]; `None` for `|y| > EXP_MAX_ARG`.
-pub(super) fn exp_dw(y: Dw) -> Option<Dw> {
+pub(super) fn exp_dw(y: Dd) -> Option<Dd> {
     if !(y.hi.abs() <= EXP_MAX_ARG) {
         return None;
     }
-    let k = super::power_f64::round_small(y.hi * std::f64::consts::LOG2_E);
+    let k = round_small(y.hi * std::f64::consts::LOG2_E);
     // r = y - k ln 2: k c1 is exact (|k| < 2^10, c1 has 42 bits), k c2 exact as a DW.
-    let r = dw_add(y, Dw::new(-k * LN2_C1));
+    let r = y.add_accurate(Dd::from_f64(-k * LN2_C1));
     let (p2, e2) = two_prod(k, LN2_C2);
-    let r = dw_add(r, Dw { hi: -p2, lo: -e2 });
-    let r = dw_add(r, Dw::new(-k * LN2_C3));
-    let r = Dw { hi: r.hi / 256.0, lo: r.lo / 256.0 };
+    let r = r.add_accurate(Dd { hi: -p2, lo: -e2 });
+    let r = r.add_accurate(Dd::from_f64(-k * LN2_C3));
+    let r = Dd { hi: r.hi / 256.0, lo: r.lo / 256.0 };
     // Horner: p = 1 + r (1 + r (1/2 + r (1/6 + ...))).
     let mut p = INV_FACT[8];
     for c in INV_FACT[..8].iter().rev() {
-        p = dw_add(dw_mul(p, r), *c);
+        p = p.mul_accurate(r).add_accurate(*c);
     }
-    p = dw_add(dw_mul(p, r), Dw::new(1.0));
-    p = dw_add(dw_mul(p, r), Dw::new(1.0));
+    p = p.mul_accurate(r).add_accurate(Dd::from_f64(1.0));
+    p = p.mul_accurate(r).add_accurate(Dd::from_f64(1.0));
     for _ in 0..8 {
-        p = dw_mul(p, p);
+        p = p.mul_accurate(p);
     }
     let scale = 2f64.powi(k as i32);
-    Some(Dw { hi: p.hi * scale, lo: p.lo * scale })
+    Some(Dd { hi: p.hi * scale, lo: p.lo * scale })
 }
 
 /// Declared absolute error bound of [`ln_dw`] at a result of magnitude `l`.
@@ -176,26 +104,26 @@ pub(super) fn ln_abs_err(l: f64) -> f64 {
 }
 
 /// `ln x` for a DW `x > 0` with absolute error at most [`ln_abs_err`].
-pub(super) fn ln_dw(x: Dw) -> Option<Dw> {
+pub(super) fn ln_dw(x: Dd) -> Option<Dd> {
     if !(x.hi > 0.0 && x.hi.is_finite() && x.hi.is_normal()) {
         return None;
     }
     let y0 = x.hi.ln();
-    let e = exp_dw(Dw::new(-y0))?;
-    let d = dw_add(dw_mul(x, e), Dw::new(-1.0));
+    let e = exp_dw(Dd::from_f64(-y0))?;
+    let d = x.mul_accurate(e).add_accurate(Dd::from_f64(-1.0));
     if !(d.hi.abs() <= 9.313225746154785e-10) {
         // |d| > 2^-30: libm's ln is far off; refuse
         return None;
     }
     let half_d2 = 0.5 * d.hi * d.hi;
-    Some(dw_add(dw_add(Dw::new(y0), d), Dw::new(-half_d2)))
+    Some(Dd::from_f64(y0).add_accurate(d).add_accurate(Dd::from_f64(-half_d2)))
 }
 
 /// `x^p` as a double word and a bound on its relative error, for a DW `x > 0`
 /// and a DW exponent `p` known to within `dp` (absolute).
-pub(super) fn pow_dw(x: Dw, p: Dw, dp: f64) -> Option<(Dw, f64)> {
+pub(super) fn pow_dw(x: Dd, p: Dd, dp: f64) -> Option<(Dd, f64)> {
     let l = ln_dw(x)?;
-    let y = dw_mul(p, l);
+    let y = p.mul_accurate(l);
     let delta = p.hi.abs() * 1.0001 * ln_abs_err(l.hi) + l.hi.abs() * 1.0001 * dp + 8.0 * U * U * y.hi.abs() * 1.0001;
     if !(delta < 1e-6) {
         return None;
@@ -212,11 +140,12 @@ pub(super) fn pow_dw(x: Dw, p: Dw, dp: f64) -> Option<(Dw, f64)> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ball::{two_sum, Dekker};
     use rug::ops::Pow;
     use rug::Float;
 
     /// |got - want| / |want| with `want` from MPFR at 200 bits.
-    fn rel(got: Dw, want: &Float) -> f64 {
+    fn rel(got: Dd, want: &Float) -> f64 {
         let g = Float::with_val(200, got.hi) + got.lo;
         Float::with_val(200, (g - want) / want).abs().to_f64()
     }
@@ -227,12 +156,12 @@ mod tests {
         let mut worst_ln: f64 = 0.0;
         for i in 0..4000 {
             let y = -599.0 + 1198.0 * ((i as f64 * 0.618_033_988_749_895) % 1.0);
-            let y = Dw { hi: y, lo: y * 1.1e-17 };
+            let y = Dd { hi: y, lo: y * 1.1e-17 };
             let want = Float::with_val(200, Float::with_val(200, y.hi) + y.lo).exp();
             let r = rel(exp_dw(y).unwrap(), &want);
             assert!(r <= EXP_REL_ERR, "exp({y:?}): rel {r:e}");
             worst_exp = worst_exp.max(r);
-            let x = Dw::new(f64::exp(y.hi / 7.0));
+            let x = Dd::from_f64(f64::exp(y.hi / 7.0));
             let want = Float::with_val(200, x.hi).ln();
             let l = ln_dw(x).unwrap();
             let abs = (Float::with_val(200, l.hi) + l.lo - &want).abs().to_f64();
@@ -242,8 +171,8 @@ mod tests {
         // The declared bounds leave a wide margin: the observed errors are near u^2.
         assert!(worst_exp < 2f64.powi(-95), "{worst_exp:e}");
         assert!(worst_ln < 2f64.powi(-95), "{worst_ln:e}");
-        assert!(exp_dw(Dw::new(601.0)).is_none());
-        assert!(ln_dw(Dw::new(0.0)).is_none());
+        assert!(exp_dw(Dd::from_f64(601.0)).is_none());
+        assert!(ln_dw(Dd::from_f64(0.0)).is_none());
     }
 
     #[test]
@@ -254,27 +183,27 @@ mod tests {
             x = (x * 997.0 + 0.123456789).fract() + 0.01;
             let norm = |hi: f64, rel_lo: f64| {
                 let (h, l) = two_sum(hi, hi * rel_lo);
-                Dw { hi: h, lo: l }
+                Dd { hi: h, lo: l }
             };
             let a = norm(x * 3.0 - 1.5, x * 1e-17);
             let b = norm((x * 7.0).fract() + 0.25 + i as f64, -x * 2e-17);
             let fa = Float::with_val(200, a.hi) + a.lo;
             let fb = Float::with_val(200, b.hi) + b.lo;
             let q = Float::with_val(200, &fa / &fb);
-            assert!(rel(dw_div(a, b), &q) <= 16.0 * u2, "{a:?}/{b:?}");
+            assert!(rel(a.div_accurate(b), &q) <= 16.0 * u2, "{a:?}/{b:?}");
             let m = Float::with_val(200, &fa * &fb);
-            assert!(rel(dw_mul(a, b), &m) <= 7.0 * u2, "{a:?}*{b:?}");
+            assert!(rel(a.mul_accurate(b), &m) <= 7.0 * u2, "{a:?}*{b:?}");
             let m = Float::with_val(200, &fa * b.hi);
-            assert!(rel(dw_mul_f64_p::<Dekker>(a, b.hi), &m) <= 2.0 * u2, "{a:?}*{}", b.hi);
+            assert!(rel(a.mul_f64_accurate_p::<Dekker>(b.hi), &m) <= 2.0 * u2, "{a:?}*{}", b.hi);
             let s = Float::with_val(200, &fa + &fb);
-            assert!(rel(dw_add(a, b), &s) <= 3.0 * u2 / (1.0 - 4.0 * U), "{a:?}+{b:?}");
+            assert!(rel(a.add_accurate(b), &s) <= 3.0 * u2 / (1.0 - 4.0 * U), "{a:?}+{b:?}");
         }
     }
 
     #[test]
     fn pow_bound_holds() {
         for &(x, p) in &[(1.5, -3.0), (6.0, 2.75), (1.0 + 1e-12, -0.3), (3.25, 0.0), (123.5, -2.999)] {
-            let (v, r) = pow_dw(Dw::new(x), Dw::new(p), 0.0).unwrap();
+            let (v, r) = pow_dw(Dd::from_f64(x), Dd::from_f64(p), 0.0).unwrap();
             let want = Float::with_val(200, x).pow(Float::with_val(200, p));
             let got = Float::with_val(200, v.hi) + v.lo;
             let err = Float::with_val(200, (got - &want) / &want).abs().to_f64();

@@ -45,8 +45,8 @@
 //! non-finite input, `|y| > 700`); the caller then takes the double-word or
 //! MP path.
 
-use super::power::{Dw, LN2_C1, LN2_C2, U};
-use crate::ball::{two_prod, two_sum};
+use super::power::{round_small, LN2_C1, LN2_C2, U};
+use crate::ball::{two_prod, two_sum, Dd};
 
 /// `|C3|` of the split `ln 2 = C1 + C2 + C3` of [`super::power`], rounded up.
 const LN2_C3_BOUND: f64 = 1.97e-31;
@@ -214,14 +214,6 @@ fn split_double_word(x: &rug::Float) -> (f64, f64, f64) {
     (hi, lo, err)
 }
 
-/// `x` rounded to an integer (ties to even) for `|x| < 2^51`, without a libm
-/// call (the portable x86-64 target has no `roundsd`).
-#[inline]
-pub(super) fn round_small(x: f64) -> f64 {
-    const MAGIC: f64 = 6755399441055744.0; // 1.5 * 2^52
-    (x + MAGIC) - MAGIC
-}
-
 /// `floor(x)` for `|x| < 2^51`, without a libm call.
 #[inline]
 pub(super) fn floor_small(x: f64) -> f64 {
@@ -257,21 +249,21 @@ pub(crate) fn floor_any(x: f64) -> f64 {
 /// of [`ln_f64`] plus roundings far below `u`. (The native `2F1` computes
 /// `ln x` once and calls [`pow_from_ln`]; this form is the one tested.)
 #[cfg(test)]
-pub(super) fn pow_f64(x: Dw, p: f64) -> Option<(f64, f64)> {
+pub(super) fn pow_f64(x: Dd, p: f64) -> Option<(f64, f64)> {
     pow_from_ln(ln_f64(x.hi, x.lo)?, p)
 }
 
 /// `x^p` from `ln x = l_hi + l_lo` (within `l_err`, as [`ln_f64`] returns it):
 /// the second half of [`pow_f64`], for several powers of one `x`.
 pub(super) fn pow_from_ln(ln_x: (f64, f64, f64), p: f64) -> Option<(f64, f64)> {
-    pow_dw_exponent(ln_x, Dw::new(p))
+    pow_dw_exponent(ln_x, Dd::from_f64(p))
 }
 
 /// `x^p` from `ln x` (as [`pow_from_ln`]) for an exponent given as a double
 /// word `p = p_hi + p_lo` (`|p_lo| <= u |p_hi|`, e.g. `c - a - b`): the exponent
 /// `p ln x = two_prod(p_hi, l_hi) + (p_hi l_lo + p_lo l_hi)`, whose dropped and
 /// rounded parts (`|p| l_err`, `|p_lo l_lo|`, three roundings) go to `dy`.
-pub(super) fn pow_dw_exponent((l_hi, l_lo, l_err): (f64, f64, f64), p: Dw) -> Option<(f64, f64)> {
+pub(super) fn pow_dw_exponent((l_hi, l_lo, l_err): (f64, f64, f64), p: Dd) -> Option<(f64, f64)> {
     let (y_hi, y_err) = two_prod(p.hi, l_hi);
     let cross = p.hi * l_lo + p.lo * l_hi;
     let y_lo = y_err + cross;
@@ -347,7 +339,7 @@ mod tests {
             worst_exp = worst_exp.max(rel);
             // pow on the Pfaff domain: x = 1 - z in (1.5, 11] and up to 1e6, p in [-10, 10]
             let z = if i % 4 == 0 { -(10f64.powf(6.0 * f)) - 0.5 } else { -10.0 * f - 0.5 };
-            let omz = Dw::diff(1.0, z);
+            let omz = Dd::diff(1.0, z);
             let p = 20.0 * g - 10.0;
             let (v, rel) = pow_f64(omz, p).unwrap();
             let want = Float::with_val(200, Float::with_val(200, omz.hi) + omz.lo).pow(Float::with_val(200, p));

@@ -81,9 +81,9 @@
 
 use std::sync::OnceLock;
 
-use super::power::{Dw, U};
-use super::power_f64::{floor_small, round_small};
-use crate::ball::{Ball, Dekker, ExactProduct};
+use super::power::{round_small, U};
+use super::power_f64::floor_small;
+use crate::ball::{Ball, Dd, Dekker, ExactProduct};
 #[cfg(target_arch = "x86_64")]
 use crate::ball::Fused;
 
@@ -259,7 +259,7 @@ impl Shift {
 /// low word is zero vary from call to call): both sides are computed, the
 /// right one selected, and the validity tested once at the end.
 #[inline(always)]
-fn finish(x: Dw, sh: &Shift, row: &Row, delta: f64, p: f64) -> Option<(f64, f64)> {
+fn finish(x: Dd, sh: &Shift, row: &Row, delta: f64, p: f64) -> Option<(f64, f64)> {
     let (x0, lo) = (sh.x0, x.lo);
     let (ad, lo_abs) = (delta.abs(), lo.abs());
     let has_lo = lo != 0.0;
@@ -297,14 +297,14 @@ fn finish(x: Dw, sh: &Shift, row: &Row, delta: f64, p: f64) -> Option<(f64, f64)
 /// Certified `1/Gamma(x)` for a double word `x = hi + lo`, `|hi| < 60`:
 /// `Some((value, err))` with `|1/Gamma(x) - value| <= err`, or `None` (module docs).
 #[cfg(test)]
-pub(super) fn rgamma_dw(x: Dw) -> Option<(f64, f64)> {
+pub(super) fn rgamma_dw(x: Dd) -> Option<(f64, f64)> {
     rgamma_batch([x])[0]
 }
 
 /// [`rgamma_dw`] at `N` arguments at once: the `N` Horner sums run
 /// interleaved (independent dependency chains, so the latency of one chain
 /// hides behind the others), with fused multiply-adds where the CPU has them.
-pub(super) fn rgamma_batch<const N: usize>(xs: [Dw; N]) -> [Option<(f64, f64)>; N] {
+pub(super) fn rgamma_batch<const N: usize>(xs: [Dd; N]) -> [Option<(f64, f64)>; N] {
     #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("fma") {
         // SAFETY: the CPU supports FMA (checked just above).
@@ -316,14 +316,14 @@ pub(super) fn rgamma_batch<const N: usize>(xs: [Dw; N]) -> [Option<(f64, f64)>; 
 /// [`rgamma_batch`] compiled with fused multiply-add.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "fma")]
-unsafe fn rgamma_batch_fused<const N: usize>(xs: [Dw; N]) -> [Option<(f64, f64)>; N] {
+unsafe fn rgamma_batch_fused<const N: usize>(xs: [Dd; N]) -> [Option<(f64, f64)>; N] {
     rgamma_batch_with::<Fused, N>(xs)
 }
 
 /// [`rgamma_batch`] with the Horner step `P::mul_add` (one rounding where
 /// fused, two otherwise; the bound counts two).
 #[inline(always)]
-fn rgamma_batch_with<P: ExactProduct, const N: usize>(xs: [Dw; N]) -> [Option<(f64, f64)>; N] {
+fn rgamma_batch_with<P: ExactProduct, const N: usize>(xs: [Dd; N]) -> [Option<(f64, f64)>; N] {
     let table = table();
     let mut rows: [&Row; N] = [&table[0]; N];
     let shifts = Shift::of_batch(xs.map(|x| x.hi));
@@ -376,7 +376,7 @@ mod tests {
     /// `|1/Gamma(x) - value| <= err` against MPFR at 200 bits, relative error
     /// of the bound itself small; the portable (two roundings per Horner step)
     /// variant is checked too.
-    fn check(x: Dw) -> Option<f64> {
+    fn check(x: Dd) -> Option<f64> {
         let portable = rgamma_batch_with::<Dekker, 1>([x])[0];
         if let Some((v, err)) = portable {
             check_against_mpfr(x, v, err);
@@ -387,7 +387,7 @@ mod tests {
         Some(if v == 0.0 { 0.0 } else { err / v.abs() })
     }
 
-    fn check_against_mpfr(x: Dw, v: f64, err: f64) {
+    fn check_against_mpfr(x: Dd, v: f64, err: f64) {
         // (&a + &b evaluates at 200 bits; owned a + b would round to a's 53 bits)
         let xf = Float::with_val(200, &exact(x.hi) + &exact(x.lo));
         let exact_v = if xf.is_integer() && xf <= 0 { Float::new(200) } else { Float::with_val(200, xf.gamma_ref()).recip() };
@@ -403,7 +403,7 @@ mod tests {
         for _ in 0..2000 {
             let c = rng.uniform(0.5, 6.0);
             let (a, b) = (rng.uniform(-3.0, 3.0), rng.uniform(-3.0, 3.0));
-            let xs = [Dw::new(c), Dw::new(a), Dw::new(b), Dw::diff(c, a), Dw::diff(c, b), Dw::diff(a, b), Dw::new(-(b.round())), Dw::new(70.0)];
+            let xs = [Dd::from_f64(c), Dd::from_f64(a), Dd::from_f64(b), Dd::diff(c, a), Dd::diff(c, b), Dd::diff(a, b), Dd::from_f64(-(b.round())), Dd::from_f64(70.0)];
             let batch = rgamma_batch(xs);
             for (x, got) in xs.iter().zip(batch) {
                 assert_eq!(got, rgamma_dw(*x), "1/Gamma({} + {})", x.hi, x.lo);
@@ -431,7 +431,7 @@ mod tests {
         let mut worst = 0.0f64;
         for i in 0..20000 {
             let x = if i % 2 == 0 { rng.uniform(-12.0, 12.0) } else { rng.uniform(-0.6, 1.6) };
-            let rel = check(Dw::new(x)).unwrap();
+            let rel = check(Dd::from_f64(x)).unwrap();
             // relative bound a few ulp away from the poles (|1/Gamma| tiny there)
             let pole_dist = (x - x.round()).abs();
             if x > 0.5 || pole_dist > 1e-3 {
@@ -448,12 +448,12 @@ mod tests {
             for d in [1e-300, 1e-17, 1e-9, 1e-3, 0.49] {
                 for s in [-1.0, 1.0] {
                     let x = -(n as f64) + s * d;
-                    let rel = check(Dw::new(x)).unwrap();
+                    let rel = check(Dd::from_f64(x)).unwrap();
                     assert!(rel < 40.0 * U, "1/Gamma({x}): relative bound {rel:e}");
                 }
             }
             // exactly at a pole: 1/Gamma = 0 exactly
-            let (v, err) = rgamma_dw(Dw::new(-(n as f64))).unwrap();
+            let (v, err) = rgamma_dw(Dd::from_f64(-(n as f64))).unwrap();
             assert_eq!(v, 0.0);
             assert!(err == 0.0 || err < 1e-300, "{err:e}");
         }
@@ -465,9 +465,9 @@ mod tests {
         let mut answered = 0;
         for _ in 0..5000 {
             let (c, a) = (rng.uniform(0.5, 6.0), rng.uniform(-3.0, 3.0));
-            if let Some(rel) = check(Dw::diff(c, a)) {
+            if let Some(rel) = check(Dd::diff(c, a)) {
                 answered += 1;
-                let d = Dw::diff(c, a);
+                let d = Dd::diff(c, a);
                 if (d.hi - d.hi.round()).abs() > 1e-3 || d.hi > 0.5 {
                     assert!(rel < 64.0 * U, "1/Gamma({c} - {a}): relative bound {rel:e}");
                 }
@@ -478,8 +478,8 @@ mod tests {
 
     #[test]
     fn out_of_range_is_none() {
-        assert!(rgamma_dw(Dw::new(60.5)).is_none());
-        assert!(rgamma_dw(Dw::new(-61.0)).is_none());
-        assert!(rgamma_dw(Dw::new(f64::NAN)).is_none());
+        assert!(rgamma_dw(Dd::from_f64(60.5)).is_none());
+        assert!(rgamma_dw(Dd::from_f64(-61.0)).is_none());
+        assert!(rgamma_dw(Dd::from_f64(f64::NAN)).is_none());
     }
 }
