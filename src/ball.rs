@@ -389,6 +389,28 @@ impl Ball {
         Ball { mid, rad }
     }
 
+    /// [`Error::BallOutOfRange`](crate::Error::BallOutOfRange) for this ball as the argument `arg`.
+    pub fn out_of_range(&self, arg: &'static str, allowed: crate::error::Interval) -> crate::Error {
+        crate::Error::BallOutOfRange {
+            arg,
+            lower: self.lower().to_f64_round(Round::Down),
+            upper: self.upper().to_f64_round(Round::Up),
+            allowed,
+        }
+    }
+
+    /// `Ok` when the whole ball lies in `allowed`, else
+    /// [`Error::BallOutOfRange`](crate::Error::BallOutOfRange) naming `arg`.
+    pub fn check_within(&self, arg: &'static str, allowed: crate::error::Interval) -> crate::Result<()> {
+        let low_ok = if allowed.lo_closed { self.lower() >= allowed.lo } else { self.lower() > allowed.lo };
+        let high_ok = if allowed.hi_closed { self.upper() <= allowed.hi } else { self.upper() < allowed.hi };
+        if low_ok && high_ok {
+            Ok(())
+        } else {
+            Err(self.out_of_range(arg, allowed))
+        }
+    }
+
     /// Widen the radius by `|extra|` (rounded up).
     pub fn add_error(&mut self, extra: &Float) {
         self.rad = self.rad.add(Mag::from_float_up(extra));

@@ -94,14 +94,32 @@ pub enum Error {
         /// The text given.
         text: String,
     },
-    /// A decimal with more than [`crate::ball::MAX_DECIMAL_DIGITS`] digits or an
-    /// exponent beyond `±`[`crate::ball::MAX_DECIMAL_EXPONENT`].
+    /// A decimal with more than `max_digits` digits or an exponent beyond
+    /// `±max_exponent` (the limits of `ball::Decimal`).
     DecimalTooLarge {
         /// The text given (its first 24 characters).
         text: String,
+        /// The most digits accepted.
+        max_digits: usize,
+        /// The largest |decimal exponent| accepted.
+        max_exponent: i64,
     },
     /// A regime-map grid or shard that cannot be run or merged ([`crate::contact::sweep`]).
     Sweep(SweepError),
+    /// A ball argument that reaches outside its allowed interval: the function is
+    /// not defined (or not supported) over the whole ball. A decimal input whose
+    /// ball straddles an edge is retried tighter by
+    /// [`crate::ball::eval_at_decimals`].
+    BallOutOfRange {
+        /// The argument.
+        arg: &'static str,
+        /// The ball's lower end (rounded down to f64).
+        lower: f64,
+        /// The ball's upper end (rounded up to f64).
+        upper: f64,
+        /// The values allowed.
+        allowed: Interval,
+    },
     /// A function name that [`crate::registry`] does not know.
     UnknownFunction {
         /// The name given.
@@ -176,11 +194,9 @@ impl fmt::Display for Error {
             Error::NotADecimal { text } => {
                 write!(f, "{text:?} is not a decimal number (expected e.g. 2.5, -0.125, 3.8317e-2)")
             }
-            Error::DecimalTooLarge { text } => write!(
+            Error::DecimalTooLarge { text, max_digits, max_exponent } => write!(
                 f,
-                "the decimal {text:?} is too large: at most {} digits and exponents up to ±{} are accepted",
-                crate::ball::MAX_DECIMAL_DIGITS,
-                crate::ball::MAX_DECIMAL_EXPONENT
+                "the decimal {text:?} is too large: at most {max_digits} digits and exponents up to ±{max_exponent} are accepted"
             ),
             Error::Pole { function, at } => write!(f, "{function} at its pole {at}"),
             Error::NonFiniteResult { function } => write!(
@@ -193,6 +209,13 @@ impl fmt::Display for Error {
             ),
             Error::NoStripEnd { model, limit } => {
                 write!(f, "no end of the adhesive strip ({model}) within {limit:e}: the parameters are too extreme")
+            }
+            Error::BallOutOfRange { arg, lower, upper, allowed } => {
+                if lower == upper {
+                    write!(f, "{arg} must lie in {allowed} (got {lower:?})")
+                } else {
+                    write!(f, "{arg} must lie in {allowed} over its whole input ball (got [{lower:e}, {upper:e}])")
+                }
             }
             Error::OutOfRange { arg, value, allowed } => write!(f, "{arg} must lie in {allowed} (got {value:?})"),
             Error::UnknownFunction { name, known } => write!(f, "unknown function {name:?}; known: {}", known.join(", ")),
@@ -218,6 +241,15 @@ impl fmt::Display for Error {
 }
 
 impl std::error::Error for Error {}
+
+impl Error {
+    /// Whether the error says that an argument lies outside the function's domain
+    /// ([`Error::Domain`], [`Error::OutOfRange`], [`Error::BallOutOfRange`]): the
+    /// errors a tighter input ball may avoid.
+    pub fn is_domain(&self) -> bool {
+        matches!(self, Error::Domain { .. } | Error::OutOfRange { .. } | Error::BallOutOfRange { .. })
+    }
+}
 
 /// What can be wrong with a regime-map grid, a shard, or a set of shards to merge.
 #[derive(Debug, Clone, PartialEq)]

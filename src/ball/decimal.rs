@@ -68,7 +68,11 @@ impl Decimal {
             return Err(bad());
         }
         if int_part.len() + frac_part.len() > MAX_DECIMAL_DIGITS {
-            return Err(Error::DecimalTooLarge { text: t.chars().take(24).collect() });
+            return Err(Error::DecimalTooLarge {
+                text: t.chars().take(24).collect(),
+                max_digits: MAX_DECIMAL_DIGITS,
+                max_exponent: MAX_DECIMAL_EXPONENT,
+            });
         }
         let exp: i64 = match exp_text {
             None => 0,
@@ -93,7 +97,11 @@ impl Decimal {
         let scale = exp.saturating_sub(frac_part.len() as i64).saturating_add(trailing);
         let magnitude = scale.saturating_add(trimmed.len() as i64);
         if !(-MAX_DECIMAL_EXPONENT..=MAX_DECIMAL_EXPONENT).contains(&magnitude) {
-            return Err(Error::DecimalTooLarge { text: t.chars().take(24).collect() });
+            return Err(Error::DecimalTooLarge {
+                text: t.chars().take(24).collect(),
+                max_digits: MAX_DECIMAL_DIGITS,
+                max_exponent: MAX_DECIMAL_EXPONENT,
+            });
         }
         let mut num = Integer::from_str_radix(trimmed, 10).map_err(|_| bad())?;
         if neg {
@@ -249,7 +257,7 @@ where
             // is not exact may leave it when the ball shrinks, as for z typed as
             // 1 - 10^-40 next to the branch point z = 1: retry tighter. A decimal
             // that lies on the edge keeps failing and the error is returned at the cap.
-            Err(Error::Domain { .. }) if !all_exact && input_prec < MAX_DECIMAL_INPUT_PREC => {
+            Err(e) if e.is_domain() && !all_exact && input_prec < MAX_DECIMAL_INPUT_PREC => {
                 input_prec = input_prec.saturating_mul(2).min(MAX_DECIMAL_INPUT_PREC);
                 continue;
             }

@@ -39,8 +39,8 @@ use rug::Float;
 
 use crate::ball::{eval_at_decimals, eval_at_decimals_with_floor, Ball, Decimal};
 use crate::contact::displacement::u_wave_at_ratio_balls;
-use crate::contact::model::{ContactSize, Params, ABAR_MAX, ALPHA_MAX, BETA_RANGE, LAMBDA_RANGE};
-use crate::error::{check_prec, Error, Result};
+use crate::contact::model::{ContactSize, Params, ABAR_RANGE, ALPHA_RANGE, BETA_RANGE, LAMBDA_RANGE};
+use crate::error::{check_prec, Error, Interval, Result};
 use crate::special::bessel_j::bessel_j_mp;
 use crate::special::exact_sub;
 use crate::MAX_WORKING_PREC;
@@ -71,11 +71,6 @@ fn at_least(v: &Ball, wp: u32) -> Ball {
     }
 }
 
-/// `[lo, hi]` of a ball, 4 digits each, for error messages.
-fn interval(v: &Ball) -> String {
-    let end = |f: Float| f.to_string_radix(10, Some(4));
-    format!("[{}, {}]", end(v.lower()), end(v.upper()))
-}
 
 impl ModelBalls {
     /// Checked inputs: each ball must be finite and lie inside the model's
@@ -87,24 +82,10 @@ impl ModelBalls {
                 return Err(Error::NonFinite { what });
             }
         }
-        let within = |v: &Ball, what: &str, lo: f64, lo_open: bool, hi: f64| -> Result<()> {
-            let low_ok = if lo_open { v.lower() > lo } else { v.lower() >= lo };
-            if low_ok && v.upper() <= hi {
-                return Ok(());
-            }
-            let open = if lo_open { "(" } else { "[" };
-            let bound = |x: f64| if x == 0.0 { "0".to_string() } else { format!("{x:e}") };
-            let got = if v.is_exact() {
-                format!("(got {})", v.mid().to_string_radix(10, Some(6)))
-            } else {
-                format!("over its whole input ball (got {})", interval(v))
-            };
-            Err(Error::Domain { what: format!("{what} must lie in {open}{}, {}] {got}", bound(lo), bound(hi)) })
-        };
-        within(&lambda, "lambda", LAMBDA_RANGE.lo, false, LAMBDA_RANGE.hi)?;
-        within(&alpha, "alpha", 0.0, false, ALPHA_MAX)?;
-        within(&beta, "beta", BETA_RANGE.lo, false, BETA_RANGE.hi)?;
-        within(&abar, "abar", 0.0, true, ABAR_MAX)?;
+        lambda.check_within("lambda", LAMBDA_RANGE)?;
+        alpha.check_within("alpha", ALPHA_RANGE)?;
+        beta.check_within("beta", BETA_RANGE)?;
+        abar.check_within("abar", ABAR_RANGE)?;
         Ok(ModelBalls { lambda, alpha, beta, abar })
     }
 
@@ -138,7 +119,7 @@ impl ModelBalls {
 pub fn strip_residual_ball_mp(inputs: &ModelBalls, m_minus_1: &Ball, wp: u32) -> Result<Ball> {
     crate::error::check_working_prec(wp)?;
     if m_minus_1.upper() < 0 {
-        return Err(Error::Domain { what: format!("the strip ratio m must be >= 1 (m - 1 lies in {})", interval(m_minus_1)) });
+        return Err(m_minus_1.out_of_range("m - 1", Interval::at_least(0.0)));
     }
     // m - 1 >= 0 by definition: clip a ball that reaches below zero.
     let e = if m_minus_1.lower() < 0 { Ball::hull(&Float::new(wp), &m_minus_1.upper(), wp) } else { at_least(m_minus_1, wp) };
@@ -294,7 +275,7 @@ fn load_from_m_minus_1(inputs: &ModelBalls, e: &Ball, prec: u32) -> Result<Ball>
     check_prec(prec)?;
     let wp = prec + 16;
     if e.upper() < 0 {
-        return Err(Error::Domain { what: format!("the strip ratio m must be >= 1 (m - 1 lies in {})", interval(e)) });
+        return Err(e.out_of_range("m - 1", Interval::at_least(0.0)));
     }
     // m - 1 >= 0 by definition: clip a ball that reaches below zero.
     let e = if e.lower() < 0 { Ball::hull(&Float::new(wp), &e.upper(), wp) } else { at_least(e, wp) };

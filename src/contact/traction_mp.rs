@@ -32,9 +32,7 @@ pub fn traction_ball_mp(inputs: &ModelBalls, m: &Ball, x: &Ball, prec: u32) -> R
             return Err(Error::NonFinite { what });
         }
     }
-    if m.lower() < 1 {
-        return Err(Error::Domain { what: format!("the strip ratio m must be >= 1 over its ball (got lower end {})", m.lower().to_f64()) });
-    }
+    m.check_within("the strip ratio m", crate::error::Interval::at_least(1.0))?;
     let wp = prec + 20;
     let [lam, alpha, beta, a] = [&inputs.lambda, &inputs.alpha, &inputs.beta, &inputs.abar].map(|v| v.set_prec(wp.max(v.prec())));
     let (m, x) = (m.set_prec(wp.max(m.prec())), x.set_prec(wp.max(x.prec())));

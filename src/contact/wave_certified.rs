@@ -81,7 +81,7 @@
 use rug::Float;
 
 use crate::ball::{Ball, CBall, Mag};
-use crate::error::{check_prec, Error, Result};
+use crate::error::{check_prec, Error, Interval, Result};
 use crate::quad::certified::{integrate, integrate_weighted, HoloBall, Options, Weight};
 
 /// Largest `D = 2 pi a/zeta` the certified route accepts (its cost grows like `D^2`).
@@ -133,20 +133,12 @@ fn geometry(a: &Ball, zeta: &Ball, amp: &Ball, x: &Ball, prec: u32, wp: u32) -> 
             return Err(Error::NonFinite { what });
         }
     }
-    if !(a.lower() > 0) {
-        return Err(Error::Domain { what: format!("the contact half-width a must be > 0 (a lies in {})", interval(a)) });
-    }
-    if !(zeta.lower() > 0) {
-        return Err(Error::Domain { what: format!("the wavelength zeta must be > 0 (zeta lies in {})", interval(zeta)) });
-    }
+    a.check_within("the contact half-width a", Interval::above(0.0))?;
+    zeta.check_within("the wavelength zeta", Interval::above(0.0))?;
     let [a, zeta, x] = [a, zeta, x].map(|v| v.set_prec(wp));
     let d = Ball::pi(wp).mul(&a).mul_pow2(1).div(&zeta)?;
-    let d_hi = d.upper().to_f64();
-    if !(d_hi <= MAX_CERTIFIED_D) {
-        return Err(Error::Domain {
-            what: format!("2 pi a/zeta = {d_hi:e} exceeds {MAX_CERTIFIED_D:e}: the certified double integral costs D^2"),
-        });
-    }
+    // the certified double integral costs D^2
+    d.check_within("2 pi a/zeta", Interval::left_open(0.0, MAX_CERTIFIED_D))?;
     let xma = x.sub(&a);
     let at_edge = xma.is_exact() && xma.mid().is_zero();
     if !at_edge && !(xma.lower() > 0) {
@@ -376,10 +368,7 @@ pub fn traction_integral_ball(d: &Ball, c: &Ball, prec: u32) -> Result<Ball> {
             return Err(Error::NonFinite { what });
         }
     }
-    let d_hi = d.upper().to_f64();
-    if !(d.lower() >= 0) || !(d_hi <= MAX_CERTIFIED_D) {
-        return Err(Error::Domain { what: format!("the traction integral needs 0 <= D <= {MAX_CERTIFIED_D:e} (D lies in {})", interval(d)) });
-    }
+    d.check_within("D (the traction integral)", Interval::closed(0.0, MAX_CERTIFIED_D))?;
     let wp = prec.saturating_add(20);
     let (d, c) = (d.set_prec(wp), c.set_prec(wp));
     let opts = Options::new().abs_tol((-(prec as f64)).exp2().max(f64::MIN_POSITIVE))?;
@@ -413,9 +402,9 @@ mod tests {
         let b = |v: f64| Ball::from_f64(v, 64).unwrap();
         let (a, z, m) = (b(1.0), b(1.0), b(1.0));
         assert!(matches!(u_wave_quad_ball(&a, &z, &m, &b(0.5), 64), Err(Error::Domain { .. })));
-        assert!(matches!(du_wave_quad_ball(&b(-1.0), &z, &m, &b(2.0), 64), Err(Error::Domain { .. })));
-        assert!(matches!(u_wave_quad_ball(&a, &b(0.0), &m, &b(2.0), 64), Err(Error::Domain { .. })));
-        assert!(matches!(u_wave_quad_ball(&a, &b(1e-3), &m, &b(2.0), 64), Err(Error::Domain { .. })));
+        assert!(matches!(du_wave_quad_ball(&b(-1.0), &z, &m, &b(2.0), 64), Err(Error::BallOutOfRange { .. })));
+        assert!(matches!(u_wave_quad_ball(&a, &b(0.0), &m, &b(2.0), 64), Err(Error::BallOutOfRange { .. })));
+        assert!(matches!(u_wave_quad_ball(&a, &b(1e-3), &m, &b(2.0), 64), Err(Error::BallOutOfRange { .. })));
         assert!(matches!(u_wave_quad_ball(&a, &z, &m, &b(2.0), 5000), Err(Error::Domain { .. })));
         assert!(matches!(u_wave_quad_ball(&a, &z, &m, &b(2.0), 1), Err(_)));
         let nan = Ball::with_mag(Float::with_val(64, rug::float::Special::Nan), Mag::ZERO);
@@ -423,6 +412,6 @@ mod tests {
         // the edge inside the balls
         let x = Ball::with_mag(Float::with_val(64, 1), Mag::from_f64(1e-3));
         assert!(matches!(du_wave_quad_ball(&a, &z, &m, &x, 64), Err(Error::Domain { .. })));
-        assert!(matches!(traction_integral_ball(&b(-1.0), &b(0.5), 64), Err(Error::Domain { .. })));
+        assert!(matches!(traction_integral_ball(&b(-1.0), &b(0.5), 64), Err(Error::BallOutOfRange { .. })));
     }
 }

@@ -542,20 +542,8 @@ pub fn meijer_g_k_ball_mp(k: u32, y: &Ball, prec: u32) -> Result<Ball> {
         return meijer_g_k_mp(k, y.mid(), prec);
     }
     validate(k, y.mid())?;
-    if !(y.lower() > 0) {
-        return Err(Error::Domain {
-            what: format!("y = 0 (the logarithmic singularity of G) lies within the input ball [{:e}, {:e}]", y.lower().to_f64(), y.upper().to_f64()),
-        });
-    }
-    if y.upper() > 1 {
-        return Err(Error::Domain {
-            what: format!(
-                "y > 1 lies within the input ball [{:e}, {:e}]: G(k, y) is defined for 0 < y <= 1 (x >= a)",
-                y.lower().to_f64(),
-                y.upper().to_f64()
-            ),
-        });
-    }
+    // y = 0 is G's logarithmic singularity; y > 1 is x < a
+    y.check_within("y (= (a/x)^2)", crate::error::Interval::left_open(0.0, 1.0))?;
     let yf = y.to_f64();
     let near_one = matches!(choose_algorithm(k, yf), Algorithm::NearOne | Algorithm::AtOne);
     crate::special::ziv_ball_inputs(prec, guard_bits(k, yf.min(1.0 - f64::EPSILON)), None, |wp| {
