@@ -593,6 +593,11 @@ impl WaveBessel {
         let n_terms = bessel_terms_f64(d.hi);
         let top = 2 * n_terms + 3;
         let j = bessel_j_sequence_dd(top, d);
+        if j.len() <= top {
+            // D not finite in double-double at subnormal scales (found by
+            // tests/fuzz.rs), or beyond the sequence's range
+            return Err(Error::NonFiniteResult { function: "WaveBessel::new (2 pi a/zeta in double-double)" });
+        }
         // S_n = J_{2n+1} - J_{2n+3} + ... (times 2): backward partial sums over the odd orders.
         let mut conv = vec![Dd::ZERO; n_terms + 1];
         // Start at the highest odd order available and accumulate downward;

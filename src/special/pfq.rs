@@ -517,7 +517,8 @@ pub(crate) fn contains_pole(x: &Ball, limit: Option<u64>) -> Option<i64> {
     if limit.is_some_and(|d| j >= d) {
         return None;
     }
-    Some(-(j as i64))
+    // saturating: a pole beyond -i64::MAX is reported at -i64::MAX (found by tests/fuzz.rs)
+    Some(-(j.min(i64::MAX as u64) as i64))
 }
 
 /// Certified `pFq(a; b; z)` over balls of inputs (Arb's convention): the result
