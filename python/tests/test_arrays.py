@@ -80,11 +80,11 @@ def test_out_of_domain_raises():
         maugis.hyp2f1(0.5, 0.5, 1.5, 2.0)
     with pytest.raises(ValueError, match="out of domain"):
         maugis.meijer_g_k(1, [0.5, 0.0])
-    with pytest.raises(ValueError, match="k must be a non-negative integer"):
+    with pytest.raises(ValueError, match="k must be an integer in 0 "):
         maugis.meijer_g_k(-1, 0.5)
     with pytest.raises(ValueError, match="x >= a"):
         maugis.u_wave(2.0, 1.125, 0.5, 1.0)
-    with pytest.raises(ValueError, match="out of domain"):
+    with pytest.raises(ValueError, match=r"n must be an integer in -1000000 \.\.= 1000000"):
         maugis.bessel_j(10**7, 1.0)
     with pytest.raises(ValueError, match="out of domain"):
         maugis.hyp2f1(0.5, 0.5, 1.5, 2.0, prec=64)
