@@ -166,6 +166,47 @@ pub enum Error {
         /// What failed.
         what: String,
     },
+    /// A lower (denominator) parameter of a hypergeometric function at a
+    /// non-positive integer that the series reaches (a pole), or a parameter ball
+    /// that contains one.
+    ParameterPole {
+        /// The function (`"2F1"`, `"pFq"`).
+        function: &'static str,
+        /// The parameter (`"c"`, `"b1"`, ...).
+        arg: &'static str,
+        /// The non-positive integer.
+        pole: f64,
+        /// The parameter's lower end (equal to `upper` for a point).
+        lower: f64,
+        /// The parameter's upper end.
+        upper: f64,
+    },
+    /// The function diverges at these arguments (or may, somewhere in the input balls).
+    Divergent {
+        /// The function and where (`"2F1(a, b; c; 1)"`).
+        function: &'static str,
+        /// The condition convergence needs (`"c - a - b > 0"`).
+        needs: &'static str,
+        /// The value that breaks it (an end of its ball, for ball inputs).
+        value: f64,
+    },
+    /// A ball input too wide for the method's bound.
+    BallTooWide {
+        /// The argument.
+        arg: &'static str,
+        /// The ball's lower end (rounded down to f64).
+        lower: f64,
+        /// The ball's upper end (rounded up to f64).
+        upper: f64,
+        /// What the ball must satisfy.
+        needs: &'static str,
+    },
+    /// An interval too narrow for the quadrature nodes at this working precision
+    /// (its midpoint rounds onto an endpoint).
+    IntervalTooNarrow {
+        /// The working precision of the nodes.
+        prec: u32,
+    },
 }
 
 impl fmt::Display for Error {
@@ -236,6 +277,34 @@ impl fmt::Display for Error {
                 write!(f, "{function} has no f64 path with a proven bound; use the certified (MP) path")
             }
             Error::Internal { what } => write!(f, "internal error (please report): {what}"),
+            Error::ParameterPole { function, arg, pole, lower, upper } => {
+                if lower == upper {
+                    write!(
+                        f,
+                        "{function}: {arg} = {pole} is a non-positive integer, a pole of the series (defined there only \
+                         when a numerator parameter is a non-positive integer of no larger magnitude: a terminating series)"
+                    )
+                } else {
+                    write!(
+                        f,
+                        "{function}: the pole {arg} = {pole} (a non-positive integer) lies within the input ball \
+                         [{lower:e}, {upper:e}] of {arg}; give {arg} exactly or away from the poles"
+                    )
+                }
+            }
+            Error::Divergent { function, needs, value } => {
+                write!(f, "{function} diverges here: it needs {needs} (here {value:e})")
+            }
+            Error::BallTooWide { arg, lower, upper, needs } => write!(
+                f,
+                "the input ball [{lower:e}, {upper:e}] of {arg} is too wide: it must lie {needs}; give {arg} with fewer \
+                 uncertain digits"
+            ),
+            Error::IntervalTooNarrow { prec } => write!(
+                f,
+                "the interval is too narrow for {prec}-bit nodes (its midpoint rounds onto an endpoint); \
+                 use a higher precision or integrate over the complement"
+            ),
         }
     }
 }
@@ -243,11 +312,25 @@ impl fmt::Display for Error {
 impl std::error::Error for Error {}
 
 impl Error {
+    /// An internal routine called outside the arguments it covers: the chooser
+    /// guarantees them, so reaching this is a bug ([`Error::Internal`]).
+    pub(crate) fn precondition(what: &'static str) -> Error {
+        Error::Internal { what: format!("precondition violated: {what}") }
+    }
+
     /// Whether the error says that an argument lies outside the function's domain
     /// ([`Error::Domain`], [`Error::OutOfRange`], [`Error::BallOutOfRange`]): the
     /// errors a tighter input ball may avoid.
     pub fn is_domain(&self) -> bool {
-        matches!(self, Error::Domain { .. } | Error::OutOfRange { .. } | Error::BallOutOfRange { .. })
+        matches!(
+            self,
+            Error::Domain { .. }
+                | Error::OutOfRange { .. }
+                | Error::BallOutOfRange { .. }
+                | Error::ParameterPole { .. }
+                | Error::Divergent { .. }
+                | Error::BallTooWide { .. }
+        )
     }
 }
 
@@ -366,6 +449,11 @@ impl Interval {
     /// `[lo, +inf)`.
     pub const fn at_least(lo: f64) -> Interval {
         Interval { lo, hi: f64::INFINITY, lo_closed: true, hi_closed: false }
+    }
+
+    /// `(-inf, hi]`.
+    pub const fn at_most(hi: f64) -> Interval {
+        Interval { lo: f64::NEG_INFINITY, hi, lo_closed: false, hi_closed: true }
     }
 
     /// Whether `x` lies in the interval (never for NaN).

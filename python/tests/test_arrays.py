@@ -76,7 +76,7 @@ def test_error_names_the_failing_element():
 
 
 def test_out_of_domain_raises():
-    with pytest.raises(ValueError, match="out of domain"):
+    with pytest.raises(ValueError, match=r"z must lie in \(-inf, 1\] \(got 2\.0\)"):
         maugis.hyp2f1(0.5, 0.5, 1.5, 2.0)
     with pytest.raises(ValueError, match="out of domain"):
         maugis.meijer_g_k(1, [0.5, 0.0])
@@ -86,7 +86,7 @@ def test_out_of_domain_raises():
         maugis.u_wave(2.0, 1.125, 0.5, 1.0)
     with pytest.raises(ValueError, match=r"n must be an integer in -1000000 \.\.= 1000000"):
         maugis.bessel_j(10**7, 1.0)
-    with pytest.raises(ValueError, match="out of domain"):
+    with pytest.raises(ValueError, match=r"z must lie in \(-inf, 1\]"):
         maugis.hyp2f1(0.5, 0.5, 1.5, 2.0, prec=64)
 
 

@@ -147,7 +147,7 @@ pub fn strip_residual_ball_mp(inputs: &ModelBalls, m_minus_1: &Ball, wp: u32) ->
 pub fn strip_residual_mp(params: Params, abar: f64, m: &Float, wp: u32) -> Result<Ball> {
     crate::error::check_working_prec(wp)?;
     if *m < 1 {
-        return Err(Error::Domain { what: "the strip ratio m must be >= 1".into() });
+        return Err(Error::OutOfRange { arg: "m (the strip ratio)", value: m.to_f64(), allowed: Interval::at_least(1.0) });
     }
     let e = Ball::from_float(&exact_sub(m, &Float::with_val(2, 1)), wp); // m - 1, exact
     strip_residual_ball_mp(&ModelBalls::exact(params, abar)?, &e, wp)

@@ -69,9 +69,8 @@ fn check(a: f64, zeta: f64, amp: f64, x: f64) -> Result<()> {
     finite(zeta, "zeta")?;
     finite(amp, "amp")?;
     finite(x, "x")?;
-    if a <= 0.0 || zeta <= 0.0 {
-        return Err(Error::Domain { what: "a and zeta must be > 0".into() });
-    }
+    Interval::above(0.0).check("a", a)?;
+    Interval::above(0.0).check("zeta", zeta)?;
     if x < a {
         return Err(Error::OutOfRange { arg: "x (the wave displacement is for x >= a)", value: x, allowed: Interval::at_least(a) });
     }
@@ -172,7 +171,11 @@ fn mp_quadrature(kind: Quantity, a: &Float, zeta: &Float, amp: &Float, x: &Float
     }
     check(a.to_f64(), zeta.to_f64(), amp.to_f64(), x.to_f64())?;
     if *x < *a {
-        return Err(Error::Domain { what: "the wave displacement is for x >= a".into() });
+        return Err(Error::OutOfRange {
+            arg: "x (the wave displacement is for x >= a)",
+            value: x.to_f64(),
+            allowed: Interval::at_least(a.to_f64()),
+        });
     }
     crate::error::check_prec(prec)?;
     let inner_opts = TanhSinhOptions::with_prec(prec + 24);

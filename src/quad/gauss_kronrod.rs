@@ -42,12 +42,12 @@
 //! `abs_tol >= 0`, `rel_tol >= 0`, not both zero. As in QUADPACK `qag`, a
 //! purely relative request must ask for at least `50 ε` (`rel_tol >= 50 ε` when
 //! `abs_tol == 0`); anything smaller is below the rounding floor of the
-//! estimate and is rejected as [`Error::Domain`].
+//! estimate and is rejected as [`Error::OutOfRange`].
 
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
-use crate::error::{finite, Error, Result};
+use crate::error::{finite, Error, Interval, Result};
 use crate::quad::QuadEstimate;
 
 /// Kronrod abscissae on `[0, 1]`, largest first; `XGK[1]`, `XGK[3]`, `XGK[5]`,
@@ -134,24 +134,21 @@ impl GaussKronrodOptions {
     }
 
     fn validate(&self) -> Result<()> {
-        let ok = |t: f64| t.is_finite() && t >= 0.0;
-        if !ok(self.abs_tol) || !ok(self.rel_tol) {
-            return Err(Error::Domain {
-                what: format!("tolerances must be finite and >= 0 (abs_tol = {}, rel_tol = {})", self.abs_tol, self.rel_tol),
-            });
-        }
+        let tolerance = Interval { lo: 0.0, hi: f64::INFINITY, lo_closed: true, hi_closed: false };
+        tolerance.check("abs_tol", self.abs_tol)?;
+        tolerance.check("rel_tol", self.rel_tol)?;
+        // With abs_tol = 0 the relative tolerance must sit above the rounding floor
+        // (set abs_tol > 0 for an absolute target).
         let rel_min = ROUNDING_FLOOR_FACTOR * f64::EPSILON;
-        if self.abs_tol == 0.0 && self.rel_tol < rel_min {
-            return Err(Error::Domain {
-                what: format!(
-                    "with abs_tol = 0 the relative tolerance must be >= {rel_min:e} (got {}); set abs_tol > 0 for an absolute target",
-                    self.rel_tol
-                ),
-            });
+        if self.abs_tol == 0.0 {
+            Interval::at_least(rel_min).check("rel_tol", self.rel_tol)?;
         }
         if self.max_subdivisions > MAX_SUBDIVISIONS_CAP {
-            return Err(Error::Domain {
-                what: format!("max_subdivisions = {} exceeds {MAX_SUBDIVISIONS_CAP}", self.max_subdivisions),
+            return Err(Error::IntegerOutOfRange {
+                arg: "max_subdivisions",
+                value: i64::try_from(self.max_subdivisions).unwrap_or(i64::MAX),
+                min: 0,
+                max: MAX_SUBDIVISIONS_CAP as i64,
             });
         }
         Ok(())
@@ -445,10 +442,12 @@ mod tests {
         assert!(matches!(integrate(|x| x, 0.0, f64::NEG_INFINITY, &o), Err(Error::NonFinite { .. })));
         for (abs_tol, rel_tol) in [(0.0, 0.0), (-1.0, 1e-8), (1e-8, -1.0), (f64::NAN, 1e-8), (0.0, 1e-16)] {
             let o = GaussKronrodOptions::with_tolerances(abs_tol, rel_tol);
-            assert!(matches!(integrate(|x| x, 0.0, 1.0, &o), Err(Error::Domain { .. })), "{abs_tol} {rel_tol}");
+            let e = integrate(|x| x, 0.0, 1.0, &o).unwrap_err();
+            assert!(matches!(e, Error::OutOfRange { arg: "abs_tol" | "rel_tol", .. }), "{abs_tol} {rel_tol}: {e:?}");
         }
         let o = GaussKronrodOptions { max_subdivisions: MAX_SUBDIVISIONS_CAP + 1, ..o };
-        assert!(integrate(|x| x, 0.0, 1.0, &o).is_err());
+        let e = integrate(|x| x, 0.0, 1.0, &o).unwrap_err();
+        assert!(matches!(e, Error::IntegerOutOfRange { arg: "max_subdivisions", .. }), "{e:?}");
         let o = GaussKronrodOptions::default();
         assert!(matches!(integrate(|x| 1.0 / x, 0.0, 1.0, &o), Err(Error::NoConvergence { .. }) | Err(Error::NonFinite { .. })));
         assert!(matches!(integrate(|x| 1.0 / (x - 0.5), 0.0, 1.0, &o), Err(Error::NonFinite { .. })));

@@ -171,7 +171,7 @@ impl TanhSinhOptions {
         }
         check_finite(&self.abs_tol, "abs_tol")?;
         if self.abs_tol.is_sign_negative() && !self.abs_tol.is_zero() {
-            return Err(Error::Domain { what: "abs_tol must be >= 0".into() });
+            return Err(Error::OutOfRange { arg: "abs_tol", value: self.abs_tol.to_f64(), allowed: crate::error::Interval::at_least(0.0) });
         }
         Ok(wp)
     }
@@ -328,12 +328,7 @@ where
         if k == 0 {
             let nd = node(0, 0, &half_pi, node_prec);
             let Some(tau) = eval_side(f, &iv, Side::Upper, &nd, wp, skip_endpoints)? else {
-                return Err(Error::Domain {
-                    what: format!(
-                        "the interval is too narrow for {wp}-bit nodes (its midpoint rounds onto an endpoint); \
-                         use integrate_with_complements or a higher prec"
-                    ),
-                });
+                return Err(Error::IntervalTooNarrow { prec: wp });
             };
             evaluations += 1;
             let tau_abs = est_abs(&tau);
@@ -518,7 +513,7 @@ mod tests {
         let bad = TanhSinhOptions { max_level: 1, ..o.clone() };
         assert!(matches!(integrate(f, &fl(0.0), &fl(1.0), &bad), Err(Error::IntegerOutOfRange { arg: "max_level", .. })));
         let bad = TanhSinhOptions { abs_tol: fl(-1e-30), ..o.clone() };
-        assert!(matches!(integrate(f, &fl(0.0), &fl(1.0), &bad), Err(Error::Domain { .. })));
+        assert!(matches!(integrate(f, &fl(0.0), &fl(1.0), &bad), Err(Error::OutOfRange { arg: "abs_tol", .. })));
         let bad = TanhSinhOptions { abs_tol: nan.clone(), ..o.clone() };
         assert!(matches!(integrate(f, &fl(0.0), &fl(1.0), &bad), Err(Error::NonFinite { .. })));
         let bad = TanhSinhOptions { guard_bits: MAX_GUARD_BITS + 1, ..o.clone() };
@@ -550,7 +545,7 @@ mod tests {
         width >>= 200;
         let hi = Float::with_val(256, &lo + &width);
         let o = TanhSinhOptions::with_prec(100);
-        assert!(matches!(integrate(|_| Ok(fl(1.0)), &lo, &hi, &o), Err(Error::Domain { .. })));
+        assert!(matches!(integrate(|_| Ok(fl(1.0)), &lo, &hi, &o), Err(Error::IntervalTooNarrow { prec: 132 })));
         let w2 = Float::with_val(53, width.square_ref());
         let r = integrate_with_complements(|_, xa, _| Ok(Float::with_val(xa.prec(), xa * 2u32) / &w2), &lo, &hi, &o).unwrap();
         assert!(rel_err(&r.value, &fl(1.0)) < 1e-30, "{r:?}");

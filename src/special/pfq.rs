@@ -49,7 +49,10 @@ use rug::ops::AssignRound;
 use rug::Float;
 
 use crate::ball::{Ball, Mag, MAG_PREC};
-use crate::error::{Error, Result};
+use crate::error::{Error, Interval, Result};
+
+/// Names of the lower parameters in errors.
+const LOWER_PARAMETER_NAMES: [&str; 8] = ["b1", "b2", "b3", "b4", "b5", "b6", "b7", "b8"];
 use crate::special::{check_finite, exact, f64_from_mp, ziv, DEFAULT_GUARD_BITS};
 
 /// Hard cap on the number of series terms.
@@ -99,7 +102,7 @@ fn first_positive_index(params: &[Ball]) -> Result<u64> {
             let m = Float::with_val(64, -&lo).ceil();
             let m = m.to_f64();
             if !(m.is_finite() && m < 1e15) {
-                return Err(Error::Domain { what: "hypergeometric parameter too large in magnitude".into() });
+                return Err(Error::OutOfRange { arg: "hypergeometric parameter", value: lo.to_f64(), allowed: Interval::above(-1e15) });
             }
             n = n.max(m as u64 + 1);
         }
@@ -159,12 +162,14 @@ pub(crate) fn pfq_series(a: &[Ball], b: &[Ball], z: &Ball, wp: u32) -> Result<Se
     let terminates = a.iter().any(|x| x.is_exact_nonpositive_integer());
     if !terminates {
         if p > q + 1 {
-            return Err(Error::Domain { what: format!("{p}F{q} diverges for z != 0 unless it terminates") });
+            return Err(Error::Divergent {
+                function: "pFq with p > q + 1",
+                needs: "z = 0 or a terminating series (a numerator parameter a non-positive integer)",
+                value: z.to_f64(),
+            });
         }
         if p == q + 1 && z.abs_upper() >= 1 {
-            return Err(Error::Domain {
-                what: format!("the {p}F{q} series needs |z| < 1 (transform the argument first)"),
-            });
+            return Err(Error::Divergent { function: "pFq series with p = q + 1", needs: "|z| < 1", value: z.to_f64() });
         }
     }
     let mut t = Ball::one(wp);
@@ -187,9 +192,8 @@ pub(crate) fn pfq_series(a: &[Ball], b: &[Ball], z: &Ball, wp: u32) -> Result<Se
             let d = bj.add_i64(n as i64);
             if d.contains_zero() {
                 if d.is_exact() {
-                    return Err(Error::Domain {
-                        what: "a lower hypergeometric parameter is a non-positive integer (pole)".into(),
-                    });
+                    let pole = -(n as f64);
+                    return Err(Error::ParameterPole { function: "pFq", arg: "b", pole, lower: pole, upper: pole });
                 }
                 return Err(Error::DivisionByZero);
             }
@@ -553,15 +557,12 @@ pub fn hyp_pfq_ball_mp(a: &[Ball], b: &[Ball], z: &Ball, prec: u32) -> Result<Ba
         .min();
     for (j, bj) in b.iter().enumerate() {
         if let Some(pole) = contains_pole(bj, degree) {
-            return Err(Error::Domain {
-                what: format!(
-                    "a pole of {}F{} lies within the input ball: b{} = {pole} is inside [{:e}, {:e}]",
-                    a.len(),
-                    b.len(),
-                    j + 1,
-                    bj.lower().to_f64(),
-                    bj.upper().to_f64()
-                ),
+            return Err(Error::ParameterPole {
+                function: "pFq",
+                arg: LOWER_PARAMETER_NAMES.get(j).copied().unwrap_or("b"),
+                pole: pole as f64,
+                lower: bj.lower().to_f64(),
+                upper: bj.upper().to_f64(),
             });
         }
     }

@@ -45,7 +45,7 @@ use rug::Float;
 
 use super::{hyp2f1_mp, validate};
 use crate::ball::{Ball, Mag};
-use crate::error::{check_prec, Error, Result};
+use crate::error::{check_prec, Error, Interval, Result};
 use crate::special::gamma::gamma_ball;
 use crate::special::is_nonpositive_integer;
 
@@ -55,8 +55,14 @@ const MAJORANT_PREC: u32 = 32;
 /// Extra bits of the ball arithmetic around the midpoint evaluation.
 const BALL_GUARD: u32 = 32;
 
-fn domain(what: String) -> Error {
-    Error::Domain { what }
+/// [`Error::BallOutOfRange`] for the ball `x` named `arg`.
+fn ball_outside(arg: &'static str, x: &Ball, allowed: Interval) -> Error {
+    Error::BallOutOfRange { arg, lower: x.lower().to_f64(), upper: x.upper().to_f64(), allowed }
+}
+
+/// [`Error::BallTooWide`] for the ball `x` named `arg`.
+fn too_wide(arg: &'static str, x: &Ball, needs: &'static str) -> Error {
+    Error::BallTooWide { arg, lower: x.lower().to_f64(), upper: x.upper().to_f64(), needs }
 }
 
 /// Whether the ball contains an integer `<= 0`.
@@ -99,22 +105,15 @@ pub fn hyp2f1_ball_mp(a: &Ball, b: &Ball, c: &Ball, z: &Ball, prec: u32) -> Resu
         let inner = direct_ball(a, &c.sub(b), c, &w, wp)?;
         return Ok(pre.mul(&inner));
     }
-    Err(domain(format!(
-        "2F1 over balls: the z ball [{}, {}] is too wide (it must lie within (-3/4, 1) or below -1/2)",
-        z.lower().to_f64(),
-        z.upper().to_f64()
-    )))
+    Err(too_wide("z", z, "within (-3/4, 1) or below -1/2"))
 }
 
 /// The edges of the module docs; `terminating` is the degree when `a` or `b` is
 /// an exact non-positive integer.
 fn check_edges(a: &Ball, b: &Ball, c: &Ball, z: &Ball, terminating: Option<u64>) -> Result<()> {
     if z.upper() > 1 {
-        return Err(domain(format!(
-            "2F1: z > 1 (the branch cut [1, inf) of the principal branch) lies within the input ball of z \
-             (upper end {}); only real z <= 1 is supported",
-            z.upper().to_f64()
-        )));
+        // z > 1: the branch cut [1, inf) of the principal branch.
+        return Err(ball_outside("z", z, Interval::at_most(1.0)));
     }
     if c.is_exact() {
         if let Some(m) = exact_degree(c) {
@@ -123,32 +122,30 @@ fn check_edges(a: &Ball, b: &Ball, c: &Ball, z: &Ball, terminating: Option<u64>)
             }
         }
     } else if contains_nonpositive_integer(c) {
-        let k = Float::with_val(64, c.lower().ceil_ref()).to_f64();
-        return Err(domain(format!(
-            "2F1: c = {k} (a pole of 2F1: a non-positive integer) lies within the input ball of c; \
-             give c exactly or away from the poles"
-        )));
+        let pole = Float::with_val(64, c.lower().ceil_ref()).to_f64();
+        return Err(Error::ParameterPole {
+            function: "2F1",
+            arg: "c",
+            pole,
+            lower: c.lower().to_f64(),
+            upper: c.upper().to_f64(),
+        });
     }
     if z.upper() == 1 && terminating.is_none() {
         let s = c.sub(a).sub(b);
         if s.lower() <= 0 && s.upper() >= 0 {
-            return Err(domain(
-                "2F1: c - a - b = 0 lies within the input ball: 2F1 at z = 1 may diverge (Gauss's sum needs \
-                 c - a - b > 0)"
-                    .into(),
-            ));
+            return Err(Error::Divergent {
+                function: "2F1(a, b; c; 1) over balls",
+                needs: "c - a - b > 0 over the whole ball",
+                value: s.lower().to_f64(),
+            });
         }
         if s.upper() < 0 {
-            return Err(domain(format!(
-                "2F1: z = 1 lies within the input ball of z, where 2F1 diverges: c - a - b <= 0 \
-                 (here about {})",
-                s.mid().to_f64()
-            )));
+            return Err(Error::Divergent { function: "2F1(a, b; c; 1)", needs: "c - a - b > 0", value: s.mid().to_f64() });
         }
         if !z.is_exact() {
-            return Err(domain(
-                "2F1 over balls: z = 1 lies within a non-exact z ball; give z exactly or below 1".into(),
-            ));
+            // z = 1 within a non-exact ball: give z exactly or below 1.
+            return Err(ball_outside("z", z, Interval { lo: f64::NEG_INFINITY, hi: 1.0, lo_closed: false, hi_closed: false }));
         }
     }
     Ok(())
@@ -184,13 +181,12 @@ fn direct_ball(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32) -> Result<Ball> 
     }
     let c_lo = c.lower();
     if !(c_lo > 0) {
-        return Err(domain(
-            "2F1 over balls: c must be exact or positive on its whole ball (the radius bound needs c > 0)".into(),
-        ));
+        // The radius bound needs c > 0 over the ball (or an exact c).
+        return Err(ball_outside("c", c, Interval::above(0.0)));
     }
     let (aa, bb, rr) = (abs_max(a), abs_max(b), abs_max(z));
     if !(rr < 1) {
-        return Err(domain("2F1 over balls: |z| must stay below 1 on the ball after the transformation".into()));
+        return Err(too_wide("z", z, "|z| < 1 over the ball after the transformation"));
     }
     let mut err = Mag::ZERO;
     if !a.is_exact() {
@@ -224,7 +220,13 @@ fn gamma_over_ball(x: &Ball, wp: u32) -> Result<Ball> {
         return gamma_ball(x.mid(), wp);
     }
     if contains_nonpositive_integer(x) {
-        return Err(domain("2F1 at z = 1 over balls: a Gamma argument ball contains a pole".into()));
+        return Err(Error::ParameterPole {
+            function: "2F1(a, b; c; 1) over balls",
+            arg: "a Gamma argument (c, c - a - b, c - a or c - b)",
+            pole: Float::with_val(64, x.lower().ceil_ref()).to_f64(),
+            lower: x.lower().to_f64(),
+            upper: x.upper().to_f64(),
+        });
     }
     let mut g = gamma_ball(x.mid(), wp)?;
     let (lo, hi) = (x.lower(), x.upper());
@@ -274,19 +276,24 @@ mod tests {
     #[test]
     fn edges_inside_the_ball_are_errors_at_every_precision() {
         for prec in [2, 16, 53, 64, 128, 256, 1000] {
-            let e = at_decimals("0.3", "0.7", "1", "1", prec).unwrap_err().to_string();
-            assert!(e.contains("c - a - b = 0"), "{prec}: {e}");
-            let e = at_decimals("0.5", "0.25", "-2", "0.5", prec).unwrap_err().to_string();
-            assert!(e.contains("pole"), "{prec}: {e}");
-            let e = at_decimals("0.3", "0.9", "1", "1", prec).unwrap_err().to_string();
-            assert!(e.contains("diverges"), "{prec}: {e}");
+            // c - a - b = 0 inside the balls at z = 1.
+            let e = at_decimals("0.3", "0.7", "1", "1", prec).unwrap_err();
+            assert!(matches!(e, Error::Divergent { needs: "c - a - b > 0 over the whole ball", .. }), "{prec}: {e:?}");
+            assert!(e.to_string().contains("diverges"), "{prec}: {e}");
+            let e = at_decimals("0.5", "0.25", "-2", "0.5", prec).unwrap_err();
+            assert!(matches!(e, Error::ParameterPole { arg: "c", pole: -2.0, .. }), "{prec}: {e:?}");
+            assert!(e.to_string().contains("pole"), "{prec}: {e}");
+            let e = at_decimals("0.3", "0.9", "1", "1", prec).unwrap_err();
+            assert!(matches!(e, Error::Divergent { needs: "c - a - b > 0", .. }), "{prec}: {e:?}");
         }
         let ball = |m: f64, r: f64| Ball::with_radius(Float::with_val(64, m), &Float::with_val(64, r));
         let (one, three) = (Ball::one(64), Ball::from_i64(3, 64));
-        let e = hyp2f1_ball_mp(&one, &one, &three, &ball(0.9, 0.2), 64).unwrap_err().to_string();
-        assert!(e.contains("branch cut"), "{e}");
-        let e = hyp2f1_ball_mp(&one, &one, &ball(-2.0, 1e-30), &ball(0.5, 0.0), 64).unwrap_err().to_string();
-        assert!(e.contains("c = -2") && e.contains("pole"), "{e}");
+        // The branch cut z > 1 inside the z ball.
+        let e = hyp2f1_ball_mp(&one, &one, &three, &ball(0.9, 0.2), 64).unwrap_err();
+        assert!(matches!(e, Error::BallOutOfRange { arg: "z", allowed: Interval { hi: 1.0, .. }, .. }), "{e:?}");
+        let e = hyp2f1_ball_mp(&one, &one, &ball(-2.0, 1e-30), &ball(0.5, 0.0), 64).unwrap_err();
+        assert!(matches!(e, Error::ParameterPole { arg: "c", pole: -2.0, .. }), "{e:?}");
+        assert!(e.to_string().contains("c = -2") && e.to_string().contains("pole"), "{e}");
     }
 
     #[test]

@@ -45,7 +45,7 @@ use crate::special::{exact_add, exact_sub, is_nonpositive_integer};
 /// not an integer.
 pub(crate) fn hyp2f1_connection(a: &Float, b: &Float, c: &Float, z: &Float, wp: u32) -> Result<Ball> {
     if !(*z > 0 && *z < 1) {
-        return Err(Error::Domain { what: "1-z formula needs 0 < z < 1".into() });
+        return Err(Error::precondition("1-z formula needs 0 < z < 1"));
     }
     let u = xball(&exact_sub(&one(), z), wp);
     connection_core(a, b, c, &xball(z, wp), &u, wp)
@@ -57,7 +57,7 @@ pub(super) fn connection_core(a: &Float, b: &Float, c: &Float, x: &Ball, u: &Bal
     let cb = exact_sub(c, b);
     let s = exact_sub(&ca, b);
     if s.is_integer() {
-        return Err(Error::Domain { what: "1-z formula: c - a - b is an integer (use the logarithmic formula)".into() });
+        return Err(Error::precondition("1-z formula needs c - a - b not an integer"));
     }
     let neg_s = Float::with_val(s.prec(), -&s);
     let one_minus_s = exact_sub(&one(), &s);
@@ -85,7 +85,7 @@ pub(super) fn connection_core(a: &Float, b: &Float, c: &Float, x: &Ball, u: &Bal
 /// (times a power).
 pub(crate) fn hyp2f1_pfaff_connection(a: &Float, b: &Float, c: &Float, z: &Float, wp: u32) -> Result<Ball> {
     if *z >= 0 {
-        return Err(Error::Domain { what: "Pfaff + 1-w formula needs z < 0".into() });
+        return Err(Error::precondition("Pfaff + 1-w formula needs z < 0"));
     }
     let ca = exact_sub(c, a);
     let cb = exact_sub(c, b);
@@ -107,7 +107,7 @@ pub(crate) fn hyp2f1_gauss(a: &Float, b: &Float, c: &Float, wp: u32) -> Result<B
     let cb = exact_sub(c, b);
     let s = exact_sub(&ca, b);
     if s <= 0 {
-        return Err(Error::Domain { what: "Gauss's sum needs c - a - b > 0".into() });
+        return Err(Error::precondition("Gauss's sum needs c - a - b > 0"));
     }
     gamma_ratio(&[c, &s], &[&ca, &cb], wp)
 }

@@ -40,7 +40,7 @@ use crate::special::{exact_add, exact_sub, is_nonpositive_integer};
 /// `0 < z < 1`, `c - a - b` an integer (none of `a, b, c-a, c-b` a non-positive integer).
 pub(crate) fn hyp2f1_connection_log(a: &Float, b: &Float, c: &Float, z: &Float, wp: u32) -> Result<Ball> {
     if !(*z > 0 && *z < 1) {
-        return Err(Error::Domain { what: "1-z formula needs 0 < z < 1".into() });
+        return Err(Error::precondition("logarithmic 1-z formula needs 0 < z < 1"));
     }
     let u = xball(&exact_sub(&one(), z), wp);
     log_core(a, b, c, &u, wp)
@@ -52,14 +52,10 @@ pub(super) fn log_core(a: &Float, b: &Float, c: &Float, u: &Ball, wp: u32) -> Re
     let cb = exact_sub(c, b);
     let s = exact_sub(&ca, b);
     if !s.is_integer() {
-        return Err(Error::Domain { what: "logarithmic 1-z formula needs c - a - b an integer".into() });
+        return Err(Error::precondition("logarithmic 1-z formula needs c - a - b an integer"));
     }
     if [a, b, &ca, &cb].iter().any(|x| is_nonpositive_integer(x)) {
-        return Err(Error::Domain {
-            what: "logarithmic 1-z formula: a, b, c-a, c-b must not be non-positive integers \
-                   (the function is a polynomial times a power; use the polynomial algorithms)"
-                .into(),
-        });
+        return Err(Error::precondition("logarithmic 1-z formula needs none of a, b, c-a, c-b a non-positive integer"));
     }
     let mf = s.to_f64();
     if mf.abs() > MAX_LOG_M as f64 {
@@ -144,7 +140,7 @@ pub(super) fn log_bracket_bound(aa: &Float, bb: &Float, m: u64, n: u64, lnu_abs:
 pub(super) fn log_series(aa: &Float, bb: &Float, m: u64, u: &Ball, wp: u32) -> Result<Ball> {
     let wp = wp.max(MIN_SERIES_PREC);
     let lnu = u.ln()?;
-    let m32 = u32::try_from(m).map_err(|_| Error::Domain { what: "2F1: c - a - b too large".into() })?;
+    let m32 = u32::try_from(m).map_err(|_| Error::IntegerOutOfRange { arg: "c - a - b", value: i64::try_from(m).unwrap_or(i64::MAX), min: 0, max: u32::MAX as i64 })?;
     let mut tau = Ball::factorial(m32, wp).recip()?;
     let mut psi1 = Ball::from_i64(1, wp).digamma()?;
     let mut psim = Ball::from_i64(m as i64 + 1, wp).digamma()?;

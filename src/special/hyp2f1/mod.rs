@@ -18,12 +18,12 @@
 //!   back as `[0 +/- 0]`; longer polynomials use the series engine below.
 //! * **`c` a non-positive integer** `-m`: a pole of every term with `n > m`;
 //!   allowed only when the series terminates first (`d <= m`, the usual
-//!   convention, as in mpmath), otherwise [`Error::Domain`].
+//!   convention, as in mpmath), otherwise [`Error::ParameterPole`].
 //! * **`z = 1`** (`Algorithm::Gauss`): Gauss's sum
 //!   `Gamma(c) Gamma(c-a-b) / (Gamma(c-a) Gamma(c-b))` when `c - a - b > 0`
 //!   [DLMF 15.4.20]; a terminating series uses the polynomial (Chu-Vandermonde,
 //!   DLMF 15.4.24, for any `c - a - b`); otherwise the series diverges and the
-//!   result is [`Error::Domain`].
+//!   result is [`Error::Divergent`].
 //! * `z = 0` gives exactly 1.
 //!
 //! ## Regions (non-terminating)
@@ -50,7 +50,7 @@
 //!
 //! The principal branch of `2F1` has its cut on `[1, inf)` [DLMF 15.2(i)]; on
 //! the cut the value depends on the side of approach and is complex. Only real
-//! `z <= 1` is supported; `z > 1` is [`Error::Domain`].
+//! `z <= 1` is supported; `z > 1` is [`Error::OutOfRange`].
 //!
 //! # Performance
 //!
@@ -121,7 +121,7 @@ pub use ball_input::hyp2f1_ball_mp;
 use choose::{evaluate, plan};
 
 use crate::ball::{Ball, Bounded};
-use crate::error::{check_prec, finite, Error, Result};
+use crate::error::{check_prec, finite, Error, Interval, Result};
 use crate::special::{
     check_finite, exact, exact_sub, f64_from_mp, is_nonpositive_integer, ziv, DEFAULT_GUARD_BITS, F64_FALLBACK_PREC,
 };
@@ -163,22 +163,14 @@ fn one() -> Float {
 }
 
 fn pole_error(c: &Float) -> Error {
-    Error::Domain {
-        what: format!(
-            "2F1: c = {} is a non-positive integer, a pole of the series; it is defined only when a or b \
-             is a non-positive integer of no larger magnitude (terminating series)",
-            c.to_f64()
-        ),
-    }
+    let c = c.to_f64();
+    Error::ParameterPole { function: "2F1", arg: "c", pole: c, lower: c, upper: c }
 }
 
+/// `z > 1`: the branch cut `[1, inf)` of the principal branch (complex values);
+/// only real `z <= 1` is supported.
 fn branch_cut_error(z: f64) -> Error {
-    Error::Domain {
-        what: format!(
-            "2F1: z = {z} > 1 lies on the branch cut [1, inf) of the principal branch (complex values); \
-             only real z <= 1 is supported"
-        ),
-    }
+    Error::OutOfRange { arg: "z", value: z, allowed: Interval::at_most(1.0) }
 }
 
 // ----- public entry points ---------------------------------------------------------
@@ -201,12 +193,7 @@ fn validate(a: &Float, b: &Float, c: &Float, z: &Float) -> Result<()> {
     if *z == 1 && deg.is_none() {
         let s = exact_sub(&exact_sub(c, a), b);
         if s <= 0 {
-            return Err(Error::Domain {
-                what: format!(
-                    "2F1(a, b; c; 1) diverges when c - a - b <= 0 (here {}); Gauss's sum needs c - a - b > 0",
-                    s.to_f64()
-                ),
-            });
+            return Err(Error::Divergent { function: "2F1(a, b; c; 1)", needs: "c - a - b > 0", value: s.to_f64() });
         }
     }
     Ok(())

@@ -35,7 +35,7 @@ use rug::Float;
 
 use super::{nonpos_degree, one, pole_error, terminating_degree, MIN_SERIES_PREC};
 use crate::ball::{Ball, MAG_PREC};
-use crate::error::{Error, Result};
+use crate::error::{Error, Interval, Result};
 use crate::special::gamma::{
     expm1_up, mag_abs, mag_abs_down, mag_add, mag_div, mag_geometric, mag_inf, mag_min, mag_mul, mag_pow2, mag_u64,
     mag_zero, xball,
@@ -49,7 +49,7 @@ pub(super) fn first_positive_index(params: &[&Float]) -> Result<u64> {
         if **p <= 0 {
             let v = -p.to_f64();
             if v.is_nan() || v >= 1e15 {
-                return Err(Error::Domain { what: "2F1: parameter too large in magnitude (|p| >= 1e15)".into() });
+                return Err(Error::OutOfRange { arg: "2F1 parameter", value: -v, allowed: Interval::above(-1e15) });
             }
             n = n.max(v.floor() as u64 + 1);
         }
@@ -171,7 +171,7 @@ pub(crate) fn series_2f1(a: &Float, b: &Float, c: &Float, z: &Ball, wp: u32) -> 
         }
     }
     if deg.is_none() && !(z.upper() < 1 && z.lower() > -1) {
-        return Err(Error::Domain { what: "2F1 series needs |z| < 1 (transform the argument first)".into() });
+        return Err(Error::precondition("2F1 series needs |z| < 1 (transform the argument first)"));
     }
     if let Some(d) = deg {
         if d > MAX_SERIES_TERMS {

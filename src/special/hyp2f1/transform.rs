@@ -34,7 +34,7 @@ pub(crate) fn hyp2f1_direct(a: &Float, b: &Float, c: &Float, z: &Float, wp: u32)
 /// `z < 1/2` unless the transformed series terminates (then any `z < 1`).
 pub(crate) fn hyp2f1_pfaff(a: &Float, b: &Float, c: &Float, z: &Float, wp: u32) -> Result<Ball> {
     if *z >= 1 {
-        return Err(Error::Domain { what: "Pfaff transformation needs z < 1".into() });
+        return Err(Error::precondition("Pfaff transformation needs z < 1"));
     }
     let ca = exact_sub(c, a);
     let cb = exact_sub(c, b);
@@ -59,7 +59,7 @@ pub(crate) fn hyp2f1_pfaff(a: &Float, b: &Float, c: &Float, z: &Float, wp: u32) 
 /// `z < 1` when `c - a` or `c - b` is a non-positive integer (polynomial), else `|z| < 1`.
 pub(crate) fn hyp2f1_euler(a: &Float, b: &Float, c: &Float, z: &Float, wp: u32) -> Result<Ball> {
     if *z >= 1 {
-        return Err(Error::Domain { what: "Euler transformation needs z < 1".into() });
+        return Err(Error::precondition("Euler transformation needs z < 1"));
     }
     let ca = exact_sub(c, a);
     let cb = exact_sub(c, b);
