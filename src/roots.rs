@@ -10,7 +10,7 @@
 //!   stops when the bracket is below `2 eps |b| + BRENT_REL_TOL |b|` or after
 //!   200 steps ([`Error::NoConvergence`]). A bracket without a sign change is
 //!   [`Error::Internal`] (callers bracket first).
-//! * [`golden_section_min`]: golden-section search for a minimum of a
+//! * `golden_section_min` (crate-internal): golden-section search for a minimum of a
 //!   unimodal function, until the bracket is below `rel_tol (1 + |a|)`; the
 //!   function may fail (its error is passed through).
 //!

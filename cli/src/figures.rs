@@ -58,7 +58,7 @@ pub struct FiguresArgs {
     /// Solver approach steps per leg.
     #[arg(long, value_name = "S", default_value_t = DEFAULT_STEPS)]
     pub steps: usize,
-    /// Also write the page showing the figures (linked as figures/<name>.svg) to FILE.
+    /// Also write the page showing the figures (linked as figures/NAME.svg) to FILE.
     #[arg(long, value_name = "FILE")]
     pub write_doc: Option<PathBuf>,
 }

@@ -6,12 +6,12 @@
 //! by element and hand back flat arrays, which Python reshapes.
 //!
 //! * f64 loops release the GIL ([`Python::detach`]) and run on rayon's pool
-//!   once an array has [`PARALLEL_MIN_LEN`] elements.
-//! * Arbitrary precision ([`eval_mp`]) takes exact binary inputs (`man * 2^exp`)
+//!   once an array has `PARALLEL_MIN_LEN` elements.
+//! * Arbitrary precision (`eval_mp`) takes exact binary inputs (`man * 2^exp`)
 //!   or decimal strings (each a ball that contains the decimal as typed, as in
 //!   `maugis eval`), and returns each certified ball either as exact binary
 //!   pairs (for `mpmath.mpf`) or as decimal strings whose radius still encloses.
-//! * [`integrate_mp`]: a certified integral of an expression in x
+//! * `integrate_mp`: a certified integral of an expression in x
 //!   ([`maugis::quad::expr`]) with the same inputs and outputs.
 //! * Every library [`maugis::Error`] becomes a Python `ValueError` carrying the
 //!   library's message and the arguments of the element that failed.
