@@ -194,14 +194,13 @@ def profile(lam, alpha, beta, abar, *, x=None, points=600):
     )
     if x is None:
         points = _count("points", points)
-        c = float(state(lam, alpha, beta, abar).m) * abar
-        xs = 1.5 * c * np.arange(points, dtype=np.float64) / (points - 1)
-        x = np.unique(np.concatenate([xs, [abar, c]]))
-    x = np.ascontiguousarray(_as_real("x", x).reshape(-1))
-    d = _ext.profile_dict(lam, alpha, beta, abar, x)
+    else:
+        x = np.ascontiguousarray(_as_real("x", x).reshape(-1))
+        points = 0
+    d = _ext.profile_dict(lam, alpha, beta, abar, x, points)
     samples = d.pop("samples")
     out = Record(d)
-    out["samples"] = Table(samples, nrows=len(x))
+    out["samples"] = Table(samples, nrows=len(samples["xbar"]))
     return out
 
 

@@ -29,7 +29,7 @@ use maugis::contact::located::At;
 use maugis::contact::summary::{load_area_curves, RunSummary};
 use maugis::contact::sweep::{run_sweep, SweepGrid};
 use maugis::contact::model::Params;
-use maugis::contact::state_profile::{sample_state_at, ProfileSample};
+use maugis::contact::state_profile::{sample_state, sample_state_at, ProfileSample};
 use maugis::ball::Decimal;
 use maugis::registry::{self, Answer, Arg, Function, ParamKind};
 use maugis::quad::certified::Options;
@@ -538,13 +538,28 @@ fn states_json(
     to_json(&pts)
 }
 
-/// One state and its traction, displacement, gap and surface depth at `x`: the
-/// fields of `maugis profile --format json`, samples as columns.
+/// One state and its traction, displacement, gap and surface depth at `x`, or
+/// (`x` None) on the library's default grid of `points` positions
+/// ([`sample_state`]): the fields of `maugis profile --format json`, samples as columns.
 #[pyfunction]
-fn profile_dict<'py>(py: Python<'py>, lam: f64, alpha: f64, beta: f64, abar: f64, x: PyReadonlyArray1<'py, f64>) -> PyResult<Bound<'py, PyDict>> {
+#[pyo3(signature = (lam, alpha, beta, abar, x, points))]
+fn profile_dict<'py>(
+    py: Python<'py>,
+    lam: f64,
+    alpha: f64,
+    beta: f64,
+    abar: f64,
+    x: Option<PyReadonlyArray1<'py, f64>>,
+    points: usize,
+) -> PyResult<Bound<'py, PyDict>> {
     let p = params(lam, alpha, beta)?;
-    let xs = slice(&x, "x")?;
-    let state = py.detach(|| sample_state_at(p, abar, xs)).map_err(|e| match e.at {
+    let xs = x.as_ref().map(|x| slice(x, "x")).transpose()?;
+    let state = py
+        .detach(|| match xs {
+            Some(xs) => sample_state_at(p, abar, xs),
+            None => sample_state(p, abar, None, points),
+        })
+        .map_err(|e| match e.at {
         At::Sample { xbar } => PyValueError::new_err(format!("profile at xbar={xbar:?}: {}", e.error)),
         _ => lib_error(e.error),
     })?;
@@ -561,7 +576,7 @@ fn profile_dict<'py>(py: Python<'py>, lam: f64, alpha: f64, beta: f64, abar: f64
     out.set_item("max_traction", v.max_traction)?;
     out.set_item("max_traction_at", v.max_traction_at)?;
     let samples = PyDict::new(py);
-    samples.set_item("xbar", PyArray1::from_slice(py, xs))?;
+    samples.set_item("xbar", PyArray1::from_vec(py, column(|s| s.xbar)))?;
     for (key, col) in [("pbar", pbar), ("ubar", ubar), ("gbar", gbar), ("hbar", hbar)] {
         samples.set_item(key, PyArray1::from_vec(py, col))?;
     }
