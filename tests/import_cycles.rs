@@ -39,16 +39,6 @@ const KNOWN_CYCLES: &[(&[&str], &str)] = &[
         // displacement uses wave_bounded's CertifiedBessel, wave_bounded displacement's bessel_terms
         "issue 26: contact/displacement/ absorbs wave_bounded",
     ),
-    (
-        &[
-            "src/special/meijer_g.rs",
-            "src/special/meijer_g_dd.rs",
-            "src/special/meijer_g_family.rs",
-            "src/special/meijer_g_native.rs",
-        ],
-        // meijer_g, its family, native and dd paths import each other (family <-> meijer_g, native <-> dd)
-        "issue 26: special/meijer_g/ as one folder",
-    ),
 ];
 
 /// A token of stripped Rust source: an identifier, `::`, or one punctuation character.
