@@ -11,9 +11,12 @@
 use rug::Float;
 
 use crate::ball::{Ball, Mag, MAG_PREC};
-use crate::error::{Error, Result};
+use crate::error::{Error, Interval, Result};
 
 use super::constants::MeijerConstants;
+
+/// The arguments of the direct series, `0 < y < 1` (its tail bound needs `y < 1`).
+const Y_DIRECT: Interval = Interval { lo: 0.0, hi: 1.0, lo_closed: false, hi_closed: false };
 
 /// `G(k, y)` by the direct series at working precision `wp`.
 pub fn meijer_g_k_direct(k: u32, y: &Float, wp: u32) -> Result<Ball> {
@@ -27,7 +30,7 @@ pub fn meijer_g_k_direct(k: u32, y: &Float, wp: u32) -> Result<Ball> {
 pub(super) fn direct_sum(k: u32, yb: &Ball, wp: u32) -> Result<Ball> {
     let y_up = yb.upper();
     if y_up >= 1 {
-        return Err(Error::Domain { what: "the direct series needs y < 1".into() });
+        return Err(Error::OutOfRange { arg: "y (the direct series)", value: y_up.to_f64(), allowed: Y_DIRECT });
     }
     let b2 = 2 * k as i64 + 1; // 2b
     let c2 = 2 * k as i64 + 4; // 2c
@@ -68,7 +71,7 @@ pub fn direct_sums_sweep(kmax: u32, yb: &Ball, wp: u32) -> Result<Vec<Ball>> {
     crate::error::check_working_prec(wp)?;
     let y_up = yb.upper();
     if y_up >= 1 {
-        return Err(Error::Domain { what: "the direct series needs y < 1".into() });
+        return Err(Error::OutOfRange { arg: "y (the direct series)", value: y_up.to_f64(), allowed: Y_DIRECT });
     }
     let top = kmax as i64;
     // H_top = sum_n (b)_n/(c')_n y^n, b = top + 1/2, c' = top + 3: ratio y (2b + 2n)/(2c' + 2n)

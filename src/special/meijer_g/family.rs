@@ -46,7 +46,7 @@
 
 use crate::ball::cpu_dispatch;
 use crate::ball::{BoundedDd, Bounded, ExactProduct};
-use crate::error::{Error, Result};
+use crate::error::{Error, Interval, Result};
 use super::dd::{ln_dd, near_one_dd, s_dd, DdConstants, Y_DD_MIN};
 use super::native::{dd_constants, TABLE_K_MAX};
 use super::{meijer_g_k_bounded, MAX_K, NATIVE_REL_TOL, Y_NATIVE_MAX};
@@ -67,7 +67,7 @@ const MAX_TERMS: u64 = 20_000;
 pub fn meijer_g_k_family_f64(kmax: u32, y: f64) -> Result<Vec<Bounded>> {
     crate::error::finite(y, "y")?;
     if !(y > 0.0 && y <= 1.0) {
-        return Err(Error::Domain { what: "meijer_g_k_family_f64 needs 0 < y <= 1 (y = (a/x)^2 with x >= a)".into() });
+        return Err(Error::OutOfRange { arg: "y (= (a/x)^2 with x >= a)", value: y, allowed: Interval::left_open(0.0, 1.0) });
     }
     if kmax > MAX_K {
         let max = MAX_K as i64;

@@ -89,7 +89,7 @@ pub use near_one::{meijer_g_k_at_one, meijer_g_k_at_one_with, meijer_g_k_near_on
 pub use slater::meijer_g33_slater_mp;
 
 use crate::ball::{Ball, Bounded};
-use crate::error::{Error, Result};
+use crate::error::{Error, Interval, Result};
 use crate::special::{check_finite, exact, f64_from_mp, ziv, DEFAULT_GUARD_BITS};
 
 /// Largest `k` accepted.
@@ -144,7 +144,7 @@ fn validate(k: u32, y: &Float) -> Result<()> {
         return Err(Error::IntegerOutOfRange { arg: "k", value: k as i64, min: 0, max: MAX_K as i64 });
     }
     if !(*y > 0 && *y <= 1) {
-        return Err(Error::Domain { what: "meijer_g_k needs 0 < y <= 1 (y = (a/x)^2 with x >= a)".into() });
+        return Err(Error::OutOfRange { arg: "y (= (a/x)^2 with x >= a)", value: y.to_f64(), allowed: Interval::left_open(0.0, 1.0) });
     }
     Ok(())
 }

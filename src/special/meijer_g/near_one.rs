@@ -11,7 +11,7 @@
 use rug::Float;
 
 use crate::ball::{Ball, Mag};
-use crate::error::{Error, Result};
+use crate::error::{Error, Interval, Result};
 use crate::special::exact_sub;
 
 use super::constants::MeijerConstants;
@@ -29,7 +29,7 @@ pub fn near_one_sums_sweep(kmax: u32, w: &Ball, wp: u32) -> Result<Vec<Ball>> {
     crate::error::check_working_prec(wp)?;
     let w = if w.lower() < 0 { Ball::hull(&Float::new(wp), &w.upper(), wp) } else { w.clone() };
     if w.upper() > 0.5 {
-        return Err(Error::Domain { what: "the near-one sweep needs 1 - y <= 1/2".into() });
+        return Err(Error::OutOfRange { arg: "w = 1 - y (the near-one sweep)", value: w.upper().to_f64(), allowed: Interval::closed(0.0, 0.5) });
     }
     let yb = Ball::one(wp).sub(&w);
     let c0 = MeijerConstants::new(0, wp)?;
@@ -75,7 +75,7 @@ pub fn near_one_sums_sweep(kmax: u32, w: &Ball, wp: u32) -> Result<Vec<Ball>> {
 pub fn meijer_g_k_near_one(k: u32, y: &Float, wp: u32) -> Result<Ball> {
     crate::error::check_working_prec(wp)?;
     if *y < 0.5 {
-        return Err(Error::Domain { what: "the near-one expansion needs y >= 1/2".into() });
+        return Err(Error::OutOfRange { arg: "y (the near-one expansion)", value: y.to_f64(), allowed: Interval::closed(0.5, 1.0) });
     }
     // w = 1 - y exactly.
     let w_exact = exact_sub(&Float::with_val(2, 1), y);
@@ -88,7 +88,7 @@ pub fn meijer_g_k_near_one_ball(consts: &MeijerConstants, w: &Ball, wp: u32) -> 
     let k = consts.k;
     let w = if w.lower() < 0 { Ball::hull(&Float::new(wp), &w.upper(), wp) } else { w.clone() };
     if w.upper() > 0.5 {
-        return Err(Error::Domain { what: "the near-one expansion needs 1 - y <= 1/2".into() });
+        return Err(Error::OutOfRange { arg: "w = 1 - y (the near-one expansion)", value: w.upper().to_f64(), allowed: Interval::closed(0.0, 0.5) });
     }
     let kw = (k as f64) * w.upper().to_f64();
     let kk = k as i64;

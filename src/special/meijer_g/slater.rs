@@ -8,7 +8,7 @@
 use rug::Float;
 
 use crate::ball::Ball;
-use crate::error::{Error, Result};
+use crate::error::{Error, Interval, Result};
 use crate::special::pfq::pfq_series;
 use crate::special::{exact, exact_add, exact_sub};
 
@@ -24,7 +24,7 @@ pub fn meijer_g33_slater_mp(a: [f64; 3], b: [f64; 3], z: f64, wp: u32) -> Result
         crate::error::finite(v, "Meijer G argument")?;
     }
     if !(z > -1.0 && z < 0.0) {
-        return Err(Error::Domain { what: "Slater's sum is implemented for -1 < z < 0".into() });
+        return Err(Error::OutOfRange { arg: "z (Slater's sum)", value: z, allowed: Interval { lo: -1.0, hi: 0.0, lo_closed: false, hi_closed: false } });
     }
     let ae: Vec<Float> = a.iter().map(|&v| exact(v)).collect();
     let be: Vec<Float> = b.iter().map(|&v| exact(v)).collect();
