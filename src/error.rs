@@ -207,6 +207,42 @@ pub enum Error {
         /// The working precision of the nodes.
         prec: u32,
     },
+    /// The wave displacement asked inside the contact: it is defined for `x >= a`.
+    InsideContact {
+        /// The point given (rounded to f64).
+        x: f64,
+        /// The contact half-width (rounded to f64).
+        a: f64,
+    },
+    /// Input balls over which `x - a` reaches below zero: inside the contact
+    /// (`upper < 0`), or the contact edge `x = a` within the balls, where `u_w` is
+    /// defined on one side only and `du_w/dx` is one-sided. Give `x = a` exactly,
+    /// or balls that keep `x - a > 0`.
+    ContactEdgeInBall {
+        /// The function.
+        function: &'static str,
+        /// The lower end of `x - a` over the balls (rounded down to f64).
+        lower: f64,
+        /// The upper end of `x - a` over the balls (rounded up to f64).
+        upper: f64,
+    },
+    /// A route whose precision is capped below [`crate::MAX_PREC`] (a double
+    /// integral, whose cost grows too fast beyond the cap).
+    RoutePrecision {
+        /// The route.
+        route: &'static str,
+        /// The precision asked for.
+        requested: u32,
+        /// The largest precision the route takes.
+        max: u32,
+    },
+    /// An output slice whose length differs from the input slice's.
+    LengthMismatch {
+        /// How many inputs.
+        inputs: usize,
+        /// Room for how many results.
+        outputs: usize,
+    },
 }
 
 impl fmt::Display for Error {
@@ -305,6 +341,24 @@ impl fmt::Display for Error {
                 "the interval is too narrow for {prec}-bit nodes (its midpoint rounds onto an endpoint); \
                  use a higher precision or integrate over the complement"
             ),
+            Error::InsideContact { x, a } => write!(f, "the wave displacement is for x >= a (got x = {x:?} < a = {a:?})"),
+            Error::ContactEdgeInBall { function, lower, upper } => {
+                if *upper < 0.0 {
+                    write!(f, "{function}: the wave displacement is for x >= a (x - a lies in [{lower:e}, {upper:e}])")
+                } else {
+                    write!(
+                        f,
+                        "{function}: the contact edge x = a lies within the input balls (x - a in [{lower:e}, {upper:e}]): \
+                         u_w is defined for x >= a only and du_w/dx is one-sided there; give x = a exactly or balls with x - a > 0"
+                    )
+                }
+            }
+            Error::RoutePrecision { route, requested, max } => {
+                write!(f, "{route} takes prec <= {max} bits (got {requested})")
+            }
+            Error::LengthMismatch { inputs, outputs } => {
+                write!(f, "{inputs} points but room for {outputs} results (make the lengths equal)")
+            }
         }
     }
 }
@@ -319,7 +373,9 @@ impl Error {
     }
 
     /// Whether the error says that an argument lies outside the function's domain
-    /// ([`Error::Domain`], [`Error::OutOfRange`], [`Error::BallOutOfRange`]): the
+    /// ([`Error::Domain`], [`Error::OutOfRange`], [`Error::BallOutOfRange`],
+    /// [`Error::ParameterPole`], [`Error::Divergent`], [`Error::BallTooWide`],
+    /// [`Error::InsideContact`], [`Error::ContactEdgeInBall`]): the
     /// errors a tighter input ball may avoid.
     pub fn is_domain(&self) -> bool {
         matches!(
@@ -330,6 +386,8 @@ impl Error {
                 | Error::ParameterPole { .. }
                 | Error::Divergent { .. }
                 | Error::BallTooWide { .. }
+                | Error::InsideContact { .. }
+                | Error::ContactEdgeInBall { .. }
         )
     }
 }

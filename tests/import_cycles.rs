@@ -33,23 +33,7 @@ use std::path::{Path, PathBuf};
 /// The cycles that exist today, each as the sorted set of its files (paths from
 /// the workspace root). Issue 26 item 2 removes them; delete an entry when its
 /// cycle is gone (the test says so).
-const KNOWN_CYCLES: &[(&[&str], &str)] = &[
-    (
-        &["src/contact/displacement.rs", "src/contact/wave_bounded.rs"],
-        // displacement uses wave_bounded's CertifiedBessel, wave_bounded displacement's bessel_terms
-        "issue 26: contact/displacement/ absorbs wave_bounded",
-    ),
-    (
-        &[
-            "src/special/meijer_g.rs",
-            "src/special/meijer_g_dd.rs",
-            "src/special/meijer_g_family.rs",
-            "src/special/meijer_g_native.rs",
-        ],
-        // meijer_g, its family, native and dd paths import each other (family <-> meijer_g, native <-> dd)
-        "issue 26: special/meijer_g/ as one folder",
-    ),
-];
+const KNOWN_CYCLES: &[(&[&str], &str)] = &[];
 
 /// A token of stripped Rust source: an identifier, `::`, or one punctuation character.
 #[derive(Clone, Debug, PartialEq)]

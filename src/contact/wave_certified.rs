@@ -78,7 +78,7 @@
 //! cross-check against); docs/displacement.md, Route 3 (the corrected Eq. 11a);
 //! docs/quadrature.md (the certified integrator).
 
-use rug::Float;
+use rug::float::Round;
 
 use crate::ball::{Ball, CBall, Mag};
 use crate::error::{check_prec, Error, Interval, Result};
@@ -114,19 +114,11 @@ struct Geometry {
     at_edge: bool,
 }
 
-/// `[lo, hi]` of a ball, 4 digits each, for error messages.
-fn interval(v: &Ball) -> String {
-    let end = |f: Float| f.to_string_radix(10, Some(4));
-    format!("[{}, {}]", end(v.lower()), end(v.upper()))
-}
-
 /// Checks the inputs and builds the geometry at `wp` bits.
 fn geometry(a: &Ball, zeta: &Ball, amp: &Ball, x: &Ball, prec: u32, wp: u32) -> Result<Geometry> {
     check_prec(prec)?;
     if prec > MAX_CERTIFIED_PREC {
-        return Err(Error::Domain {
-            what: format!("the certified Eq. 11a route takes prec <= {MAX_CERTIFIED_PREC} bits (got {prec}): a double integral"),
-        });
+        return Err(Error::RoutePrecision { route: "the certified Eq. 11a route (a double integral)", requested: prec, max: MAX_CERTIFIED_PREC });
     }
     for (v, what) in [(a, "a"), (zeta, "zeta"), (amp, "amp"), (x, "x")] {
         if !v.is_finite() {
@@ -142,12 +134,8 @@ fn geometry(a: &Ball, zeta: &Ball, amp: &Ball, x: &Ball, prec: u32, wp: u32) -> 
     let xma = x.sub(&a);
     let at_edge = xma.is_exact() && xma.mid().is_zero();
     if !at_edge && !(xma.lower() > 0) {
-        return Err(Error::Domain {
-            what: format!(
-                "the wave displacement is for x > a, or x = a exactly (x - a lies in {}; the edge may not lie inside the balls)",
-                interval(&xma)
-            ),
-        });
+        let (lower, upper) = (xma.lower().to_f64_round(Round::Down), xma.upper().to_f64_round(Round::Up));
+        return Err(Error::ContactEdgeInBall { function: "the Eq. 11a route (u_wave_quad_ball, du_wave_quad_ball)", lower, upper });
     }
     Ok(Geometry { rho: xma.div(&a)?, cos_phi: a.div(&x)?, eps: xma.div(&x)?, d, at_edge })
 }
@@ -361,7 +349,7 @@ pub fn du_wave_quad_ball(a: &Ball, zeta: &Ball, amp: &Ball, x: &Ball, prec: u32)
 pub fn traction_integral_ball(d: &Ball, c: &Ball, prec: u32) -> Result<Ball> {
     check_prec(prec)?;
     if prec > MAX_CERTIFIED_PREC {
-        return Err(Error::Domain { what: format!("the certified traction integral takes prec <= {MAX_CERTIFIED_PREC} bits (got {prec})") });
+        return Err(Error::RoutePrecision { route: "the certified traction integral", requested: prec, max: MAX_CERTIFIED_PREC });
     }
     for (v, what) in [(d, "D"), (c, "c")] {
         if !v.is_finite() {
@@ -396,22 +384,23 @@ pub fn traction_integral_ball(d: &Ball, c: &Ball, prec: u32) -> Result<Ball> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use rug::Float;
 
     #[test]
     fn bad_inputs_are_typed_errors() {
         let b = |v: f64| Ball::from_f64(v, 64).unwrap();
         let (a, z, m) = (b(1.0), b(1.0), b(1.0));
-        assert!(matches!(u_wave_quad_ball(&a, &z, &m, &b(0.5), 64), Err(Error::Domain { .. })));
+        assert!(matches!(u_wave_quad_ball(&a, &z, &m, &b(0.5), 64), Err(Error::ContactEdgeInBall { .. })));
         assert!(matches!(du_wave_quad_ball(&b(-1.0), &z, &m, &b(2.0), 64), Err(Error::BallOutOfRange { .. })));
         assert!(matches!(u_wave_quad_ball(&a, &b(0.0), &m, &b(2.0), 64), Err(Error::BallOutOfRange { .. })));
         assert!(matches!(u_wave_quad_ball(&a, &b(1e-3), &m, &b(2.0), 64), Err(Error::BallOutOfRange { .. })));
-        assert!(matches!(u_wave_quad_ball(&a, &z, &m, &b(2.0), 5000), Err(Error::Domain { .. })));
+        assert!(matches!(u_wave_quad_ball(&a, &z, &m, &b(2.0), 5000), Err(Error::RoutePrecision { .. })));
         assert!(matches!(u_wave_quad_ball(&a, &z, &m, &b(2.0), 1), Err(_)));
         let nan = Ball::with_mag(Float::with_val(64, rug::float::Special::Nan), Mag::ZERO);
         assert!(matches!(u_wave_quad_ball(&a, &z, &m, &nan, 64), Err(Error::NonFinite { .. })));
         // the edge inside the balls
         let x = Ball::with_mag(Float::with_val(64, 1), Mag::from_f64(1e-3));
-        assert!(matches!(du_wave_quad_ball(&a, &z, &m, &x, 64), Err(Error::Domain { .. })));
+        assert!(matches!(du_wave_quad_ball(&a, &z, &m, &x, 64), Err(Error::ContactEdgeInBall { .. })));
         assert!(matches!(traction_integral_ball(&b(-1.0), &b(0.5), 64), Err(Error::BallOutOfRange { .. })));
     }
 }

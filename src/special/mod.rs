@@ -44,9 +44,6 @@ pub(crate) mod gamma;
 pub mod hyp1f2;
 pub mod hyp2f1;
 pub mod meijer_g;
-pub(crate) mod meijer_g_dd;
-pub(crate) mod meijer_g_family;
-pub mod meijer_g_native;
 pub mod pfq;
 
 use rug::float::Round;

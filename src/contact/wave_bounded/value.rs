@@ -41,7 +41,9 @@
 //! Where it does not apply (no fused multiply-add, `x/a > 25/7`, `D` beyond
 //! the table) it returns `None` and the caller uses the previous route.
 
-use super::{bessel_tails, div_p, has_fma, ln_upper, neg_ln, T_MAX, TWO_PI_ERR};
+use super::certified::bessel_tails;
+use super::kernels::{div_p, has_fma, ln_upper, neg_ln};
+use super::{T_MAX, TWO_PI_ERR};
 use crate::ball::{two_sum, BoundedDd, Dd, Fused};
 
 /// The table of `N(D)` covers `D <= D_MAX_TABLE` in steps of `1/D_STEPS`.

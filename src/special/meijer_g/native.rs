@@ -1,11 +1,11 @@
 //! `G(k, y)` in f64 with a proven error bound (the native path of
-//! [`meijer_g_k_bounded`](super::meijer_g::meijer_g_k_bounded)).
+//! [`meijer_g_k_bounded`](super::meijer_g_k_bounded)).
 //!
 //! # Method
 //!
 //! `G(k, y) = C_k B(y)`, `B = (-ln y - S(y) + P_k)/2`, `P_k = psi(k+2) - psi(k+1/2)`,
 //! `S(y) = sum_{n>=1} r_n/n`, `r_n = r_{n-1} y (2k+2n-1)/(2k+2n+2)`, `r_0 = 1`
-//! (module docs of [`super::meijer_g`]); at `y = 1`, `G = C_k B_k(1)`.
+//! (module docs of [`super`]); at `y = 1`, `G = C_k B_k(1)`.
 //!
 //! * `C_k`, `P_k`, `B_k(1)` for `k <= TABLE_K_MAX`: certified balls at 128 bits
 //!   (MPFR gamma/digamma at `k = 0`, then the exact recurrences of
@@ -32,7 +32,7 @@
 //!   inflated by `1 + 2^-30` for its own roundings.
 //!
 //! * Near `y = 1` with `k (1 - y) <= 1.25` ([`near_one_f64`]): the near-one expansion
-//!   of [`super::meijer_g_dd`] (`G = C_k B_k(1) + C_k (k+1) I1(w) - 2 sqrt(pi) w^{3/2} I2'(w)`,
+//!   of [`super::dd`] (`G = C_k B_k(1) + C_k (k+1) I1(w) - 2 sqrt(pi) w^{3/2} I2'(w)`,
 //!   `w = 1 - y` exact) in f64, its recurrences counted in roundings as the
 //!   series above and both sums compensated; the parts grow like `e^{k w}`
 //!   before they cancel, so its bound is `1e-14` relative up to `k w ~ 1`.
@@ -44,7 +44,7 @@
 //! the f64 sums miss that (next to the zero of `G(k, .)`, `k >= 2`, where `B`
 //! cancels) and for `Y_NATIVE_MAX < y < 1` (the direct series converges slowly;
 //! the near-one expansion cancels by `e^{k w}`), the double-double paths of
-//! `meijer_g_dd.rs` run (0.5-4 us). Left to MP (counted by the caller):
+//! `dd.rs` run (0.5-4 us). Left to MP (counted by the caller):
 //! `k > TABLE_K_MAX`, and the two to four f64 `y` next to a zero of `G(k, .)`
 //! (`|G| <~ 1e-16`), where even the double-double bound (absolute, `~1e-30`)
 //! is not `1e-14` relative.
@@ -52,15 +52,13 @@
 use std::sync::OnceLock;
 
 use crate::ball::{Ball, Bounded, BoundedDd, Dd};
-use crate::special::meijer_g_dd::{meijer_g_k_dd, DdConstants};
-use crate::special::meijer_g::MeijerConstants;
+use super::constants::MeijerConstants;
+use super::dd::{meijer_g_k_dd, DdConstants};
+pub use super::Y_NATIVE_MAX;
 
 /// Largest `k` of the constants table.
 pub const TABLE_K_MAX: u32 = 1000;
 
-/// Largest `y < 1` of the f64 series (about `ln(2^-60)/ln(y) = 1300` terms at 0.97);
-/// above it the double-double near-one expansion runs.
-pub const Y_NATIVE_MAX: f64 = 0.97;
 
 /// Cap on the terms of the native series (`y = 0.97` needs about 1300).
 const MAX_TERMS: u64 = 4000;
@@ -283,7 +281,7 @@ pub const NEAR_ONE_F64_MAX_KW: f64 = 1.25;
 pub const NEAR_ONE_F64_MIN_Y: f64 = 0.85;
 
 /// `G(k, 1 - w)` by the near-one expansion (module docs of
-/// [`super::meijer_g_dd`]: `G = C_k B_k(1) + C_k (k+1) I1(w) - 2 sqrt(pi) w^{3/2} I2'(w)`)
+/// [`super::dd`]: `G = C_k B_k(1) + C_k (k+1) I1(w) - 2 sqrt(pi) w^{3/2} I2'(w)`)
 /// in f64 with a proven bound, `0 < w <= 1/2` exact.
 ///
 /// * `I1 = sum_j w g_j/(j+1)`, `g_j = w g_{j-1} + rho_j`, `rho_j = rho_{j-1} fl(fl(w a_j)/b_j)`,
@@ -368,7 +366,7 @@ fn near_one_f64(tables: &Tables, k: u32, w: f64) -> Option<Bounded> {
 /// with `k (1 - y) <= NEAR_ONE_F64_MAX_KW`; the f64 sums (`y <= Y_NATIVE_MAX`, or the value at `y = 1`); if their
 /// bound misses `rel_tol` (next to the zero of `G(k, .)`), the double-double
 /// direct formula; for `Y_NATIVE_MAX < y < 1` the double-double near-one
-/// expansion (`meijer_g_dd.rs`).
+/// expansion (`dd.rs`).
 pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Option<Bounded> {
     if k > TABLE_K_MAX {
         return None;

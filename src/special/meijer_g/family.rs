@@ -3,7 +3,7 @@
 //!
 //! # Method
 //!
-//! The recurrences of [`super::meijer_g::direct_sums_sweep`], run in double words
+//! The recurrences of [`super::direct_sums_sweep`], run in double words
 //! ([`BoundedDd`], whose running bound is the error analysis: every operation
 //! is charged `8-16 u^2` of its operands, `u = 2^-53`, see
 //! `src/ball/dd_bounded.rs`). With `H_k = 2F1(1, k+1/2; k+3; y)`:
@@ -27,7 +27,7 @@
 //!   `t_N y/(1-y)`), both stopped at `2^-104` relative.
 //! * `Y_NATIVE_MAX < y < 1`: `S_0 = -ln y + P_0 - 2 G(0, y)/C_0` from the
 //!   double-word near-one expansion of `G(0, .)`; `H_kmax` by the `1-z`
-//!   connection formula [DLMF 15.8.4] as in [`super::meijer_g::near_one_sums_sweep`]:
+//!   connection formula [DLMF 15.8.4] as in [`super::near_one_sums_sweep`]:
 //!   `H_K = (2(K+2)/3) 2F1(1, K+1/2; -1/2; w) + (4 sqrt(pi)/3) ((K+2)/C_K) w^{3/2} y^{-K-2}`
 //!   (with `2 sqrt(pi)` from the table: `(8 sqrt(pi)/3) = (4/3) (2 sqrt(pi))`); the
 //!   series has ratio `w (2K+1+2n)/(2n-1)`, decreasing for `n >= 1`, so its tail
@@ -37,7 +37,7 @@
 //!
 //! Each value is rounded to f64 with its bound; where that bound is not
 //! `1e-14` relative (the f64 `y` next to a zero of `G(k, .)`, `y < Y_DD_MIN`,
-//! `k > 1000`) the per-`k` [`super::meijer_g::meijer_g_k_bounded`] takes over
+//! `k > 1000`) the per-`k` [`super::meijer_g_k_bounded`] takes over
 //! for that `k` (its own native paths, then MP), so every returned bound is
 //! `1e-14` relative and proven.
 //!
@@ -46,10 +46,10 @@
 
 use crate::ball::cpu_dispatch;
 use crate::ball::{BoundedDd, Bounded, ExactProduct};
-use crate::error::{Error, Result};
-use crate::special::meijer_g::{meijer_g_k_bounded, NATIVE_REL_TOL};
-use crate::special::meijer_g_dd::{ln_dd, near_one_dd, s_dd, DdConstants, Y_DD_MIN};
-use crate::special::meijer_g_native::{dd_constants, TABLE_K_MAX, Y_NATIVE_MAX};
+use crate::error::{Error, Interval, Result};
+use super::dd::{ln_dd, near_one_dd, s_dd, DdConstants, Y_DD_MIN};
+use super::native::{dd_constants, TABLE_K_MAX};
+use super::{meijer_g_k_bounded, MAX_K, NATIVE_REL_TOL, Y_NATIVE_MAX};
 
 /// Tail bound of the start series relative to their sums (`2^-104`).
 const TAIL_REL: f64 = 4.930380657631324e-32;
@@ -59,7 +59,7 @@ const MAX_TERMS: u64 = 20_000;
 
 /// `G(k, y)` for `k = 0..=kmax`, each in f64 with a proven bound
 /// `|G(k, y) - value| <= err <= 1e-14 |value|` (see the module docs for the
-/// method). `0 < y <= 1`, `kmax <= MAX_K` of [`super::meijer_g`].
+/// method). `0 < y <= 1`, `kmax <= MAX_K` of [`super`].
 ///
 /// # Errors
 /// [`Error::NonFinite`] for a NaN or infinite `y`; [`Error::Domain`] for `y`
@@ -67,10 +67,10 @@ const MAX_TERMS: u64 = 20_000;
 pub fn meijer_g_k_family_f64(kmax: u32, y: f64) -> Result<Vec<Bounded>> {
     crate::error::finite(y, "y")?;
     if !(y > 0.0 && y <= 1.0) {
-        return Err(Error::Domain { what: "meijer_g_k_family_f64 needs 0 < y <= 1 (y = (a/x)^2 with x >= a)".into() });
+        return Err(Error::OutOfRange { arg: "y (= (a/x)^2 with x >= a)", value: y, allowed: Interval::left_open(0.0, 1.0) });
     }
-    if kmax > crate::special::meijer_g::MAX_K {
-        let max = crate::special::meijer_g::MAX_K as i64;
+    if kmax > MAX_K {
+        let max = MAX_K as i64;
         return Err(Error::IntegerOutOfRange { arg: "kmax", value: kmax as i64, min: 0, max });
     }
     let top = kmax.min(TABLE_K_MAX);
@@ -243,7 +243,7 @@ mod tests {
             let fam = family_dd(1000, y).unwrap();
             for k in [0u32, 1, 2, 5, 100, 999, 1000] {
                 let c = dd_constants(k).unwrap();
-                let per_k = crate::special::meijer_g_dd::meijer_g_k_dd(k, y, &c).unwrap();
+                let per_k = crate::special::meijer_g::dd::meijer_g_k_dd(k, y, &c).unwrap();
                 let a = fam[k as usize];
                 let diff = ((a.v.hi - per_k.v.hi) + (a.v.lo - per_k.v.lo)).abs();
                 assert!(diff <= a.e + per_k.e, "y={y} k={k}: {a:?} vs {per_k:?}");
@@ -258,7 +258,7 @@ mod tests {
         assert!(meijer_g_k_family_f64(5, 1.5).is_err());
         assert!(meijer_g_k_family_f64(5, f64::NAN).is_err());
         assert!(meijer_g_k_family_f64(5, f64::INFINITY).is_err());
-        assert!(meijer_g_k_family_f64(crate::special::meijer_g::MAX_K + 1, 0.5).is_err());
+        assert!(meijer_g_k_family_f64(MAX_K + 1, 0.5).is_err());
         let fam = meijer_g_k_family_f64(1003, 0.5).unwrap();
         let b = fam[1003];
         let reference = meijer_g_k_mp(1003, &exact(0.5), 200).unwrap();

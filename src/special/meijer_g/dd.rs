@@ -1,5 +1,5 @@
 //! `G(k, y)` in double-double with a proven bound: the two native paths that the
-//! f64 sums of [`super::meijer_g_native`] cannot certify.
+//! f64 sums of [`super::native`] cannot certify.
 //!
 //! # Method
 //!
@@ -33,7 +33,7 @@
 //! * **Near the singular point** `y > Y_NATIVE_MAX`, and below it for `y > 1/2`
 //!   where `k (1 - y) <= 6` and it costs fewer terms than the direct series
 //!   (the zeros of `G(2, .)`, `G(3, .)` at `y ~ 0.81`, `0.70`; [`near_one_dd`]): the
-//!   expansion in `w = 1 - y` of [`super::meijer_g`] (module docs, region
+//!   expansion in `w = 1 - y` of [`super`] (module docs, region
 //!   NearOne), `G = C_k B_k(1) + C_k (k+1) I1(w) - 2 sqrt(pi) w^{3/2} I2'(w)`,
 //!   `I1 = sum_j h_j w^{j+1}/(j+1)`, `h_j = sum_{i<=j} r_i`,
 //!   `r_{i+1} = r_i (2k+1+2i)/(1+2i)`, `I2' = sum_j c_j w^j 2/(2j+3)`,
@@ -58,7 +58,7 @@
 
 use crate::ball::cpu_dispatch;
 use crate::ball::{two_sum, BoundedDd, Dd, ExactProduct};
-use crate::special::meijer_g_native::Y_NATIVE_MAX;
+use super::Y_NATIVE_MAX;
 
 /// Smallest `y` of the double-double direct path (its zeros lie in `(1/2, 0.81)`;
 /// far below, `y^n` would leave the normal range of the error-free products).
@@ -287,7 +287,7 @@ mod tests {
     use super::*;
     use crate::special::exact;
     use crate::special::meijer_g::meijer_g_k_mp;
-    use crate::special::meijer_g_native::meijer_g_k_native_bounded;
+    use crate::special::meijer_g::native::meijer_g_k_native_bounded;
     use rug::Float;
 
     fn dd_value(b: BoundedDd) -> Float {
@@ -355,7 +355,7 @@ mod tests {
                     assert!(d.to_f64() <= 1e-14 * b.value.abs(), "k={k} y={y}");
                 }
                 // the dd path's bound holds even where it is not relative (|G| ~ 1e-17)
-                let c = crate::special::meijer_g_native::dd_constants(k).unwrap();
+                let c = crate::special::meijer_g::native::dd_constants(k).unwrap();
                 let dd = meijer_g_k_dd(k, y, &c).unwrap().finish().unwrap();
                 let d = Float::with_val(300, reference.mid() - dd.value).abs();
                 assert!(d <= dd.err, "dd k={k} y={y}: {dd} vs {reference:?}");
@@ -395,7 +395,7 @@ mod tests {
     fn fused_and_portable_products_agree_bit_for_bit() {
         let tables_k = [0u32, 2, 47, 1000];
         for &k in &tables_k {
-            let c = crate::special::meijer_g_native::dd_constants(k).unwrap();
+            let c = crate::special::meijer_g::native::dd_constants(k).unwrap();
             for &y in &[0.5, 0.8071359266607433, 0.97, 0.975, 0.999999] {
                 let (a, b) = (meijer_g_k_dd(k, y, &c).unwrap(), meijer_g_k_dd_portable(k, y, &c).unwrap());
                 assert_eq!((a.v.hi, a.v.lo, a.e), (b.v.hi, b.v.lo, b.e), "k={k} y={y}");
@@ -429,7 +429,7 @@ mod tests {
     }
 
     fn meijer_g_native_dd(k: u32, y: f64) -> Option<crate::ball::Bounded> {
-        let c = crate::special::meijer_g_native::dd_constants(k).unwrap();
+        let c = crate::special::meijer_g::native::dd_constants(k).unwrap();
         meijer_g_k_dd(k, y, &c)?.finish()
     }
 }
