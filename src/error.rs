@@ -236,6 +236,27 @@ pub enum Error {
         /// The largest precision the route takes.
         max: u32,
     },
+    /// A scale of the material (`l_h`, `l_v`, the load or stress scale) that is not
+    /// a finite positive f64.
+    ScaleNotRepresentable {
+        /// The scale.
+        scale: &'static str,
+        /// `E*` in Pa.
+        e_star: f64,
+        /// `R` in m.
+        radius: f64,
+        /// The work of adhesion in J/m^2.
+        dgamma: f64,
+    },
+    /// An evaluation whose cheapest method would run past the time limit.
+    TooExpensive {
+        /// The function and arguments (`"J_n(x)"`).
+        function: &'static str,
+        /// The estimated run time in seconds.
+        seconds: f64,
+        /// The limit in seconds.
+        limit_seconds: f64,
+    },
     /// An output slice whose length differs from the input slice's.
     LengthMismatch {
         /// How many inputs.
@@ -356,6 +377,16 @@ impl fmt::Display for Error {
             Error::RoutePrecision { route, requested, max } => {
                 write!(f, "{route} takes prec <= {max} bits (got {requested})")
             }
+            Error::ScaleNotRepresentable { scale, e_star, radius, dgamma } => write!(
+                f,
+                "{scale} of E* = {e_star:e} Pa, R = {radius:e} m, dgamma = {dgamma:e} J/m^2 is not a finite positive f64 \
+                 (overflow or underflow): the material values are too extreme"
+            ),
+            Error::TooExpensive { function, seconds, limit_seconds } => write!(
+                f,
+                "{function} would take about {seconds:.0} s with the cheapest method, past the limit of about \
+                 {limit_seconds:.0} s; lower the precision"
+            ),
             Error::LengthMismatch { inputs, outputs } => {
                 write!(f, "{inputs} points but room for {outputs} results (make the lengths equal)")
             }

@@ -84,7 +84,7 @@ impl Scales {
         let s = Scales { horizontal, vertical, load, stress, energy: g * horizontal };
         for (v, what) in [(horizontal, "l_h"), (vertical, "l_v"), (load, "the load scale"), (stress, "the stress scale")] {
             if !(v.is_finite() && v > 0.0) {
-                return Err(Error::Overflow { what: format!("{what} of E* = {e:e} Pa, R = {r:e} m, dgamma = {g:e} J/m^2") });
+                return Err(Error::ScaleNotRepresentable { scale: what, e_star: e, radius: r, dgamma: g });
             }
         }
         Ok(s)

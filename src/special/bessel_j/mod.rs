@@ -409,14 +409,7 @@ pub const MAX_COST: f64 = 6.0e10;
 fn check_cost(m: u64, x: f64, prec: u32) -> Result<u32> {
     let c = choose(m, x, prec + 32);
     if !(c.cost <= MAX_COST) {
-        return Err(Error::Domain {
-            what: format!(
-                "J_n(x) with n = {m}, x = {x:e} at {prec} bits would take about {:.0} s with the cheapest \
-                 method ({:?}), past the time limit of about a minute; lower the precision",
-                c.cost * 1e-9,
-                c.algorithm
-            ),
-        });
+        return Err(Error::TooExpensive { function: "J_n(x)", seconds: c.cost * 1e-9, limit_seconds: MAX_COST * 1e-9 });
     }
     Ok(c.guard)
 }
