@@ -58,6 +58,14 @@ use crate::MAX_WORKING_PREC;
 /// than a double, so the rounded midpoint is within `0.5 + 2^-11` ulp.
 pub const F64_FALLBACK_PREC: u32 = 64;
 
+/// Largest working precision of the MP fallback behind the f64 functions. An f64
+/// answer that cannot be certified below it (more than about 4000 bits of
+/// cancellation: parameters like `1e300`, where the fallback used to climb to
+/// 65 536 bits and beyond for minutes) is refused with
+/// [`Error::PrecisionExhausted`] naming this precision; the `*_mp` functions,
+/// which climb to [`MAX_WORKING_PREC`], remain for such arguments.
+pub const F64_FALLBACK_MAX_WP: u32 = 4096;
+
 /// Initial guard bits of the Ziv loop when a function gives no better estimate.
 pub(crate) const DEFAULT_GUARD_BITS: u32 = 24;
 
@@ -83,28 +91,39 @@ where
 /// Used where the function has a natural scale and may vanish at exact inputs
 /// (for example `u_w(a) = A (1 - cos(2 pi a/zeta))` is exactly zero when `a/zeta`
 /// is an integer): the accuracy promise there is relative to `max(|value|, floor)`.
-pub(crate) fn ziv_with_floor<F>(function: &'static str, prec: u32, guard: u32, floor: Option<&Float>, mut eval: F) -> Result<Ball>
+pub(crate) fn ziv_with_floor<F>(function: &'static str, prec: u32, guard: u32, floor: Option<&Float>, eval: F) -> Result<Ball>
 where
     F: FnMut(u32) -> Result<Ball>,
 {
-    if !(2..=MAX_WORKING_PREC).contains(&prec) {
+    ziv_up_to(function, prec, guard, floor, MAX_WORKING_PREC, eval)
+}
+
+/// [`ziv_with_floor`] with the working precision capped at `max_wp`
+/// (`prec <= max_wp <= MAX_WORKING_PREC`): [`Error::PrecisionExhausted`] once an
+/// evaluation at `max_wp` does not meet the accuracy.
+pub(crate) fn ziv_up_to<F>(function: &'static str, prec: u32, guard: u32, floor: Option<&Float>, max_wp: u32, mut eval: F) -> Result<Ball>
+where
+    F: FnMut(u32) -> Result<Ball>,
+{
+    let max_wp = max_wp.min(MAX_WORKING_PREC);
+    if !(2..=max_wp).contains(&prec) {
         return Err(Error::Precision { requested: prec as u64 });
     }
     let mut guard = guard.max(8);
     loop {
-        let wp = prec.saturating_add(guard).min(MAX_WORKING_PREC);
+        let wp = prec.saturating_add(guard).min(max_wp);
         let b = eval(wp)?;
         if b.meets_rel(prec) || floor.is_some_and(|f| !f.is_zero() && b.meets_abs(prec, f)) {
             return Ok(b);
         }
-        if wp >= MAX_WORKING_PREC {
+        if wp >= max_wp {
             return Err(Error::PrecisionExhausted { function, working_prec: wp });
         }
         // Bits achieved vs. bits wanted: raise by the shortfall plus margin.
         let achieved = b.rel_accuracy_bits();
         let shortfall = if achieved.is_finite() { (prec as f64 - achieved).max(0.0) } else { wp as f64 };
         let next = (guard as f64 + shortfall + 16.0).max(2.0 * guard as f64);
-        guard = next.min((MAX_WORKING_PREC - prec) as f64) as u32;
+        guard = next.min((max_wp - prec) as f64) as u32;
     }
 }
 
@@ -149,7 +168,7 @@ pub(crate) fn f64_from_mp<F>(function: &'static str, guard: u32, eval: F) -> Res
 where
     F: FnMut(u32) -> Result<Ball>,
 {
-    let b = ziv(function, F64_FALLBACK_PREC, guard, eval)?;
+    let b = ziv_up_to(function, F64_FALLBACK_PREC, guard, None, F64_FALLBACK_MAX_WP, eval)?;
     let v = b.to_f64();
     finite_result(function, v)
 }
@@ -188,7 +207,7 @@ pub(crate) fn bounded_from_mp<F>(function: &'static str, guard: u32, eval: F) ->
 where
     F: FnMut(u32) -> Result<Ball>,
 {
-    bounded_from_ball(function, &ziv(function, F64_FALLBACK_PREC, guard, eval)?)
+    bounded_from_ball(function, &ziv_up_to(function, F64_FALLBACK_PREC, guard, None, F64_FALLBACK_MAX_WP, eval)?)
 }
 
 /// An exact binary float from an f64 (53 bits hold every double exactly).

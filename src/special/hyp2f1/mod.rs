@@ -235,8 +235,11 @@ pub fn hyp2f1_bounded(a: f64, b: f64, c: f64, z: f64) -> Result<Bounded> {
     if let Some(r) = native::hyp2f1_native(a, b, c, z, NATIVE_ACCEPT_REL) {
         return Ok(r);
     }
-    let ball = hyp2f1_mp(&exact(a), &exact(b), &exact(c), &exact(z), F64_FALLBACK_PREC)?;
-    crate::special::bounded_from_ball("hyp2f1", &ball)
+    // the f64 fallback of hyp2f1, with its working-precision cap (F64_FALLBACK_MAX_WP)
+    check_fallback_params(a, b, c)?;
+    let (ae, be, ce, ze) = (exact(a), exact(b), exact(c), exact(z));
+    let (alg, lost) = plan(&ae, &be, &ce, &ze, F64_FALLBACK_PREC + DEFAULT_GUARD_BITS);
+    crate::special::bounded_from_mp("hyp2f1", DEFAULT_GUARD_BITS + lost, |wp| evaluate(alg, &ae, &be, &ce, &ze, wp))
 }
 
 /// The native f64 path alone: `Some` with a proven bound where it certifies
@@ -277,6 +280,30 @@ fn validate_f64(a: f64, b: f64, c: f64, z: f64) -> Result<()> {
     Ok(())
 }
 
+/// Largest `max(|a|, |b|, |c|)` that the f64 functions ([`hyp2f1`],
+/// [`hyp2f1_bounded`]) hand to the MP fallback where the native path does not
+/// certify. Beyond it that fallback took from 0.5 s (a series whose terms overflow
+/// the exponent range) to minutes (65 536 bits and more, or 5 million terms) at
+/// parameters like `1e10` or `1e300`, mostly to end in an error, and up to 6 s
+/// at `1e5` (`examples/slow_corners.rs`; at `1e4` at most 0.8 s seen); the f64
+/// functions refuse such arguments at once ([`Error::OutOfRange`]) and
+/// [`hyp2f1_mp`] remains for them. (The native path answers any parameters it
+/// certifies, e.g. `2F1(1.5, 1e300; 1e300; 0.5)`.)
+pub const F64_FALLBACK_MAX_PARAM: f64 = 1.0e4;
+
+/// [`F64_FALLBACK_MAX_PARAM`] for the MP fallback of the f64 functions.
+fn check_fallback_params(a: f64, b: f64, c: f64) -> Result<()> {
+    let m = a.abs().max(b.abs()).max(c.abs());
+    if m > F64_FALLBACK_MAX_PARAM {
+        return Err(Error::OutOfRange {
+            arg: "max(|a|, |b|, |c|) of an f64 2F1 the native path does not certify (hyp2f1_mp takes larger ones)",
+            value: m,
+            allowed: crate::error::Interval::closed(0.0, F64_FALLBACK_MAX_PARAM),
+        });
+    }
+    Ok(())
+}
+
 /// `2F1(a, b; c; z)` in f64 for real `z <= 1`: the value of [`hyp2f1_bounded`]
 /// with the acceptance threshold [`NATIVE_VALUE_REL`] (proven bound at most
 /// `4e-14` relative, measured error below `1e-14` over the benchmark domain, see
@@ -289,6 +316,7 @@ pub fn hyp2f1(a: f64, b: f64, c: f64, z: f64) -> Result<f64> {
     if let Some(r) = native::hyp2f1_native(a, b, c, z, NATIVE_VALUE_REL) {
         return Ok(r.value);
     }
+    check_fallback_params(a, b, c)?;
     let (ae, be, ce, ze) = (exact(a), exact(b), exact(c), exact(z));
     let (alg, lost) = plan(&ae, &be, &ce, &ze, F64_FALLBACK_PREC + DEFAULT_GUARD_BITS);
     f64_from_mp("hyp2f1", DEFAULT_GUARD_BITS + lost, |wp| evaluate(alg, &ae, &be, &ce, &ze, wp))

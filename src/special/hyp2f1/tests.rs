@@ -362,3 +362,25 @@ fn bad_input_is_an_error() {
     assert!(hyp2f1_connection_log(&f(1.0), &f(1.5), &f(2.0), &f(0.7), 64).is_err());
     assert_eq!(hyp2f1(0.3, 0.4, 0.5, 0.0).unwrap(), 1.0);
 }
+
+#[test]
+fn f64_fallback_refuses_what_it_cannot_do_in_time() {
+    // issue 23 item 5 (docs/fuzzing.md): parameters like 1e300 used to send the
+    // f64 functions' MP fallback to 65 536 bits and beyond for minutes
+    for (a, b, c, z) in [(1e300, 2.0, 3.0, 0.5), (1e300, -1e300, 3.0, 0.5), (-1e300, 2.5, 3.5, -0.5), (1e10, 1e10, 2.5, 0.3)] {
+        for r in [hyp2f1(a, b, c, z).map(|_| ()), hyp2f1_bounded(a, b, c, z).map(|_| ())] {
+            assert!(
+                matches!(r, Err(Error::OutOfRange { value, allowed, .. }) if value > F64_FALLBACK_MAX_PARAM && allowed.hi == F64_FALLBACK_MAX_PARAM),
+                "2F1({a}, {b}; {c}; {z}): {r:?}"
+            );
+        }
+    }
+    // what the native path certifies is still answered at any size
+    assert!((hyp2f1(1.5, 1e300, 1e300, 0.5).unwrap() - 2f64.powf(1.5)).abs() < 1e-14);
+    // within the parameter cap, more than F64_FALLBACK_MAX_WP bits of cancellation is refused at that precision
+    let r = hyp2f1_bounded(1e4, 1e4, 2.5, -0.9);
+    assert!(
+        matches!(r, Err(Error::PrecisionExhausted { working_prec, .. }) if working_prec == crate::special::F64_FALLBACK_MAX_WP),
+        "{r:?}"
+    );
+}
