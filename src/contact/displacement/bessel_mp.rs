@@ -14,7 +14,8 @@ use rug::Float;
 use crate::ball::{Ball, MAG_PREC};
 use crate::error::{Error, Interval, Result};
 use crate::special::bessel_j::bessel_j_sequence_mp;
-use crate::special::{ziv_with_floor, DEFAULT_GUARD_BITS};
+use crate::special::{ziv_up_to, DEFAULT_GUARD_BITS};
+use crate::MAX_WORKING_PREC;
 
 use super::geometry::{check_wave_mp, check_wave_number, geometry_from_balls, gradient_scale, wave_geometry, WaveGeometry};
 
@@ -44,11 +45,43 @@ fn bessel_tail_bound(d_upper: &Float, n_terms: u64, power: i32) -> Option<Float>
     Some(tail)
 }
 
+/// An f64 estimate of the smallest `m` with `(D/2)^{2m}/(2m)! < 2^-wp`
+/// (Stirling, `ln k! ~ k ln k - k + ln(2 pi k)/2`), by bisection on `m`; only a
+/// starting point for [`bessel_terms`] (0 when it does not apply).
+fn stirling_terms_estimate(d: f64, wp: u32) -> u64 {
+    if !(d.is_finite() && d > 2.0) {
+        return 0;
+    }
+    let log_term = |m: f64| {
+        let k = 2.0 * m;
+        k * (d / 2.0).ln() - (k * k.ln() - k + 0.5 * (2.0 * std::f64::consts::PI * k).ln())
+    };
+    let goal = -(wp as f64) * std::f64::consts::LN_2;
+    let (mut lo, mut hi) = (d / 2.0, d * 4.0 + wp as f64);
+    if !(log_term(hi) < goal) {
+        return 0;
+    }
+    for _ in 0..80 {
+        let mid = 0.5 * (lo + hi);
+        if log_term(mid) < goal {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    lo as u64
+}
+
 /// Number of Bessel terms `N` with both tails below `2^-wp` (times the weights).
 pub(crate) fn bessel_terms(d_upper: &Float, wp: u32) -> Result<(u64, Float, Float)> {
     let mut target = Float::with_val(MAG_PREC, 1);
     target >>= wp as i32;
     let mut n = (d_upper.to_f64() / 2.0).ceil().max(1.0) as u64 + 2;
+    // Each bound costs O(n) (the factorial), so a scan from D/2 would cost O(D^2):
+    // minutes at D ~ 6e4 (found by tests/fuzz.rs). Start near the f64 (Stirling)
+    // estimate of the answer, a few steps below it; the rigorous bounds below
+    // still decide, so a rough estimate only costs steps, never soundness.
+    n = n.max(stirling_terms_estimate(d_upper.to_f64(), wp).saturating_sub(16));
     loop {
         if let (Some(t0), Some(t2)) = (bessel_tail_bound(d_upper, n, 0), bessel_tail_bound(d_upper, n, 2)) {
             if t2 <= target {
@@ -132,24 +165,35 @@ fn wave_bessel_geometry(g: &WaveGeometry, wp: u32) -> Result<(Ball, Ball)> {
 
 /// Certified wave displacement `u_w(x)` (Bessel form) with `rad <= 2^-prec |mid|`.
 pub fn u_wave_mp(a: &Float, zeta: &Float, amp: &Float, x: &Float, prec: u32) -> Result<Ball> {
+    u_wave_mp_up_to(a, zeta, amp, x, prec, MAX_WORKING_PREC)
+}
+
+/// Certified wave-displacement gradient `du_w/dx` (Bessel form).
+pub fn du_wave_mp(a: &Float, zeta: &Float, amp: &Float, x: &Float, prec: u32) -> Result<Ball> {
+    du_wave_mp_up_to(a, zeta, amp, x, prec, MAX_WORKING_PREC)
+}
+
+/// [`u_wave_mp`] with the working precision capped at `max_wp` (the f64
+/// fallback's [`F64_FALLBACK_MAX_WP`](crate::special::F64_FALLBACK_MAX_WP)).
+pub(crate) fn u_wave_mp_up_to(a: &Float, zeta: &Float, amp: &Float, x: &Float, prec: u32, max_wp: u32) -> Result<Ball> {
     crate::error::check_prec(prec)?;
     check_wave_mp(a, zeta, amp, x)?;
     if amp.is_zero() {
         return Ok(Ball::zero(prec));
     }
     let floor = Float::with_val(MAG_PREC, amp.abs_ref());
-    ziv_with_floor("u_wave", prec, DEFAULT_GUARD_BITS, Some(&floor), |wp| Ok(wave_bessel_wp(a, zeta, amp, x, wp)?.0))
+    ziv_up_to("u_wave", prec, DEFAULT_GUARD_BITS, Some(&floor), max_wp, |wp| Ok(wave_bessel_wp(a, zeta, amp, x, wp)?.0))
 }
 
-/// Certified wave-displacement gradient `du_w/dx` (Bessel form).
-pub fn du_wave_mp(a: &Float, zeta: &Float, amp: &Float, x: &Float, prec: u32) -> Result<Ball> {
+/// [`du_wave_mp`] with the working precision capped at `max_wp`.
+pub(crate) fn du_wave_mp_up_to(a: &Float, zeta: &Float, amp: &Float, x: &Float, prec: u32, max_wp: u32) -> Result<Ball> {
     crate::error::check_prec(prec)?;
     check_wave_mp(a, zeta, amp, x)?;
     if amp.is_zero() {
         return Ok(Ball::zero(prec));
     }
     let floor = gradient_scale(amp, zeta);
-    ziv_with_floor("du_wave", prec, DEFAULT_GUARD_BITS, Some(&floor), |wp| Ok(wave_bessel_wp(a, zeta, amp, x, wp)?.1))
+    ziv_up_to("du_wave", prec, DEFAULT_GUARD_BITS, Some(&floor), max_wp, |wp| Ok(wave_bessel_wp(a, zeta, amp, x, wp)?.1))
 }
 
 /// The edge a ball of `x` may straddle, per function.

@@ -291,5 +291,21 @@ mod tests {
         assert!(u_hertz(1.0, -1.0, 2.0).is_err());
         assert!(u_adhesive(1.0, 0.5, 1.0, 1.0, 2.0).is_err());
     }
-}
 
+    #[test]
+    fn f64_fallback_refuses_what_needs_too_many_bits() {
+        // tests/fuzz.rs (registry_f64_paths): x/a ~ 3e297 sent the f64 fallback's
+        // Ziv loop to 58 335 bits (minutes). Capped at F64_FALLBACK_MAX_WP now: a
+        // typed error naming the cap, or a value, never a hang; the MP function remains.
+        let (a, zeta, amp, x) = (1.0245220703013299e-296, 1e-300, 245.625, 29.594286029034663);
+        for r in [du_wave(a, zeta, amp, x), u_wave(a, zeta, amp, x)] {
+            match r {
+                Ok(v) => assert!(v.is_finite(), "{v}"),
+                Err(e) => assert!(
+                    matches!(e, Error::PrecisionExhausted { working_prec, .. } if working_prec <= crate::special::F64_FALLBACK_MAX_WP),
+                    "{e:?}"
+                ),
+            }
+        }
+    }
+}

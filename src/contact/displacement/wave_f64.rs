@@ -15,7 +15,7 @@ use crate::error::{finite, Error, Result};
 use crate::special::bessel_j::bessel_j_sequence_dd;
 use crate::special::exact;
 
-use super::bessel_mp::{du_wave_mp, u_wave_mp};
+use super::bessel_mp::{du_wave_mp_up_to, u_wave_mp_up_to};
 use super::geometry::check_wave_f64;
 
 /// Number of Bessel terms for the f64 path: the tail `sum_{n>N} 2 n^2 (D/2)^{2n}/(2n)!`
@@ -314,9 +314,12 @@ fn wave_bessel_f64(a: f64, zeta: f64, amp: f64, x: f64) -> Result<(f64, f64)> {
 fn wave_bounded_fallback(a: f64, zeta: f64, amp: f64, x: f64) -> Result<(Bounded, Bounded)> {
     count_fallback();
     let (a, zeta, amp, x) = (exact(a), exact(zeta), exact(amp), exact(x));
-    let p = crate::special::F64_FALLBACK_PREC;
-    let u = crate::special::bounded_from_ball("u_wave", &u_wave_mp(&a, &zeta, &amp, &x, p)?)?;
-    let du = crate::special::bounded_from_ball("du_wave", &du_wave_mp(&a, &zeta, &amp, &x, p)?)?;
+    // Capped like every f64 fallback: an argument that needs more than
+    // F64_FALLBACK_MAX_WP bits (tests/fuzz.rs found a = 1e-296, zeta = 1e-300,
+    // x = 29.6: 58 335 bits, minutes) is refused at once; the MP functions remain.
+    let (p, max_wp) = (crate::special::F64_FALLBACK_PREC, crate::special::F64_FALLBACK_MAX_WP);
+    let u = crate::special::bounded_from_ball("u_wave", &u_wave_mp_up_to(&a, &zeta, &amp, &x, p, max_wp)?)?;
+    let du = crate::special::bounded_from_ball("du_wave", &du_wave_mp_up_to(&a, &zeta, &amp, &x, p, max_wp)?)?;
     Ok((u, du))
 }
 
