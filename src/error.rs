@@ -257,6 +257,16 @@ pub enum Error {
         /// The limit in seconds.
         limit_seconds: f64,
     },
+    /// A root of the model (the strip ratio of Eq. 15b) that the certified
+    /// bracketing could not separate: the residual's balls stay too wide around it.
+    RootNotCertified {
+        /// The quantity.
+        quantity: &'static str,
+        /// The f64 root it was searched around.
+        near: f64,
+        /// Whether the inputs were balls (then tighter inputs may separate it).
+        input_balls: bool,
+    },
     /// An output slice whose length differs from the input slice's.
     LengthMismatch {
         /// How many inputs.
@@ -387,6 +397,14 @@ impl fmt::Display for Error {
                 "{function} would take about {seconds:.0} s with the cheapest method, past the limit of about \
                  {limit_seconds:.0} s; lower the precision"
             ),
+            Error::RootNotCertified { quantity, near, input_balls } => {
+                write!(f, "could not certify the root {quantity} near {near:e}: the residual's balls stay too wide")?;
+                if *input_balls {
+                    write!(f, " over the input balls (give the inputs with more digits, or exactly)")
+                } else {
+                    write!(f, " (the parameters are too extreme for the certified solver)")
+                }
+            }
             Error::LengthMismatch { inputs, outputs } => {
                 write!(f, "{inputs} points but room for {outputs} results (make the lengths equal)")
             }
@@ -419,6 +437,7 @@ impl Error {
                 | Error::BallTooWide { .. }
                 | Error::InsideContact { .. }
                 | Error::ContactEdgeInBall { .. }
+                | Error::RootNotCertified { input_balls: true, .. }
         )
     }
 }
