@@ -16,7 +16,10 @@
 //! * sum: each `fl(s~ + t~)` errs by at most `u |fl(s~ + t~)|`;
 //! * tail: the sum stops at the first `K` with `|t_K| <= 2^-wp max(|S~|, 2^-wp sum|t~|)`
 //!   and `rho = |z| / ((K+1)(n+K+1)) <= 1/2`; the ratios `|t_{k+1}/t_k|` decrease
-//!   from there on, so the tail is at most `|t_K| / (1 - rho) <= 2 |t_K|`.
+//!   from there on, so the tail is at most `|t_K| / (1 - rho) <= 2 |t_K|`. (The test
+//!   is evaluated only once `|t~| < 2^(e_s - wp + 2)`, `|s~| < 2^e_s`, where it can
+//!   first pass: a cheap filter on binary exponents. Skipping it sums more terms,
+//!   which the bound covers, so `K` may be a term later; the terms tend to zero.)
 //!
 //! The bound is `sum_k eta_k |t~_k| + u sum_k |s~_k| + 2 |t_K|`, added to the
 //! radius of `S`; the prefactor `(x/2)^n / n!` is a ball product. The terms
@@ -84,8 +87,12 @@ pub fn bessel_j_series(n: u64, x: &Float, wp: u32) -> Result<Ball> {
     let mut t = Float::with_val(wp, 1);
     let mut s = Float::with_val(wp, 1);
     let mut eta = Mag::ZERO; // |t_k - t~_k| <= eta |t~_k|
-    let mut err = Mag::ZERO; // accumulated rounding and term errors of s~
+    let mut err = Mag::ZERO; // sum_k eta_k |t~_k|
+    let mut s_abs = Mag::ZERO; // sum_k |s~_k| (times u at the end: the additions' roundings)
     let mut abs_sum = Mag::from_f64(1.0);
+    // rho = |z| / ((k+1)(n+k+1)) <= 1/2 holds from here on once it holds (the
+    // denominator grows with k)
+    let mut ratio_ok = false;
     let mut k: u64 = 0;
     let tail = loop {
         // t_{k+1} = t_k z / ((k+1)(n+k+1))
@@ -101,23 +108,35 @@ pub fn bessel_j_series(n: u64, x: &Float, wp: u32) -> Result<Ball> {
         if !t_abs.is_finite() {
             return Err(Error::Overflow { what: "Bessel series term".into() });
         }
-        let t_exact = t_abs.add(t_abs.mul(eta));
-        // rho = |z| / ((k+1)(n+k+1)) <= 1/2 guarantees the geometric tail bound.
-        // (the f64 product rounded to nearest, stepped down: a lower bound below 2^53)
-        let next_d = Mag::from_f64((((k + 1) as f64) * ((n + k + 1) as f64)).next_down()).mul_2exp(-1);
-        if z_abs.le(&next_d) {
+        if !ratio_ok {
+            // (the f64 product rounded to nearest, stepped down: a lower bound below 2^53)
+            let next_d = Mag::from_f64((((k + 1) as f64) * ((n + k + 1) as f64)).next_down()).mul_2exp(-1);
+            ratio_ok = z_abs.le(&next_d);
+        }
+        // The stopping test costs about ten Mag operations; it is run only once
+        // |t~| < 2^(e_s - wp + 2) (binary exponents, `|s~| < 2^e_s`), below which the
+        // test |t| <= 2^-wp max(|S~|, ...) can first pass. Skipping it only sums more
+        // terms, which the bound covers; the terms tend to zero, so it is reached.
+        let may_stop = match (t.get_exp(), s.get_exp()) {
+            (Some(et), Some(es)) => (et as i64) + (wp as i64) <= (es as i64) + 2,
+            _ => true,
+        };
+        if ratio_ok && may_stop {
+            let t_exact = t_abs.add(t_abs.mul(eta));
             let target = Mag::from_float_down(&s).max(abs_sum.mul_2exp(target_shift)).mul_2exp(target_shift);
             if t_exact.le(&target) {
                 break t_exact.mul_2exp(1);
             }
         }
         s += &t;
-        err = err.add(eta.mul(t_abs)).add(u.mul(Mag::from_float_up(&s)));
+        err = err.add(eta.mul(t_abs));
+        s_abs = s_abs.add(Mag::from_float_up(&s));
         abs_sum = abs_sum.add(t_abs);
         if k > MAX_SERIES_TERMS {
             return Err(Error::NoConvergence { function: "bessel_j (power series)", terms: k });
         }
     };
+    let err = err.add(u.mul(s_abs));
     let sum = Ball::with_mag(s, err.add(tail));
     Ok(prefactor(n, &half_x, wp)?.mul(&sum))
 }

@@ -96,7 +96,7 @@ use crate::special::{check_finite, exact, f64_from_mp, ziv, DEFAULT_GUARD_BITS};
 pub const MAX_K: u32 = 1_000_000;
 
 /// Largest `y < 1` of the native f64 series (about `ln(2^-60)/ln(y) = 1300` terms at 0.97);
-/// above it the double-double near-one expansion runs ([`native`], [`dd`]).
+/// above it the double-double near-one expansion runs ([`native`], `dd.rs`).
 pub const Y_NATIVE_MAX: f64 = 0.97;
 
 /// Upper limit of `k (1 - y)` for the near-one expansion: its two sums cancel

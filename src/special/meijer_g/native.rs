@@ -31,8 +31,8 @@
 //!   propagated to first and second order. The bound is evaluated in f64 and
 //!   inflated by `1 + 2^-30` for its own roundings.
 //!
-//! * Near `y = 1` with `k (1 - y) <= 1.25` ([`near_one_f64`]): the near-one expansion
-//!   of [`super::dd`] (`G = C_k B_k(1) + C_k (k+1) I1(w) - 2 sqrt(pi) w^{3/2} I2'(w)`,
+//! * Near `y = 1` with `k (1 - y) <= 1.25` (`near_one_f64`): the near-one expansion
+//!   of `dd.rs` (`G = C_k B_k(1) + C_k (k+1) I1(w) - 2 sqrt(pi) w^{3/2} I2'(w)`,
 //!   `w = 1 - y` exact) in f64, its recurrences counted in roundings as the
 //!   series above and both sums compensated; the parts grow like `e^{k w}`
 //!   before they cancel, so its bound is `1e-14` relative up to `k w ~ 1`.
@@ -267,14 +267,14 @@ fn s_bounded(k: u32, y: f64) -> Option<Val> {
     }
 }
 
-/// Largest `k (1 - y)` for which [`near_one_f64`] is tried: its parts grow to
+/// Largest `k (1 - y)` for which `near_one_f64` is tried: its parts grow to
 /// about `e^{k w}` before they cancel, and f64 keeps `1e-14` of `G` only while
 /// that factor is small (measured on the unit test's points: its bound is `1e-14`
 /// relative at every `k w <= 1` with `y > 0.85`, at none with `k w >= 1.5`; a try that
 /// misses costs about 0.2 us before the next path runs).
 pub const NEAR_ONE_F64_MAX_KW: f64 = 1.25;
 
-/// Smallest `y` for which [`near_one_f64`] is tried: below, its terms shrink like
+/// Smallest `y` for which `near_one_f64` is tried: below, its terms shrink like
 /// `w^j` with `w > 0.15`, and for `k >= 2` its bound misses `1e-14` (the parts
 /// cancel towards the zero of `G(k, .)`), while the direct series needs at most
 /// about 240 terms.
@@ -362,7 +362,7 @@ fn near_one_f64(tables: &Tables, k: u32, w: f64) -> Option<Bounded> {
 /// `G(k, y)` natively with a proven bound, if that bound is at most `rel_tol |G|`.
 /// Arguments are validated by the caller (`0 < y <= 1`).
 ///
-/// Order: the f64 near-one expansion ([`near_one_f64`]) for `NEAR_ONE_F64_MIN_Y < y < 1`
+/// Order: the f64 near-one expansion (`near_one_f64`) for `NEAR_ONE_F64_MIN_Y < y < 1`
 /// with `k (1 - y) <= NEAR_ONE_F64_MAX_KW`; the f64 sums (`y <= Y_NATIVE_MAX`, or the value at `y = 1`); if their
 /// bound misses `rel_tol` (next to the zero of `G(k, .)`), the double-double
 /// direct formula; for `Y_NATIVE_MAX < y < 1` the double-double near-one

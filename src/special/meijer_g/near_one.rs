@@ -17,7 +17,7 @@ use crate::special::exact_sub;
 use super::constants::MeijerConstants;
 use super::direct::sums_by_recurrence;
 
-/// [`direct_sums_sweep`] near `y = 1` (`w = 1 - y` small, `kmax w` moderate):
+/// [`direct_sums_sweep`](super::direct_sums_sweep) near `y = 1` (`w = 1 - y` small, `kmax w` moderate):
 /// `S_0 = -ln y + psi(2) - psi(1/2) - 2 B_0(y)` from the near-one expansion of
 /// `G(0, y)`, and `H_kmax` from the 1-z connection formula [DLMF 15.8.4]
 /// (`c - a - b = 3/2`; the second piece collapses to a power):
