@@ -49,6 +49,7 @@
 //! gives [`IntegrationError::NotIntegrable`], which names the point.
 
 pub(crate) mod adaptive;
+mod cover;
 mod holo;
 pub(crate) mod legendre;
 mod singular;
@@ -81,6 +82,10 @@ pub enum Limit {
     Depth,
     /// The working precision reached [`Options::max_working_prec`].
     WorkingPrecision,
+    /// The run was stopped early: at the rate it settled its range over the last 64th
+    /// of [`Options::max_evaluations`] (at least 20000 evaluations), the rest would
+    /// have taken more than four times the evaluations left.
+    Projected,
 }
 
 impl fmt::Display for Limit {
@@ -89,6 +94,7 @@ impl fmt::Display for Limit {
             Limit::Evaluations => write!(f, "the evaluation limit"),
             Limit::Depth => write!(f, "the bisection depth limit"),
             Limit::WorkingPrecision => write!(f, "the working-precision cap"),
+            Limit::Projected => write!(f, "the evaluation limit (projected from the rate of progress)"),
         }
     }
 }
@@ -230,6 +236,9 @@ pub(crate) struct Part<'w> {
     pub lo: Float,
     pub hi: Float,
     pub tail: Mag,
+    /// `wrap(s + 2 pi i, f) = wrap(s, f)` (the map `x = c e^s`): covers of ellipse boxes
+    /// may then be cut to one period (`cover.rs`).
+    pub periodic: bool,
     #[allow(clippy::type_complexity)]
     pub wrap: Box<dyn Fn(&HoloBall, &mut dyn FnMut(&HoloBall) -> HoloBall) -> HoloBall + 'w>,
 }
@@ -266,6 +275,7 @@ where
                 lo: lo.mid().clone(),
                 hi: hi.mid().clone(),
                 tail: Mag::ZERO,
+                periodic: false,
                 wrap: Box::new(|s: &HoloBall, f: &mut dyn FnMut(&HoloBall) -> HoloBall| f(s)),
             });
         }
@@ -278,7 +288,7 @@ where
             }
         }
         if !extra.is_zero() {
-            parts.push(Part { lo: Float::new(wp), hi: Float::new(wp), tail: extra, wrap: Box::new(|s, f| f(s)) });
+            parts.push(Part { lo: Float::new(wp), hi: Float::new(wp), tail: extra, periodic: false, wrap: Box::new(|s, f| f(s)) });
         }
         Ok(parts)
     };
@@ -471,7 +481,7 @@ where
                 let mut g = |z: CBall, mode: Mode| (part.wrap)(&HoloBall::new(z, mode), f).into_inner();
                 let mut counted = Counted { f: &mut g, stats };
                 let part_tol = tol.mul_2exp(-1).div(Mag::from_f64(n_parts as f64));
-                let out = adaptive::adaptive(&mut counted, &part.lo, &part.hi, wp, part_tol, goal as i64 + 3 - tol_shift - zero_shift, limits, first)?;
+                let out = adaptive::adaptive(&mut counted, &part.lo, &part.hi, wp, part_tol, goal as i64 + 3 - tol_shift - zero_shift, limits, first, part.periodic)?;
                 stats = counted.stats;
                 if !out.value.is_finite() {
                     return Err(adaptive::unbounded_error(out.unbounded_near, &stats));

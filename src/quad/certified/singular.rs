@@ -352,6 +352,8 @@ where
         lo: Float::with_val(wp, 0),
         hi: s,
         tail,
+        // e^{s + 2 pi i} = e^s: the map is periodic (cover.rs)
+        periodic: true,
         wrap: Box::new(move |s: &HoloBall, g: &mut dyn FnMut(&HoloBall) -> HoloBall| {
             let x = s.real(c.clone()) * s.exp();
             factor(&x, g) * x
@@ -422,23 +424,23 @@ where
     if w.left_singular() {
         let mapped = Mapped::new(a, &c, 1, &w.alpha, w.log_power, p)?;
         let (s, tail) = mapped.cut(&lf, target, g)?;
-        parts.push(Part { lo: Float::with_val(p, 0), hi: s, tail, wrap: mapped.wrap(lf) });
+        parts.push(Part { lo: Float::with_val(p, 0), hi: s, tail, periodic: false, wrap: mapped.wrap(lf) });
     } else {
         endpoint_error = endpoint_error.add(end_error(a, &lf, p, g));
-        parts.push(Part { lo: a.mid().clone(), hi: c.clone(), tail: Mag::ZERO, wrap: Box::new(lf) });
+        parts.push(Part { lo: a.mid().clone(), hi: c.clone(), tail: Mag::ZERO, periodic: false, wrap: Box::new(lf) });
     }
     // right piece [c, b]
     let rf = right_factor(a.set_prec(p), w.alpha.set_prec(p), w.log_power);
     if w.right_singular() {
         let mapped = Mapped::new(b, &c, -1, &w.beta, 0, p)?;
         let (s, tail) = mapped.cut(&rf, target, g)?;
-        parts.push(Part { lo: Float::with_val(p, 0), hi: s, tail, wrap: mapped.wrap(rf) });
+        parts.push(Part { lo: Float::with_val(p, 0), hi: s, tail, periodic: false, wrap: mapped.wrap(rf) });
     } else {
         endpoint_error = endpoint_error.add(end_error(b, &rf, p, g));
-        parts.push(Part { lo: c, hi: b.mid().clone(), tail: Mag::ZERO, wrap: Box::new(rf) });
+        parts.push(Part { lo: c, hi: b.mid().clone(), tail: Mag::ZERO, periodic: false, wrap: Box::new(rf) });
     }
     if !endpoint_error.is_zero() {
-        parts.push(Part { lo: Float::new(p), hi: Float::new(p), tail: endpoint_error, wrap: Box::new(|s, g| g(s)) });
+        parts.push(Part { lo: Float::new(p), hi: Float::new(p), tail: endpoint_error, periodic: false, wrap: Box::new(|s, g| g(s)) });
     }
     Ok(parts)
 }
