@@ -122,7 +122,7 @@ pub(crate) struct Counted<'f, F> {
 }
 
 impl<F: FnMut(CBall, Mode) -> CBall> Counted<'_, F> {
-    pub(crate) fn eval(&mut self, z: CBall, mode: Mode) -> CBall {
+    fn eval(&mut self, z: CBall, mode: Mode) -> CBall {
         self.stats.evaluations += 1;
         (self.f)(z, mode)
     }
@@ -382,7 +382,7 @@ where
             }
             let useful = tol_log2 + 2.0 * max_degree as f64 * rho.log2() - 6.1f64.log2() - h_mag.log2();
             let cover = CoverLimits { budget, cutoff: Mag::pow2(useful.clamp(-1e15, 1e15) as i64 + 1), periodic };
-            let (sup, spent) = cover_bound(f, &m, rx, ry, wp, &cover);
+            let (sup, spent) = cover_bound(&mut |z| f.eval(z, Mode::Analytic), &m, rx, ry, wp, &cover);
             covered = spent as usize;
             match sup {
                 Covered::Bound(sup) => {

@@ -36,8 +36,6 @@
 
 use rug::Float;
 
-use super::adaptive::Counted;
-use super::Mode;
 use crate::ball::{Ball, CBall, Mag};
 
 /// A closed box `[re_lo, re_hi] x [im_lo, im_hi]`.
@@ -89,9 +87,11 @@ pub(crate) enum Covered {
 /// The sub-boxes are evaluated at a low precision, 64 bits plus the bits that tell
 /// the box's centre from its edges: a bound needs a few correct bits, and ball
 /// arithmetic encloses at any precision.
-pub(crate) fn cover_bound<F>(f: &mut Counted<'_, F>, m: &Float, rx: Mag, ry: Mag, wp: u32, lim: &CoverLimits) -> (Covered, u64)
+///
+/// `f` evaluates the integrand on a box in analytic mode (and counts it).
+pub(crate) fn cover_bound<F>(f: &mut F, m: &Float, rx: Mag, ry: Mag, wp: u32, lim: &CoverLimits) -> (Covered, u64)
 where
-    F: FnMut(CBall, Mode) -> CBall,
+    F: FnMut(CBall) -> CBall,
 {
     let scale = m.get_exp().map_or(0, |e| e as i64) - rx.log2().floor() as i64;
     let wp = (64 + scale.clamp(0, 1 << 20) as u32).min(wp);
@@ -119,7 +119,7 @@ where
                 return (Covered::Failed, spent);
             }
             spent += 1;
-            let v = f.eval(cell.ball(wp), Mode::Analytic);
+            let v = f(cell.ball(wp));
             if v.is_finite() {
                 max = max.max(v.abs_upper_mag());
                 if lim.cutoff.le(&max) {
