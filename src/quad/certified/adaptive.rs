@@ -24,7 +24,12 @@
 //!    smallest candidate wins (the cost is the number of evaluations).
 //!    We bound `(rho - 1) rho^(2n-1) >= 0.7 rho^(2n)` (valid for `rho >= 3.7`, i.e.
 //!    `X >= 2`), so the bound added is `6.1 M / rho^(2n)` with `rho` rounded down.
-//! 3. **Bisection** where no degree up to the limit meets the tolerance.
+//!    Where the box's evaluation is not finite and high degrees are at stake, `M`
+//!    comes from a cover of the box by sub-boxes (`cover.rs`, which proves holomorphy
+//!    the same way).
+//! 3. **Bisection** where no degree up to the limit meets the tolerance. A run whose
+//!    rate of progress projects it past four times its evaluation limit stops early,
+//!    flagged [`Limit::Projected`] (`Progress`).
 //!
 //! The rule's nodes and weights are balls ([`super::legendre`]), the sum is formed in
 //! ball arithmetic, and the truncation bound is added to both radii, so the result

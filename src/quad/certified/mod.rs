@@ -16,6 +16,10 @@
 //!   F. Johansson, "Numerical integration in arbitrary-precision ball arithmetic",
 //!   ICMS 2018, the method of Arb's `acb_calc_integrate`). Nodes and weights are balls
 //!   (`legendre.rs`), cached per degree and precision.
+//! * **Covers** (`cover.rs`): where one evaluation on an ellipse's box is not finite
+//!   (rectangle arithmetic on `c e^(box)` for the map of an algebraic decay), the box is
+//!   covered by sub-boxes whose finite values prove holomorphy and bound `|f|` on it;
+//!   one period high when the integrand is `2 pi i`-periodic in its variable.
 //! * **Holomorphy that cannot be forgotten** ([`HoloBall`]): the integrand receives a
 //!   value whose branch-cut functions check the cut themselves on the ellipse's box.
 //!   There is no flag to forget.
