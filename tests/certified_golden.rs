@@ -76,7 +76,9 @@ const IDS: [&str; 19] = [
 /// rectangle of e^(box) reached a pole unless the pieces in s were about 0.1 wide (an
 /// estimate of 10^7 evaluations at 3333 bits). The ellipse boxes are now covered by
 /// sub-boxes one period high (`quad/certified/cover.rs`): I2 at 3333 bits took
-/// 2.39 million evaluations and 88 s at load 14 (debug test profile).
+/// 2.45 million evaluations, 67 s CPU (194 s wall at load 20, test profile). The eight
+/// others, run on 2026-11-26 23:00 with the covers: 0 failures, 116 s CPU (1280 s wall
+/// at load 14-20).
 const IDS_3333: [&str; 10] = ["I0", "I1", "I12", "I13", "I14", "I24", "Xexp", "Xsqrt", "XxJ0", "Xatan"];
 
 fn compute(id: &str, p: u32) -> Outcome {

@@ -32,9 +32,10 @@
 //!   evaluation. No user truncation, no user tail bound.
 //! * **Semi-infinite ranges**: `[a, inf)` with a declared bound `|f(x)| <= m e^{-c x}` or
 //!   `|f(x)| <= m x^{-p}` (`p > 1`) for `x >= a`. An exponential decay is cut where the
-//!   declared tail is below a quarter of the tolerance; an algebraic one is first
-//!   mapped by `x = c e^s` (`c = a`), which turns `x^{-p}` into `e^{-(p-1)s}`, and cut in
-//!   `s` at `S ~ goal ln 2/(p-1)` with the declared tail `m (c e^S)^{1-p}/(p-1)`
+//!   declared tail is below a quarter of the tolerance; an algebraic one the same way
+//!   while the cut `T ~ 2^(goal/(p-1))` has `log2 T <= 128`, and otherwise mapped by
+//!   `x = c e^s` (`c = a`), which turns `x^{-p}` into `e^{-(p-1)s}`, and cut in `s` at
+//!   `S ~ goal ln 2/(p-1)` with the declared tail `m (c e^S)^{1-p}/(p-1)`
 //!   (`singular.rs`). The result is certified *given the declaration*, which the caller
 //!   vouches for.
 //! * **Precision escalation**: the working precision starts at `prec + 20` bits and is
