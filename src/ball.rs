@@ -649,19 +649,43 @@ impl Ball {
         }))
     }
 
-    /// `(sin(self), cos(self))`. Both are 1-Lipschitz, so the input radius
-    /// carries over unchanged; MPFR's correctly rounded values add one ulp each. A
-    /// wide result (radius above 1/2) is intersected with `[-1, 1]`.
+    /// `(sin(self), cos(self))`. Both are 1-Lipschitz, so the input radius `r`
+    /// carries over; MPFR's correctly rounded values add one ulp each. A wide ball
+    /// (`r > 2^-12`) gets the second-order radius where it is smaller: by Taylor,
+    /// `|sin(m + t) - sin m| <= r |cos m| + r^2/2` for `|t| <= r` (and the same with sin
+    /// and cos exchanged), with `|cos m| <= |c| + err(c)` from the computed cosine: on
+    /// the boxes around Bernstein ellipses the rectangle of `e^(x + iy)` is then the
+    /// sector's, not a square around it. A wide result (radius above 1/2) is
+    /// intersected with `[-1, 1]`.
     pub fn sin_cos(&self) -> (Ball, Ball) {
-        if let Some(((s, es), (c, ec))) = self.is_finite().then(|| fixed::sin_cos(&self.mid, self.prec())).flatten() {
-            return (elementary::within_unit(Ball { mid: s, rad: self.rad.add(es) }), elementary::within_unit(Ball { mid: c, rad: self.rad.add(ec) }));
+        let ((s, es), (c, ec)) = match self.is_finite().then(|| fixed::sin_cos(&self.mid, self.prec())).flatten() {
+            Some(v) => v,
+            None => {
+                let mut s = self.mid.clone();
+                let mut c = Float::new(self.prec());
+                let (os, oc) = s.sin_cos_round(&mut c, Round::Nearest);
+                let (es, ec) = (rounding_error(&s, os), rounding_error(&c, oc));
+                ((s, es), (c, ec))
+            }
+        };
+        let (rs, rc) = (self.sin_cos_spread(&c, ec), self.sin_cos_spread(&s, es));
+        (elementary::within_unit(Ball { mid: s, rad: rs.add(es) }), elementary::within_unit(Ball { mid: c, rad: rc.add(ec) }))
+    }
+
+    /// How far sin (or cos) moves over the ball: `min(r, r (|o| + eo) + r^2/2)` for a
+    /// wide ball, where `o` (error `eo`) is the computed cos (or sin) of the midpoint;
+    /// `r` otherwise (see [`Ball::sin_cos`]).
+    fn sin_cos_spread(&self, o: &Float, eo: Mag) -> Mag {
+        let r = self.rad;
+        if r.le(&Mag::pow2_const(-12)) || !r.is_finite() {
+            return r;
         }
-        let mut s = self.mid.clone();
-        let mut c = Float::new(self.prec());
-        let (os, oc) = s.sin_cos_round(&mut c, Round::Nearest);
-        let rs = self.rad.add(rounding_error(&s, os));
-        let rc = self.rad.add(rounding_error(&c, oc));
-        (elementary::within_unit(Ball { mid: s, rad: rs }), elementary::within_unit(Ball { mid: c, rad: rc }))
+        let t = r.mul(Mag::from_float_up(o).add(eo)).add(r.mul(r).mul_2exp(-1));
+        if t.le(&r) {
+            t
+        } else {
+            r
+        }
     }
 
     /// `ln(1 + self)` for `self > -1` (accurate for small arguments).

@@ -665,6 +665,18 @@ pub enum IntegrationError {
         /// Which option, and what it must be.
         what: &'static str,
     },
+    /// The upper end is `-inf`, which is not supported: integrate `f(-x)` from `-b`
+    /// to `inf` instead.
+    NegativeInfinity,
+    /// The upper end is neither a decimal nor `inf`.
+    UpperEnd {
+        /// The text given.
+        text: String,
+    },
+    /// A decay was declared for a finite upper end; it applies only to `b = inf`.
+    DecayWithFiniteEnd,
+    /// `b = inf` without a declared decay of the integrand.
+    MissingDecay,
 }
 
 impl fmt::Display for IntegrationError {
@@ -687,6 +699,20 @@ impl fmt::Display for IntegrationError {
                 write!(f, "this integral needs a < b (got a = {a}, b = {b})")
             }
             IntegrationError::Option { what } => write!(f, "integration option: {what}"),
+            IntegrationError::NegativeInfinity => {
+                write!(f, "the upper end -inf is not supported: integrate f(-x) from -b to inf instead")
+            }
+            IntegrationError::UpperEnd { text } => {
+                write!(f, "the upper end '{text}' is not a decimal number; write a decimal, or inf for an infinite upper end")
+            }
+            IntegrationError::DecayWithFiniteEnd => {
+                write!(f, "a decay is declared only for an infinite upper end (b = inf)")
+            }
+            IntegrationError::MissingDecay => write!(
+                f,
+                "b = inf needs a declared decay of the integrand: |f(x)| <= m e^(-c x) (decay rate c and bound m) \
+                 or |f(x)| <= m x^(-p) (decay power p > 1 and bound m) for x >= a"
+            ),
         }
     }
 }

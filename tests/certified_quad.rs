@@ -6,7 +6,7 @@
 //! typed in.
 
 use maugis::ball::{Ball, CBall};
-use maugis::quad::certified::{integrate, integrate_to_infinity, integrate_weighted, Decay, HoloBall, IntegrationError, Options, Weight};
+use maugis::quad::certified::{integrate, integrate_to_infinity, integrate_weighted, Decay, HoloBall, IntegrationError, Limit, Options, Weight};
 use maugis::rug::float::Constant;
 use maugis::rug::ops::Pow;
 use maugis::rug::Float;
@@ -240,6 +240,22 @@ fn a_limit_gives_a_flagged_enclosure() {
     let full = integrate(|x| (x + &x.exp()).sin(), &int(0, prec), &int(8, prec), prec, &Options::new()).unwrap();
     assert!(r.value.overlaps(&full.value));
     assert!(full.goal_met);
+}
+
+/// A hopeless run stops early, flagged: `int_1^inf sin(x)/x^2` with a declared `x^-2`
+/// decay at 333 bits is mapped by `x = e^s` up to `S ~ 232`, where `sin(e^s)` oscillates
+/// `e^s` times per unit of `s`. The rate of progress projects it far past the
+/// evaluation limit (443889 at 333 bits); it stops at the second checkpoint (40000
+/// evaluations), with a finite, flagged enclosure.
+#[test]
+fn a_hopeless_run_stops_early_flagged() {
+    let prec = 333;
+    let d = Decay::algebraic(int(2, prec), int(1, prec)).unwrap();
+    let r = integrate_to_infinity(|x| x.sin() / x.sqr(), &int(1, prec), None, &d, prec, &Options::new()).unwrap();
+    assert!(!r.goal_met);
+    assert_eq!(r.limit, Some(Limit::Projected));
+    assert!(r.evaluations < 100_000, "{}", r.evaluations);
+    assert!(r.value.is_finite());
 }
 
 /// A constant integrand: the exact value, and the Boost failure mode (int of 2 over

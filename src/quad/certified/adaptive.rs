@@ -24,7 +24,12 @@
 //!    smallest candidate wins (the cost is the number of evaluations).
 //!    We bound `(rho - 1) rho^(2n-1) >= 0.7 rho^(2n)` (valid for `rho >= 3.7`, i.e.
 //!    `X >= 2`), so the bound added is `6.1 M / rho^(2n)` with `rho` rounded down.
-//! 3. **Bisection** where no degree up to the limit meets the tolerance.
+//!    Where the box's evaluation is not finite and high degrees are at stake, `M`
+//!    comes from a cover of the box by sub-boxes (`cover.rs`, which proves holomorphy
+//!    the same way).
+//! 3. **Bisection** where no degree up to the limit meets the tolerance. A run whose
+//!    rate of progress projects it past four times its evaluation limit stops early,
+//!    flagged [`Limit::Projected`] (`Progress`).
 //!
 //! The rule's nodes and weights are balls ([`super::legendre`]), the sum is formed in
 //! ball arithmetic, and the truncation bound is added to both radii, so the result
@@ -32,6 +37,7 @@
 
 use rug::Float;
 
+use super::cover::{cover_bound, CoverLimits, Covered};
 use super::legendre;
 use super::{IntegrationError, Limit, Mode};
 use crate::ball::{Ball, CBall, Mag};
@@ -41,12 +47,28 @@ use crate::error::{Error, Result};
 pub(crate) const DEGREES: [usize; 21] =
     [1, 2, 4, 6, 8, 12, 16, 22, 32, 46, 64, 90, 128, 182, 256, 362, 512, 724, 1024, 1448, 2048];
 
+/// The evaluations a cover of one ellipse's box may spend, in multiples of the
+/// degree limit: a cover that costs more than a few rules of the largest degree is
+/// worse than bisection.
+const COVER_BUDGET: usize = 16;
+
+/// The degree on the smallest ellipse from which covers are tried (see
+/// `gauss_legendre_piece`). Their cost, about 9 evaluations per unit area of the box in
+/// `s` for `int_1^inf dx/(1+x^2)` mapped by `x = e^s`, falls below the rules' at about
+/// 100; from 96, `int_0^10000 x^1000 e^-x` at 64 bits took 9% more evaluations (1531
+/// against 1399), so covers wait until single boxes would need twice that.
+const COVER_MIN_DEGREE: f64 = 192.0;
+
 /// Counters of one integration.
 #[derive(Debug, Default, Clone, Copy)]
 pub(crate) struct Stats {
     pub evaluations: u64,
     pub subintervals: u64,
     pub max_depth: u32,
+    /// Evaluations spent by successful covers (cover.rs), and the area they covered:
+    /// their ratio predicts the cost of the next.
+    pub cover_evaluations: u64,
+    pub cover_area: f64,
 }
 
 /// Limits of one run.
@@ -140,6 +162,14 @@ where
     fv.is_finite().then(|| fv.mul_real(&Ball::from_float(&width, width.prec())))
 }
 
+/// Whether the segment is wider than `2^(16 - wp)` relative to its ends: below that
+/// its ball at `wp` bits is mostly rounding, and halves would not enclose better.
+fn resolvable(lo: &Float, hi: &Float, wp: u32) -> bool {
+    let w = exact_diff(lo, hi);
+    let scale = lo.get_exp().max(hi.get_exp()).unwrap_or(i32::MIN) as i64;
+    w.get_exp().is_some_and(|e| e as i64 > scale + 16 - wp as i64)
+}
+
 /// A piece on the work stack, with its crude enclosure.
 struct Piece {
     lo: Float,
@@ -168,7 +198,7 @@ impl Piece {
 /// `first` is the crude enclosure of the whole `[a, b]` at `wp` when the caller has it
 /// already (it is then not evaluated again).
 #[allow(clippy::too_many_arguments)]
-pub(crate) fn adaptive<F>(f: &mut Counted<'_, F>, a: &Float, b: &Float, wp: u32, tol: Mag, goal: i64, lim: RunLimits, first: Option<CBall>) -> Result<Outcome>
+pub(crate) fn adaptive<F>(f: &mut Counted<'_, F>, a: &Float, b: &Float, wp: u32, tol: Mag, goal: i64, lim: RunLimits, first: Option<CBall>, periodic: bool) -> Result<Outcome>
 where
     F: FnMut(CBall, Mode) -> CBall,
 {
@@ -191,6 +221,7 @@ where
     let mut truncation = Mag::ZERO;
     let mut limit = None;
     let mut unbounded_near = None;
+    let mut progress = Progress::new(f.stats.evaluations, lim.max_evaluations, a, b);
     while let Some(piece) = stack.pop() {
         f.stats.subintervals += 1;
         f.stats.max_depth = f.stats.max_depth.max(piece.depth);
@@ -198,31 +229,39 @@ where
             Some(Limit::Evaluations)
         } else if piece.depth >= lim.max_depth {
             Some(Limit::Depth)
+        } else if progress.hopeless(f.stats.evaluations) {
+            Some(Limit::Projected)
         } else {
             None
         };
         // 1. the crude enclosure, when it is good enough (or a limit is reached)
         match &piece.crude {
             Some(c) if c.rad_mag().le(&dyn_tol) || reached.is_some() => {
+                progress.settled(&piece.lo, &piece.hi);
                 sum = sum.add(c);
                 if reached.is_some() {
                     limit = reached;
                 }
                 continue;
             }
-            None if reached.is_some() || piece.lo == piece.hi => {
+            None if piece.lo == piece.hi || (reached.is_some() && (piece.depth >= lim.max_depth || !resolvable(&piece.lo, &piece.hi, wp))) => {
                 // Nothing bounds this piece: the integrand is unbounded (or not defined) on it.
                 limit = reached;
                 unbounded_near = Some(midpoint(&piece.lo, &piece.hi).to_f64());
                 sum = CBall::indeterminate(wp);
                 continue;
             }
+            // A limit, and no enclosure yet (the segment's ball was too wide, as
+            // sin(x)/x^2 on x = e^[0, 32], whose ball reaches 0): bisect on, without
+            // rules, until the halves have crude enclosures.
+            None if reached.is_some() && resolvable(&piece.lo, &piece.hi, wp) => limit = reached,
             _ => {}
         }
         // 2. Gauss-Legendre, where the integrand is bounded on the segment
-        if piece.crude.is_some() {
-            if let Some((v, err)) = gauss_legendre_piece(f, &piece.lo, &piece.hi, wp, dyn_tol, lim.max_degree)? {
+        if let (Some(c), None) = (&piece.crude, reached) {
+            if let Some((v, err)) = gauss_legendre_piece(f, &piece.lo, &piece.hi, wp, dyn_tol, lim, periodic, c.abs_upper_mag())? {
                 raise(&mut dyn_tol, &v);
+                progress.settled(&piece.lo, &piece.hi);
                 sum = sum.add(&v);
                 truncation = truncation.add(err);
                 continue;
@@ -247,9 +286,62 @@ where
     Ok(Outcome { value: sum, truncation, limit, unbounded_near })
 }
 
+/// The share of an interval settled against the evaluations spent, to stop early a
+/// run that will not finish within its evaluation limit (a heuristic: it decides only
+/// when the run stops, never what the result encloses). At checkpoints every
+/// `chunk` evaluations (a 64th of the budget, at least 20000), the width settled since
+/// the last checkpoint is the rate; from the second checkpoint on, the run is hopeless
+/// when the width left at that rate would take more than four times the evaluations
+/// left. A rate and not the share done: pieces where the integrand is negligible
+/// settle early and fast, and would hide a rate of almost nothing elsewhere.
+struct Progress {
+    start: u64,
+    budget: u64,
+    chunk: u64,
+    width: f64,
+    done: f64,
+    /// (evaluations, width done) at the last checkpoint
+    mark: (u64, f64),
+    checkpoints: u32,
+    /// Once hopeless, the run stays stopped.
+    stopped: bool,
+}
+
+impl Progress {
+    fn new(start: u64, max_evaluations: u64, a: &Float, b: &Float) -> Progress {
+        let budget = max_evaluations.saturating_sub(start);
+        let width = exact_diff(a, b).to_f64();
+        Progress { start, budget, chunk: (budget / 64).max(20_000), width, done: 0.0, mark: (0, 0.0), checkpoints: 0, stopped: false }
+    }
+
+    fn settled(&mut self, lo: &Float, hi: &Float) {
+        self.done += exact_diff(lo, hi).to_f64();
+    }
+
+    fn hopeless(&mut self, evaluations: u64) -> bool {
+        let spent = evaluations.saturating_sub(self.start);
+        if self.stopped {
+            return true;
+        }
+        if spent < self.mark.0 + self.chunk || !(self.width > 0.0 && self.width.is_finite()) {
+            return false;
+        }
+        let rate = (self.done - self.mark.1) / (spent - self.mark.0) as f64;
+        self.mark = (spent, self.done);
+        self.checkpoints += 1;
+        if self.checkpoints < 2 {
+            return false;
+        }
+        let left = (self.width - self.done).max(0.0);
+        self.stopped = left > rate * 4.0 * self.budget.saturating_sub(spent) as f64;
+        self.stopped
+    }
+}
+
 /// One Gauss-Legendre step on `[lo, hi]`: `Some((enclosure, truncation bound))` when
 /// some degree up to `max_degree` meets `tol`, `None` otherwise.
-fn gauss_legendre_piece<F>(f: &mut Counted<'_, F>, lo: &Float, hi: &Float, wp: u32, tol: Mag, max_degree: usize) -> Result<Option<(CBall, Mag)>>
+#[allow(clippy::too_many_arguments)]
+fn gauss_legendre_piece<F>(f: &mut Counted<'_, F>, lo: &Float, hi: &Float, wp: u32, tol: Mag, lim: RunLimits, periodic: bool, crude_abs: Mag) -> Result<Option<(CBall, Mag)>>
 where
     F: FnMut(CBall, Mode) -> CBall,
 {
@@ -258,6 +350,12 @@ where
     h >>= 1;
     let h_mag = Mag::from_float_up(&h);
     let tol_log2 = tol.log2();
+    let max_degree = lim.max_degree;
+    // Covers of boxes (cover.rs) cost far more evaluations than one box; they pay where
+    // the single boxes force small ellipses and high degrees: where a rule on the
+    // smallest ellipse (rho = 3.7) would need COVER_MIN_DEGREE or more, from the
+    // crude enclosure's size.
+    let cover_pays = (crude_abs.log2() - tol_log2) / (2.0 * 3.7f64.log2()) >= COVER_MIN_DEGREE;
     let mut best: Option<(usize, Mag, Mag)> = None; // (n, rho, M)
     // the degree the bound asks for at the last ellipse, unrounded (f64, a heuristic)
     let mut last_need = f64::INFINITY;
@@ -265,12 +363,47 @@ where
     while xexp < wp.max(2) {
         let (rho, y) = ellipse(xexp);
         let xr = Mag::pow2(xexp as i64);
-        let wide = CBall::new(Ball::with_mag(m.clone(), h_mag.mul(xr)).set_prec(wp), Ball::with_mag(Float::new(wp), h_mag.mul(y)));
+        let (rx, ry) = (h_mag.mul(xr), h_mag.mul(y));
+        let wide = CBall::new(Ball::with_mag(m.clone(), rx).set_prec(wp), Ball::with_mag(Float::new(wp), ry));
         let v = f.eval(wide, Mode::Analytic);
-        if !v.is_finite() {
-            break;
-        }
-        let big_m = v.abs_upper_mag().mul(h_mag);
+        let mut covered = 0;
+        let sup = if v.is_finite() {
+            v.abs_upper_mag()
+        } else {
+            // One box is not finite: cover it by sub-boxes (cover.rs), within a budget
+            // of COVER_BUDGET degrees' worth of evaluations, and give up once the bound
+            // is too large for every degree up to the limit.
+            if !cover_pays {
+                break;
+            }
+            let remaining = lim.max_evaluations.saturating_sub(f.stats.evaluations);
+            let budget = remaining.min((COVER_BUDGET * max_degree) as u64);
+            // its area in the variable (one period at most when periodic), and the cost
+            // the covers so far predict for it
+            let height = if periodic { ry.to_f64_up().min(std::f64::consts::PI) } else { ry.to_f64_up() };
+            let area = 4.0 * rx.to_f64_up() * height;
+            if f.stats.cover_area > 0.0 && f.stats.cover_evaluations as f64 / f.stats.cover_area * area > budget as f64 {
+                break;
+            }
+            let useful = tol_log2 + 2.0 * max_degree as f64 * rho.log2() - 6.1f64.log2() - h_mag.log2();
+            let cover = CoverLimits { budget, cutoff: Mag::pow2(useful.clamp(-1e15, 1e15) as i64 + 1), periodic };
+            let (sup, spent) = cover_bound(&mut |z| f.eval(z, Mode::Analytic), &m, rx, ry, wp, &cover);
+            covered = spent as usize;
+            match sup {
+                Covered::Bound(sup) => {
+                    f.stats.cover_evaluations += spent;
+                    f.stats.cover_area += area;
+                    sup
+                }
+                // too large for this ellipse's rho: a larger one may do
+                Covered::TooLarge => {
+                    xexp += (xexp - 1).max(1);
+                    continue;
+                }
+                Covered::Failed => break,
+            }
+        };
+        let big_m = sup.mul(h_mag);
         // Larger ellipses stop paying once the degree they need grows again (M grows
         // faster than rho^(2n) falls): stop there instead of evaluating the rest of the
         // ladder. Only the choice of degree depends on this; every bound is checked.
@@ -287,7 +420,9 @@ where
                 break;
             }
         }
-        if matches!(best, Some((1, _, _))) {
+        // A cover of the next, at least twice as large, box costs more than the degree
+        // it could save.
+        if matches!(best, Some((1, _, _))) || best.is_some_and(|(bn, _, _)| covered >= bn) {
             break;
         }
         xexp += (xexp - 1).max(1);

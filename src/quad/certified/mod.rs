@@ -16,6 +16,10 @@
 //!   F. Johansson, "Numerical integration in arbitrary-precision ball arithmetic",
 //!   ICMS 2018, the method of Arb's `acb_calc_integrate`). Nodes and weights are balls
 //!   (`legendre.rs`), cached per degree and precision.
+//! * **Covers** (`cover.rs`): where one evaluation on an ellipse's box is not finite
+//!   (rectangle arithmetic on `c e^(box)` for the map of an algebraic decay), the box is
+//!   covered by sub-boxes whose finite values prove holomorphy and bound `|f|` on it;
+//!   one period high when the integrand is `2 pi i`-periodic in its variable.
 //! * **Holomorphy that cannot be forgotten** ([`HoloBall`]): the integrand receives a
 //!   value whose branch-cut functions check the cut themselves on the ellipse's box.
 //!   There is no flag to forget.
@@ -28,9 +32,10 @@
 //!   evaluation. No user truncation, no user tail bound.
 //! * **Semi-infinite ranges**: `[a, inf)` with a declared bound `|f(x)| <= m e^{-c x}` or
 //!   `|f(x)| <= m x^{-p}` (`p > 1`) for `x >= a`. An exponential decay is cut where the
-//!   declared tail is below a quarter of the tolerance; an algebraic one is first
-//!   mapped by `x = c e^s` (`c = a`), which turns `x^{-p}` into `e^{-(p-1)s}`, and cut in
-//!   `s` at `S ~ goal ln 2/(p-1)` with the declared tail `m (c e^S)^{1-p}/(p-1)`
+//!   declared tail is below a quarter of the tolerance; an algebraic one the same way
+//!   while the cut `T ~ 2^(goal/(p-1))` has `log2 T <= 128`, and otherwise mapped by
+//!   `x = c e^s` (`c = a`), which turns `x^{-p}` into `e^{-(p-1)s}`, and cut in `s` at
+//!   `S ~ goal ln 2/(p-1)` with the declared tail `m (c e^S)^{1-p}/(p-1)`
 //!   (`singular.rs`). The result is certified *given the declaration*, which the caller
 //!   vouches for.
 //! * **Precision escalation**: the working precision starts at `prec + 20` bits and is
@@ -49,6 +54,7 @@
 //! gives [`IntegrationError::NotIntegrable`], which names the point.
 
 pub(crate) mod adaptive;
+mod cover;
 mod holo;
 pub(crate) mod legendre;
 mod singular;
@@ -81,6 +87,10 @@ pub enum Limit {
     Depth,
     /// The working precision reached [`Options::max_working_prec`].
     WorkingPrecision,
+    /// The run was stopped early: at the rate it settled its range over the last 64th
+    /// of [`Options::max_evaluations`] (at least 20000 evaluations), the rest would
+    /// have taken more than four times the evaluations left.
+    Projected,
 }
 
 impl fmt::Display for Limit {
@@ -89,6 +99,7 @@ impl fmt::Display for Limit {
             Limit::Evaluations => write!(f, "the evaluation limit"),
             Limit::Depth => write!(f, "the bisection depth limit"),
             Limit::WorkingPrecision => write!(f, "the working-precision cap"),
+            Limit::Projected => write!(f, "the evaluation limit (projected from the rate of progress)"),
         }
     }
 }
@@ -230,6 +241,9 @@ pub(crate) struct Part<'w> {
     pub lo: Float,
     pub hi: Float,
     pub tail: Mag,
+    /// `wrap(s + 2 pi i, f) = wrap(s, f)` (the map `x = c e^s`): covers of ellipse boxes
+    /// may then be cut to one period (`cover.rs`).
+    pub periodic: bool,
     #[allow(clippy::type_complexity)]
     pub wrap: Box<dyn Fn(&HoloBall, &mut dyn FnMut(&HoloBall) -> HoloBall) -> HoloBall + 'w>,
 }
@@ -266,6 +280,7 @@ where
                 lo: lo.mid().clone(),
                 hi: hi.mid().clone(),
                 tail: Mag::ZERO,
+                periodic: false,
                 wrap: Box::new(|s: &HoloBall, f: &mut dyn FnMut(&HoloBall) -> HoloBall| f(s)),
             });
         }
@@ -278,7 +293,7 @@ where
             }
         }
         if !extra.is_zero() {
-            parts.push(Part { lo: Float::new(wp), hi: Float::new(wp), tail: extra, wrap: Box::new(|s, f| f(s)) });
+            parts.push(Part { lo: Float::new(wp), hi: Float::new(wp), tail: extra, periodic: false, wrap: Box::new(|s, f| f(s)) });
         }
         Ok(parts)
     };
@@ -471,7 +486,7 @@ where
                 let mut g = |z: CBall, mode: Mode| (part.wrap)(&HoloBall::new(z, mode), f).into_inner();
                 let mut counted = Counted { f: &mut g, stats };
                 let part_tol = tol.mul_2exp(-1).div(Mag::from_f64(n_parts as f64));
-                let out = adaptive::adaptive(&mut counted, &part.lo, &part.hi, wp, part_tol, goal as i64 + 3 - tol_shift - zero_shift, limits, first)?;
+                let out = adaptive::adaptive(&mut counted, &part.lo, &part.hi, wp, part_tol, goal as i64 + 3 - tol_shift - zero_shift, limits, first, part.periodic)?;
                 stats = counted.stats;
                 if !out.value.is_finite() {
                     return Err(adaptive::unbounded_error(out.unbounded_near, &stats));

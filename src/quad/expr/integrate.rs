@@ -4,7 +4,7 @@
 
 use super::Expr;
 use crate::ball::{Ball, Decimal};
-use crate::error::{Error, Result};
+use crate::error::{Error, IntegrationError, Result};
 use crate::quad::certified::{integrate, integrate_to_infinity, integrate_weighted, Decay, Integral, Options, Weight};
 
 /// Guard bits of the balls made from decimal inputs (endpoints, exponents, decay
@@ -28,11 +28,9 @@ impl UpperLimit {
         let lower = t.to_ascii_lowercase();
         match lower.as_str() {
             "inf" | "+inf" | "infinity" | "+infinity" => Ok(UpperLimit::Infinity),
-            "-inf" | "-infinity" => Err(Error::Domain {
-                what: "the upper end -inf is not supported: integrate f(-x) from -b to inf instead".into(),
-            }),
+            "-inf" | "-infinity" => Err(Error::Integration(IntegrationError::NegativeInfinity)),
             _ => Decimal::parse(t).map(UpperLimit::Finite).map_err(|e| match e {
-                Error::Domain { what } => Error::Domain { what: format!("{what}; or inf for an infinite upper end") },
+                Error::NotADecimal { text } => Error::Integration(IntegrationError::UpperEnd { text }),
                 other => other,
             }),
         }
@@ -103,9 +101,7 @@ pub fn integrate_expr(
     let weight = weight.filter(|w| !w.is_trivial()).map(|w| w.to_weight(ip)).transpose()?;
     let g = |x: &_| f.eval(x);
     match (b, decay) {
-        (UpperLimit::Finite(_), Some(_)) => Err(Error::Domain {
-            what: "a decay is declared only for an infinite upper end (b = inf)".into(),
-        }),
+        (UpperLimit::Finite(_), Some(_)) => Err(Error::Integration(IntegrationError::DecayWithFiniteEnd)),
         (UpperLimit::Finite(b), None) => {
             let b = b.to_ball(ip);
             match &weight {
@@ -113,11 +109,7 @@ pub fn integrate_expr(
                 Some(w) => integrate_weighted(g, &a, &b, w, prec, opts),
             }
         }
-        (UpperLimit::Infinity, None) => Err(Error::Domain {
-            what: "b = inf needs a declared decay of the integrand: |f(x)| <= m e^(-c x) (decay rate c and \
-                   bound m) or |f(x)| <= m x^(-p) (decay power p > 1 and bound m) for x >= a"
-                .into(),
-        }),
+        (UpperLimit::Infinity, None) => Err(Error::Integration(IntegrationError::MissingDecay)),
         (UpperLimit::Infinity, Some(d)) => {
             let decay = match d {
                 DecaySpec::Exponential { rate, bound } => Decay::exponential(rate.to_ball(ip), bound.to_ball(ip))?,

@@ -431,10 +431,15 @@ mod integrals {
         let e = |b: &str, decay: Option<&DecaySpec>| {
             integrate_expr(&p("exp(-x)"), &d("0"), &UpperLimit::parse(b).unwrap(), None, decay, 64, &Options::new())
         };
-        assert!(matches!(e("inf", None), Err(crate::Error::Domain { .. })));
+        use crate::error::IntegrationError as I;
+        assert!(matches!(e("inf", None), Err(crate::Error::Integration(I::MissingDecay))));
         let decay = DecaySpec::Exponential { rate: d("1"), bound: d("1") };
-        assert!(matches!(e("1", Some(&decay)), Err(crate::Error::Domain { .. })));
-        assert!(UpperLimit::parse("-inf").is_err() && UpperLimit::parse("x").is_err());
+        assert!(matches!(e("1", Some(&decay)), Err(crate::Error::Integration(I::DecayWithFiniteEnd))));
+        assert!(matches!(UpperLimit::parse("-inf"), Err(crate::Error::Integration(I::NegativeInfinity))));
+        match UpperLimit::parse("x") {
+            Err(crate::Error::Integration(I::UpperEnd { text })) => assert_eq!(text, "x"),
+            other => panic!("{other:?}"),
+        }
         assert_eq!(UpperLimit::parse(" +Infinity ").unwrap(), UpperLimit::Infinity);
         let w = WeightSpec { alpha: Some(d("-1")), ..WeightSpec::default() };
         let r = integrate_expr(&p("1"), &d("0"), &UpperLimit::parse("1").unwrap(), Some(&w), None, 64, &Options::new());
