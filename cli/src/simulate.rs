@@ -14,7 +14,8 @@
 //!
 //! `--profile FILE.csv` replaces the built-in profile by a table (`x,h`,
 //! `maugis_solver::profile_file`); `--periodic` makes the domain one period of
-//! a periodic half-plane; `--half-width` sets the domain. A table with a bad
+//! a periodic half-plane; `--half-width` sets the domain; `--law exp` the smooth
+//! exponential adhesion law in place of Dugdale's. A table with a bad
 //! line exits 2 naming the file and the line, before any work.
 //!
 //! `--format json` writes no file and prints one JSON object, with
@@ -32,6 +33,7 @@ use plotters::prelude::*;
 
 use maugis::contact::curve::{load_area_curve, CurveOptions};
 use maugis::contact::model::Params;
+use maugis_solver::profile::AdhesionLaw;
 use maugis_solver::profile_file::ProfileTable;
 use maugis_solver::run::{simulate_with, Domain, SimulationOptions, SimulationSpec, StateRecord};
 
@@ -46,6 +48,25 @@ pub enum SimFormat {
     Files,
     /// One JSON object on stdout, no files.
     Json,
+}
+
+/// The interface law (`--law`), shared with `maugis sweep --solver`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, ValueEnum)]
+pub enum LawArg {
+    /// Dugdale-Maugis: constant stress lambda over the range 1/lambda (the paper's law).
+    #[default]
+    Dugdale,
+    /// Smooth: hard wall and stress lambda exp(-lambda g), the same peak stress and work.
+    Exp,
+}
+
+impl From<LawArg> for AdhesionLaw {
+    fn from(l: LawArg) -> AdhesionLaw {
+        match l {
+            LawArg::Dugdale => AdhesionLaw::Dugdale,
+            LawArg::Exp => AdhesionLaw::Exponential,
+        }
+    }
 }
 
 /// Flags of `maugis simulate`.
@@ -89,6 +110,10 @@ pub struct SimulateArgs {
     /// wave alone, alpha (1 - cos(2 pi x/beta)) on [-beta/2, beta/2].
     #[arg(long)]
     pub periodic: bool,
+    /// The adhesion law: `dugdale` (default) or `exp` (smooth, matched in
+    /// peak stress and work of adhesion; docs/solver.md).
+    #[arg(long, value_name = "LAW", default_value = "dugdale")]
+    pub law: LawArg,
 }
 
 /// The solver's options from the flags: the profile table read and checked
@@ -102,7 +127,7 @@ fn options(a: &SimulateArgs) -> Result<SimulationOptions, String> {
         }
     };
     let domain = if a.periodic { Domain::Periodic } else { Domain::Free };
-    Ok(SimulationOptions { profile, half_width: a.half_width, domain })
+    Ok(SimulationOptions { profile, half_width: a.half_width, domain, law: a.law.into() })
 }
 
 /// Runs the subcommand.

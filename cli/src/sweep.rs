@@ -100,6 +100,10 @@ pub struct SweepArgs {
     /// With --solver: approach steps per leg of every cycle instead of the rule; give --cells with it.
     #[arg(long, value_name = "S", requires_all = ["solver", "cells"])]
     pub steps: Option<usize>,
+    /// With --solver: the adhesion law of every cycle, `dugdale` (default) or
+    /// `exp` (smooth, matched in peak stress and work; docs/solver.md).
+    #[arg(long, value_name = "LAW", default_value = "dugdale", requires = "solver")]
+    pub law: crate::simulate::LawArg,
     /// Output directory (written atomically).
     #[arg(long, value_name = "DIR", default_value = "maugis-sweep")]
     pub out: PathBuf,

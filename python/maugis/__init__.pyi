@@ -103,4 +103,5 @@ def simulate(
     profile: str | os.PathLike[str] | tuple[ArrayLike, ArrayLike] | None = ...,
     half_width: float | None = ...,
     periodic: bool = ...,
+    law: Literal["dugdale", "exp"] = ...,
 ) -> Record: ...

@@ -24,6 +24,7 @@ def simulate(
     profile=None,
     half_width=None,
     periodic=False,
+    law="dugdale",
 ):
     """One displacement-controlled cycle of the numerical Dugdale-Maugis solver
     (``maugis-solver``; ``maugis simulate --format json``): loading to the
@@ -44,9 +45,13 @@ def simulate(
     * ``half_width``: the domain half-width ``X`` (``--half-width``);
     * ``periodic``: a periodic half-plane of period ``2X`` (``--periodic``);
       the built-in profile is then the wave ``alpha (1 - cos(2 pi x/beta))``
-      on one period ``[-beta/2, beta/2]``, and no model is compared.
+      on one period ``[-beta/2, beta/2]``, and no model is compared;
+    * ``law``: the adhesion law (``--law``), ``"dugdale"`` (the paper's) or
+      ``"exp"``, a smooth law with a hard wall and the stress
+      ``lam exp(-lam g)``, matched to Dugdale's in peak stress and work of
+      adhesion (so its equivalent Maugis parameter is ``lam``).
 
-    Returns a :class:`Record` with ``domain``, ``profile``, ``lambda``,
+    Returns a :class:`Record` with ``law``, ``domain``, ``profile``, ``lambda``,
     ``alpha``, ``beta``, ``cells``, ``half_width``, ``datum``,
     ``stiff_cycle_work`` (``oint L dDelta`` of the simulated stiff-machine
     cycle, not the dissipation), ``dissipation`` (``load_control``,
@@ -79,8 +84,10 @@ def simulate(
         half_width = _real_scalar("half_width", half_width)
     if not isinstance(periodic, (bool, np.bool_)):
         raise TypeError(f"periodic must be True or False (got {periodic!r})")
+    if not isinstance(law, str):
+        raise TypeError(f"law must be 'dugdale' or 'exp' (got {law!r})")
     text = _ext.simulate_json(
         lam, alpha, beta, amax, _count("cells", cells), _count("steps", steps),
-        path, columns, half_width, bool(periodic),
+        path, columns, half_width, bool(periodic), law,
     )
     return _convert(json.loads(text))

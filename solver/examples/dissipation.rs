@@ -1,6 +1,6 @@
 //! W of the closed in-contact cycle from the solver next to the model's.
 //!
-//! `cargo run --release -p maugis-solver --example dissipation -- LAMBDA ALPHA BETA AMAX CELLS STEPS`
+//! `cargo run --release -p maugis-solver --example dissipation -- LAMBDA ALPHA BETA AMAX CELLS STEPS [dugdale|exp]`
 //!
 //! Prints the solver's W and W_d (datum 100), the model's at the same amax
 //! (600 points), their differences, the wall time and the stiff-cycle work.
@@ -9,17 +9,20 @@ use std::time::Instant;
 
 use maugis::contact::curve::{load_area_curve, CurveOptions};
 use maugis::contact::model::Params;
-use maugis_solver::run::{simulate, SimulationSpec};
+use maugis_solver::profile::AdhesionLaw;
+use maugis_solver::run::{simulate_with, SimulationOptions, SimulationSpec};
 
 fn main() {
+    let law = std::env::args().nth(7).map_or(AdhesionLaw::Dugdale, |n| AdhesionLaw::from_name(&n).expect("law"));
     let a: Vec<f64> = std::env::args()
         .skip(1)
+        .take(6)
         .map(|s| s.parse().expect("numbers"))
         .collect();
     let (lambda, alpha, beta, amax, cells, steps) =
         (a[0], a[1], a[2], a[3], a[4] as usize, a[5] as usize);
     let t = Instant::now();
-    let sim = simulate(
+    let sim = simulate_with(
         SimulationSpec {
             lambda,
             alpha,
@@ -28,6 +31,7 @@ fn main() {
             cells,
             steps_per_leg: steps,
         },
+        SimulationOptions { law, ..SimulationOptions::default() },
         &mut |_, _| {},
     )
     .unwrap();

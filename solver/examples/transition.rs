@@ -2,14 +2,18 @@
 //! `chi = sqrt(beta/alpha^2)` at fixed `beta` (`alpha = sqrt(beta)/chi`) and each
 //! threshold fraction of `W_JKR`, the bisection of `maugis_solver::transition`.
 //!
-//! `cargo run --release -p maugis-solver --example transition -- OUT.csv BETA CHI,.. FRACTION,.. [LMIN LMAX SCAN]`
+//! `cargo run --release -p maugis-solver --example transition -- OUT.csv BETA CHI,.. FRACTION,.. [LMIN LMAX SCAN [LAW [CELLS STEPS]]]`
+//!
+//! `LAW`: `dugdale` (default) or `exp`; `CELLS STEPS`: one fixed coarse
+//! resolution (the refined search doubles both) instead of the map's rule.
 //!
 //! The Johnson parameters run in parallel (threads, one per chi); a row per
 //! (chi, fraction) goes to stdout and the CSV.
 
 use std::time::Instant;
 
-use maugis_solver::map::ResolutionRule;
+use maugis_solver::map::{Resolution, ResolutionRule};
+use maugis_solver::profile::AdhesionLaw;
 use maugis_solver::transition::{transitions, TransitionSpec};
 
 fn list(s: &str) -> Vec<f64> {
@@ -21,6 +25,11 @@ fn main() {
     let (out, beta, chis, fractions) = (&a[0], a[1].parse::<f64>().expect("beta"), list(&a[2]), list(&a[3]));
     let num = |i: usize, d: f64| a.get(i).map_or(d, |s| s.parse().expect("a number"));
     let (lmin, lmax, scan) = (num(4, 0.1), num(5, 10.0), num(6, 9.0) as usize);
+    let law = a.get(7).map_or(AdhesionLaw::Dugdale, |n| AdhesionLaw::from_name(n).expect("law: dugdale or exp"));
+    let resolution = match (a.get(8), a.get(9)) {
+        (Some(c), Some(s)) => ResolutionRule::Fixed(Resolution { cells: c.parse().expect("cells"), steps_per_leg: s.parse().expect("steps") }),
+        _ => ResolutionRule::Auto,
+    };
     let rows: Vec<String> = std::thread::scope(|sc| {
         let handles: Vec<_> = chis
             .iter()
@@ -38,7 +47,8 @@ fn main() {
                             scan,
                             fraction: fractions[0],
                             rel_tol: 0.03,
-                            resolution: ResolutionRule::Auto,
+                            resolution,
+                            law,
                         };
                     let found = transitions(spec, &fractions, &mut |_| {});
                     for (k, &fraction) in fractions.iter().enumerate() {

@@ -87,7 +87,10 @@
 //! following, as in an experiment with a stiff machine.
 
 mod relax;
+mod smooth;
 mod zone_ends;
+
+pub use smooth::{ANDERSON_DEPTH, CONTRACTING_STEPS, MAX_FIXED_POINT_STEPS, THETA_TOL};
 
 pub use zone_ends::{END_TOL, EDGE_STENCIL, MAX_END_STEPS};
 
@@ -378,6 +381,20 @@ impl ContactSolver {
         crate::error::finite(approach, "the approach")?;
         let (sigma0, delta_c) = self.adhesion.strength_and_range();
         let products0 = self.op.products();
+        if let Adhesion::Exponential { lambda } = self.adhesion {
+            let (cg, steps, residual) = self.solve_smooth(approach, sigma0, lambda)?;
+            // The reported zone: contact and the cells whose gap is below the
+            // range (adhesive traction above sigma0/e).
+            for i in 0..self.h.len() {
+                self.zone[i] = self.q[i] > 0.0 || self.gap[i] < delta_c;
+            }
+            self.last_ends.clear();
+            let products = self.op.products() - products0;
+            let mut state = self.summarise(approach, sigma0, cg, steps, residual, products);
+            // No zone ends to place, so no grid-pinning error.
+            state.zone_ends_placed = true;
+            return Ok(state);
+        }
         let (mut it, mut zone_updates, mut residual) = (0, 0, 0.0);
         let mut placed = false;
         // 1. Continuation: the previous state's zone ends, moved within their
@@ -510,17 +527,23 @@ impl ContactSolver {
         let mut load = 0.0;
         let mut elastic = 0.0;
         let mut adhesive = 0.0;
+        let smooth = matches!(self.adhesion, Adhesion::Exponential { .. });
         for i in 0..n {
             load += self.traction[i] * dx;
             elastic += 0.5 * self.traction[i] * self.u[i] * dx;
-            if self.zone[i] {
+            if smooth {
+                // phi(g) = -exp(-lambda g) = -theta on every cell.
+                adhesive -= self.theta[i] * dx;
+            } else if self.zone[i] {
                 let g = if self.q[i] > 0.0 { 0.0 } else { self.gap[i] };
                 adhesive -= self.theta[i] * (1.0 - lambda * g) * dx;
             }
         }
-        // Zone ends: a partial end cell is covered from the zone side.
+        // Zone ends: a partial end cell is covered from the zone side (under a
+        // smooth law theta is the traction's fraction, and the zone is on whole cells).
         let theta = &self.theta;
-        let edge = |(a, b): (usize, usize)| (grid.x(a) + (0.5 - theta[a]) * dx, grid.x(b) - (0.5 - theta[b]) * dx);
+        let cover = |t: f64| if smooth { 1.0 } else { t };
+        let edge = |(a, b): (usize, usize)| (grid.x(a) + (0.5 - cover(theta[a])) * dx, grid.x(b) - (0.5 - cover(theta[b])) * dx);
         let q = &self.q;
         // Contact edges: q = p + sigma0 vanishes like sqrt(distance) at a
         // Dugdale-Maugis (and Hertz) edge, so q^2 is extrapolated linearly from

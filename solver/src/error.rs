@@ -60,6 +60,14 @@ pub enum SolverError {
         /// The domain half-width it must cover.
         half_width: f64,
     },
+    /// An adhesion law's name that the solver does not know
+    /// ([`crate::profile::AdhesionLaw::from_name`]).
+    UnknownLaw {
+        /// The name given.
+        name: String,
+        /// The names it knows.
+        known: Vec<&'static str>,
+    },
     /// An error from the `maugis` library (the semi-analytical model).
     Model(maugis::Error),
 }
@@ -154,6 +162,9 @@ impl fmt::Display for SolverError {
                 "the profile table covers x in [{first}, {last}], but the domain is [-{half_width}, {half_width}]: \
                  extend the table or narrow the domain"
             ),
+            SolverError::UnknownLaw { name, known } => {
+                write!(f, "unknown adhesion law {name:?}; known: {}", known.join(", "))
+            }
             SolverError::Model(e) => write!(f, "{e}"),
         }
     }

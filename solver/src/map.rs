@@ -52,7 +52,8 @@ use rayon::prelude::*;
 use maugis::contact::sweep::{sweep_point, Regime, SweepGrid, SweepPoint};
 
 use crate::error::{finite, Result, SolverError};
-use crate::run::{simulate, Simulation, SimulationSpec};
+use crate::profile::AdhesionLaw;
+use crate::run::{simulate_with, Simulation, SimulationOptions, SimulationSpec};
 
 /// The default label margin over the smooth cylinder's W: 0.02 `dgamma l_h`,
 /// the tolerance of W near 0 of the solver's dissipation test
@@ -104,11 +105,14 @@ pub struct MapOptions {
     pub resolution: ResolutionRule,
     /// The label margin over the smooth cylinder's W (`>= 0`).
     pub margin: f64,
+    /// The adhesion law of every cycle (maps written before the law existed read as Dugdale).
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub law: AdhesionLaw,
 }
 
 impl Default for MapOptions {
     fn default() -> Self {
-        MapOptions { resolution: ResolutionRule::Auto, margin: DEFAULT_MARGIN }
+        MapOptions { resolution: ResolutionRule::Auto, margin: DEFAULT_MARGIN, law: AdhesionLaw::Dugdale }
     }
 }
 
@@ -216,10 +220,16 @@ pub fn measure(sim: &Simulation) -> Result<CycleMeasure> {
     })
 }
 
-/// Runs and measures the cycle of `(lambda, alpha, beta)` up to `amax` at `resolution`.
+/// Runs and measures the cycle of `(lambda, alpha, beta)` up to `amax` at
+/// `resolution`, under the Dugdale law.
 pub fn measure_cycle(lambda: f64, alpha: f64, beta: f64, amax: f64, resolution: Resolution) -> Result<CycleMeasure> {
+    measure_cycle_under(AdhesionLaw::Dugdale, lambda, alpha, beta, amax, resolution)
+}
+
+/// [`measure_cycle`] under the adhesion law `law`.
+pub fn measure_cycle_under(law: AdhesionLaw, lambda: f64, alpha: f64, beta: f64, amax: f64, resolution: Resolution) -> Result<CycleMeasure> {
     let spec = SimulationSpec { lambda, alpha, beta, amax, cells: resolution.cells, steps_per_leg: resolution.steps_per_leg };
-    measure(&simulate(spec, &mut |_, _| {})?)
+    measure(&simulate_with(spec, SimulationOptions { law, ..SimulationOptions::default() }, &mut |_, _| {})?)
 }
 
 /// One point of a solver map.
@@ -325,7 +335,7 @@ pub fn run_map<P: Fn() + Sync>(grid: SweepGrid, options: MapOptions, shard: Opti
     options.check()?;
     let cycles = map_cycles(&grid, shard)?;
     let run = |&(lambda, alpha, beta): &(f64, f64, f64)| {
-        let r = measure_cycle(lambda, alpha, beta, grid.amax, options.resolution.at(lambda));
+        let r = measure_cycle_under(options.law, lambda, alpha, beta, grid.amax, options.resolution.at(lambda));
         progress();
         (key(lambda, alpha, beta), r)
     };

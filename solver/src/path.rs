@@ -94,10 +94,9 @@ pub fn cycle(solver: &mut ContactSolver, opts: CycleOptions, progress: &mut dyn 
     if opts.steps_per_leg < 2 || opts.steps_per_leg > 1_000_000 {
         return Err(SolverError::Domain { what: format!("steps per leg must lie in [2, 1e6] (got {})", opts.steps_per_leg) });
     }
-    let (_, delta_c) = solver.adhesion().strength_and_range();
     let hmin = solver.profile_min();
     // Just out of range (the zone rule compares the gap with delta_c strictly).
-    let start = hmin - delta_c * (1.0 + 1e-9);
+    let start = hmin - solver.adhesion().start_distance() * (1.0 + 1e-9);
     let step = (hmin + hertz_approach(opts.amax, solver.datum()) - start) / opts.steps_per_leg as f64;
     let total = 2 * opts.steps_per_leg;
     solver.reset();

@@ -122,6 +122,61 @@ pub enum Adhesion {
         /// Maugis parameter `lambda > 0`.
         lambda: f64,
     },
+    /// A smooth law: a hard wall (`g >= 0`) and the tensile traction
+    /// `sigma(g) = sigma0 exp(-g/rho)` for `g >= 0`, with `sigma0 = lambda`
+    /// and `rho = 1/lambda`. Matched to [`Adhesion::Dugdale`] of the same
+    /// `lambda` as Maugis (1992) and Johnson and Greenwood (1997) match the
+    /// Lennard-Jones law: the same peak stress `sigma0` and the same work of
+    /// adhesion `int sigma dg = sigma0 rho = 1`, hence the same range
+    /// `w/sigma0 = delta_c`; its equivalent Maugis parameter is `lambda`
+    /// itself (`docs/solver.md`).
+    Exponential {
+        /// Maugis parameter `lambda > 0` (peak stress; `1/lambda` the decay length).
+        lambda: f64,
+    },
+}
+
+/// The adhesion law's name, as the front ends select it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
+#[non_exhaustive]
+pub enum AdhesionLaw {
+    /// [`Adhesion::Dugdale`] (the paper's law; the default).
+    #[default]
+    Dugdale,
+    /// [`Adhesion::Exponential`], the smooth law.
+    Exponential,
+}
+
+impl AdhesionLaw {
+    /// Every law, in the order the front ends list them.
+    pub const ALL: [AdhesionLaw; 2] = [AdhesionLaw::Dugdale, AdhesionLaw::Exponential];
+
+    /// `"dugdale"` or `"exp"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            AdhesionLaw::Dugdale => "dugdale",
+            AdhesionLaw::Exponential => "exp",
+        }
+    }
+
+    /// The law named `name` (`"dugdale"`, `"exp"`); errors:
+    /// [`SolverError::UnknownLaw`].
+    pub fn from_name(name: &str) -> Result<AdhesionLaw> {
+        AdhesionLaw::ALL.into_iter().find(|l| l.name() == name).ok_or_else(|| SolverError::UnknownLaw {
+            name: name.to_string(),
+            known: AdhesionLaw::ALL.map(AdhesionLaw::name).to_vec(),
+        })
+    }
+
+    /// The law at Maugis parameter `lambda`, checked.
+    pub fn at(self, lambda: f64) -> Result<Adhesion> {
+        match self {
+            AdhesionLaw::Dugdale => Adhesion::dugdale(lambda),
+            AdhesionLaw::Exponential => Adhesion::exponential(lambda),
+        }
+    }
 }
 
 impl Adhesion {
@@ -134,11 +189,27 @@ impl Adhesion {
         Ok(Adhesion::Dugdale { lambda })
     }
 
+    /// The exponential law with Maugis parameter `lambda`, checked (the range of [`Adhesion::dugdale`]).
+    pub fn exponential(lambda: f64) -> Result<Adhesion> {
+        Adhesion::dugdale(lambda).map(|_| Adhesion::Exponential { lambda })
+    }
+
+    /// How far out of contact a cycle starts, in `l_v`: the range `delta_c`
+    /// for Dugdale (no traction beyond it); `4 rho` for the exponential law
+    /// (traction below `e^-4 = 1.8 %` of its peak).
+    pub fn start_distance(&self) -> f64 {
+        match *self {
+            Adhesion::None => 0.0,
+            Adhesion::Dugdale { lambda } => 1.0 / lambda,
+            Adhesion::Exponential { lambda } => 4.0 / lambda,
+        }
+    }
+
     /// `(sigma0, delta_c)`; `(0, 0)` without adhesion.
     pub fn strength_and_range(&self) -> (f64, f64) {
         match *self {
             Adhesion::None => (0.0, 0.0),
-            Adhesion::Dugdale { lambda } => (lambda, 1.0 / lambda),
+            Adhesion::Dugdale { lambda } | Adhesion::Exponential { lambda } => (lambda, 1.0 / lambda),
         }
     }
 }

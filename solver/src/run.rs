@@ -4,7 +4,7 @@
 //!
 //! [`simulate`] takes `(lambda, alpha, beta)` and the run's extent, sizes the
 //! domain with [`suggested_half_width`], builds the wavy-cylinder profile and
-//! the Dugdale law, runs a displacement-controlled loading-unloading
+//! the adhesion law (Dugdale by default, [`SimulationOptions::law`]), runs a displacement-controlled loading-unloading
 //! [`cycle`], and compares every state with the semi-analytical load at the
 //! same contact half-width ([`compare_with_model`]).
 
@@ -18,7 +18,7 @@ use crate::grid::Grid;
 use crate::path::{
     compare_with_model, cycle, load_controlled, suggested_half_width, Cycle, CycleOptions, LoadControlled, LoadDirection, ModelComparison,
 };
-use crate::profile::{Adhesion, Profile};
+use crate::profile::{AdhesionLaw, Profile};
 use crate::profile_file::ProfileTable;
 
 /// What to simulate.
@@ -78,6 +78,8 @@ pub struct SimulationOptions {
     pub half_width: Option<f64>,
     /// Free or periodic.
     pub domain: Domain,
+    /// The adhesion law at the spec's `lambda` (default Dugdale).
+    pub law: AdhesionLaw,
 }
 
 /// A simulated cycle with its setup and the model at the same half-widths.
@@ -163,6 +165,7 @@ impl Simulation {
             }
         }
         SimulationReport {
+            law: self.options.law.name(),
             domain: self.options.domain.name(),
             profile: match (&self.options.profile, self.options.domain) {
                 (Some(_), _) => "table",
@@ -246,6 +249,8 @@ pub struct DissipationRecord {
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct SimulationReport {
+    /// The adhesion law, `"dugdale"` or `"exp"` ([`AdhesionLaw::name`]).
+    pub law: &'static str,
     /// `"free"` or `"periodic"` ([`Domain`]).
     pub domain: &'static str,
     /// `"wavy_cylinder"` (the built-in profile), `"sinusoid"` (the built-in
@@ -300,7 +305,7 @@ pub fn simulate_with(spec: SimulationSpec, options: SimulationOptions, progress:
         (None, Domain::Free) => Profile::wavy_cylinder(spec.alpha, spec.beta)?,
         (None, Domain::Periodic) => Profile::sinusoid(spec.alpha, spec.beta)?,
     };
-    let adhesion = Adhesion::dugdale(spec.lambda)?;
+    let adhesion = options.law.at(spec.lambda)?;
     let mut solver = match options.domain {
         Domain::Free => ContactSolver::new(grid, None, &profile, adhesion, SolveOptions::default())?,
         Domain::Periodic => ContactSolver::periodic(grid, None, &profile, adhesion, SolveOptions::default())?,

@@ -36,7 +36,8 @@ use maugis::contact::curve::{load_area_curve, CurveOptions};
 use maugis::contact::model::Params;
 
 use crate::error::{finite, Result, SolverError};
-use crate::map::{measure_cycle, Resolution, ResolutionRule};
+use crate::map::{measure_cycle_under, Resolution, ResolutionRule};
+use crate::profile::AdhesionLaw;
 
 /// The `lambda` whose model W stands for the JKR limit.
 pub const JKR_LAMBDA: f64 = 1000.0;
@@ -63,6 +64,9 @@ pub struct TransitionSpec {
     pub rel_tol: f64,
     /// The resolution (the refined search doubles cells and steps).
     pub resolution: ResolutionRule,
+    /// The adhesion law of every cycle (`W_JKR` is the model's, law-free in the JKR limit).
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub law: AdhesionLaw,
 }
 
 /// One evaluation of the excess.
@@ -200,8 +204,8 @@ pub type Cache = std::collections::HashMap<(u64, usize, usize), Evaluation>;
 
 /// `E(lambda)` at `resolution`.
 pub fn evaluate(spec: &TransitionSpec, lambda: f64, resolution: Resolution) -> Result<Evaluation> {
-    let w = measure_cycle(lambda, spec.alpha, spec.beta, spec.amax, resolution)?.w;
-    let w_smooth = measure_cycle(lambda, 0.0, spec.beta, spec.amax, resolution)?.w;
+    let w = measure_cycle_under(spec.law, lambda, spec.alpha, spec.beta, spec.amax, resolution)?.w;
+    let w_smooth = measure_cycle_under(spec.law, lambda, 0.0, spec.beta, spec.amax, resolution)?.w;
     Ok(Evaluation { lambda, w, w_smooth, resolution })
 }
 

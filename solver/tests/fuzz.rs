@@ -195,7 +195,7 @@ fn simulation_spec_and_options() {
         } else {
             None
         };
-        let options = SimulationOptions { profile, half_width, domain };
+        let options = SimulationOptions { profile, half_width, domain, ..SimulationOptions::default() };
         if let Ok(sim) = simulate_with(spec, options, &mut |_, _| ()) {
             simulated.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
             let c = &sim.cycle;

@@ -14,7 +14,7 @@ fn grid() -> SweepGrid {
 }
 
 fn options() -> MapOptions {
-    MapOptions { resolution: ResolutionRule::Fixed(Resolution { cells: 1024, steps_per_leg: 100 }), margin: DEFAULT_MARGIN }
+    MapOptions { resolution: ResolutionRule::Fixed(Resolution { cells: 1024, steps_per_leg: 100 }), margin: DEFAULT_MARGIN, ..MapOptions::default() }
 }
 
 #[test]

@@ -3,6 +3,7 @@
 //! bracket holds the crossing of the threshold by the evaluations themselves,
 //! the uncertainty covers the two resolutions, and bad specs are typed errors.
 
+use maugis_solver::profile::AdhesionLaw;
 use maugis_solver::map::{Resolution, ResolutionRule};
 use maugis_solver::transition::{transition, Search, TransitionSpec};
 use maugis_solver::SolverError;
@@ -18,6 +19,7 @@ fn spec() -> TransitionSpec {
         fraction: 0.1,
         rel_tol: 0.25,
         resolution: ResolutionRule::Fixed(Resolution { cells: 1024, steps_per_leg: 100 }),
+        law: AdhesionLaw::Dugdale,
     }
 }
 

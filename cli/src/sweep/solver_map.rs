@@ -217,7 +217,7 @@ pub fn run(a: &SweepArgs, grid: SweepGrid) -> Result<(), String> {
         (Some(cells), Some(steps_per_leg)) => ResolutionRule::Fixed(Resolution { cells, steps_per_leg }),
         _ => ResolutionRule::Auto,
     };
-    let options = MapOptions { resolution, margin: a.margin };
+    let options = MapOptions { resolution, margin: a.margin, law: a.law.into() };
     let flag = |e: maugis_solver::SolverError| match resolution {
         ResolutionRule::Fixed(_) => format!("--cells/--steps: {e}"),
         ResolutionRule::Auto => format!("--margin: {e}"),
