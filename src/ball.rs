@@ -389,7 +389,7 @@ impl Ball {
         Ball { mid, rad }
     }
 
-    /// [`Error::BallOutOfRange`](crate::Error::BallOutOfRange) for this ball as the argument `arg`.
+    /// [`Error::BallOutOfRange`] for this ball as the argument `arg`.
     pub fn out_of_range(&self, arg: &'static str, allowed: crate::error::Interval) -> crate::Error {
         crate::Error::BallOutOfRange {
             arg,
@@ -400,7 +400,7 @@ impl Ball {
     }
 
     /// `Ok` when the whole ball lies in `allowed`, else
-    /// [`Error::BallOutOfRange`](crate::Error::BallOutOfRange) naming `arg`.
+    /// [`Error::BallOutOfRange`] naming `arg`.
     pub fn check_within(&self, arg: &'static str, allowed: crate::error::Interval) -> crate::Result<()> {
         let low_ok = if allowed.lo_closed { self.lower() >= allowed.lo } else { self.lower() > allowed.lo };
         let high_ok = if allowed.hi_closed { self.upper() <= allowed.hi } else { self.upper() < allowed.hi };
@@ -603,7 +603,7 @@ impl Ball {
     /// `sqrt(self)`; an error if the ball reaches below zero.
     pub fn sqrt(&self) -> Result<Ball> {
         if self.lower() < 0 {
-            return Err(Error::Domain { what: "sqrt of a negative number".into() });
+            return Err(self.out_of_range("sqrt argument", crate::error::Interval::at_least(0.0)));
         }
         Ok(self.monotone(true, |x, r| {
             let mut y = Float::new(x.prec());
@@ -628,7 +628,7 @@ impl Ball {
     /// `ln(self)`; an error unless the ball is positive.
     pub fn ln(&self) -> Result<Ball> {
         if !self.is_positive() {
-            return Err(Error::Domain { what: "logarithm of a non-positive number".into() });
+            return Err(self.out_of_range("ln argument", crate::error::Interval::above(0.0)));
         }
         Ok(self.monotone(true, |x, r| {
             let mut y = Float::new(x.prec());
@@ -640,7 +640,7 @@ impl Ball {
     /// `acosh(self)` for `self >= 1`.
     pub fn acosh(&self) -> Result<Ball> {
         if self.lower() < 1 {
-            return Err(Error::Domain { what: "acosh of a number below 1".into() });
+            return Err(self.out_of_range("acosh argument", crate::error::Interval::at_least(1.0)));
         }
         Ok(self.monotone(true, |x, r| {
             let mut y = Float::new(x.prec());
@@ -691,7 +691,7 @@ impl Ball {
     /// `ln(1 + self)` for `self > -1` (accurate for small arguments).
     pub fn ln_1p(&self) -> Result<Ball> {
         if self.lower() <= -1 {
-            return Err(Error::Domain { what: "ln(1+x) needs x > -1".into() });
+            return Err(self.out_of_range("ln_1p argument", crate::error::Interval::above(-1.0)));
         }
         Ok(self.monotone(true, |x, r| {
             let mut y = Float::new(x.prec());
@@ -750,7 +750,7 @@ impl Ball {
     pub fn gamma(&self) -> Result<Ball> {
         self.exact_point("gamma")?;
         if is_nonpositive_integer(&self.mid) {
-            return Err(Error::Domain { what: "gamma at a pole (non-positive integer)".into() });
+            return Err(Error::Pole { function: "Gamma", at: self.mid.to_f64() });
         }
         let b = self.correctly_rounded(|x, y| y.assign_round(x.gamma_ref(), Round::Nearest));
         if !b.is_finite() {
@@ -772,7 +772,7 @@ impl Ball {
     pub fn digamma(&self) -> Result<Ball> {
         self.exact_point("digamma")?;
         if is_nonpositive_integer(&self.mid) {
-            return Err(Error::Domain { what: "digamma at a pole (non-positive integer)".into() });
+            return Err(Error::Pole { function: "digamma", at: self.mid.to_f64() });
         }
         Ok(self.correctly_rounded(|x, y| y.assign_round(x.digamma_ref(), Round::Nearest)))
     }

@@ -16,7 +16,9 @@ pub enum Error {
         /// Which argument.
         what: &'static str,
     },
-    /// An argument lies outside the function's documented domain.
+    /// An argument lies outside the function's documented domain. The library no
+    /// longer builds this variant (every domain error is one of the structured
+    /// variants below, with fields); it stays so that code matching on it compiles.
     Domain {
         /// What is wrong and what is allowed.
         what: String,
@@ -267,6 +269,13 @@ pub enum Error {
         /// Whether the inputs were balls (then tighter inputs may separate it).
         input_balls: bool,
     },
+    /// Parameters at a degenerate position the method does not cover.
+    Degenerate {
+        /// The function or method.
+        function: &'static str,
+        /// What the parameters must satisfy.
+        needs: &'static str,
+    },
     /// An output slice whose length differs from the input slice's.
     LengthMismatch {
         /// How many inputs.
@@ -405,6 +414,7 @@ impl fmt::Display for Error {
                     write!(f, " (the parameters are too extreme for the certified solver)")
                 }
             }
+            Error::Degenerate { function, needs } => write!(f, "{function} needs {needs} (a degenerate position)"),
             Error::LengthMismatch { inputs, outputs } => {
                 write!(f, "{inputs} points but room for {outputs} results (make the lengths equal)")
             }

@@ -57,7 +57,14 @@ pub fn traction_ball_mp(inputs: &ModelBalls, m: &Ball, x: &Ball, prec: u32) -> R
         });
     }
     if edge.upper() >= 0 {
-        return Err(Error::Domain { what: "the contact edge |x| = abar lies inside the ball of x: the traction is singular in slope there".into() });
+        // The contact edge |x| = abar inside the ball of x: the traction is
+        // singular in slope there.
+        return Err(Error::BallOutOfRange {
+            arg: "|x| - abar (the contact edge lies inside the ball of x)",
+            lower: edge.lower().to_f64(),
+            upper: edge.upper().to_f64(),
+            allowed: crate::error::Interval { lo: f64::NEG_INFINITY, hi: 0.0, lo_closed: false, hi_closed: false },
+        });
     }
     let w = a.sub(&ax).mul(&a.add(&ax)).sqrt()?;
     let e = m.add_i64(-1);
@@ -102,6 +109,6 @@ mod tests {
         }
         assert!(traction_mp(params, abar, &Ball::from_f64(0.5, 53).unwrap(), 0.1, 64).is_err());
         let x = Ball::with_mag(rug::Float::with_val(53, 1.3), crate::ball::Mag::from_f64(1e-3));
-        assert!(matches!(traction_ball_mp(&ModelBalls::exact(params, abar).unwrap(), &m, &x, 64), Err(Error::Domain { .. })));
+        assert!(matches!(traction_ball_mp(&ModelBalls::exact(params, abar).unwrap(), &m, &x, 64), Err(Error::BallOutOfRange { .. })));
     }
 }

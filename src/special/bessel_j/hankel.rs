@@ -115,7 +115,7 @@ const RENORM_HIGH: f64 = 1.0 / RENORM_LOW;
 /// until the remainder bound is below `2^-wp`; `None` if the terms diverge first.
 pub fn bessel_j_hankel(n: u64, x: &Float, wp: u32) -> Result<Option<Ball>> {
     let xb = Ball::from_float(x, wp);
-    let n_i = i64::try_from(n).map_err(|_| Error::Domain { what: "Bessel order too large".into() })?;
+    let n_i = i64::try_from(n).map_err(|_| Error::IntegerOutOfRange { arg: "n", value: i64::MAX, min: 0, max: i64::MAX })?;
     let four_n2 = 4i128 * (n_i as i128) * (n_i as i128);
     let inv_8x = xb.mul_i64(8).recip()?;
     // exp(|n^2 - 1/4| / x) <= 2^e with e from the lower end of x (x is exact here,

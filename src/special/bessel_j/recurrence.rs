@@ -19,9 +19,9 @@ use crate::special::check_finite;
 pub fn bessel_j_sequence_mp(nmax: u64, x: &Float, wp: u32) -> Result<Vec<Ball>> {
     check_finite(x, "x")?;
     if *x <= 0 {
-        return Err(Error::Domain { what: "bessel_j_sequence_mp needs x > 0".into() });
+        return Err(Error::OutOfRange { arg: "x", value: x.to_f64(), allowed: crate::error::Interval::above(0.0) });
     }
-    let top = i64::try_from(nmax).map_err(|_| Error::Domain { what: "order too large".into() })?;
+    let top = i64::try_from(nmax).map_err(|_| Error::IntegerOutOfRange { arg: "nmax", value: i64::MAX, min: 0, max: i64::MAX })?;
     let upper = bessel_j_ball(top + 1, x, wp)?;
     let lower = bessel_j_ball(top, x, wp)?;
     let xb = Ball::from_float(x, wp);

@@ -48,7 +48,7 @@ const LOG_PREFACTOR_MIN_ORDER: u64 = 128;
 /// below `2^-(wp+16)`.
 fn prefactor(n: u64, half_x: &Ball, wp: u32) -> Result<Ball> {
     if n < LOG_PREFACTOR_MIN_ORDER {
-        let order = u32::try_from(n).map_err(|_| Error::Domain { what: "Bessel order too large".into() })?;
+        let order = u32::try_from(n).map_err(|_| Error::IntegerOutOfRange { arg: "n", value: i64::try_from(n).unwrap_or(i64::MAX), min: 0, max: u32::MAX as i64 })?;
         let fact = Ball::factorial(order, wp);
         return half_x.pow_u64(n).div(&fact);
     }
@@ -60,7 +60,7 @@ fn prefactor(n: u64, half_x: &Ball, wp: u32) -> Result<Ball> {
     // instead of overflowing, and the precision check below refuses it
     let p = wp.saturating_add(magnitude.log2().max(0.0) as u32).saturating_add(16);
     crate::error::check_working_prec(p)?;
-    let n_i = i64::try_from(n).map_err(|_| Error::Domain { what: "Bessel order too large".into() })?;
+    let n_i = i64::try_from(n).map_err(|_| Error::IntegerOutOfRange { arg: "n", value: i64::MAX, min: 0, max: i64::MAX })?;
     let lnfact_mid = Float::with_val(p, n_i + 1).ln_gamma();
     let ulp = match lnfact_mid.get_exp() {
         Some(e) => Mag::pow2(e as i64 - p as i64),
@@ -98,7 +98,7 @@ pub fn bessel_j_series(n: u64, x: &Float, wp: u32) -> Result<Ball> {
         // t_{k+1} = t_k z / ((k+1)(n+k+1))
         let d = (k + 1)
             .checked_mul(n + k + 1)
-            .ok_or_else(|| Error::Domain { what: "Bessel series index overflow".into() })?;
+            .ok_or_else(|| Error::precondition("Bessel series index within i64"))?;
         t *= &z_mid;
         t /= d;
         let a = eta.add(eta_z).add(two_u);

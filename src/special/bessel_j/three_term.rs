@@ -165,7 +165,7 @@ pub(crate) fn below_turning_point(x: &Float) -> u64 {
 /// to the turning point then the ratio product for `n >= x`.
 pub fn bessel_j_three_term(n: u64, x: &Float, j0: &Ball, j1: &Ball, wp: u32) -> Result<Ball> {
     if n < 2 || *x <= 1 {
-        return Err(Error::Domain { what: "three-term recurrence needs n >= 2 and x > 1".into() });
+        return Err(Error::precondition("three-term recurrence needs n >= 2 and x > 1"));
     }
     let m = below_turning_point(x);
     if n <= m {
@@ -174,7 +174,7 @@ pub fn bessel_j_three_term(n: u64, x: &Float, j0: &Ball, j1: &Ball, wp: u32) -> 
     let (jm1, jm) = if m == 1 { (j0.clone(), j1.clone()) } else { forward_pair(m, x, j0, j1, wp)? };
     let xb = Ball::from_float(x, wp);
     // J_{m+1} = (2m/x) J_m - J_{m-1} [DLMF 10.6.1], in balls.
-    let m_i = i64::try_from(m).map_err(|_| Error::Domain { what: "Bessel argument too large".into() })?;
+    let m_i = i64::try_from(m).map_err(|_| Error::IntegerOutOfRange { arg: "recurrence start", value: i64::MAX, min: 0, max: i64::MAX })?;
     let j_next = jm.mul_i64(2 * m_i).div(&xb)?.sub(&jm1);
     if n == m + 1 {
         return Ok(j_next);

@@ -118,7 +118,7 @@ fn model_phi_series(m: u64, s: &Ball, wp: u32) -> Result<Ball> {
     use crate::error::Error;
     let neg_s = s.neg();
     let s_up = s.abs_upper_mag();
-    let mm = i64::try_from(m).map_err(|_| Error::Domain { what: "1F2 model family: k too large".into() })?;
+    let mm = i64::try_from(m).map_err(|_| Error::IntegerOutOfRange { arg: "k", value: i64::MAX, min: 0, max: i64::MAX })?;
     let mut t = Ball::one(wp);
     let mut sum = Ball::one(wp);
     let mut n: i64 = 0;
@@ -126,7 +126,7 @@ fn model_phi_series(m: u64, s: &Ball, wp: u32) -> Result<Ball> {
         let den = (n + 1)
             .checked_mul(mm + 2 * n + 1)
             .and_then(|v| v.checked_mul(mm + 2 * n + 2))
-            .ok_or_else(|| Error::Domain { what: "1F2 model family: k too large".into() })?;
+            .ok_or_else(|| Error::IntegerOutOfRange { arg: "k", value: mm, min: 0, max: i64::MAX / 2 })?;
         t = t.mul(&neg_s).mul_i64(2 * (2 * n + 1)).div_i64(den)?;
         n += 1;
         let t_up = t.abs_upper_mag();

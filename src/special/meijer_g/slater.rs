@@ -29,7 +29,7 @@ pub fn meijer_g33_slater_mp(a: [f64; 3], b: [f64; 3], z: f64, wp: u32) -> Result
     let ae: Vec<Float> = a.iter().map(|&v| exact(v)).collect();
     let be: Vec<Float> = b.iter().map(|&v| exact(v)).collect();
     if exact_sub(&be[0], &be[1]).is_integer() {
-        return Err(Error::Domain { what: "Slater's sum needs b1 - b2 not an integer (degenerate position)".into() });
+        return Err(Error::Degenerate { function: "meijer_g33_slater_mp (Slater's sum)", needs: "b1 - b2 not an integer" });
     }
     let y = Ball::from_f64(-z, wp)?;
     let ln_y = y.ln()?;
