@@ -28,9 +28,9 @@
 //! the running minimum of the controlled variable, a jump at each local minimum
 //! to the first smaller contact at the same level, the end of unloading at the
 //! first minimum without such a state; then reloading from that end up the
-//! running maximum (one [`walk`] serves both). Each turning point is refined
+//! running maximum (one `walk` serves both). Each turning point is refined
 //! by the vertex of a parabola through it and the two states before it
-//! ([`refine_extremum`]), and jump targets are interpolated linearly between
+//! (`refine_extremum`), and jump targets are interpolated linearly between
 //! the two states that bracket the level. The loops and their areas are then
 //! computed by the library's own [`loops_and_dissipation`], so the
 //! integration is the model's.
