@@ -222,6 +222,7 @@ where
     let mut limit = None;
     let mut unbounded_near = None;
     let mut progress = Progress::new(f.stats.evaluations, lim.max_evaluations, a, b);
+    let overdraft = lim.max_evaluations.saturating_add(lim.max_evaluations / 4 + 64);
     while let Some(piece) = stack.pop() {
         f.stats.subintervals += 1;
         f.stats.max_depth = f.stats.max_depth.max(piece.depth);
@@ -244,7 +245,7 @@ where
                 }
                 continue;
             }
-            None if piece.lo == piece.hi || (reached.is_some() && (piece.depth >= lim.max_depth || !resolvable(&piece.lo, &piece.hi, wp))) => {
+            None if piece.lo == piece.hi || (reached.is_some() && !(piece.depth < lim.max_depth && resolvable(&piece.lo, &piece.hi, wp) && f.stats.evaluations < overdraft)) => {
                 // Nothing bounds this piece: the integrand is unbounded (or not defined) on it.
                 limit = reached;
                 unbounded_near = Some(midpoint(&piece.lo, &piece.hi).to_f64());
@@ -253,8 +254,10 @@ where
             }
             // A limit, and no enclosure yet (the segment's ball was too wide, as
             // sin(x)/x^2 on x = e^[0, 32], whose ball reaches 0): bisect on, without
-            // rules, until the halves have crude enclosures.
-            None if reached.is_some() && resolvable(&piece.lo, &piece.hi, wp) => limit = reached,
+            // rules, until the halves have crude enclosures, within an overdraft of a
+            // quarter of the evaluation limit (an integrand that is not finite anywhere
+            // would otherwise bisect into every piece down to the depth limit).
+            None if reached.is_some() => limit = reached,
             _ => {}
         }
         // 2. Gauss-Legendre, where the integrand is bounded on the segment
