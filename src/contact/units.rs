@@ -41,6 +41,7 @@ pub struct Material {
 
 /// The strength of the Dugdale interaction, given either way.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub enum Cohesion {
     /// The adhesive stress `sigma_0` (Pa).
     Stress(f64),

@@ -37,7 +37,18 @@
 //! the estimate does not meet the function's documented tolerance (for
 //! example because a sum of |terms| reveals cancellation), it falls back to the
 //! MP path at [`F64_FALLBACK_PREC`] bits and rounds the certified midpoint,
-//! which is then within one ulp.
+//! which is then within one ulp. The fallback's Ziv loop stops at
+//! [`F64_FALLBACK_MAX_WP`] working bits ([`Error::PrecisionExhausted`]): an f64
+//! call answers in bounded time or says why not; the `*_mp` functions remain for
+//! arguments that need more. Fallbacks are counted per function
+//! (`bessel_j_fallbacks`, `hyp1f2_fallbacks`, `meijer_g_k_fallbacks`,
+//! `contact::wave_bounded::wave_bounded_fallbacks`; 2F1 has no counter yet).
+//!
+//! # Enums
+//!
+//! Method and algorithm enums are `#[non_exhaustive]` (methods get added); the
+//! closed classifications (`registry::Arg`, `error::ParamKind`, the contact's
+//! `Control`, `JumpDirection`, `TurningKind`, `Regime`, `SweepAxis`) are not.
 
 pub mod bessel_j;
 pub(crate) mod gamma;

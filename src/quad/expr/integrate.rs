@@ -63,6 +63,7 @@ impl WeightSpec {
 
 /// A declared bound on the whole integrand for `x >= a`, for `b = inf`.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum DecaySpec {
     /// `|f(x)| <= bound e^(-rate x)`.
     Exponential {

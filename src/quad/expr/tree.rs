@@ -8,6 +8,7 @@ use crate::ball::Decimal;
 
 /// A one-argument function of the expression language.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum Function {
     /// `sqrt`, the square root (analytic form in [`CBall`](crate::ball::CBall)s).
     Sqrt,

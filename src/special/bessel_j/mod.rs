@@ -89,6 +89,7 @@ pub const MAX_ORDER: i64 = 1_000_000;
 
 /// The algorithms.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum Algorithm {
     /// Power series through 0F1.
     PowerSeries,

@@ -33,6 +33,7 @@ use super::native_series::{series_bounded, MAX_NATIVE_LOSS_BITS};
 
 /// The native methods.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum NativeMethod {
     /// Forward recurrence from Hankel's `J_0`, `J_1`.
     Recurrence,

@@ -105,6 +105,7 @@ pub const NEAR_ONE_MAX_KW: f64 = 40.0;
 
 /// The two algorithms.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum Algorithm {
     /// `S(y)` summed directly.
     Direct,
