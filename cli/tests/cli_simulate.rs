@@ -91,6 +91,7 @@ fn bad_input_exits_2_without_files() {
         vec!["--lambda", "1", "--alpha", "0", "--beta", "1", "--grid", "32"],
         vec!["--lambda", "1", "--alpha", "0", "--beta", "1", "--grid", "0"],
         vec!["--lambda", "1", "--alpha", "0", "--beta", "1", "--format", "xml"],
+        vec!["--lambda", "1", "--alpha", "0", "--beta", "1", "--law", "lj93"],
     ] {
         let out = maugis().arg("simulate").args(&args).arg("--out").arg(&dir).output().unwrap();
         assert_eq!(out.status.code(), Some(2), "{args:?}");
@@ -98,4 +99,25 @@ fn bad_input_exits_2_without_files() {
         assert_eq!(err.lines().count(), 1, "{err}");
         assert!(!dir.exists());
     }
+}
+
+/// `--law exp`: the smooth law runs, is named in the JSON, and pulls off at
+/// another load than Dugdale's at lambda = 1 (the laws differ in shape).
+#[test]
+fn law_exp_runs_and_is_named() {
+    let run = |law: &str| {
+        let out = maugis()
+            .args(["simulate", "--lambda", "1", "--alpha", "0", "--beta", "1", "--amax", "2.5", "--grid", "512", "--steps", "20", "--format", "json", "--law", law])
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        serde_json::from_slice::<serde_json::Value>(&out.stdout).unwrap()
+    };
+    let (e, d) = (run("exp"), run("dugdale"));
+    assert_eq!(e["law"], "exp");
+    assert_eq!(d["law"], "dugdale");
+    let (pe, pd) = (e["pull_off"].as_f64().unwrap(), d["pull_off"].as_f64().unwrap());
+    assert!(pe < 0.0 && (pe - pd).abs() > 0.01, "exp {pe}, dugdale {pd}");
+    // The smooth cylinder dissipates nothing under either law.
+    assert!(e["dissipation"]["load_control"].as_f64().unwrap().abs() <= 0.02);
 }
