@@ -308,4 +308,22 @@ mod tests {
             }
         }
     }
+
+    #[test]
+    fn far_field_agrees_between_mp_and_f64_routes() {
+        // x >> a, where 1 - sqrt((r-1)/(r+1)) is formed as (2/(r+1))/(1 + sqrt t) in
+        // the MP geometry: the certified balls against the f64 routes' own geometry.
+        for &r in &[10.0, 1e3, 1e6, 1e12] {
+            let (a, zeta, amp) = (2.0, 1.125, 0.75);
+            let x = a * r;
+            let u = u_wave_mp(&e(a), &e(zeta), &e(amp), &e(x), 128).unwrap();
+            let du = du_wave_mp(&e(a), &e(zeta), &e(amp), &e(x), 128).unwrap();
+            let (uf, duf) = (u_wave(a, zeta, amp, x).unwrap(), du_wave(a, zeta, amp, x).unwrap());
+            assert!(u.meets_rel(120) && du.meets_rel(100), "r={r}: {u:?} {du:?}");
+            assert!((u.to_f64() - uf).abs() <= 1e-14 * u.to_f64().abs().max(amp), "r={r}: {u:?} vs {uf}");
+            let scale = 2.0 * std::f64::consts::PI * amp / zeta;
+            assert!((du.to_f64() - duf).abs() <= 1e-14 * scale, "r={r}: {du:?} vs {duf}");
+        }
+    }
 }
+
