@@ -12,8 +12,8 @@
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use maugis::contact::displacement::{du_wave, du_wave_bounded, u_wave, u_wave_bounded, u_wave_mp, u_wave_series_mp, WaveBessel};
-use maugis::contact::wave_bounded::{wave_bounded_fallbacks, wave_bounded_mp_contacts};
-use maugis::contact::wave_quadrature::u_wave_quad;
+use maugis::contact::displacement::bounded::{wave_bounded_fallbacks, wave_bounded_mp_contacts};
+use maugis::contact::displacement::quadrature::u_wave_quad;
 use maugis::special::exact;
 
 const ABARS: [f64; 3] = [1.0, 3.0, 6.0];

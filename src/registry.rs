@@ -27,7 +27,8 @@ use rug::Float;
 
 use crate::ball::{eval_at_decimals, Decimal};
 use crate::contact::model::{ContactSize, Params};
-use crate::contact::{displacement, model_mp, wave_quadrature};
+use crate::contact::displacement::{self, quadrature as wave_quadrature};
+use crate::contact::model_mp;
 use crate::error::{Error, Result};
 use crate::special::{bessel_j, hyp1f2, hyp2f1, meijer_g};
 use crate::{Ball, Bounded};

@@ -7,7 +7,7 @@ use maugis::contact::curve::{load_area_curve, load_at, CurveOptions, JumpDirecti
 use maugis::contact::displacement::{profile_depth, u_adhesive, u_hertz, u_wave, WaveBessel};
 use maugis::contact::limits;
 use maugis::contact::model::{ContactSize, Params};
-use maugis::contact::wave_quadrature::u_wave_quad;
+use maugis::contact::displacement::quadrature::u_wave_quad;
 use proptest::prelude::*;
 
 const FIG4C_ALPHA: f64 = 0.353_553_390_593_273_8; // 2 sqrt(2)/8

@@ -3,7 +3,8 @@
 //! also made at 64 bits, where it must answer.
 
 use maugis::ball::Ball;
-use maugis::contact::{displacement, model::Params, model_mp, traction_mp, wave_certified, wave_quadrature};
+use maugis::contact::displacement::{self, quadrature as wave_quadrature, quadrature_ball as wave_certified};
+use maugis::contact::{model::Params, model_mp, traction_mp};
 use maugis::special::{bessel_j, hyp1f2, meijer_g};
 use rug::Float;
 

@@ -10,7 +10,7 @@
 //! and a proptest over random points.
 
 use maugis::contact::displacement::{du_wave_bounded, du_wave_mp, u_wave, u_wave_bounded, u_wave_mp, WaveBessel};
-use maugis::contact::wave_bounded::wave_bounded_fallbacks;
+use maugis::contact::displacement::bounded::wave_bounded_fallbacks;
 use maugis::special::exact;
 use maugis::Bounded;
 use proptest::prelude::*;

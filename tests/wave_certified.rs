@@ -8,7 +8,7 @@
 //! cores in release, measured 2026-11-25).
 
 use maugis::contact::displacement::{du_wave_series_mp, u_wave_series_mp};
-use maugis::contact::wave_certified::{du_wave_quad_ball, traction_integral_ball, u_wave_quad_ball};
+use maugis::contact::displacement::quadrature_ball::{du_wave_quad_ball, traction_integral_ball, u_wave_quad_ball};
 use maugis::special::exact;
 use maugis::Ball;
 use rayon::prelude::*;

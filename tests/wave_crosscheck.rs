@@ -11,7 +11,7 @@
 //! erratum of the printed paper (docs/displacement.md, "Errata pinned by tests").
 
 use maugis::contact::displacement::*;
-use maugis::contact::wave_quadrature::*;
+use maugis::contact::displacement::quadrature::*;
 use maugis::special::exact;
 use maugis::Ball;
 use rayon::prelude::*;

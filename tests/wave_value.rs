@@ -1,5 +1,5 @@
 //! The fast value path of `u_wave` / `du_wave` (an estimate, module docs of
-//! `maugis::contact::wave_bounded`): its accuracy enforced against the 200-bit
+//! `maugis::contact::displacement::bounded`): its accuracy enforced against the 200-bit
 //! certified Bessel form (`u_wave_mp`, `du_wave_mp`) on a dense grid of the
 //! issue-8 domain `a in [0.5, 6]`, `zeta = 9/8`, `x/a in [1, 3]` plus the edges
 //! (`x = a` exactly, one ulp above, `x/a = 3`, `a = 0.5` and `6`): at most

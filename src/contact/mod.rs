@@ -3,10 +3,12 @@
 //! * [`displacement`]: substrate displacements outside the contact, dimensional
 //!   form: Hertz (Eq. 10), wave (Eq. 12, its gradient Eq. 11b, the
 //!   cancellation-free Bessel form) and adhesive (Box I / A.5a), plus the
-//!   profile depth (Eq. 1).
-//! * [`wave_bounded`]: `u_w` and `du_w/dx` in f64 with a proven error bound.
-//! * [`wave_quadrature`]: the independent Eq. 11a quadrature route.
-//! * [`wave_certified`]: Eq. 11a and the traction integral as certified balls.
+//!   profile depth (Eq. 1). Its submodules hold every route to `u_w`:
+//!   [`displacement::bounded`] (`u_w` and `du_w/dx` in f64 with a proven error
+//!   bound), [`displacement::quadrature`] (the independent Eq. 11a quadrature
+//!   route) and [`displacement::quadrature_ball`] (Eq. 11a and the traction
+//!   integral as certified balls). Their old paths `wave_bounded`,
+//!   `wave_quadrature` and `wave_certified` are re-exported here.
 //! * [`traction_mp`]: the traction (Eq. 16) as a certified ball.
 //! * [`model`]: the normalised Maugis model at one contact size: the
 //!   adhesive-strip equation (15b corrected), its first root, the load (Eq. 14),
@@ -32,9 +34,13 @@
 //! The gap is `g(x) = h(x) - u_H(x) - u_w(x) - u_a(x)` for `|x| >= a`.
 
 pub mod displacement;
-pub mod wave_bounded;
-pub mod wave_quadrature;
-pub mod wave_certified;
+/// Old path of [`displacement::bounded`] (the certified f64 wave displacement), kept
+/// so that code written against it still compiles.
+pub use displacement::bounded as wave_bounded;
+/// Old path of [`displacement::quadrature`] (the Eq. 11a quadrature estimates).
+pub use displacement::quadrature as wave_quadrature;
+/// Old path of [`displacement::quadrature_ball`] (the certified Eq. 11a/11b balls).
+pub use displacement::quadrature_ball as wave_certified;
 pub mod traction_mp;
 pub mod model;
 pub mod paper;

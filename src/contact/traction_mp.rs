@@ -18,7 +18,7 @@
 use crate::ball::Ball;
 use crate::contact::model::Params;
 use crate::contact::model_mp::ModelBalls;
-use crate::contact::wave_certified::traction_integral_ball;
+use crate::contact::displacement::quadrature_ball::traction_integral_ball;
 use crate::error::{check_prec, Error, Result};
 
 /// Certified `pbar(x)` (Eq. 16) over the input balls, for a ball of the strip

@@ -42,7 +42,7 @@
 //! call answers in bounded time or says why not; the `*_mp` functions remain for
 //! arguments that need more. Fallbacks are counted per function
 //! (`bessel_j_fallbacks`, `hyp1f2_fallbacks`, `meijer_g_k_fallbacks`,
-//! `contact::wave_bounded::wave_bounded_fallbacks`; 2F1 has no counter yet).
+//! `contact::displacement::bounded::wave_bounded_fallbacks`; 2F1 has no counter yet).
 //!
 //! # Enums
 //!

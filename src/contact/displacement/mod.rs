@@ -36,7 +36,7 @@
 //!    `J_n` at the ball `D` is evaluated at its midpoint and widened by `rad(D)`
 //!    (`|J_n'| <= 1` [DLMF 10.14.1]).
 //! 3. **Eq. 11a quadrature** (corrected form, docs/displacement.md, Route 3), in
-//!    [`crate::contact::wave_quadrature`].
+//!    [`crate::contact::displacement::quadrature`].
 //!
 //! # Eq. 12 and Eq. 11b truncated at `kmax`: the truncation bound
 //!
@@ -68,6 +68,9 @@ use crate::error::{finite, Error, Interval, Result};
 use crate::special::{check_finite, exact_add, exact_sub, ziv, DEFAULT_GUARD_BITS};
 
 pub(crate) mod bessel_mp;
+pub mod bounded;
+pub mod quadrature;
+pub mod quadrature_ball;
 mod geometry;
 mod series;
 mod wave_f64;

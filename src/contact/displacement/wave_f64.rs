@@ -1,16 +1,16 @@
 //! `u_w` and `du_w/dx` in f64 ([`WaveBessel`] and the free functions): the
 //! Bessel form at one contact size with the `J_n(D)` sequence computed once,
 //! the compensated value path, and the bounded path of
-//! [`crate::contact::wave_bounded`] with its counted MP fallback.
+//! [`crate::contact::displacement::bounded`] with its counted MP fallback.
 //!
 //! Accuracy: the value paths are double-double sums rounded once (a few ulps,
 //! tests/wave_value.rs); the `*_bounded` paths return a proven bound for the
-//! f64 inputs as given (module docs of [`crate::contact::wave_bounded`]).
+//! f64 inputs as given (module docs of [`crate::contact::displacement::bounded`]).
 
 use std::sync::OnceLock;
 
 use crate::ball::{Bounded, Dd};
-use crate::contact::wave_bounded::{count_fallback, CertifiedBessel};
+use crate::contact::displacement::bounded::{count_fallback, CertifiedBessel};
 use crate::error::{finite, Error, Result};
 use crate::special::bessel_j::bessel_j_sequence_dd;
 use crate::special::exact;
@@ -179,10 +179,10 @@ impl WaveBessel {
     }
 
     /// `(u_w(x), du_w/dx)` with proven error bounds for the f64 inputs as given
-    /// ([`crate::contact::wave_bounded`]). The certified Bessel data are computed
+    /// ([`crate::contact::displacement::bounded`]). The certified Bessel data are computed
     /// on the first call (MP, once per contact); each later call costs one short
     /// double-double sum. Falls back to the MP Bessel form for `x/a > 25/7`
-    /// (counted by [`wave_bounded_fallbacks`](crate::contact::wave_bounded::wave_bounded_fallbacks)).
+    /// (counted by [`wave_bounded_fallbacks`](crate::contact::displacement::bounded::wave_bounded_fallbacks)).
     pub fn eval_bounded(&self, x: f64) -> Result<(Bounded, Bounded)> {
         self.check_x(x)?;
         if let Some(r) = self.certified().and_then(|c| c.eval_bounded(self.a, self.amp, x)) {
@@ -333,14 +333,14 @@ fn wave_bounded_pair(a: f64, zeta: f64, amp: f64, x: f64) -> Result<(Bounded, Bo
 }
 
 /// Both f64 values from scratch: the fast value path
-/// (`crate::contact::wave_bounded::wave_value`: one compensated Miller
+/// (`crate::contact::displacement::bounded::wave_value`: one compensated Miller
 /// recurrence with both sums in the same loop, an estimate enforced by
 /// tests/wave_value.rs) where it applies (FMA, `x/a <= 25/7`, `D <= 64`), else
 /// the native proven-bound path's values where it runs without MP, else the
 /// double-double Miller route of [`WaveBessel`].
 fn wave_f64_pair(a: f64, zeta: f64, amp: f64, x: f64) -> Result<(f64, f64)> {
     check_wave_f64(a, zeta, amp, x)?;
-    if let Some(r) = crate::contact::wave_bounded::wave_value(a, zeta, amp, x) {
+    if let Some(r) = crate::contact::displacement::bounded::wave_value(a, zeta, amp, x) {
         return Ok(r);
     }
     if let Some((u, du)) = CertifiedBessel::native_only(a, zeta).and_then(|c| c.eval_bounded(a, amp, x)) {
@@ -358,7 +358,7 @@ fn wave_f64_pair(a: f64, zeta: f64, amp: f64, x: f64) -> Result<(f64, f64)> {
 
 /// Wave displacement `u_w(x)` in f64 (Bessel form), from scratch in about
 /// 0.2-0.4 us on the model domain (compensated Miller recurrence, module docs
-/// of [`crate::contact::wave_bounded`]).
+/// of [`crate::contact::displacement::bounded`]).
 ///
 /// Accuracy: within `1e-15` of `max(|u_w|, |A|)`, measured worst `1.1e-16` on a
 /// dense grid of `a in [0.5, 6]`, `zeta = 9/8`, `x/a in [1, 3]` (tests/wave_value.rs;
@@ -377,7 +377,7 @@ pub fn du_wave(a: f64, zeta: f64, amp: f64, x: f64) -> Result<f64> {
 
 /// `u_w(x)` in f64 with a proven error bound for the f64 inputs as given
 /// (native double-double with running error analysis,
-/// [`crate::contact::wave_bounded`]; for many `x` at one contact use
+/// [`crate::contact::displacement::bounded`]; for many `x` at one contact use
 /// [`WaveBessel::eval_bounded`], which computes the Bessel data once).
 pub fn u_wave_bounded(a: f64, zeta: f64, amp: f64, x: f64) -> Result<Bounded> {
     Ok(wave_bounded_pair(a, zeta, amp, x)?.0)

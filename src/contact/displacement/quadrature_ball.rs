@@ -7,7 +7,7 @@
 //!
 //! Eq. 11a as corrected in docs/displacement.md, Route 3 (outer range `[0, D]`,
 //! `D = 2 pi a/zeta`, prefactor `A/zeta`, `x = a/cos(phi)`), and its integral in `x`
-//! from `a` (see [`crate::contact::wave_quadrature`], docs/model.md and
+//! from `a` (see [`crate::contact::displacement::quadrature`], docs/model.md and
 //! docs/displacement.md for the derivation):
 //!
 //! ```text

@@ -1,12 +1,12 @@
 //! The wave displacement `u_w(x)` and its gradient `du_w/dx` in f64 with a
-//! **proven** error bound: the Bessel form of [`super::displacement`] evaluated
+//! **proven** error bound: the Bessel form of [`super`] evaluated
 //! in double-double with a running error analysis, without MP on the model's
 //! domain.
 //!
 //! # Method
 //!
 //! With `D = 2 pi a/zeta`, `r = x/a >= 1` and `t = sqrt((x-a)/(x+a))` in `[0, 1)`
-//! (docs/displacement.md, Route 2; the module docs of [`super::displacement`]):
+//! (docs/displacement.md, Route 2; the module docs of [`super`]):
 //!
 //! ```text
 //! q = (1 - t)/(1 + t) = (1 - t)^2 (x + a)/(2a),      acosh(r) = -ln q,
@@ -328,7 +328,7 @@ mod tests {
 
 /// Where the from-scratch time of the bounded path goes: each part behind an
 /// `#[inline(never)]` wrapper, so that `valgrind --tool=callgrind` on
-/// `cargo test --release --lib wave_bounded::profile -- --ignored` lists
+/// `cargo test --release --lib displacement::bounded::profile -- --ignored` lists
 /// their inclusive instruction counts (reported per call in the docs).
 #[cfg(test)]
 mod profile {
