@@ -40,9 +40,12 @@
 //! which is then within one ulp. The fallback's Ziv loop stops at
 //! [`F64_FALLBACK_MAX_WP`] working bits ([`Error::PrecisionExhausted`]): an f64
 //! call answers in bounded time or says why not; the `*_mp` functions remain for
-//! arguments that need more. Fallbacks are counted per function
-//! (`bessel_j_fallbacks`, `hyp1f2_fallbacks`, `meijer_g_k_fallbacks`,
-//! `contact::displacement::bounded::wave_bounded_fallbacks`; 2F1 has no counter yet).
+//! arguments that need more. Fallbacks are counted per route, in one place:
+//! [`fallback_counts`] returns a snapshot of every counter ([`FallbackCounts`]:
+//! `bessel_j`, `hyp1f2`, `hyp2f1`, `meijer_g_k`, `wave_bounded`,
+//! `wave_bounded_mp_contacts`); subtract two snapshots with
+//! [`FallbackCounts::since`]. (The older per-function readers such as
+//! `bessel_j_fallbacks` are deprecated aliases of its fields.)
 //!
 //! # Enums
 //!
@@ -56,6 +59,9 @@ pub mod hyp1f2;
 pub mod hyp2f1;
 pub mod meijer_g;
 pub mod pfq;
+pub mod fallback;
+
+pub use fallback::{fallback_counts, F64Route, FallbackCounts};
 
 use rug::float::Round;
 use rug::ops::{AddAssignRound, AssignRound};

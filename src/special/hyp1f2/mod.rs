@@ -279,11 +279,11 @@ pub const NATIVE_REL_TOL: f64 = 1e-14;
 /// Cap on the terms of the native f64 series.
 const NATIVE_MAX_TERMS: u64 = 20_000;
 
-static NATIVE_FALLBACKS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
 
 /// How many [`hyp1f2_bounded`] / [`hyp1f2`] calls fell back to MP since the process started.
+#[deprecated(note = "use `maugis::special::fallback_counts().hyp1f2`: one snapshot of every counter")]
 pub fn hyp1f2_fallbacks() -> u64 {
-    NATIVE_FALLBACKS.load(std::sync::atomic::Ordering::Relaxed)
+    crate::special::fallback_counts().hyp1f2
 }
 
 /// The series of `1F2(a; b1, b2; z)` summed in f64 with a running error analysis:
@@ -386,7 +386,7 @@ fn hyp1f2_native_or_dd(a: f64, b1: f64, b2: f64, z: f64) -> Option<Bounded> {
 /// relative (skipped for the family at `k < s - 2`, where it cannot be), else
 /// the same series in double-double (cancellation: large negative `z` against the
 /// parameters); otherwise the certified MP value at 64 bits, counted by
-/// [`hyp1f2_fallbacks`] (none over the family at `k <= 1000`, `s <= 35`:
+/// [`crate::special::fallback_counts`] (none over the family at `k <= 1000`, `s <= 35`:
 /// `examples/hyp1f2_f64_cpu.rs`, 0.60 us per value on average over `k` in
 /// {0, 1, 2, 5, 10, 50, 200, 1000}, at most 0.95 us for any of them, CPU time at
 /// load 5.8; it was 28 us with MP fallbacks).
@@ -397,7 +397,7 @@ pub fn hyp1f2_bounded(a: f64, b1: f64, b2: f64, z: f64) -> Result<Bounded> {
     if let Some(b) = hyp1f2_native_or_dd(a, b1, b2, z) {
         return Ok(b);
     }
-    NATIVE_FALLBACKS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    crate::special::fallback::count(crate::special::F64Route::Hyp1f2);
     crate::special::bounded_from_ball("hyp1f2", &hyp1f2_mp_f64(a, b1, b2, z, crate::special::F64_FALLBACK_PREC)?)
 }
 

@@ -215,12 +215,12 @@ pub fn meijer_g_k_ball_mp(k: u32, y: &Ball, prec: u32) -> Result<Ball> {
 /// Largest relative bound the native f64 path may return (beyond it: MP).
 pub const NATIVE_REL_TOL: f64 = 1e-14;
 
-static NATIVE_FALLBACKS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
 
 /// How many [`meijer_g_k`] / [`meijer_g_k_bounded`] calls fell back to MP since
 /// the process started (see [`native`] for where).
+#[deprecated(note = "use `maugis::special::fallback_counts().meijer_g_k`: one snapshot of every counter")]
 pub fn meijer_g_k_fallbacks() -> u64 {
-    NATIVE_FALLBACKS.load(std::sync::atomic::Ordering::Relaxed)
+    crate::special::fallback_counts().meijer_g_k
 }
 
 /// `G(k, y)` in f64: the native value where its proven bound is at most
@@ -232,14 +232,14 @@ pub fn meijer_g_k(k: u32, y: f64) -> Result<f64> {
     if let Some(b) = native::meijer_g_k_native_bounded(k, y, NATIVE_REL_TOL) {
         return Ok(b.value);
     }
-    NATIVE_FALLBACKS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    crate::special::fallback::count(crate::special::F64Route::MeijerGK);
     f64_from_mp("meijer_g_k", guard_bits(k, y), |wp| meijer_g_k_wp(k, &ye, wp))
 }
 
 /// `G(k, y)` in f64 with a proven error bound for the f64 `y` as given: native
 /// ([`native`]: f64 sums, double-double next to the
 /// zero of `G(k, .)` and for `y > 0.97`) for `k <= 1000`; else the certified MP
-/// value (counted by [`meijer_g_k_fallbacks`]): `k > 1000`, and the f64 `y`
+/// value (counted by [`crate::special::fallback_counts`]): `k > 1000`, and the f64 `y`
 /// closest to a zero of `G(k, .)` (`|G| <~ 1e-16`). The bound is relative there
 /// too: natively `err <= 1e-14 |value|`, from MP about `2^-64 |value|` (the Ziv
 /// loop raises the precision until the ball is relative; only an exact zero,
@@ -252,7 +252,7 @@ pub fn meijer_g_k_bounded(k: u32, y: f64) -> Result<Bounded> {
     if let Some(b) = native::meijer_g_k_native_bounded(k, y, NATIVE_REL_TOL) {
         return Ok(b);
     }
-    NATIVE_FALLBACKS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    crate::special::fallback::count(crate::special::F64Route::MeijerGK);
     crate::special::bounded_from_mp("meijer_g_k", guard_bits(k, y), |wp| meijer_g_k_wp(k, &ye, wp))
 }
 
