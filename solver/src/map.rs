@@ -318,7 +318,7 @@ pub fn map_cycles(grid: &SweepGrid, shard: Option<(usize, usize)>) -> Result<Vec
     let mut seen = std::collections::HashSet::new();
     for k in shard_indices(grid, shard)? {
         let p = grid.params(k / grid.n, k % grid.n)?;
-        for c in [(p.lambda, 0.0, p.beta), (p.lambda, p.alpha, p.beta)] {
+        for c in [(p.lambda(), 0.0, p.beta()), (p.lambda(), p.alpha(), p.beta())] {
             if seen.insert(key(c.0, c.1, c.2)) {
                 cycles.push(c);
             }

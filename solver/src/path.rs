@@ -335,7 +335,7 @@ pub fn suggested_half_width(params: Params, amax: f64) -> Result<f64> {
     if !(amax > 0.0 && amax <= 1e4) {
         return Err(SolverError::Domain { what: format!("amax must lie in (0, 1e4] (got {amax})") });
     }
-    let mut c_max: f64 = amax.max((2.0 / params.lambda).sqrt());
+    let mut c_max: f64 = amax.max((2.0 / params.lambda()).sqrt());
     for i in 1..=64 {
         let abar = amax * i as f64 / 64.0;
         if let Ok(m) = ContactSize::new(params, abar).and_then(|cs| cs.solve_m()) {
