@@ -19,6 +19,22 @@
 //! `gamma.rs`) is crate-internal, so that it can change without breaking users;
 //! the unit tests next to each file compare the methods where they overlap.
 //!
+//! The names mean the same everywhere:
+//!
+//! | name | inputs | precision argument | returns |
+//! |---|---|---|---|
+//! | `f` | f64 | none | f64 (an estimate within the documented tolerance) |
+//! | `f_bounded` | f64 | none | [`Bounded`]: value and a proven error bound |
+//! | `f_native_bounded` | f64 | a relative tolerance | `Result<Option<Bounded>>`: the native f64 path alone, `None` where it does not certify the tolerance |
+//! | `f_mp` | exact binary `Float`s | output precision `prec` | a [`Ball`] with `rad <= 2^-prec |mid|` (Ziv loop) |
+//! | `f_ball_mp` | [`Ball`]s (a decimal is a ball) | output precision `prec` | a [`Ball`] containing `f` over the input balls |
+//! | `f_<method>` (e.g. `bessel_j_series`, `meijer_g_k_direct_ball`) | `Float`s, or `Ball`s where the name ends in `_ball` | working precision `wp` | a [`Ball`] from that one method at `wp`, whatever accuracy it reached (no Ziv loop) |
+//!
+//! Every function that takes a precision checks it: `prec` against
+//! [`crate::MAX_PREC`], `wp` against [`MAX_WORKING_PREC`] (and both `>= 2`),
+//! with [`Error::Precision`]; `tests/precision_edges.rs` calls each one at 0, 1
+//! and beyond the cap.
+//!
 //! # Precision policy (Ziv)
 //!
 //! Every `*_mp` function takes an output precision `prec` (bits) and returns a
