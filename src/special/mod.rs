@@ -87,6 +87,15 @@ use crate::ball::{Ball, Bounded};
 use crate::error::{Error, Result};
 use crate::MAX_WORKING_PREC;
 
+/// Checks the relative tolerance of an `f_native_bounded` call: positive and finite.
+pub(crate) fn check_rel_tol(rel_tol: f64) -> Result<()> {
+    if rel_tol.is_finite() && rel_tol > 0.0 {
+        Ok(())
+    } else {
+        Err(Error::OutOfRange { arg: "rel_tol (relative tolerance of the native path)", value: rel_tol, allowed: crate::error::Interval::above(0.0) })
+    }
+}
+
 /// Output precision of the MP fallback used by the f64 functions: 11 bits more
 /// than a double, so the rounded midpoint is within `0.5 + 2^-11` ulp.
 pub const F64_FALLBACK_PREC: u32 = 64;

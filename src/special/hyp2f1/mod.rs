@@ -261,6 +261,7 @@ fn mp_fallback<T>(
 /// (for solvers that count or avoid the slow path). Errors as [`hyp2f1`].
 pub fn hyp2f1_native_bounded(a: f64, b: f64, c: f64, z: f64, rel_tol: f64) -> Result<Option<Bounded>> {
     validate_f64(a, b, c, z)?;
+    crate::special::check_rel_tol(rel_tol)?;
     if z == 0.0 {
         return Ok(Some(Bounded { value: 1.0, err: 0.0 }));
     }
