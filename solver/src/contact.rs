@@ -95,7 +95,7 @@ pub use smooth::{ANDERSON_DEPTH, CONTRACTING_STEPS, MAX_FIXED_POINT_STEPS, THETA
 pub use zone_ends::{END_TOL, EDGE_STENCIL, MAX_END_STEPS};
 
 use crate::elastic::HalfPlane;
-use crate::error::{Result, SolverError};
+use crate::error::{Interval, Result, SolverError};
 use crate::grid::Grid;
 use crate::profile::{Adhesion, Profile};
 
@@ -275,11 +275,10 @@ impl ContactSolver {
     }
 
     fn with_operator(op: HalfPlane, profile: &Profile, adhesion: Adhesion, opts: SolveOptions) -> Result<Self> {
-        if !(opts.tol > 0.0 && opts.tol < 1.0) || opts.max_cg == 0 || opts.max_zone_updates == 0 {
-            return Err(SolverError::Domain {
-                what: "solve options: tol must lie in (0, 1) and the iteration caps must be positive".into(),
-            });
-        }
+        let unit = Interval { lo: 0.0, hi: 1.0, lo_closed: false, hi_closed: false };
+        crate::error::in_range(opts.tol, "the solve tolerance tol", unit)?;
+        crate::error::count_in_range(opts.max_cg, "the CG iteration cap max_cg", 1, usize::MAX)?;
+        crate::error::count_in_range(opts.max_zone_updates, "the zone-update cap max_zone_updates", 1, usize::MAX)?;
         let grid = op.grid();
         let h = profile.sample(&grid)?;
         let n = grid.cells();

@@ -57,4 +57,4 @@ pub mod profile_file;
 pub mod run;
 pub mod transition;
 
-pub use error::{Result, SolverError, TableFault};
+pub use error::{MergeFault, Result, SolverError, TableFault};

@@ -5,7 +5,7 @@ use std::f64::consts::PI;
 
 use maugis::contact::model::{ALPHA_RANGE, BETA_RANGE};
 
-use crate::error::{finite, Result, SolverError};
+use crate::error::{finite, in_range, Interval, Result, SolverError};
 use crate::grid::Grid;
 use crate::profile_file::ProfileTable;
 
@@ -43,12 +43,8 @@ impl Profile {
         finite(beta, "beta")?;
         // The model's ranges: a subnormal beta made 2 pi x/beta overflow and the
         // sampled profile NaN (found by tests/fuzz.rs).
-        if !ALPHA_RANGE.contains(alpha) {
-            return Err(SolverError::Domain { what: format!("alpha must lie in {ALPHA_RANGE} (got {alpha})") });
-        }
-        if !BETA_RANGE.contains(beta) {
-            return Err(SolverError::Domain { what: format!("beta must lie in {BETA_RANGE} (got {beta})") });
-        }
+        in_range(alpha, "alpha", ALPHA_RANGE)?;
+        in_range(beta, "beta", BETA_RANGE)?;
         Ok(Profile::WavyCylinder { alpha, beta })
     }
 
@@ -56,7 +52,7 @@ impl Profile {
     /// follow).
     pub fn sinusoid(alpha: f64, beta: f64) -> Result<Profile> {
         match Profile::wavy_cylinder(alpha, beta)? {
-            _ if alpha == 0.0 => Err(SolverError::Domain { what: "the sinusoid needs alpha > 0".into() }),
+            _ if alpha == 0.0 => Err(SolverError::OutOfRange { arg: "alpha (the sinusoid needs a wave)", value: alpha, allowed: Interval::above(0.0) }),
             _ => Ok(Profile::Sinusoid { alpha, beta }),
         }
     }
@@ -91,9 +87,7 @@ impl Profile {
                 .collect()),
             Profile::Sampled(h) => {
                 if h.len() != grid.cells() {
-                    return Err(SolverError::Domain {
-                        what: format!("the sampled profile has {} values, the grid {} cells", h.len(), grid.cells()),
-                    });
+                    return Err(SolverError::LengthMismatch { arg: "the sampled profile", found: h.len(), expected: grid.cells() });
                 }
                 for &v in h {
                     finite(v, "every profile value")?;
@@ -179,13 +173,16 @@ impl AdhesionLaw {
     }
 }
 
+/// The Maugis parameters the solver's adhesion laws accept (narrower than the
+/// model's [`maugis::contact::model::LAMBDA_RANGE`]: beyond it the zone or the
+/// decay length is not resolved by any supported grid).
+pub const LAMBDA_RANGE: Interval = Interval::closed(1e-4, 1e4);
+
 impl Adhesion {
     /// Dugdale-Maugis with Maugis parameter `lambda`, checked.
     pub fn dugdale(lambda: f64) -> Result<Adhesion> {
         finite(lambda, "lambda")?;
-        if !(1e-4..=1e4).contains(&lambda) {
-            return Err(SolverError::Domain { what: format!("lambda must lie in [1e-4, 1e4] (got {lambda})") });
-        }
+        in_range(lambda, "lambda", LAMBDA_RANGE)?;
         Ok(Adhesion::Dugdale { lambda })
     }
 
