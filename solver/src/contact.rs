@@ -97,7 +97,7 @@ pub use zone_ends::{END_TOL, EDGE_STENCIL, MAX_END_STEPS};
 use crate::elastic::HalfPlane;
 use crate::error::{Interval, Result, SolverError};
 use crate::grid::Grid;
-use crate::profile::{Adhesion, Profile};
+use crate::profile::{Adhesion, AdhesionLaw, Profile};
 
 /// Tunables of one solve.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -380,7 +380,7 @@ impl ContactSolver {
         crate::error::finite(approach, "the approach")?;
         let (sigma0, delta_c) = self.adhesion.strength_and_range();
         let products0 = self.op.products();
-        if let Adhesion::Exponential { lambda } = self.adhesion {
+        if let (Some(AdhesionLaw::Exponential), Some(lambda)) = (self.adhesion.law(), self.adhesion.lambda()) {
             let (cg, steps, residual) = self.solve_smooth(approach, sigma0, lambda)?;
             // The reported zone: contact and the cells whose gap is below the
             // range (adhesive traction above sigma0/e).
@@ -526,7 +526,7 @@ impl ContactSolver {
         let mut load = 0.0;
         let mut elastic = 0.0;
         let mut adhesive = 0.0;
-        let smooth = matches!(self.adhesion, Adhesion::Exponential { .. });
+        let smooth = self.adhesion.law() == Some(AdhesionLaw::Exponential);
         for i in 0..n {
             load += self.traction[i] * dx;
             elastic += 0.5 * self.traction[i] * self.u[i] * dx;

@@ -1,4 +1,4 @@
-//! The smooth adhesion law (`Adhesion::Exponential`: a hard wall and the
+//! The smooth adhesion law (`AdhesionLaw::Exponential`: a hard wall and the
 //! tensile stress `lambda exp(-lambda g)`, matched to Dugdale's in peak stress
 //! and work of adhesion) against its known limits and its own definition:
 //!
