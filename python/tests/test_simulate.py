@@ -86,3 +86,25 @@ def test_bad_tables_raise_naming_the_line(tmp_path):
         maugis.simulate(1.0, ALPHA, BETA, periodic="yes", **SMALL)
     with pytest.raises(ValueError):
         maugis.simulate(1.0, ALPHA, BETA, half_width=math.nan, **SMALL)
+
+
+def test_the_smooth_law_equals_the_cli_and_differs_from_dugdale(built_in, maugis_cli):
+    sim = maugis.simulate(1.0, ALPHA, BETA, law="exp", **SMALL)
+    assert sim.law == "exp" and built_in.law == "dugdale"
+    cli = cli_json(
+        maugis_cli, "--lambda", "1", "--alpha", repr(ALPHA), "--beta", repr(BETA), "--amax", "2.5",
+        "--grid", "1024", "--steps", "20", "--law", "exp",
+    )
+    assert cli["law"] == "exp"
+    np.testing.assert_array_equal(sim.states.load, [s["load"] for s in cli["states"]])
+    np.testing.assert_array_equal(sim.states.approach, [s["approach"] for s in cli["states"]])
+    # another law, another cycle: the loads at the first contacts differ
+    n = min(len(sim.states.load), len(built_in.states.load))
+    assert np.max(np.abs(sim.states.load[:n] - built_in.states.load[:n])) > 1e-3
+
+
+def test_an_unknown_law_raises_naming_the_known_ones():
+    with pytest.raises(ValueError, match="dugdale"):
+        maugis.simulate(1.0, ALPHA, BETA, law="lennard-jones", **SMALL)
+    with pytest.raises(TypeError):
+        maugis.simulate(1.0, ALPHA, BETA, law=3, **SMALL)

@@ -10,14 +10,47 @@
 //! The Johnson parameters run in parallel (threads, one per chi); a row per
 //! (chi, fraction) goes to stdout and the CSV.
 
-use std::time::Instant;
-
 use maugis_solver::map::{Resolution, ResolutionRule};
 use maugis_solver::profile::AdhesionLaw;
-use maugis_solver::transition::{transitions, TransitionSpec};
+use maugis_solver::transition::{johnson_sweep, JohnsonRow, TransitionSpec};
 
 fn list(s: &str) -> Vec<f64> {
     s.split(',').map(|t| t.trim().parse().expect("a comma-separated list of numbers")).collect()
+}
+
+/// One row per threshold fraction.
+fn rows(r: &JohnsonRow, fractions: &[f64], scan: usize) -> Vec<String> {
+    let (chi, spec) = (r.chi, &r.spec);
+    fractions
+        .iter()
+        .enumerate()
+        .map(|(k, &fraction)| match &r.result {
+            Ok(all) => {
+                let tr = &all[k];
+                let best = tr.refined.as_ref().unwrap_or(&tr.search);
+                let evals = tr.search.evaluations.len() + tr.refined.as_ref().map_or(0, |r| r.evaluations.len());
+                let curve: Vec<String> = tr.search.evaluations.iter().take(scan).map(|e| format!("{:.4}:{:.4}", e.lambda, e.excess())).collect();
+                format!(
+                    "{chi},{},{},{fraction},{},{},{},{},{},{},{},{},{},{},{evals},{:.0},\"{}\"",
+                    spec.beta,
+                    spec.alpha,
+                    tr.w_jkr,
+                    tr.threshold,
+                    tr.lambda_star().map_or(String::new(), |v| v.to_string()),
+                    tr.search.lambda_star.map_or(String::new(), |v| v.to_string()),
+                    tr.relative_uncertainty().map_or(String::new(), |v| v.to_string()),
+                    tr.refined.is_some(),
+                    best.bracket.map_or(String::new(), |b| b.0.to_string()),
+                    best.bracket.map_or(String::new(), |b| b.1.to_string()),
+                    tr.search.outside.or(best.outside).map_or("", |o| o.name()),
+                    tr.search.non_monotone || best.non_monotone,
+                    r.seconds,
+                    curve.join(" ")
+                )
+            }
+            Err(e) => format!("{chi},{},{},{fraction},,,,,,,,,\"error: {e}\",,,,", spec.beta, spec.alpha),
+        })
+        .collect()
 }
 
 fn main() {
@@ -30,68 +63,9 @@ fn main() {
         (Some(c), Some(s)) => ResolutionRule::Fixed(Resolution { cells: c.parse().expect("cells"), steps_per_leg: s.parse().expect("steps") }),
         _ => ResolutionRule::Auto,
     };
-    let rows: Vec<String> = std::thread::scope(|sc| {
-        let handles: Vec<_> = chis
-            .iter()
-            .map(|&chi| {
-                let fractions = fractions.clone();
-                sc.spawn(move || {
-                    let mut rows = Vec::new();
-                    let t = Instant::now();
-                    let spec = TransitionSpec {
-                            alpha: beta.sqrt() / chi,
-                            beta,
-                            amax: 6.0,
-                            lambda_min: lmin,
-                            lambda_max: lmax,
-                            scan,
-                            fraction: fractions[0],
-                            rel_tol: 0.03,
-                            resolution,
-                            law,
-                        };
-                    let found = transitions(spec, &fractions, &mut |_| {});
-                    for (k, &fraction) in fractions.iter().enumerate() {
-                        let row = match &found {
-                            Ok(all) => {
-                                let tr = &all[k];
-                                let best = tr.refined.as_ref().unwrap_or(&tr.search);
-                                let evals = tr.search.evaluations.len() + tr.refined.as_ref().map_or(0, |r| r.evaluations.len());
-                                let curve: Vec<String> = tr.search.evaluations.iter().take(scan).map(|e| format!("{:.4}:{:.4}", e.lambda, e.excess())).collect();
-                                format!(
-                                    "{chi},{beta},{},{fraction},{},{},{},{},{},{},{},{},{},{},{evals},{:.0},\"{}\"",
-                                    spec.alpha,
-                                    tr.w_jkr,
-                                    tr.threshold,
-                                    tr.lambda_star().map_or(String::new(), |v| v.to_string()),
-                                    tr.search.lambda_star.map_or(String::new(), |v| v.to_string()),
-                                    tr.relative_uncertainty().map_or(String::new(), |v| v.to_string()),
-                                    tr.refined.is_some(),
-                                    best.bracket.map_or(String::new(), |b| b.0.to_string()),
-                                    best.bracket.map_or(String::new(), |b| b.1.to_string()),
-                                    tr.search.outside.or(best.outside).map_or("", |o| o.name()),
-                                    tr.search.non_monotone || best.non_monotone,
-                                    t.elapsed().as_secs_f64(),
-                                    curve.join(" ")
-                                )
-                            }
-                            Err(e) => format!("{chi},{beta},{},{fraction},,,,,,,,,\"error: {e}\",,,,", spec.alpha),
-                        };
-                        println!("{row}");
-                        rows.push(row);
-                    }
-                    rows
-                })
-            })
-            .collect();
-        handles.into_iter().flat_map(|h| h.join().expect("a search thread")).collect()
-    });
-    let mut csv = String::from(
-        "chi,beta,alpha,fraction,w_jkr,threshold,lambda_star,lambda_star_coarse,rel_uncertainty,refined,bracket_low,bracket_high,outside,non_monotone,evaluations,seconds,scan_excess\n",
-    );
-    for r in rows {
-        csv.push_str(&r);
-        csv.push('\n');
-    }
-    std::fs::write(out, csv).expect("write the CSV");
+    let template = TransitionSpec { alpha: 1.0, beta, amax: 6.0, lambda_min: lmin, lambda_max: lmax, scan, fraction: fractions[0], rel_tol: 0.03, resolution, law };
+    let rows: Vec<String> = johnson_sweep(template, &chis, &fractions, &|_| true).iter().flat_map(|r| rows(r, &fractions, scan)).collect();
+    let header = "chi,beta,alpha,fraction,w_jkr,threshold,lambda_star,lambda_star_coarse,rel_uncertainty,refined,bracket_low,bracket_high,outside,non_monotone,evaluations,seconds,scan_excess";
+    println!("{header}\n{}", rows.join("\n"));
+    std::fs::write(out, format!("{header}\n{}\n", rows.join("\n"))).expect("write the CSV");
 }

@@ -90,7 +90,7 @@ mod relax;
 mod smooth;
 mod zone_ends;
 
-pub use smooth::{ANDERSON_DEPTH, CONTRACTING_STEPS, MAX_FIXED_POINT_STEPS, THETA_TOL};
+pub use smooth::{ANDERSON_DEPTH, ANDERSON_FAILURES, CONTRACTING_STEPS, MAX_FIXED_POINT_STEPS, THETA_TOL};
 
 pub use zone_ends::{END_TOL, EDGE_STENCIL, MAX_END_STEPS};
 
@@ -618,6 +618,34 @@ mod tests {
         // (measured 7e-4): enough to pick the cell that holds a zone end, whose
         // position is then found from the exact gap.
         assert!(worst < 2e-3 / lambda, "edge gap off by {worst}");
+    }
+
+    /// `kz = sigma0 K theta` after a solve from no contact and no zone, where
+    /// the constrained CG puts traction on penetrating cells outside the zone
+    /// before the zone update takes them in (the representation change of a
+    /// contact cell must move `kz` with `q`). Regression: `kz` lagged by
+    /// `sigma0 K e_i` per such cell, the gap refreshed from scratch was too
+    /// large by as much, and at lambda = 10, alpha 0.133 (4096 cells) an
+    /// unloading state at approach 14.66 came out with no contact at all.
+    #[test]
+    fn cohesive_displacement_stays_consistent_from_no_contact() {
+        for lambda in [2.0, 10.0] {
+            let grid = Grid::new(512, 3.0).unwrap();
+            let profile = Profile::wavy_cylinder(0.0, 1.0).unwrap();
+            let mut s = ContactSolver::new(grid, None, &profile, Adhesion::dugdale(lambda).unwrap(), SolveOptions::default()).unwrap();
+            for approach in [0.5, 2.0] {
+                s.reset();
+                let st = s.solve(approach).unwrap();
+                let (sigma0, _) = s.adhesion.strength_and_range();
+                let ct: Vec<f64> = s.theta.iter().map(|t| sigma0 * t).collect();
+                let mut want = vec![0.0; 512];
+                s.op.apply(&ct, &mut want);
+                let scale = want.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+                let worst = s.kz.iter().zip(&want).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+                assert!(worst <= 1e-9 * scale, "lambda {lambda}, approach {approach}: kz off by {worst} (scale {scale})");
+                assert!(st.abar > 0.5, "lambda {lambda}, approach {approach}: abar {}", st.abar);
+            }
+        }
     }
 
     #[test]

@@ -274,6 +274,13 @@ pub fn transition(spec: TransitionSpec, progress: &mut dyn FnMut(&Evaluation)) -
 /// `fractions` gets the refined search too, the others the spec's resolution
 /// only (`refined: None`). `progress` is called once per new evaluation.
 pub fn transitions(spec: TransitionSpec, fractions: &[f64], progress: &mut dyn FnMut(&Evaluation)) -> Result<Vec<Transition>> {
+    transitions_refined(spec, fractions, true, progress)
+}
+
+/// [`transitions`], with the refined search of the first fraction only when
+/// `refine` (otherwise every `refined` is `None`: the bisection part of the
+/// uncertainty only).
+pub fn transitions_refined(spec: TransitionSpec, fractions: &[f64], refine: bool, progress: &mut dyn FnMut(&Evaluation)) -> Result<Vec<Transition>> {
     spec.check()?;
     for &f in fractions {
         TransitionSpec { fraction: f, ..spec }.check()?;
@@ -290,7 +297,7 @@ pub fn transitions(spec: TransitionSpec, fractions: &[f64], progress: &mut dyn F
         let spec = TransitionSpec { fraction, ..spec };
         let threshold = fraction * w_jkr;
         let coarse = search(&spec, threshold, &|l| rule.at(l), None, &mut cache, progress)?;
-        let refined = if k == 0 {
+        let refined = if k == 0 && refine {
             // From the scan points around the coarse bracket; the whole scan
             // again when they do not bracket it.
             let mut r = search(&spec, threshold, &fine, coarse.scan_bracket, &mut cache, progress)?;
@@ -307,4 +314,39 @@ pub fn transitions(spec: TransitionSpec, fractions: &[f64], progress: &mut dyn F
         out.push(Transition { spec, w_jkr, threshold, search: coarse, refined });
     }
     Ok(out)
+}
+
+/// One Johnson parameter of [`johnson_sweep`].
+#[derive(Debug, Clone)]
+pub struct JohnsonRow {
+    /// `chi = sqrt(beta/alpha^2)`.
+    pub chi: f64,
+    /// The spec searched (`alpha = sqrt(beta)/chi`).
+    pub spec: TransitionSpec,
+    /// [`transitions_refined`]: one [`Transition`] per fraction.
+    pub result: Result<Vec<Transition>>,
+    /// Wall time of this parameter's searches (s).
+    pub seconds: f64,
+}
+
+/// `lambda*` for several Johnson parameters `chi = sqrt(beta/alpha^2)` at the
+/// wavelength of `template` (whose `alpha` is replaced by `sqrt(beta)/chi`),
+/// one thread per parameter: [`transitions_refined`] with `fractions`, the
+/// refined search where `refine(chi)`. Rows in the order of `chis`.
+pub fn johnson_sweep(template: TransitionSpec, chis: &[f64], fractions: &[f64], refine: &(dyn Fn(f64) -> bool + Sync)) -> Vec<JohnsonRow> {
+    std::thread::scope(|sc| {
+        let handles: Vec<_> = chis
+            .iter()
+            .map(|&chi| {
+                sc.spawn(move || {
+                    let t = std::time::Instant::now();
+                    let spec = TransitionSpec { alpha: template.beta.sqrt() / chi, ..template };
+                    let result = transitions_refined(spec, fractions, refine(chi), &mut |_| {});
+                    JohnsonRow { chi, spec, result, seconds: t.elapsed().as_secs_f64() }
+                })
+            })
+            .collect();
+        // A search thread panics only on a bug: pass it on.
+        handles.into_iter().map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p))).collect()
+    })
 }

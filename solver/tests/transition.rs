@@ -5,7 +5,7 @@
 
 use maugis_solver::profile::AdhesionLaw;
 use maugis_solver::map::{Resolution, ResolutionRule};
-use maugis_solver::transition::{transition, Search, TransitionSpec};
+use maugis_solver::transition::{johnson_sweep, transition, Search, TransitionSpec};
 use maugis_solver::SolverError;
 
 fn spec() -> TransitionSpec {
@@ -50,6 +50,16 @@ fn lambda_star_is_bracketed_with_an_uncertainty() {
     assert!(refined.evaluations.iter().all(|e| e.resolution == Resolution { cells: 2048, steps_per_leg: 200 }));
     let u = t.relative_uncertainty().unwrap();
     assert!(u >= (fine.ln() - coarse.ln()).abs() && u.is_finite(), "{u}");
+    // The same roughness as the Johnson parameter chi = sqrt(beta)/alpha = 3,
+    // without the refined search, next to a bad one: rows in order, the
+    // coarse search's bracket, a typed error for chi < 0 (alpha < 0).
+    let rows = johnson_sweep(sp, &[3.0, -1.0], &[sp.fraction], &|_| false);
+    assert_eq!((rows[0].chi, rows[1].chi), (3.0, -1.0));
+    assert!((rows[0].spec.alpha / sp.alpha - 1.0).abs() < 1e-15, "{}", rows[0].spec.alpha);
+    let r = &rows[0].result.as_ref().unwrap()[0];
+    assert!(r.refined.is_none());
+    assert_eq!(r.search.bracket, t.search.bracket);
+    assert!(matches!(rows[1].result, Err(SolverError::Domain { .. })));
 }
 
 #[test]

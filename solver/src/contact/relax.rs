@@ -185,12 +185,20 @@ impl ContactSolver {
             let omega = (rho / (1.0 - rho)).min(MAX_ZONE_EXTRAPOLATION);
             self.extend_zone_runs(direction, omega);
         }
+        // `z` (free between CG steps: the next step recomputes it) collects
+        // the representation changes of contact cells.
+        let mut joined = false;
         for i in 0..n {
+            self.z[i] = 0.0;
             if self.q[i] > 0.0 {
                 if !self.zone[i] || self.theta[i] < 1.0 {
-                    // A contact cell joins: its representation changes, not its traction.
+                    // A contact cell joins: its representation changes, not its
+                    // traction. `q` and `kz` both gain `sigma0 (1 - theta)` on it,
+                    // so the gap `K q + h - Delta - kz` is unchanged.
+                    self.z[i] = sigma0 * (1.0 - self.theta[i]);
+                    joined = true;
                     self.zone[i] = true;
-                    self.q[i] += sigma0 * (1.0 - self.theta[i]);
+                    self.q[i] += self.z[i];
                     self.theta[i] = 1.0;
                 }
             } else if self.r[i] != 0.0 {
@@ -204,6 +212,15 @@ impl ContactSolver {
         for i in 0..n {
             self.kz[i] += self.u[i];
             self.gap[i] -= self.u[i];
+        }
+        if joined {
+            // `kz = sigma0 K theta` must hold: a gap refreshed from scratch
+            // would otherwise overstate the gap by `K z` (the contact would
+            // shrink, and at worst vanish, while the incremental gap agrees).
+            self.op.apply(&self.z, &mut self.kdir);
+            for i in 0..n {
+                self.kz[i] += self.kdir[i];
+            }
         }
     }
 

@@ -37,6 +37,18 @@
 //! several stable states there, as the Dugdale zone on whole cells has):
 //! 2.3e-3 in `abar` and in the load at lambda = 10.
 //!
+//! Anderson can also cycle. Where the fixed point lies next to a change of
+//! the contact set (a cell at the contact edge), the multisecant step,
+//! extrapolated from one contact set, lands in the other, where the residual
+//! jumps up; plain steps then contract again, Anderson resumes and overshoots
+//! the same way. On the smooth cylinder at lambda = 5 (2048 cells, 200 steps,
+//! approach 16.88) this was an exact cycle of 9 steps (residual between
+//! 7.5e-4 and 7.9e-3, the edge cell entering and leaving contact) until the
+//! cap of 5000 steps. So after [`ANDERSON_FAILURES`] Anderson steps followed by
+//! a growing residual, the state is finished with plain (damped) steps only:
+//! the plain map is continuous and contracts at stable states, so it
+//! converges there (that state then takes a few hundred steps).
+//!
 //! When two successive residuals point opposite ways (negative cosine), the
 //! iterate oscillates between contact sets (a cell entering and leaving
 //! contact, where the map is only piecewise smooth): the plain step is damped,
@@ -58,6 +70,9 @@ pub const THETA_TOL: f64 = 1e-9;
 pub const ANDERSON_DEPTH: usize = 6;
 /// Consecutive plain steps with a falling residual before Anderson mixing is used.
 pub const CONTRACTING_STEPS: usize = 3;
+/// Anderson steps followed by a growing residual after which a state is
+/// finished with plain steps only (module docs).
+pub const ANDERSON_FAILURES: usize = 3;
 /// Smallest damping factor of the plain step.
 pub const MIN_DAMPING: f64 = 1.0 / 64.0;
 /// Cap on fixed-point steps per state.
@@ -169,6 +184,9 @@ impl ContactSolver {
         // Damping of the plain step (module docs).
         let mut omega: f64 = 1.0;
         let mut f_prev = vec![0.0; n];
+        // Anderson steps after which the residual grew; at ANDERSON_FAILURES
+        // the state goes on with plain (damped) steps only (module docs).
+        let (mut mixed, mut failures) = (false, 0);
         for step in 0..MAX_FIXED_POINT_STEPS {
             let (it, _, residual) = self.relax(approach, false)?;
             cg += it;
@@ -206,12 +224,16 @@ impl ContactSolver {
             }
             f_prev.copy_from_slice(&f);
             falling = if worst < last { falling + 1 } else { 0 };
+            if mixed && falling == 0 {
+                failures += 1;
+            }
             if falling == 0 || !same_contact {
                 // Growth (or a new contact set): plain steps until it contracts again.
                 anderson.clear();
             }
             last = worst;
-            if falling >= CONTRACTING_STEPS {
+            mixed = falling >= CONTRACTING_STEPS && failures < ANDERSON_FAILURES;
+            if mixed {
                 next = anderson.next(&self.theta, &f);
             } else {
                 for i in 0..n {
