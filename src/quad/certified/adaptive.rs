@@ -39,7 +39,7 @@ use rug::Float;
 
 use super::cover::{cover_bound, CoverLimits, Covered};
 use super::legendre;
-use super::{IntegrationError, Limit, Mode};
+use super::{HoloBall, IntegrationError, Limit, Mode};
 use crate::ball::{Ball, CBall, Mag};
 use crate::error::{Error, Result};
 
@@ -139,10 +139,14 @@ pub(crate) struct Counted<'f, F> {
     pub stats: Stats,
 }
 
-impl<F: FnMut(CBall, Mode) -> CBall> Counted<'_, F> {
+impl<F: FnMut(&HoloBall) -> CBall> Counted<'_, F> {
     fn eval(&mut self, z: CBall, mode: Mode) -> CBall {
+        self.eval_at(&HoloBall::new(z, mode))
+    }
+
+    fn eval_at(&mut self, z: &HoloBall) -> CBall {
         self.stats.evaluations += 1;
-        (self.f)(z, mode)
+        (self.f)(z)
     }
 }
 
@@ -167,7 +171,7 @@ pub(crate) fn exact_diff(lo: &Float, hi: &Float) -> Float {
 /// unbounded on the segment).
 pub(crate) fn crude<F>(f: &mut Counted<'_, F>, lo: &Float, hi: &Float, wp: u32) -> Option<CBall>
 where
-    F: FnMut(CBall, Mode) -> CBall,
+    F: FnMut(&HoloBall) -> CBall,
 {
     let width = exact_diff(lo, hi);
     let seg = CBall::from_real(Ball::hull(lo, hi, wp));
@@ -213,7 +217,7 @@ impl Piece {
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn adaptive<F>(f: &mut Counted<'_, F>, a: &Float, b: &Float, wp: u32, tol: Mag, goal: i64, lim: RunLimits, first: Option<CBall>, periodic: bool) -> Result<Outcome>
 where
-    F: FnMut(CBall, Mode) -> CBall,
+    F: FnMut(&HoloBall) -> CBall,
 {
     let mut dyn_tol = tol;
     let raise = |t: &mut Mag, v: &CBall| {
@@ -359,7 +363,7 @@ impl Progress {
 #[allow(clippy::too_many_arguments)]
 fn gauss_legendre_piece<F>(f: &mut Counted<'_, F>, lo: &Float, hi: &Float, wp: u32, tol: Mag, lim: RunLimits, periodic: bool, crude_abs: Mag) -> Result<Option<(CBall, Mag)>>
 where
-    F: FnMut(CBall, Mode) -> CBall,
+    F: FnMut(&HoloBall) -> CBall,
 {
     let m = midpoint(lo, hi);
     let mut h = exact_diff(lo, hi);
@@ -456,13 +460,24 @@ where
     // sum_k w_k f(x_k), accumulated in place (real and imaginary parts apart; an
     // imaginary part that is exactly zero, as at real nodes of a real integrand, adds
     // nothing)
+    // nothing is allocated per node but the integrand's own values: the node
+    // m +- h x_k is formed in place in one point
     let (mut s_re, mut s_im, mut tmp) = (Ball::zero(wp), Ball::zero(wp), Float::new(wp));
+    let (mut hx, mut point) = (Ball::zero(wp), HoloBall::new(CBall::zero(wp), Mode::Point));
     for (k, (x, w)) in rule.nodes.iter().zip(&rule.weights).enumerate() {
-        let hx = hb.mul(x);
+        hx.assign_mul(&hb, x);
         let last_odd = n % 2 == 1 && k == rule.nodes.len() - 1;
-        let points = if last_odd { [Some(mb.add(&hx)), None] } else { [Some(mb.add(&hx)), Some(mb.sub(&hx))] };
-        for t in points.into_iter().flatten() {
-            let v = f.eval(CBall::from_real(t), Mode::Point);
+        for minus in [false, true] {
+            if minus && last_odd {
+                break;
+            }
+            let t = point.inner_mut().re_mut();
+            if minus {
+                t.assign_sub(&mb, &hx);
+            } else {
+                t.assign_add(&mb, &hx);
+            }
+            let v = f.eval_at(&point);
             s_re.add_mul_assign(v.re(), w, &mut tmp);
             if !v.is_real() {
                 s_im.add_mul_assign(v.im(), w, &mut tmp);

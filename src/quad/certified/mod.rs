@@ -483,7 +483,7 @@ where
             if part.lo != part.hi {
                 // the crude enclosure of the estimate, once, at the precision it was made at
                 let first = if same_parts && wp == first_wp { reusable.get_mut(i).and_then(Option::take) } else { None };
-                let mut g = |z: CBall, mode: Mode| (part.wrap)(&HoloBall::new(z, mode), f).into_inner();
+                let mut g = |z: &HoloBall| (part.wrap)(z, f).into_inner();
                 let mut counted = Counted { f: &mut g, stats };
                 let part_tol = tol.mul_2exp(-1).div(Mag::from_f64(n_parts as f64));
                 let out = adaptive::adaptive(&mut counted, &part.lo, &part.hi, wp, part_tol, goal as i64 + 3 - tol_shift - zero_shift, limits, first, part.periodic)?;
