@@ -325,7 +325,7 @@ impl Ball {
 
     /// True when every point of the ball is `> 0`.
     pub fn is_positive(&self) -> bool {
-        if self.mid.is_sign_positive() && self.mid.is_normal() && self.rad_below_half_mid() {
+        if self.mid.is_sign_positive() && self.mid.is_normal() && self.rad_below_mid() {
             return true;
         }
         self.lower() > 0
@@ -333,16 +333,16 @@ impl Ball {
 
     /// True when every point of the ball is `< 0`.
     pub fn is_negative(&self) -> bool {
-        if self.mid.is_sign_negative() && self.mid.is_normal() && self.rad_below_half_mid() {
+        if self.mid.is_sign_negative() && self.mid.is_normal() && self.rad_below_mid() {
             return true;
         }
         self.upper() < 0
     }
 
-    /// `rad <= |mid| / 2`, decided without allocating (a sufficient test for the sign
-    /// checks above; they decide exactly otherwise).
-    fn rad_below_half_mid(&self) -> bool {
-        self.rad.mul_2exp(1).le(&Mag::from_float_down(&self.mid))
+    /// `rad < |mid|`, decided without allocating through a lower bound of `|mid|` (a
+    /// sufficient test for the sign checks above; they decide exactly otherwise).
+    fn rad_below_mid(&self) -> bool {
+        !Mag::from_float_down(&self.mid).le(&self.rad)
     }
 
     /// True when the ball contains zero (`|mid| <= rad`, decided conservatively:
@@ -515,6 +515,35 @@ impl Ball {
         let (mid, ord) = Float::with_val_round(self.prec(), &self.mid + n, Round::Nearest);
         let rad = self.rad.add(rounding_error(&mid, ord));
         Ball { mid, rad }
+    }
+
+    /// `self = a + b` in place (the result of [`Ball::add`], in `self`'s storage).
+    pub(crate) fn assign_add(&mut self, a: &Ball, b: &Ball) {
+        let ord = self.assign_mid(a.out_prec(b), &a.mid + &b.mid);
+        self.rad = a.rad.add(b.rad).add(rounding_error(&self.mid, ord));
+    }
+
+    /// `self = a - b` in place (the result of [`Ball::sub`]).
+    pub(crate) fn assign_sub(&mut self, a: &Ball, b: &Ball) {
+        let ord = self.assign_mid(a.out_prec(b), &a.mid - &b.mid);
+        self.rad = a.rad.add(b.rad).add(rounding_error(&self.mid, ord));
+    }
+
+    /// `self = a * b` in place (the result of [`Ball::mul`]).
+    pub(crate) fn assign_mul(&mut self, a: &Ball, b: &Ball) {
+        let ord = self.assign_mid(a.out_prec(b), &a.mid * &b.mid);
+        self.rad = rounding_error(&self.mid, ord).add(a.product_spread(b));
+    }
+
+    /// The midpoint set to `value` rounded to nearest at `prec` bits.
+    fn assign_mid<T>(&mut self, prec: u32, value: T) -> Ordering
+    where
+        Float: AssignRound<T, Round = Round, Ordering = Ordering>,
+    {
+        if self.mid.prec() != prec {
+            self.mid.set_prec(prec);
+        }
+        self.mid.assign_round(value, Round::Nearest)
     }
 
     /// `self += a * b` in place, with `tmp` as scratch for the product (no

@@ -635,7 +635,9 @@ pub enum IntegrationError {
     /// non-integrable singularity, or an endpoint singularity that was not declared
     /// with a weight.
     NotIntegrable {
-        /// A point of the piece that could not be bounded (approximate).
+        /// A point of the piece that could not be bounded (approximate), in the
+        /// integration variable `x` (mapped back from the variable of a substituted
+        /// piece: next to a weighted endpoint, or on an algebraic decay to infinity).
         near: f64,
         /// Evaluations spent.
         evaluations: u64,

@@ -269,3 +269,25 @@ fn constants_and_polynomials_are_exact_or_enclosed() {
     let r = integrate(|x| x.constant(c.clone()) * x, &int(0, prec), &int(2, prec), prec, &Options::new()).unwrap();
     assert!(r.value.contains(&Float::with_val(64, 2), &Float::with_val(64, 4)));
 }
+
+/// A pole inside a mapped piece is named in `x`, not in the piece's own variable `s`:
+/// `1/(x - 1/10)` with the weight `x^(-1/2)` on `[0, 1]` (the piece `[0, 1/2]` is
+/// integrated in `s` with `x = e^{-s}/2`, the pole at `s = ln 5`), and `1/(x - 5)` on
+/// `[1, inf)` with a declared `x^-2` decay at 333 bits (the map `x = e^s`, the pole at
+/// `s = ln 5`, too). Both used to report `near = 1.609...`.
+#[test]
+fn a_pole_in_a_mapped_piece_is_named_in_x() {
+    let near_of = |r: maugis::Result<maugis::quad::certified::Integral>| match r {
+        Err(Error::Integration(IntegrationError::NotIntegrable { near, .. })) => near,
+        other => panic!("expected NotIntegrable, got {other:?}"),
+    };
+    let prec = 64;
+    let w = Weight::left(Ball::from_ratio(-1, 2, prec)).unwrap();
+    let tenth = Ball::from_ratio(1, 10, prec);
+    let near = near_of(integrate_weighted(|x| (x - x.real(tenth.clone())).recip(), &int(0, prec), &int(1, prec), &w, prec, &Options::new()));
+    assert!((near - 0.1).abs() < 1e-3, "near {near}");
+    let prec = 333;
+    let d = Decay::algebraic(int(2, prec), int(1, prec)).unwrap();
+    let near = near_of(integrate_to_infinity(|x| (x - x.int(5)).recip(), &int(1, prec), None, &d, prec, &Options::new()));
+    assert!((near - 5.0).abs() < 1e-2, "near {near}");
+}

@@ -272,6 +272,30 @@ impl Mag {
         Mag::norm(diff.next_down().max(0.0), self.exp)
     }
 
+    /// `sqrt(self^2 + o^2)`, rounded up when `up`, down otherwise (f64 arithmetic on
+    /// the mantissas: each operation is correctly rounded, and stepping its result one
+    /// ulp in the safe direction bounds it).
+    pub fn hypot(self, o: Mag, up: bool) -> Mag {
+        if !self.is_finite() || !o.is_finite() {
+            return Mag::inf();
+        }
+        let (big, small) = if o.le(&self) { (self, o) } else { (o, self) };
+        if small.is_zero() {
+            return big;
+        }
+        let d = big.exp - small.exp;
+        if d > 60 {
+            // big <= hypot <= big + small
+            return if up { big.add(small) } else { big };
+        }
+        // big.man in [0.5, 1), small scaled by 2^-d exactly: the sum of squares is in
+        // [0.25, 2), its root in [0.5, 1.5)
+        let (x, y) = (big.man, small.man * pow2_neg(d));
+        let step = |v: f64| if up { v.next_up() } else { v.next_down() };
+        let h = step(step(step(x * x) + step(y * y)).sqrt());
+        Mag::norm(h, big.exp)
+    }
+
     /// `self * 2^e` (exact).
     pub fn mul_2exp(self, e: i64) -> Mag {
         if self.is_zero() || !self.is_finite() {
@@ -334,5 +358,18 @@ mod tests {
         let f = Float::with_val(300, 1) / 3u32;
         assert!(Mag::from_float_up(&f).to_float() >= f);
         assert!(Mag::from_float_down(&f).to_float() <= f);
+    }
+
+    #[test]
+    fn hypot_brackets_the_exact_value() {
+        let cases = [(0.75, 0.6), (3.0, 4.0), (1.0e-30, 2.5), (7.0, 1.0e-25), (0.1, 0.1), (1.0, 0.0), (0.0, 0.3)];
+        for (x, y) in cases {
+            let (a, b) = (Mag::from_f64(x), Mag::from_f64(y));
+            let exact = Float::with_val(300, Float::with_val(300, x).hypot(&Float::with_val(300, y)));
+            let (up, down) = (a.hypot(b, true), a.hypot(b, false));
+            assert!(up.to_float() >= exact && down.to_float() <= exact, "{x} {y}");
+            assert!(up.log2() - down.log2() < 1e-12, "{x} {y}: tight");
+        }
+        assert!(!Mag::inf().hypot(Mag::from_f64(1.0), true).is_finite());
     }
 }

@@ -29,8 +29,7 @@
 
 use std::fmt;
 
-use rug::float::{Round, Special};
-use rug::ops::AssignRound;
+use rug::float::Special;
 use rug::Float;
 
 use super::{Ball, Mag};
@@ -74,6 +73,11 @@ impl CBall {
     pub fn from_real(re: Ball) -> CBall {
         let p = re.prec();
         CBall { re, im: Ball::zero(p) }
+    }
+
+    /// The real part, to be overwritten in place (the integrator's quadrature nodes).
+    pub(crate) fn re_mut(&mut self) -> &mut Ball {
+        &mut self.re
     }
 
     /// Exact zero.
@@ -156,12 +160,12 @@ impl CBall {
 
     /// Upper bound of `|z|` over the rectangle (`sqrt(|re|^2 + |im|^2)`, rounded up).
     pub fn abs_upper_mag(&self) -> Mag {
-        hypot_mag(self.re.abs_upper_mag(), self.im.abs_upper_mag(), Round::Up)
+        self.re.abs_upper_mag().hypot(self.im.abs_upper_mag(), true)
     }
 
     /// Lower bound of `|z|` over the rectangle (zero when it contains zero).
     pub fn abs_lower_mag(&self) -> Mag {
-        hypot_mag(self.re.abs_lower_mag(), self.im.abs_lower_mag(), Round::Down)
+        self.re.abs_lower_mag().hypot(self.im.abs_lower_mag(), false)
     }
 
     /// The larger of the two radii.
@@ -309,27 +313,6 @@ impl CBall {
         } else {
             p
         }
-    }
-}
-
-/// `sqrt(x^2 + y^2)` for two magnitudes, rounded in direction `r` (53-bit floats:
-/// a bound, not a value).
-fn hypot_mag(x: Mag, y: Mag, r: Round) -> Mag {
-    if !x.is_finite() || !y.is_finite() {
-        return Mag::inf();
-    }
-    if y.is_zero() {
-        return x;
-    }
-    if x.is_zero() {
-        return y;
-    }
-    let (xf, yf) = (x.to_float(), y.to_float());
-    let mut h = Float::new(64);
-    h.assign_round(xf.hypot_ref(&yf), r);
-    match r {
-        Round::Down => Mag::from_float_down(&h),
-        _ => Mag::from_float_up(&h),
     }
 }
 

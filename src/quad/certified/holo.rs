@@ -76,6 +76,11 @@ impl HoloBall {
         &self.z
     }
 
+    /// The ball itself, for the integrator to move a point in place.
+    pub(crate) fn inner_mut(&mut self) -> &mut CBall {
+        &mut self.z
+    }
+
     fn with(&self, z: CBall) -> HoloBall {
         HoloBall { z, mode: self.mode }
     }

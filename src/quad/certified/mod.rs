@@ -244,8 +244,32 @@ pub(crate) struct Part<'w> {
     /// `wrap(s + 2 pi i, f) = wrap(s, f)` (the map `x = c e^s`): covers of ellipse boxes
     /// may then be cut to one period (`cover.rs`).
     pub periodic: bool,
+    /// How the part's variable maps to `x` (to name points in errors).
+    pub map: XMap,
     #[allow(clippy::type_complexity)]
     pub wrap: Box<dyn Fn(&HoloBall, &mut dyn FnMut(&HoloBall) -> HoloBall) -> HoloBall + 'w>,
+}
+
+/// The substitution of a part, `x(s)`, in f64 (approximate: it names points in errors).
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum XMap {
+    /// `x = s`.
+    Identity,
+    /// `x = e + sign d e^{-s}` (next to a singular endpoint `e`).
+    Endpoint { e: f64, d: f64, sign: f64 },
+    /// `x = c e^s` (an algebraic decay to infinity).
+    Exponential { c: f64 },
+}
+
+impl XMap {
+    /// `x(s)`.
+    pub fn to_x(self, s: f64) -> f64 {
+        match self {
+            XMap::Identity => s,
+            XMap::Endpoint { e, d, sign } => e + sign * d * (-s).exp(),
+            XMap::Exponential { c } => c * s.exp(),
+        }
+    }
 }
 
 /// Builds the parts for an absolute tolerance at a working precision.
@@ -281,6 +305,7 @@ where
                 hi: hi.mid().clone(),
                 tail: Mag::ZERO,
                 periodic: false,
+                map: XMap::Identity,
                 wrap: Box::new(|s: &HoloBall, f: &mut dyn FnMut(&HoloBall) -> HoloBall| f(s)),
             });
         }
@@ -293,7 +318,7 @@ where
             }
         }
         if !extra.is_zero() {
-            parts.push(Part { lo: Float::new(wp), hi: Float::new(wp), tail: extra, periodic: false, wrap: Box::new(|s, f| f(s)) });
+            parts.push(Part { lo: Float::new(wp), hi: Float::new(wp), tail: extra, periodic: false, map: XMap::Identity, wrap: Box::new(|s, f| f(s)) });
         }
         Ok(parts)
     };
@@ -483,13 +508,13 @@ where
             if part.lo != part.hi {
                 // the crude enclosure of the estimate, once, at the precision it was made at
                 let first = if same_parts && wp == first_wp { reusable.get_mut(i).and_then(Option::take) } else { None };
-                let mut g = |z: CBall, mode: Mode| (part.wrap)(&HoloBall::new(z, mode), f).into_inner();
+                let mut g = |z: &HoloBall| (part.wrap)(z, f).into_inner();
                 let mut counted = Counted { f: &mut g, stats };
                 let part_tol = tol.mul_2exp(-1).div(Mag::from_f64(n_parts as f64));
                 let out = adaptive::adaptive(&mut counted, &part.lo, &part.hi, wp, part_tol, goal as i64 + 3 - tol_shift - zero_shift, limits, first, part.periodic)?;
                 stats = counted.stats;
                 if !out.value.is_finite() {
-                    return Err(adaptive::unbounded_error(out.unbounded_near, &stats));
+                    return Err(adaptive::unbounded_error(out.unbounded_near.map(|s| part.map.to_x(s)), &stats));
                 }
                 if out.limit.is_some() {
                     limit = out.limit;
@@ -498,7 +523,7 @@ where
                 truncation = truncation.add(out.truncation);
             }
             if !part.tail.is_finite() {
-                return Err(adaptive::unbounded_error(Some(part.lo.to_f64()), &stats));
+                return Err(adaptive::unbounded_error(Some(part.map.to_x(part.lo.to_f64())), &stats));
             }
             total.add_error_mag(part.tail);
             truncation = truncation.add(part.tail);

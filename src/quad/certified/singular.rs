@@ -59,7 +59,7 @@
 
 use rug::Float;
 
-use super::{HoloBall, IntegrationError, Mode, Part, PartsBuilder};
+use super::{HoloBall, IntegrationError, Mode, Part, PartsBuilder, XMap};
 use crate::ball::{Ball, CBall, Mag};
 use crate::error::{Error, Result};
 
@@ -205,6 +205,11 @@ impl Mapped {
         let d = if sign > 0 { other.sub(e) } else { e.sub(&other) };
         let log_d = d.set_prec(wp).ln()?;
         Ok(Mapped { e: e.set_prec(wp), sign, d: d.set_prec(wp), mu: exponent.set_prec(wp).add_i64(1), log_d, k })
+    }
+
+    /// `x(s)` in f64, for errors.
+    fn map(&self) -> XMap {
+        XMap::Endpoint { e: self.e.to_f64(), d: self.d.to_f64(), sign: self.sign as f64 }
     }
 
     /// `x(s)`.
@@ -360,6 +365,7 @@ where
         tail,
         // e^{s + 2 pi i} = e^s: the map is periodic (cover.rs)
         periodic: true,
+        map: XMap::Exponential { c: c.to_f64() },
         wrap: Box::new(move |s: &HoloBall, g: &mut dyn FnMut(&HoloBall) -> HoloBall| {
             let x = s.real(c.clone()) * s.exp();
             factor(&x, g) * x
@@ -452,23 +458,23 @@ where
     if w.left_singular() {
         let mapped = Mapped::new(a, &c, 1, &w.alpha, w.log_power, p)?;
         let (s, tail) = mapped.cut(&lf, target, g)?;
-        parts.push(Part { lo: Float::with_val(p, 0), hi: s, tail, periodic: false, wrap: mapped.wrap(lf) });
+        parts.push(Part { lo: Float::with_val(p, 0), hi: s, tail, periodic: false, map: mapped.map(), wrap: mapped.wrap(lf) });
     } else {
         endpoint_error = endpoint_error.add(end_error(a, &lf, p, g));
-        parts.push(Part { lo: a.mid().clone(), hi: c.clone(), tail: Mag::ZERO, periodic: false, wrap: Box::new(lf) });
+        parts.push(Part { lo: a.mid().clone(), hi: c.clone(), tail: Mag::ZERO, periodic: false, map: XMap::Identity, wrap: Box::new(lf) });
     }
     // right piece [c, b]
     let rf = right_factor(a.set_prec(p), w.alpha.set_prec(p), w.log_power);
     if w.right_singular() {
         let mapped = Mapped::new(b, &c, -1, &w.beta, 0, p)?;
         let (s, tail) = mapped.cut(&rf, target, g)?;
-        parts.push(Part { lo: Float::with_val(p, 0), hi: s, tail, periodic: false, wrap: mapped.wrap(rf) });
+        parts.push(Part { lo: Float::with_val(p, 0), hi: s, tail, periodic: false, map: mapped.map(), wrap: mapped.wrap(rf) });
     } else {
         endpoint_error = endpoint_error.add(end_error(b, &rf, p, g));
-        parts.push(Part { lo: c, hi: b.mid().clone(), tail: Mag::ZERO, periodic: false, wrap: Box::new(rf) });
+        parts.push(Part { lo: c, hi: b.mid().clone(), tail: Mag::ZERO, periodic: false, map: XMap::Identity, wrap: Box::new(rf) });
     }
     if !endpoint_error.is_zero() {
-        parts.push(Part { lo: Float::new(p), hi: Float::new(p), tail: endpoint_error, periodic: false, wrap: Box::new(|s, g| g(s)) });
+        parts.push(Part { lo: Float::new(p), hi: Float::new(p), tail: endpoint_error, periodic: false, map: XMap::Identity, wrap: Box::new(|s, g| g(s)) });
     }
     Ok(parts)
 }
