@@ -323,9 +323,19 @@ fn wave_bounded_fallback(a: f64, zeta: f64, amp: f64, x: f64) -> Result<(Bounded
     Ok((u, du))
 }
 
-/// Both bounded values from scratch: certified Bessel data, then the native sum.
+/// Both bounded values from scratch: the one-pass bounded Miller route
+/// (`crate::contact::displacement::bounded::wave_scratch_bounded`) where it
+/// applies and its bound is within `2^-46` of the scales (the model domain),
+/// else certified Bessel data, then the native sum, else MP (counted).
 fn wave_bounded_pair(a: f64, zeta: f64, amp: f64, x: f64) -> Result<(Bounded, Bounded)> {
     check_wave_f64(a, zeta, amp, x)?;
+    if let Some((u, du)) = crate::contact::displacement::bounded::wave_scratch_bounded(a, zeta, amp, x) {
+        const TIGHT: f64 = 1.0 / (1u64 << 46) as f64;
+        let du_scale = du.value.abs().max(2.0 * std::f64::consts::PI * amp.abs() / zeta);
+        if u.err <= TIGHT * u.value.abs().max(amp.abs()) && du.err <= TIGHT * du_scale {
+            return Ok((u, du));
+        }
+    }
     match CertifiedBessel::new(a, zeta).ok().and_then(|c| c.eval_bounded(a, amp, x)) {
         Some(r) => Ok(r),
         None => wave_bounded_fallback(a, zeta, amp, x),

@@ -180,7 +180,7 @@ const NATIVE_J_ERR_MAX: f64 = 8.673_617_379_884_035e-19; // 2^-60
 const TWO_PI_ERR: f64 = 3.0e-32;
 
 mod value;
-pub(crate) use value::wave_value;
+pub(crate) use value::{wave_scratch_bounded, wave_value};
 
 static FALLBACKS: AtomicU64 = AtomicU64::new(0);
 
