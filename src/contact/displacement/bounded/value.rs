@@ -50,6 +50,9 @@ use crate::ball::{two_sum, Bounded, BoundedDd, Dd, Fused, U};
 const D_STEPS: f64 = 4.0;
 const D_MAX_TABLE: f64 = 64.0;
 
+/// The largest `top = N + 1` of the table (`N = 63` at `D = 64`), with room.
+const MAX_TOP: usize = 80;
+
 /// `2^-64`: both Bessel tails of the table's `N` are below it ([`bessel_tails`]).
 const TAIL: f64 = 5.421_010_862_427_522e-20;
 
@@ -225,9 +228,9 @@ fn horner_start(acosh_hi: f64, top: usize) -> usize {
 }
 
 /// What one pass leaves: `p_0`, `p_1` (as `h + l`), `Lambda = sum_{m>=1} p_{2m}`,
-/// the Horner sums `U`, `S`, and (when bounded) the propagated bounds
-/// `e_0`, `e_1`, `sum e_{2m}`, the `e`-weighted sums of `U` and `S`, and
-/// `sum |h_{2m}|`, `sum |l_{2m}|` (method block, "Error bound").
+/// the Horner sums `U`, `S`, and (when bounded) the propagated bounds in units
+/// of `mu`: `e_0`, `e_1`, `sum_{m>=1} e_{2m}`, `sum_n n^2 e_{2n}`, and
+/// `sum_{m>=1} |l_{2m}|` (method block, "Error bound").
 #[derive(Default)]
 struct Pass {
     p0: (f64, f64),
@@ -238,20 +241,16 @@ struct Pass {
     e0: f64,
     e1: f64,
     e_lam: f64,
-    e_u: f64,
     e_s: f64,
-    sum_h: f64,
     sum_l: f64,
 }
 
 /// Miller's recurrence from `p_{2 top + 1} = 0`, `p_{2 top} = 1` with the three
 /// sums in the same loop (module docs). With `BOUND`, the running error bound
-/// of the recurrence (`e_{k-1} = c e_k + e_{k+1} + f_k`, forcing
-/// `f_k = z_{k-1} + z_k + z_{k+1}`, `z_j = mu |h_j| + nu |l_j|`) and the
-/// weighted sums of the bound run alongside; `xa >= |Y|`.
+/// of the recurrence in units of `mu` (`e_{k-1} = c (e_k + z_k) + e_{k+1} + z_{k-1}`,
+/// `z_j = |h_j| + kappa |l_j|`) and its sums run alongside.
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
-fn miller_pass<const BOUND: bool>(inv_d: Dd, top: usize, n_x: usize, yh: f64, yl: f64, xa: f64, mu: f64, nu: f64) -> Pass {
+fn miller_pass<const BOUND: bool>(inv_d: Dd, top: usize, n_x: usize, yh: f64, yl: f64, kappa: f64) -> Pass {
     let (mut h1, mut l1) = (0.0f64, 0.0f64); // p_{k+1}
     let (mut h0, mut l0) = (1.0f64, 0.0f64); // p_k, k = 2n
     let (mut lam_h, mut lam_l) = (1.0f64, 0.0f64); // sum_{n>=1} p_{2n}
@@ -261,11 +260,10 @@ fn miller_pass<const BOUND: bool>(inv_d: Dd, top: usize, n_x: usize, yh: f64, yl
         uh = 1.0;
         sh = vh;
     }
-    // the bound's state: z_{k+1}, z_k, e_{k+1}, e_k, and the weighted sums
-    let (mut z1, mut z0) = (0.0f64, mu);
+    // the bound's state: z_k, e_{k+1}, e_k, and the sums
+    let mut z0 = 1.0f64;
     let (mut e1, mut e0) = (0.0f64, 0.0f64);
-    let (mut e_lam, mut ev, mut e_u, mut e_s) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
-    let (mut sum_h, mut sum_l) = (1.0f64, 0.0f64);
+    let (mut e_lam, mut ev, mut e_s, mut sum_l) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
     // c + cl = kk/D, kk = 2k (the counters in f64: no integer conversions in the loop)
     let mult = |kk: f64| (kk * inv_d.hi, kk.mul_add(inv_d.hi, -(kk * inv_d.hi)) + kk * inv_d.lo);
     let n_x = n_x as f64;
@@ -276,16 +274,16 @@ fn miller_pass<const BOUND: bool>(inv_d: Dd, top: usize, n_x: usize, yh: f64, yl
         let (c, cl) = mult(kk);
         let (ho, lo) = rec_step(c, cl, h0, l0, h1, l1);
         if BOUND {
-            let zn = nu.mul_add(lo.abs(), mu * ho.abs());
-            let en = c.mul_add(e0, e1 + (zn + (z0 + z1)));
-            (z1, z0, e1, e0) = (z0, zn, e0, en);
+            let zn = kappa.mul_add(lo.abs(), ho.abs());
+            (e1, e0) = (e0, c.mul_add(e0, e1 + c.mul_add(z0, zn)));
+            z0 = zn;
         }
         let (c, cl) = mult(kk - 2.0);
         let (he, le) = rec_step(c, cl, ho, lo, h0, l0);
         if BOUND {
-            let zn = nu.mul_add(le.abs(), mu * he.abs());
-            let en = c.mul_add(e0, e1 + (zn + (z0 + z1)));
-            (z1, z0, e1, e0) = (z0, zn, e0, en);
+            let zn = kappa.mul_add(le.abs(), he.abs());
+            (e1, e0) = (e0, c.mul_add(e0, e1 + c.mul_add(z0, zn)));
+            z0 = zn;
         }
         h1 = ho;
         l1 = lo;
@@ -313,17 +311,15 @@ fn miller_pass<const BOUND: bool>(inv_d: Dd, top: usize, n_x: usize, yh: f64, yl
             sl = b2;
         }
         if BOUND {
-            sum_h += he.abs();
             sum_l += le.abs();
             e_lam += e0;
             ev = mf.mul_add(e0, ev);
-            e_u = e_u.mul_add(xa, e0);
-            e_s = e_s.mul_add(xa, ev);
+            e_s += ev;
         }
         kk -= 4.0;
         mf -= 1.0;
     }
-    Pass { p0: (h0, l0), p1: (h1, l1), lam: (lam_h, lam_l), u: (uh, ul), s: (sh, sl), e0, e1, e_lam, e_u, e_s, sum_h, sum_l }
+    Pass { p0: (h0, l0), p1: (h1, l1), lam: (lam_h, lam_l), u: (uh, ul), s: (sh, sl), e0, e1, e_lam, e_s, sum_l }
 }
 
 /// `D` (bounded), `1/D` in double-double and the bucket of the table.
@@ -335,7 +331,7 @@ fn contact(a: f64, zeta: f64) -> Option<(BoundedDd, Dd, usize, f64)> {
         return None;
     }
     let bucket = *table().get((d.v.hi * D_STEPS).ceil() as usize)?;
-    if bucket.n == u16::MAX {
+    if bucket.n as usize + 1 >= MAX_TOP {
         return None;
     }
     Some((d, recip(d.v), bucket.n as usize + 1, bucket.miller))
@@ -347,7 +343,7 @@ fn wave_value_with(a: f64, zeta: f64, amp: f64, x: f64) -> Option<(f64, f64)> {
     let g = geometry(a, x)?;
     let n_x = horner_start(g.acosh.v.hi, top);
     let (yh, yl) = (-g.big_x.v.hi, -g.big_x.v.lo);
-    let p = miller_pass::<false>(inv_d, top, n_x, yh, yl, 0.0, 0.0, 0.0);
+    let p = miller_pass::<false>(inv_d, top, n_x, yh, yl, 0.0);
     let (p0, p1) = (dd(p.p0.0, p.p0.1), dd(p.p1.0, p.p1.1));
     let lambda = p0 + dd(p.lam.0, p.lam.1).mul_f64_p::<Fused>(2.0);
     let inv_lambda = recip(lambda);
@@ -376,28 +372,31 @@ fn wave_bounded_with(a: f64, zeta: f64, amp: f64, x: f64) -> Option<(Bounded, Bo
     let g = geometry(a, x)?;
     let n_x = horner_start(g.acosh.v.hi, top);
     let (yh, yl) = (-g.big_x.v.hi, -g.big_x.v.lo);
-    let xa = yh.abs() + yl.abs();
     // the recurrence's local error (method block): rho_c bounds the relative
-    // error of the multipliers c + cl against 2k/D, cmax the largest multiplier
+    // error of the multipliers c + cl against 2k/D; |delta_k| <= mu (z_{k-1} + c z_k)
     let u2 = U * U;
     let rho_c = d.e / d_low + 13.0 * u2;
-    let cmax = 4.0 * top as f64 * inv_d.hi * (1.0 + 4.0 * U);
-    let mu = 11.02 * u2 + cmax * (4.21 * u2 + 1.001 * rho_c);
-    let nu = 1.001 * U + cmax * (2.1 * U + 1.001 * rho_c);
-    let p = miller_pass::<true>(inv_d, top, n_x, yh, yl, xa, mu, nu);
+    let mu = 23.07 * u2 + 1.001 * rho_c;
+    let kappa = (3.11 * U + 1.001 * rho_c) / mu * (1.0 + 4.0 * U);
+    let p = miller_pass::<true>(inv_d, top, n_x, yh, yl, kappa);
+    let scale = mu * CHAIN_INFLATION;
+    let (e0, e1, e_lam, e_s) = (p.e0 * scale, p.e1 * scale, p.e_lam * scale, p.e_s * scale);
     let tf = top as f64;
     let t3 = tf * tf * tf;
-    let (sa, sb) = (p.sum_h * 1.01, p.sum_l * 1.01);
-    let drop = 5.421_010_862_427_522e-20 * 1.01 * (sa + sb); // 2^-64 (method block)
+    let sb = p.sum_l * CHAIN_INFLATION;
+    // sum_{m>=1} |h_{2m}| from |Lambda| (method block)
+    let lam_mag = p.p0.0.abs() + p.p0.1.abs() + 2.0 * (p.lam.0.abs() + p.lam.1.abs());
+    let sa = 1.05 * tf * (lam_mag + e0 + 2.0 * e_lam + sb);
+    let drop = TAIL * 1.01 * (sa + sb);
     let sec_lam = U * tf * (5.0 * U * tf * sa + 3.0 * sb);
     let sec_u = U * tf * (29.0 * U * tf * sa + 10.0 * sb) + drop / ((tf + 1.0) * (tf + 1.0)) + g.big_x.e * tf * 1.02 * (sa + sb);
     let sec_s = U * t3 * (70.0 * U * tf * sa + 13.0 * sb) + drop + g.big_x.e * t3 * 1.02 * (sa + sb);
     let b = |v: (f64, f64), e: f64| BoundedDd { v: dd(v.0, v.1), e };
-    let p0 = b(p.p0, p.e0 * CHAIN_INFLATION);
-    let p1 = b(p.p1, p.e1 * CHAIN_INFLATION);
-    let lambda = p0.add(b(p.lam, p.e_lam * CHAIN_INFLATION + sec_lam).mul_f64_p::<Fused>(2.0));
-    let su = b(p.u, p.e_u * CHAIN_INFLATION + sec_u);
-    let ss = b(p.s, p.e_s * CHAIN_INFLATION + sec_s);
+    let p0 = b(p.p0, e0);
+    let p1 = b(p.p1, e1);
+    let lambda = p0.add(b(p.lam, e_lam + sec_lam).mul_f64_p::<Fused>(2.0));
+    let su = b(p.u, 1.01 * e_lam + sec_u);
+    let ss = b(p.s, 1.01 * e_s + sec_s);
     let u_sum = su.mul_p::<Fused>(g.big_x).mul_f64_p::<Fused>(2.0);
     let bracket = d.mul_p::<Fused>(p1).mul_p::<Fused>(g.acosh).add(u_sum).sub(p0);
     let mut r = div_p::<Fused>(bracket, lambda)?;
