@@ -49,6 +49,9 @@ fn worst(points: &[(f64, f64, f64)]) -> [f64; 4] {
     w
 }
 
+/// A named region: its points `(a, zeta, x)` and the bound's tolerance.
+type Region = (&'static str, Vec<(f64, f64, f64)>, f64);
+
 fn model_a() -> impl Iterator<Item = f64> {
     (0..=44).map(|i| 0.5 + 0.125 * i as f64)
 }
@@ -57,7 +60,7 @@ fn model_a() -> impl Iterator<Item = f64> {
 fn scratch_route_encloses_the_mp_values_within_the_tolerance_table() {
     let (misses, fallbacks) = (wave_scratch_misses(), wave_bounded_fallbacks());
     let ulps = |a: f64, k: u64| f64::from_bits(a.to_bits() + k);
-    let mut regions: Vec<(&str, Vec<(f64, f64, f64)>, f64)> = Vec::new();
+    let mut regions: Vec<Region> = Vec::new();
     let grid = |ratios: &[f64]| model_a().flat_map(|a| ratios.iter().map(move |&r| (a, 1.125, a * r))).collect::<Vec<_>>();
     let mut edge: Vec<(f64, f64, f64)> = model_a().flat_map(|a| [(a, 1.125, a), (a, 1.125, ulps(a, 1)), (a, 1.125, ulps(a, 2))]).collect();
     edge.extend(grid(&[1.0 + 1e-15, 1.0 + 2f64.powi(-40), 1.0 + 1e-9]));

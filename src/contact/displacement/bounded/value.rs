@@ -210,7 +210,7 @@ fn miller_start_bound(half_d: f64, m: usize) -> f64 {
     let mut terms = [0.0f64; 2];
     for k in 1..=m + 2 {
         t = t * half_d / k as f64 * (1.0 + 4.0 * U);
-        if k >= m + 1 {
+        if k > m {
             terms[k - m - 1] = t;
         }
     }
