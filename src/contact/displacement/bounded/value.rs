@@ -326,11 +326,12 @@ fn geometry(a: f64, x: f64) -> Option<Geometry> {
 
 /// Where the Horner sums in `Y = -X` start: the order `n_x` with
 /// `|X|^{n_x} (top + 1)^2 <= 2^-64`, from `-ln |X| >= 2 (acosh - 10^-15)`
-/// (the margin covers the rounding of `X` and of `acosh`); `top` near `x = a`.
+/// (the margin covers the rounding of `X` and of `acosh`, whose low part and
+/// bound are checked below `4e-16`); `top` near `x = a`.
 #[inline(always)]
-fn horner_start(acosh_hi: f64, top: usize) -> usize {
-    let lo = acosh_hi - 1e-15;
-    if !(lo > 0.0) {
+fn horner_start(acosh: BoundedDd, top: usize) -> usize {
+    let lo = acosh.v.hi - 1e-15;
+    if !(lo > 0.0 && acosh.v.lo.abs() + acosh.e <= 4e-16) {
         return top;
     }
     let need = (LN2_64_UP + 2.0 * ln_upper((top + 1) as f64)) / (2.0 * lo) * CHAIN_INFLATION;
@@ -451,7 +452,7 @@ fn contact(a: f64, zeta: f64) -> Option<(BoundedDd, Dd, usize, Bucket)> {
 fn wave_value_with(a: f64, zeta: f64, amp: f64, x: f64) -> Option<(f64, f64)> {
     let (d, inv_d, top, _) = contact(a, zeta)?;
     let g = geometry(a, x)?;
-    let n_x = horner_start(g.acosh.v.hi, top);
+    let n_x = horner_start(g.acosh, top);
     let (yh, yl) = (-g.big_x.v.hi, -g.big_x.v.lo);
     let p = miller_pass::<false>(inv_d, top, n_x, yh, yl, 0.0);
     let (p0, p1) = (dd(p.p0.0, p.p0.1), dd(p.p1.0, p.p1.1));
@@ -480,7 +481,7 @@ fn wave_bounded_with(a: f64, zeta: f64, amp: f64, x: f64) -> Option<(Bounded, Bo
         return None;
     }
     let g = geometry(a, x)?;
-    let n_x = horner_start(g.acosh.v.hi, top);
+    let n_x = horner_start(g.acosh, top);
     let (yh, yl) = (-g.big_x.v.hi, -g.big_x.v.lo);
     // the recurrence's local error (method block): rho_c bounds the relative
     // error of the multipliers c + cl against 2k/D; |delta_k| <= mu (z_{k-1} + c z_k)
