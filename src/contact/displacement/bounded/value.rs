@@ -131,11 +131,12 @@
 //!    exact Miller `P`, and 4 moves `P` to `J`. `finish` adds the final
 //!    rounding and inflates the bound for its own f64 evaluation.
 //!
-//! Measured (unit test below; tests/wave_bounded.rs): over the model domain
-//! the bound is at most `1.3e-16` of the scales (the error itself at most
-//! `9e-17`). It grows like the chain's `e^{0.47 D}` beyond: `5e-12` at
-//! `D = 54`, `1e-8` at `D = 63`; the caller (`wave_f64.rs`) takes the
-//! per-contact certified path wherever the bound exceeds `2^-50` of the scales.
+//! Measured (tests/wave_scratch.rs, 1125 points of the model domain with its
+//! edges; the unit test below): the bound is at most `1.18e-16` of the scales
+//! (the error itself at most `1.05e-16`). It grows like the chain's `e^{0.47 D}`
+//! beyond: `3.8e-16` at `D = 37.7`, `1.3e-14` at `D = 41.9`, `5e-12` at `D = 54`,
+//! `8e-9` at `D = 63`; the caller (`wave_f64.rs`) takes the per-contact certified
+//! path wherever the bound exceeds `2^-50` of the scales (`D` beyond about 40).
 //!
 //! Where it does not apply (no fused multiply-add, `x/a > 25/7`, `D` beyond
 //! the table) both paths return `None` and the callers use the previous routes.
