@@ -530,8 +530,10 @@ mod tests {
     use crate::special::exact;
     use rug::Float;
 
-    /// The one-pass bound encloses the 200-bit certified values and is tight
-    /// (printed: the worst bound and error over the points, as fractions of the scales).
+    /// The one-pass bound encloses the 200-bit certified values at every point
+    /// (the edge, one ulp, `1 + 1e-15`, the far field, `D` from 0.13 to 63), and
+    /// at `zeta = 9/8` it is within `2e-16` of the scales (printed: the worst
+    /// bound and error over all points, as fractions of the scales).
     #[test]
     fn scratch_bound_encloses_and_is_tight() {
         if !has_fma() {
@@ -551,7 +553,10 @@ mod tests {
                 let edu = Float::with_val(264, du_ref.mid() - du.value).abs().to_f64();
                 assert!(eu <= u.err, "a={a} zeta={zeta} x={x}: u {u} misses {u_ref:?}");
                 assert!(edu <= du.err, "a={a} zeta={zeta} x={x}: du {du} misses {du_ref:?}");
-                eprintln!("a={a} zeta={zeta} r={r}: u err {:.2e} bound {:.2e}; du err {:.2e} bound {:.2e}", eu / us, u.err / us, edu / dus, du.err / dus);
+                if zeta == 1.125 {
+                    // the model's wavelength: the bound is tight
+                    assert!(u.err <= 2e-16 * us && du.err <= 2e-16 * dus, "a={a} x={x}: bounds {u} {du}");
+                }
                 worst = [worst[0].max(eu / us), worst[1].max(u.err / us), worst[2].max(edu / dus), worst[3].max(du.err / dus)];
             }
         }
