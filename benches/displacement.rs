@@ -12,7 +12,7 @@
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use maugis::contact::displacement::{du_wave, du_wave_bounded, u_wave, u_wave_bounded, u_wave_mp, u_wave_series_mp, WaveBessel};
-use maugis::contact::displacement::bounded::{wave_bounded_fallbacks, wave_bounded_mp_contacts, wave_scratch_misses};
+use maugis::contact::displacement::bounded::wave_scratch_misses;
 use maugis::contact::displacement::quadrature::u_wave_quad;
 use maugis::special::exact;
 
@@ -79,7 +79,7 @@ fn domain_points() -> Vec<(f64, f64)> {
 /// Criterion reports elements per second: 64 values per iteration.
 fn bench_wave_f64_domain(c: &mut Criterion) {
     let pts = domain_points();
-    let (before, before_contacts) = (wave_bounded_fallbacks(), wave_bounded_mp_contacts());
+    let (before, before_contacts) = (maugis::special::fallback_counts().wave_bounded, maugis::special::fallback_counts().wave_bounded_mp_contacts);
     let mut g = c.benchmark_group("wave_f64_domain");
     g.throughput(Throughput::Elements(pts.len() as u64));
     g.bench_function("u_wave/scratch", |b| {
@@ -107,8 +107,8 @@ fn bench_wave_f64_domain(c: &mut Criterion) {
     g.finish();
     eprintln!(
         "wave_f64_domain: MP fallbacks of the bounded path: {} (per x), contact data built in MP: {}",
-        wave_bounded_fallbacks() - before,
-        wave_bounded_mp_contacts() - before_contacts
+        maugis::special::fallback_counts().wave_bounded - before,
+        maugis::special::fallback_counts().wave_bounded_mp_contacts - before_contacts
     );
 }
 

@@ -97,7 +97,7 @@ fn bench_hyp1f2_domain(c: &mut Criterion) {
             ((1000.0 * u).floor(), 35.0 * v)
         })
         .collect();
-    let before = hyp1f2::hyp1f2_fallbacks();
+    let before = maugis::special::fallback_counts().hyp1f2;
     let mut g = c.benchmark_group("hyp1f2_f64_domain");
     g.throughput(criterion::Throughput::Elements(pts.len() as u64));
     g.bench_function("hyp1f2_bounded", |b| {
@@ -106,21 +106,21 @@ fn bench_hyp1f2_domain(c: &mut Criterion) {
     let native: Vec<(f64, f64)> = pts
         .iter()
         .copied()
-        .filter(|&(k, s)| hyp1f2::hyp1f2_native_bounded(0.5, k + 1.0, k + 1.5, -s * s).is_some_and(|b| b.err <= 1e-14 * b.value.abs()))
+        .filter(|&(k, s)| hyp1f2::hyp1f2_native_bounded(0.5, k + 1.0, k + 1.5, -s * s, 1e-14).is_ok_and(|b| b.is_some()))
         .collect();
     g.throughput(criterion::Throughput::Elements(native.len().max(1) as u64));
     g.bench_function("hyp1f2_native_bounded/accepted_points", |b| {
-        b.iter(|| native.iter().map(|&(k, s)| hyp1f2::hyp1f2_native_bounded(0.5, k + 1.0, k + 1.5, black_box(-s * s)).unwrap().value).sum::<f64>())
+        b.iter(|| native.iter().map(|&(k, s)| hyp1f2::hyp1f2_native_bounded(0.5, k + 1.0, k + 1.5, black_box(-s * s), 1e-14).unwrap().unwrap().value).sum::<f64>())
     });
     g.finish();
     eprintln!(
         "hyp1f2_f64_domain: {} of {} points native; MP fallbacks counted during the run: {}",
         native.len(),
         pts.len(),
-        hyp1f2::hyp1f2_fallbacks() - before
+        maugis::special::fallback_counts().hyp1f2 - before
     );
     // Issue 23's table: k in {0, 1, 2, 5, 10, 50, 200, 1000}, 64 s per k in (0, 35]
-    let before = hyp1f2::hyp1f2_fallbacks();
+    let before = maugis::special::fallback_counts().hyp1f2;
     let mut g = c.benchmark_group("hyp1f2_f64_per_k");
     g.throughput(criterion::Throughput::Elements(64));
     for k in [0.0f64, 1.0, 2.0, 5.0, 10.0, 50.0, 200.0, 1000.0] {
@@ -130,9 +130,9 @@ fn bench_hyp1f2_domain(c: &mut Criterion) {
         });
     }
     g.finish();
-    eprintln!("hyp1f2_f64_per_k: MP fallbacks during the run: {}", hyp1f2::hyp1f2_fallbacks() - before);
+    eprintln!("hyp1f2_f64_per_k: MP fallbacks during the run: {}", maugis::special::fallback_counts().hyp1f2 - before);
     // The whole family k = 0..=1000 at one z = -s^2 (elements: 1001 values per call).
-    let before = hyp1f2::hyp1f2_fallbacks();
+    let before = maugis::special::fallback_counts().hyp1f2;
     let mut g = c.benchmark_group("hyp1f2_model_family_f64");
     g.throughput(criterion::Throughput::Elements(1001));
     for &s in &[0.5f64, 3.0, 10.0, 20.0, 35.0] {
@@ -141,37 +141,37 @@ fn bench_hyp1f2_domain(c: &mut Criterion) {
         });
     }
     g.finish();
-    eprintln!("hyp1f2_model_family_f64: MP fallbacks during the run: {}", hyp1f2::hyp1f2_fallbacks() - before);
+    eprintln!("hyp1f2_model_family_f64: MP fallbacks during the run: {}", maugis::special::fallback_counts().hyp1f2 - before);
 }
 
 /// `meijer_g_k_bounded(k, y)` over the issue-8 domain k <= 1000, y in (0, 1]
 /// (64 fixed points; elements per second), with the MP fallbacks printed.
 fn bench_meijer_domain(c: &mut Criterion) {
     let pts = meijer_domain::meijer_domain_points();
-    let before = meijer_g::meijer_g_k_fallbacks();
+    let before = maugis::special::fallback_counts().meijer_g_k;
     let mut g = c.benchmark_group("meijer_g_k_f64_domain");
     g.throughput(criterion::Throughput::Elements(pts.len() as u64));
     g.bench_function("meijer_g_k_bounded", |b| {
         b.iter(|| pts.iter().map(|&(k, y)| meijer_g::meijer_g_k_bounded(k, black_box(y)).unwrap().value).sum::<f64>())
     });
     g.finish();
-    eprintln!("meijer_g_k_f64_domain: MP fallbacks during the run: {}", meijer_g::meijer_g_k_fallbacks() - before);
+    eprintln!("meijer_g_k_f64_domain: MP fallbacks during the run: {}", maugis::special::fallback_counts().meijer_g_k - before);
     // The paths next to y = 1 and the zeros: y > 0.97 (near-one expansion: f64 where
     // k (1 - y) <= 1.25, else double-double), 1e-9 next to the zero of G(k, .) (direct
     // formula in double words), and the f64 near-one expansion at 0.9 <= y < 0.97.
     let near_one: Vec<(u32, f64)> = [0u32, 2, 100, 472, 1000].iter().flat_map(|&k| [(k, 0.9705), (k, 0.99), (k, 1.0 - 1e-9)]).collect();
     let near_one_f64: Vec<(u32, f64)> = [0u32, 1, 2, 5, 10].iter().flat_map(|&k| [(k, 0.9), (k, 0.93), (k, 0.95), (k, 0.96)]).collect();
     let near_zero: Vec<(u32, f64)> = vec![(2, 0.807_135_927_66), (5, 0.637_762_065), (10, 0.571_703_529_38), (100, 0.507_463_152_53), (1000, 0.500_749_626_68)];
-    let before = meijer_g::meijer_g_k_fallbacks();
+    let before = maugis::special::fallback_counts().meijer_g_k;
     let mut g = c.benchmark_group("meijer_g_k_f64_dd_paths");
     for (name, pts) in [("near_one", &near_one), ("next_to_zero", &near_zero), ("near_one_f64_below_0.97", &near_one_f64)] {
         g.throughput(criterion::Throughput::Elements(pts.len() as u64));
         g.bench_function(name, |b| b.iter(|| pts.iter().map(|&(k, y)| meijer_g::meijer_g_k_bounded(k, black_box(y)).unwrap().value).sum::<f64>()));
     }
     g.finish();
-    eprintln!("meijer_g_k_f64_dd_paths: MP fallbacks during the run: {}", meijer_g::meijer_g_k_fallbacks() - before);
+    eprintln!("meijer_g_k_f64_dd_paths: MP fallbacks during the run: {}", maugis::special::fallback_counts().meijer_g_k - before);
     // The whole family k = 0..=1000 at one y (elements: 1001 values per call).
-    let before = meijer_g::meijer_g_k_fallbacks();
+    let before = maugis::special::fallback_counts().meijer_g_k;
     let mut g = c.benchmark_group("meijer_g_k_family_f64");
     g.throughput(criterion::Throughput::Elements(1001));
     for &y in &[0.25, 0.5, 0.9, 0.99, 1.0 - 1e-9, 1.0] {
@@ -180,7 +180,7 @@ fn bench_meijer_domain(c: &mut Criterion) {
         });
     }
     g.finish();
-    eprintln!("meijer_g_k_family_f64: MP fallbacks during the run: {}", meijer_g::meijer_g_k_fallbacks() - before);
+    eprintln!("meijer_g_k_family_f64: MP fallbacks during the run: {}", maugis::special::fallback_counts().meijer_g_k - before);
 }
 
 fn bench_hyp2f1(c: &mut Criterion) {

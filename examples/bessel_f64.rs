@@ -10,7 +10,7 @@
 
 use std::time::Instant;
 
-use maugis::special::bessel_j::{bessel_j, bessel_j_bounded, bessel_j_fallbacks, bessel_j_mp, choose_native, NativeMethod};
+use maugis::special::bessel_j::{bessel_j, bessel_j_bounded, bessel_j_mp, choose_native, NativeMethod};
 use rug::Float;
 
 /// The points of `bessel_points` in reference/bench_scipy.py: a 64-bit LCG,
@@ -54,12 +54,12 @@ fn main() {
     let pts = points(count);
     let method = |&(n, x): &(i64, f64)| choose_native(n.unsigned_abs(), x.abs());
     println!("{count} points, n <= 60, x <= 150 (uniform); best of 5, per value: wall / CPU");
-    let f0 = bessel_j_fallbacks();
+    let f0 = maugis::special::fallback_counts().bessel_j;
     let (w, c, acc) = time_per_value(count, 5, || pts.iter().map(|&(n, x)| bessel_j(n, x).unwrap()).sum());
-    let f1 = bessel_j_fallbacks();
+    let f1 = maugis::special::fallback_counts().bessel_j;
     println!("bessel_j          {w:7.3} us / {c:7.3} us   MP fallbacks {:.4}% [{acc:.3}]", (f1 - f0) as f64 / 5.0 / count as f64 * 100.0);
     let (w, c, acc) = time_per_value(count, 5, || pts.iter().map(|&(n, x)| bessel_j_bounded(n, x).unwrap().err).sum());
-    let f2 = bessel_j_fallbacks();
+    let f2 = maugis::special::fallback_counts().bessel_j;
     println!("bessel_j_bounded  {w:7.3} us / {c:7.3} us   MP fallbacks {:.4}% [{acc:.3e}]", (f2 - f1) as f64 / 5.0 / count as f64 * 100.0);
     for m in [NativeMethod::Recurrence, NativeMethod::Series, NativeMethod::Mp] {
         let sel: Vec<(i64, f64)> = pts.iter().copied().filter(|p| method(p) == m).collect();

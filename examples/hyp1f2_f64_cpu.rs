@@ -6,7 +6,7 @@
 //!
 //! `cargo run --release --example hyp1f2_f64_cpu`
 
-use maugis::special::hyp1f2::{hyp1f2_bounded, hyp1f2_fallbacks};
+use maugis::special::hyp1f2::hyp1f2_bounded;
 
 fn cpu_ns() -> f64 {
     std::fs::read_to_string("/proc/thread-self/schedstat").unwrap().split_whitespace().next().unwrap().parse().unwrap()
@@ -16,7 +16,7 @@ fn main() {
     let ss: Vec<f64> = (1..=64).map(|i| 35.0 * ((i as f64 * 0.618_033_988_749_895).fract()).max(1.0 / 64.0)).collect();
     let reps = 2000;
     let mut total = 0.0;
-    let before = hyp1f2_fallbacks();
+    let before = maugis::special::fallback_counts().hyp1f2;
     println!("k,us_per_value_cpu,worst_rel_bound");
     for k in [0.0f64, 1.0, 2.0, 5.0, 10.0, 50.0, 200.0, 1000.0] {
         let mut worst = 0.0f64;
@@ -35,5 +35,5 @@ fn main() {
         total += us;
         println!("{k},{us:.3},{worst:.2e}{}", if acc.is_nan() { " nan" } else { "" });
     }
-    println!("mean over k: {:.3} us per value; MP fallbacks: {}", total / 8.0, hyp1f2_fallbacks() - before);
+    println!("mean over k: {:.3} us per value; MP fallbacks: {}", total / 8.0, maugis::special::fallback_counts().hyp1f2 - before);
 }

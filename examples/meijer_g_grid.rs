@@ -45,9 +45,9 @@ fn main() {
     for &k in &ks {
         let mut row = format!("| {k} |");
         for &y in &ys {
-            let before = meijer_g::meijer_g_k_fallbacks();
+            let before = maugis::special::fallback_counts().meijer_g_k;
             let best = per_call(40, || meijer_g::meijer_g_k_bounded(k, black_box(y)).unwrap().value);
-            let fb = meijer_g::meijer_g_k_fallbacks() - before;
+            let fb = maugis::special::fallback_counts().meijer_g_k - before;
             fallbacks += (fb > 0) as u64;
             over += (best > 1.0) as u32;
             if best > worst {
@@ -60,9 +60,9 @@ fn main() {
     }
     // the 64 points of benches/special.rs, bench_meijer_domain
     let pts = meijer_domain::meijer_domain_points();
-    let before = meijer_g::meijer_g_k_fallbacks();
+    let before = maugis::special::fallback_counts().meijer_g_k;
     let domain = per_call(2, || pts.iter().map(|&(k, y)| meijer_g::meijer_g_k_bounded(k, black_box(y)).unwrap().value).sum::<f64>()) / 64.0;
-    println!("\nthe 64 domain points of meijer_g_k_f64_domain: {domain:.3} us per value, {} MP fallbacks", meijer_g::meijer_g_k_fallbacks() - before);
+    println!("\nthe 64 domain points of meijer_g_k_f64_domain: {domain:.3} us per value, {} MP fallbacks", maugis::special::fallback_counts().meijer_g_k - before);
     let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
     println!(
         "{} cells: worst {worst:.2} us at k = {}, y = {}; {over} cells above 1 us; {fallbacks} cells with an MP fallback; load average {}",

@@ -117,8 +117,8 @@ fn u_at_datum(p: Params, abar: f64, xd: f64) -> f64 {
     let cs = ContactSize::new(p, abar).unwrap();
     let m = cs.solve_m().unwrap();
     u_hertz(abar, 1.0, xd).unwrap()
-        + u_wave(abar, p.beta, p.alpha, xd).unwrap()
-        + u_adhesive(abar, m * abar, p.lambda, 1.0, xd).unwrap()
+        + u_wave(abar, p.beta(), p.alpha(), xd).unwrap()
+        + u_adhesive(abar, m * abar, p.lambda(), 1.0, xd).unwrap()
 }
 
 /// `int u dL` along a path between loads `lo` and `hi` (path given by increasing load).

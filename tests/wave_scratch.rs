@@ -21,7 +21,8 @@
 //!
 //! (`a` from 0.5 to 6 in steps of 1/8, `zeta = 9/8` unless stated.)
 
-use maugis::contact::displacement::bounded::{wave_bounded_fallbacks, wave_scratch_misses};
+use maugis::contact::displacement::bounded::wave_scratch_misses;
+use maugis::special::fallback_counts;
 use maugis::contact::displacement::{du_wave_bounded, du_wave_mp, u_wave_bounded, u_wave_mp};
 use maugis::special::exact;
 use rug::Float;
@@ -58,7 +59,7 @@ fn model_a() -> impl Iterator<Item = f64> {
 
 #[test]
 fn scratch_route_encloses_the_mp_values_within_the_tolerance_table() {
-    let (misses, fallbacks) = (wave_scratch_misses(), wave_bounded_fallbacks());
+    let (misses, fallbacks) = (wave_scratch_misses(), fallback_counts().wave_bounded);
     let ulps = |a: f64, k: u64| f64::from_bits(a.to_bits() + k);
     let mut regions: Vec<Region> = Vec::new();
     let grid = |ratios: &[f64]| model_a().flat_map(|a| ratios.iter().map(move |&r| (a, 1.125, a * r))).collect::<Vec<_>>();
@@ -104,6 +105,6 @@ fn scratch_route_encloses_the_mp_values_within_the_tolerance_table() {
             eprintln!("{line}");
         }
     }
-    eprintln!("model domain: {model_points} points, {model_misses} handed to the per-contact data; MP fallbacks in all: {}", wave_bounded_fallbacks() - fallbacks);
+    eprintln!("model domain: {model_points} points, {model_misses} handed to the per-contact data; MP fallbacks in all: {}", fallback_counts().wave_bounded - fallbacks);
     assert_eq!(model_misses, 0, "the one-pass route must answer on the whole model domain");
 }

@@ -117,7 +117,7 @@ pub struct Run {
 /// The run's summary: the library's schema ([`RunSummary::new`]), the same
 /// object for `summary.json` and `--format json`; files name the curves' CSVs.
 fn summary(runs: &[Run], alpha: f64, beta: f64, opts: CurveOptions, with_csv: bool) -> RunSummary {
-    RunSummary::new(alpha, beta, opts, runs.iter().map(|r| &r.curve), |c| with_csv.then(|| csv_name(c.params.lambda)))
+    RunSummary::new(alpha, beta, opts, runs.iter().map(|r| &r.curve), |c| with_csv.then(|| csv_name(c.params.lambda())))
 }
 
 /// The run as JSON; with `--units si` an `si` object ([`SiSummary`]) joins the
@@ -159,7 +159,7 @@ fn curve_csv(c: &Curve, scales: Option<&Scales>) -> Result<String, String> {
         header.extend(["a_m", "load_n_per_m", "approach_m"]);
     }
     w.write_record(&header).map_err(err)?;
-    let Params { lambda, alpha, beta } = c.params;
+    let (lambda, alpha, beta) = (c.params.lambda(), c.params.alpha(), c.params.beta());
     for p in &c.points {
         let si: Vec<String> = scales
             .map(|s| vec![s.to_horizontal(p.abar).to_string(), s.to_load(p.load).to_string(), s.to_vertical(p.approach).to_string()])

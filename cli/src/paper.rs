@@ -58,7 +58,7 @@ pub(crate) fn jump_near(c: &Curve, direction: JumpDirection, near: f64) -> Resul
         .filter(|j| j.direction == direction)
         .min_by(|a, b| (a.from.abar - near).abs().total_cmp(&(b.from.abar - near).abs()))
         .copied()
-        .ok_or_else(|| format!("lambda = {}: no {direction:?} jump", c.params.lambda))
+        .ok_or_else(|| format!("lambda = {}: no {direction:?} jump", c.params.lambda()))
 }
 
 /// The invalid stretch (with cavitation) that contains `abar`: `(from, to)`.
@@ -67,7 +67,7 @@ pub(crate) fn cavitating_stretch(c: &Curve, abar: f64) -> Result<(f64, f64), Str
         .iter()
         .find(|s| s.cavitation && s.from_abar <= abar && abar <= s.to_abar)
         .map(|s| (s.from_abar, s.to_abar))
-        .ok_or_else(|| format!("lambda = {}: no cavitating stretch at abar = {abar}", c.params.lambda))
+        .ok_or_else(|| format!("lambda = {}: no cavitating stretch at abar = {abar}", c.params.lambda()))
 }
 
 /// Every compared number.
@@ -152,7 +152,7 @@ fn page() -> Result<String, String> {
         let _ = writeln!(
             s,
             "| {} | {pa} | {pl} | {pv} | {vp} | {:.4} | {:.4} |",
-            c.params.lambda,
+            c.params.lambda(),
             c.load_control.dissipation.total,
             c.displacement_control.dissipation.total
         );

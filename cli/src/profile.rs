@@ -365,7 +365,7 @@ fn panel(
 
 /// The three-panel profile plot (SVG text) of the state.
 fn profile_svg(s: &[Sample], state: &StateProfile) -> Result<String, String> {
-    let Params { lambda, alpha, beta } = state.params;
+    let (lambda, alpha, beta) = (state.params.lambda(), state.params.alpha(), state.params.beta());
     let (abar, m, load, v) = (state.abar, state.m, state.load, &state.validity);
     let c = state.strip_end();
     let xmax = s.last().map(|p| p.xbar).unwrap_or(1.5 * c).max(1e-9);

@@ -215,7 +215,7 @@ fn overlay_svg(params: Params, amax: f64, rows: &[StateRecord], periodic: bool) 
     {
         let root = SVGBackend::with_string(&mut svg, (1000 + crate::plot::LEGEND_WIDTH, 850)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_err)?;
-        let title = format!("simulation vs model: λ = {}, α = {}, β = {}", short(params.lambda), short(params.alpha), short(params.beta));
+        let title = format!("simulation vs model: λ = {}, α = {}, β = {}", short(params.lambda()), short(params.alpha()), short(params.beta()));
         let mut chart = load_area_chart(&root, title, amax, lo - pad, hi + pad)?;
         let mut legend = Legend::new(LEGEND_FONT);
         let mut first = [true, true];

@@ -95,9 +95,9 @@ pub use smooth::{ANDERSON_DEPTH, CONTRACTING_STEPS, MAX_FIXED_POINT_STEPS, THETA
 pub use zone_ends::{END_TOL, EDGE_STENCIL, MAX_END_STEPS};
 
 use crate::elastic::HalfPlane;
-use crate::error::{Result, SolverError};
+use crate::error::{Interval, Result, SolverError};
 use crate::grid::Grid;
-use crate::profile::{Adhesion, Profile};
+use crate::profile::{Adhesion, AdhesionLaw, Profile};
 
 /// Tunables of one solve.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -275,11 +275,10 @@ impl ContactSolver {
     }
 
     fn with_operator(op: HalfPlane, profile: &Profile, adhesion: Adhesion, opts: SolveOptions) -> Result<Self> {
-        if !(opts.tol > 0.0 && opts.tol < 1.0) || opts.max_cg == 0 || opts.max_zone_updates == 0 {
-            return Err(SolverError::Domain {
-                what: "solve options: tol must lie in (0, 1) and the iteration caps must be positive".into(),
-            });
-        }
+        let unit = Interval { lo: 0.0, hi: 1.0, lo_closed: false, hi_closed: false };
+        crate::error::in_range(opts.tol, "the solve tolerance tol", unit)?;
+        crate::error::count_in_range(opts.max_cg, "the CG iteration cap max_cg", 1, usize::MAX)?;
+        crate::error::count_in_range(opts.max_zone_updates, "the zone-update cap max_zone_updates", 1, usize::MAX)?;
         let grid = op.grid();
         let h = profile.sample(&grid)?;
         let n = grid.cells();
@@ -381,7 +380,7 @@ impl ContactSolver {
         crate::error::finite(approach, "the approach")?;
         let (sigma0, delta_c) = self.adhesion.strength_and_range();
         let products0 = self.op.products();
-        if let Adhesion::Exponential { lambda } = self.adhesion {
+        if let (Some(AdhesionLaw::Exponential), Some(lambda)) = (self.adhesion.law(), self.adhesion.lambda()) {
             let (cg, steps, residual) = self.solve_smooth(approach, sigma0, lambda)?;
             // The reported zone: contact and the cells whose gap is below the
             // range (adhesive traction above sigma0/e).
@@ -527,7 +526,7 @@ impl ContactSolver {
         let mut load = 0.0;
         let mut elastic = 0.0;
         let mut adhesive = 0.0;
-        let smooth = matches!(self.adhesion, Adhesion::Exponential { .. });
+        let smooth = self.adhesion.law() == Some(AdhesionLaw::Exponential);
         for i in 0..n {
             load += self.traction[i] * dx;
             elastic += 0.5 * self.traction[i] * self.u[i] * dx;

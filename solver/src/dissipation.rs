@@ -60,7 +60,7 @@ use maugis::contact::paths::{
 };
 
 use crate::contact::State;
-use crate::error::{finite, Result, SolverError};
+use crate::error::{count_in_range, finite, in_range, Interval, Result};
 use crate::path::{approach_on_model_datum, Cycle};
 
 /// Relative difference in `abar` and in the load below which two simulated
@@ -115,14 +115,10 @@ pub struct CycleDissipation {
 ///
 /// Errors: a non-finite or non-positive `solver_datum`, fewer than two
 /// in-contact states, or a state with a non-finite load or approach
-/// ([`SolverError::Domain`]).
+/// ([`crate::SolverError::NonFinite`], [`crate::SolverError::OutOfRange`], [`crate::SolverError::CountOutOfRange`]).
 pub fn closed_cycle(cycle: &Cycle, solver_datum: f64, driver: Driver) -> Result<ClosedCycle> {
-    finite(solver_datum, "solver datum")?;
-    if solver_datum <= 0.0 {
-        return Err(SolverError::Domain {
-            what: format!("the solver datum must be > 0 (got {solver_datum})"),
-        });
-    }
+    finite(solver_datum, "the solver datum")?;
+    in_range(solver_datum, "the solver datum", Interval::above(0.0))?;
     let states: Vec<&State> = cycle
         .loading
         .iter()
@@ -130,24 +126,12 @@ pub fn closed_cycle(cycle: &Cycle, solver_datum: f64, driver: Driver) -> Result<
         .chain(&cycle.reloading)
         .filter(|s| s.abar > 0.0)
         .collect();
-    if states.len() < 2 {
-        return Err(SolverError::Domain {
-            what: format!(
-                "the dissipation needs at least 2 states in contact (the cycle has {})",
-                states.len()
-            ),
-        });
-    }
+    count_in_range(states.len(), "the cycle's states in contact (the dissipation needs 2)", 2, usize::MAX)?;
     let mut pts = Vec::with_capacity(states.len());
     for s in &states {
-        if !(s.load.is_finite() && s.approach.is_finite() && s.abar.is_finite()) {
-            return Err(SolverError::Domain {
-                what: format!(
-                    "a state has a non-finite load or approach (abar {}, load {}, approach {})",
-                    s.abar, s.load, s.approach
-                ),
-            });
-        }
+        finite(s.abar, "a state's contact half-width")?;
+        finite(s.load, "a state's load")?;
+        finite(s.approach, "a state's approach")?;
         pts.push(PathNode {
             abar: s.abar,
             load: s.load,

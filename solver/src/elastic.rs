@@ -76,7 +76,7 @@ use std::sync::Arc;
 use realfft::num_complex::Complex;
 use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
 
-use crate::error::{finite, Result, SolverError};
+use crate::error::{finite, Interval, Result, SolverError};
 use crate::grid::Grid;
 
 /// The half-plane influence operator on a grid, FFT plans and buffers included.
@@ -175,18 +175,14 @@ impl HalfPlane {
         let width = 2.0 * grid.half_width();
         let datum = datum.unwrap_or(width);
         finite(datum, "the datum distance")?;
-        let (least, why) = if periodic {
-            (0.25 * width, "a quarter of the period")
+        // at least this much for the kernel to be positive definite
+        let (least, arg) = if periodic {
+            (0.25 * width, "the datum distance (at least a quarter of the period)")
         } else {
-            (0.5 * width, "half the domain width")
+            (0.5 * width, "the datum distance (at least half the domain width)")
         };
         if !(datum >= least && datum <= 1e12) {
-            return Err(SolverError::Domain {
-                what: format!(
-                    "the datum distance must be at least {why}, {least} (the kernel is then positive definite), \
-                     and at most 1e12 (got {datum})"
-                ),
-            });
+            return Err(SolverError::OutOfRange { arg, value: datum, allowed: Interval::closed(least, 1e12) });
         }
         let n = grid.cells();
         let dx = grid.dx();
@@ -219,7 +215,7 @@ impl HalfPlane {
         let mut scratch_fwd = forward.make_scratch_vec();
         forward
             .process_with_scratch(&mut circ, &mut freq, &mut scratch_fwd)
-            .map_err(|e| SolverError::Domain { what: format!("internal FFT error: {e}") })?;
+            .map_err(|e| SolverError::Internal { what: format!("FFT: {e}") })?;
         let scale = 1.0 / m as f64;
         let spectrum: Vec<f64> = freq.iter().map(|z| z.re * scale).collect();
         // The eigenvalues of the embedding are positive (checked in the tests);

@@ -7,13 +7,78 @@
 
 use std::fmt;
 
+pub use maugis::error::Interval;
+
 /// Everything that can go wrong in `maugis-solver`.
 #[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]
 pub enum SolverError {
-    /// A parameter is NaN, infinite or out of its domain; the message says what is allowed.
+    /// Kept so that code matching on it still compiles: the solver no longer
+    /// builds it (every check has a variant with fields below).
     Domain {
         /// What is wrong and what to change.
+        what: String,
+    },
+    /// A number is NaN or infinite.
+    NonFinite {
+        /// Which argument.
+        arg: &'static str,
+        /// The value given.
+        value: f64,
+    },
+    /// A number lies outside the range the solver accepts.
+    OutOfRange {
+        /// Which argument.
+        arg: &'static str,
+        /// The value given.
+        value: f64,
+        /// The values accepted.
+        allowed: Interval,
+    },
+    /// A count (steps, scan points, states) lies outside its range.
+    CountOutOfRange {
+        /// Which count.
+        arg: &'static str,
+        /// The count given or found.
+        value: usize,
+        /// Fewest accepted.
+        min: usize,
+        /// Most accepted (`usize::MAX`: no upper limit).
+        max: usize,
+    },
+    /// Two lengths that must agree do not.
+    LengthMismatch {
+        /// What has the wrong length.
+        arg: &'static str,
+        /// Its length.
+        found: usize,
+        /// The length it must have.
+        expected: usize,
+    },
+    /// The approach leg ended before the contact half-width reached `amax`.
+    AmaxNotReached {
+        /// The largest contact half-width reached.
+        reached: f64,
+        /// The requested largest half-width.
+        amax: f64,
+        /// Approach steps done.
+        steps: usize,
+    },
+    /// A shard `shard/of` that does not exist (1-based, `1 <= shard <= of`).
+    BadShard {
+        /// The shard asked for.
+        shard: usize,
+        /// The number of shards.
+        of: usize,
+    },
+    /// Shards of a map that cannot be merged.
+    Merge {
+        /// What is wrong with them.
+        fault: MergeFault,
+    },
+    /// A failure that is a bug in the solver, not a fault of the input.
+    Internal {
+        /// What failed.
         what: String,
     },
     /// The grid size is not a power of two in the supported range.
@@ -70,6 +135,45 @@ pub enum SolverError {
     },
     /// An error from the `maugis` library (the semi-analytical model).
     Model(maugis::Error),
+}
+
+/// Why shards of a map cannot be merged.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum MergeFault {
+    /// No shard was given.
+    Empty,
+    /// The shards belong to different maps (their grids or options differ).
+    DifferentMaps,
+    /// A grid point index beyond the grid.
+    OutsideGrid {
+        /// The index.
+        index: usize,
+    },
+    /// A grid point in two shards.
+    Duplicate {
+        /// The index.
+        index: usize,
+    },
+    /// Grid points that no shard has.
+    Missing {
+        /// How many are missing.
+        missing: usize,
+        /// Grid points in all.
+        total: usize,
+    },
+}
+
+impl fmt::Display for MergeFault {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            MergeFault::Empty => write!(f, "nothing to merge"),
+            MergeFault::DifferentMaps => write!(f, "the shards belong to different maps (grid or options differ)"),
+            MergeFault::OutsideGrid { index } => write!(f, "grid point {index} lies outside the grid"),
+            MergeFault::Duplicate { index } => write!(f, "grid point {index} appears in two shards"),
+            MergeFault::Missing { missing, total } => write!(f, "{missing} of {total} grid points are missing: merge every shard"),
+        }
+    }
 }
 
 /// What is wrong with a line of a profile table.
@@ -142,6 +246,21 @@ impl fmt::Display for SolverError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             SolverError::Domain { what } => write!(f, "{what}"),
+            SolverError::NonFinite { arg, value } => write!(f, "{arg} must be a finite number (got {value})"),
+            SolverError::OutOfRange { arg, value, allowed } => write!(f, "{arg} must lie in {allowed} (got {value})"),
+            SolverError::CountOutOfRange { arg, value, min, max } if *max == usize::MAX => {
+                write!(f, "{arg} must be at least {min} (got {value})")
+            }
+            SolverError::CountOutOfRange { arg, value, min, max } => write!(f, "{arg} must lie in [{min}, {max}] (got {value})"),
+            SolverError::LengthMismatch { arg, found, expected } => write!(f, "{arg} has {found} values, it must have {expected}"),
+            SolverError::AmaxNotReached { reached, amax, steps } => write!(
+                f,
+                "the contact half-width reached only {reached:.4} in {steps} approach steps, short of amax = {amax}; \
+                 lower amax or give more steps"
+            ),
+            SolverError::BadShard { shard, of } => write!(f, "shard must be s/n with 1 <= s <= n (got {shard}/{of})"),
+            SolverError::Merge { fault } => write!(f, "cannot merge the shards: {fault}"),
+            SolverError::Internal { what } => write!(f, "internal error (a bug in maugis-solver, please report it): {what}"),
             SolverError::Grid { cells, min, max } => {
                 write!(f, "grid must be a power of two between {min} and {max} cells (got {cells})")
             }
@@ -181,11 +300,29 @@ impl From<maugis::Error> for SolverError {
 /// Result with [`SolverError`].
 pub type Result<T> = std::result::Result<T, SolverError>;
 
-/// `Ok(x)` if `x` is finite, else a [`SolverError::Domain`] naming it.
-pub(crate) fn finite(x: f64, what: &str) -> Result<f64> {
+/// `Ok(x)` if `x` is finite, else a [`SolverError::NonFinite`] naming it.
+pub(crate) fn finite(x: f64, arg: &'static str) -> Result<f64> {
     if x.is_finite() {
         Ok(x)
     } else {
-        Err(SolverError::Domain { what: format!("{what} must be a finite number (got {x})") })
+        Err(SolverError::NonFinite { arg, value: x })
+    }
+}
+
+/// `Ok(x)` if `x` lies in `allowed`, else a [`SolverError::OutOfRange`] naming it.
+pub(crate) fn in_range(x: f64, arg: &'static str, allowed: Interval) -> Result<f64> {
+    if allowed.contains(x) {
+        Ok(x)
+    } else {
+        Err(SolverError::OutOfRange { arg, value: x, allowed })
+    }
+}
+
+/// `Ok(n)` if `min <= n <= max`, else a [`SolverError::CountOutOfRange`] naming it.
+pub(crate) fn count_in_range(n: usize, arg: &'static str, min: usize, max: usize) -> Result<usize> {
+    if (min..=max).contains(&n) {
+        Ok(n)
+    } else {
+        Err(SolverError::CountOutOfRange { arg, value: n, min, max })
     }
 }

@@ -3,7 +3,7 @@
 //! `x_i = -X + (i + 1/2) dx`. The traction is constant on each cell; gaps and
 //! displacements are collocated at the centres.
 
-use crate::error::{finite, Result, SolverError};
+use crate::error::{finite, in_range, Interval, Result, SolverError};
 
 /// Fewest cells accepted.
 pub const MIN_CELLS: usize = 64;
@@ -32,13 +32,7 @@ impl Grid {
             return Err(SolverError::Grid { cells, min: MIN_CELLS, max: MAX_CELLS });
         }
         finite(half_width, "the domain half-width")?;
-        if !((MIN_HALF_WIDTH..=MAX_HALF_WIDTH).contains(&half_width)) {
-            return Err(SolverError::Domain {
-                what: format!(
-                    "the domain half-width must lie in [{MIN_HALF_WIDTH:e}, {MAX_HALF_WIDTH:e}] (got {half_width})"
-                ),
-            });
-        }
+        in_range(half_width, "the domain half-width", Interval::closed(MIN_HALF_WIDTH, MAX_HALF_WIDTH))?;
         Ok(Grid { cells, half_width })
     }
 

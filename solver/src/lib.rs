@@ -37,7 +37,7 @@
 //! ```
 //! use maugis_solver::{grid::Grid, profile::{Adhesion, Profile}, contact::{ContactSolver, SolveOptions}};
 //! let grid = Grid::new(1024, 4.0)?;
-//! let mut s = ContactSolver::new(grid, None, &Profile::wavy_cylinder(0.0, 1.0)?, Adhesion::None, SolveOptions::default())?;
+//! let mut s = ContactSolver::new(grid, None, &Profile::wavy_cylinder(0.0, 1.0)?, Adhesion::NONE, SolveOptions::default())?;
 //! let state = s.solve(2.0)?;
 //! assert_eq!(state.contact_intervals(), 1);
 //! # Ok::<(), maugis_solver::SolverError>(())
@@ -57,4 +57,4 @@ pub mod profile_file;
 pub mod run;
 pub mod transition;
 
-pub use error::{Result, SolverError, TableFault};
+pub use error::{MergeFault, Result, SolverError, TableFault};

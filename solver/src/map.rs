@@ -51,7 +51,7 @@ use rayon::prelude::*;
 
 use maugis::contact::sweep::{sweep_point, Regime, SweepGrid, SweepPoint};
 
-use crate::error::{finite, Result, SolverError};
+use crate::error::{count_in_range, finite, in_range, Interval, MergeFault, Result, SolverError};
 use crate::profile::AdhesionLaw;
 use crate::run::{simulate_with, Simulation, SimulationOptions, SimulationSpec};
 
@@ -279,14 +279,10 @@ impl MapOptions {
     /// with at least 2 steps (the cells are checked by the grid).
     pub fn check(&self) -> Result<()> {
         finite(self.margin, "margin")?;
-        if self.margin < 0.0 {
-            return Err(SolverError::Domain { what: format!("the margin must be >= 0 (got {})", self.margin) });
-        }
+        in_range(self.margin, "the margin", Interval::at_least(0.0))?;
         if let ResolutionRule::Fixed(r) = self.resolution {
             crate::grid::Grid::new(r.cells, 1.0)?;
-            if !(2..=100_000).contains(&r.steps_per_leg) {
-                return Err(SolverError::Domain { what: format!("steps per leg must lie in [2, 100000] (got {})", r.steps_per_leg) });
-            }
+            count_in_range(r.steps_per_leg, "steps per leg", 2, 100_000)?;
         }
         Ok(())
     }
@@ -296,7 +292,7 @@ impl MapOptions {
 pub fn shard_indices(grid: &SweepGrid, shard: Option<(usize, usize)>) -> Result<Vec<usize>> {
     if let Some((s, n)) = shard {
         if n == 0 || s == 0 || s > n {
-            return Err(SolverError::Domain { what: format!("shard must be s/n with 1 <= s <= n (got {s}/{n})") });
+            return Err(SolverError::BadShard { shard: s, of: n });
         }
     }
     Ok((0..grid.len()).filter(|k| shard.map_or(true, |(s, n)| k % n == s - 1)).collect())
@@ -318,7 +314,7 @@ pub fn map_cycles(grid: &SweepGrid, shard: Option<(usize, usize)>) -> Result<Vec
     let mut seen = std::collections::HashSet::new();
     for k in shard_indices(grid, shard)? {
         let p = grid.params(k / grid.n, k % grid.n)?;
-        for c in [(p.lambda, 0.0, p.beta), (p.lambda, p.alpha, p.beta)] {
+        for c in [(p.lambda(), 0.0, p.beta()), (p.lambda(), p.alpha(), p.beta())] {
             if seen.insert(key(c.0, c.1, c.2)) {
                 cycles.push(c);
             }
@@ -379,22 +375,23 @@ fn assemble(model: SweepPoint, value: f64, cycle: &Result<CycleMeasure>, smooth:
 /// Reassembles shards of one map into the whole (in any order; together they
 /// must cover every point exactly once, with one grid and one set of options).
 pub fn merge_maps(parts: &[SolverMap]) -> Result<SolverMap> {
-    let first = parts.first().ok_or_else(|| SolverError::Domain { what: "nothing to merge".into() })?;
+    let merge = |fault| SolverError::Merge { fault };
+    let first = parts.first().ok_or(merge(MergeFault::Empty))?;
     let mut slots: Vec<Option<MapPoint>> = vec![None; first.grid.len()];
     for part in parts {
         if part.grid != first.grid || part.options != first.options {
-            return Err(SolverError::Domain { what: "the shards belong to different maps (grid or options differ)".into() });
+            return Err(merge(MergeFault::DifferentMaps));
         }
         for q in &part.points {
-            let slot = slots.get_mut(q.index).ok_or_else(|| SolverError::Domain { what: format!("grid point {} lies outside the grid", q.index) })?;
+            let slot = slots.get_mut(q.index).ok_or(merge(MergeFault::OutsideGrid { index: q.index }))?;
             if slot.replace(q.clone()).is_some() {
-                return Err(SolverError::Domain { what: format!("grid point {} appears in two shards", q.index) });
+                return Err(merge(MergeFault::Duplicate { index: q.index }));
             }
         }
     }
     let missing = slots.iter().filter(|s| s.is_none()).count();
     if missing > 0 {
-        return Err(SolverError::Domain { what: format!("{missing} of {} grid points are missing: merge every shard", slots.len()) });
+        return Err(merge(MergeFault::Missing { missing, total: slots.len() }));
     }
     Ok(SolverMap { grid: first.grid, options: first.options, shard: None, points: slots.into_iter().flatten().collect() })
 }

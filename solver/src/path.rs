@@ -39,7 +39,7 @@ use maugis::contact::curve::state as model_state;
 use maugis::contact::model::{ContactSize, Params};
 
 use crate::contact::{ContactSolver, State};
-use crate::error::{finite, Result, SolverError};
+use crate::error::{count_in_range, finite, in_range, Interval, Result, SolverError};
 
 /// Exact Hertz approach at half-width `a`, relative to datum `datum`:
 /// `(a^2/2) (ln(2 datum/a) + 1/2)` (the smooth non-adhesive cylinder).
@@ -86,14 +86,10 @@ const LEG_STEP_FACTOR: usize = 6;
 pub fn cycle(solver: &mut ContactSolver, opts: CycleOptions, progress: &mut dyn FnMut(usize, usize)) -> Result<Cycle> {
     finite(opts.amax, "amax")?;
     let grid = solver.grid();
-    if !(opts.amax > 0.0 && opts.amax < 0.9 * grid.half_width()) {
-        return Err(SolverError::Domain {
-            what: format!("amax must lie in (0, 0.9 X) with X = {} the domain half-width (got {})", grid.half_width(), opts.amax),
-        });
-    }
-    if opts.steps_per_leg < 2 || opts.steps_per_leg > 1_000_000 {
-        return Err(SolverError::Domain { what: format!("steps per leg must lie in [2, 1e6] (got {})", opts.steps_per_leg) });
-    }
+    // amax < 0.9 X, X the domain half-width
+    let open = Interval { lo: 0.0, hi: 0.9 * grid.half_width(), lo_closed: false, hi_closed: false };
+    in_range(opts.amax, "amax (below 0.9 times the domain half-width)", open)?;
+    count_in_range(opts.steps_per_leg, "steps per leg", 2, 1_000_000)?;
     let hmin = solver.profile_min();
     // Just out of range (the zone rule compares the gap with delta_c strictly).
     let start = hmin - solver.adhesion().start_distance() * (1.0 + 1e-9);
@@ -116,13 +112,7 @@ pub fn cycle(solver: &mut ContactSolver, opts: CycleOptions, progress: &mut dyn 
             if loading.iter().all(|s| s.contact.is_empty()) {
                 return Err(SolverError::NeverTouches);
             }
-            return Err(SolverError::Domain {
-                what: format!(
-                    "the contact half-width reached only {reached:.4} in {k} approach steps, short of amax = {}; \
-                     lower amax or give more steps",
-                    opts.amax
-                ),
-            });
+            return Err(SolverError::AmaxNotReached { reached, amax: opts.amax, steps: k });
         }
     }
     let mut unloading = Vec::new();
@@ -332,10 +322,8 @@ pub fn compare_with_model(params: Params, datum: f64, states: &[State]) -> Vec<M
 /// `sqrt(2 delta_c)`, and `1.25 amax`.
 pub fn suggested_half_width(params: Params, amax: f64) -> Result<f64> {
     finite(amax, "amax")?;
-    if !(amax > 0.0 && amax <= 1e4) {
-        return Err(SolverError::Domain { what: format!("amax must lie in (0, 1e4] (got {amax})") });
-    }
-    let mut c_max: f64 = amax.max((2.0 / params.lambda).sqrt());
+    in_range(amax, "amax", Interval::left_open(0.0, 1e4))?;
+    let mut c_max: f64 = amax.max((2.0 / params.lambda()).sqrt());
     for i in 1..=64 {
         let abar = amax * i as f64 / 64.0;
         if let Ok(m) = ContactSize::new(params, abar).and_then(|cs| cs.solve_m()) {

@@ -5,7 +5,7 @@ use std::f64::consts::PI;
 
 use maugis::contact::model::{ALPHA_RANGE, BETA_RANGE};
 
-use crate::error::{finite, Result, SolverError};
+use crate::error::{finite, in_range, Interval, Result, SolverError};
 use crate::grid::Grid;
 use crate::profile_file::ProfileTable;
 
@@ -43,12 +43,8 @@ impl Profile {
         finite(beta, "beta")?;
         // The model's ranges: a subnormal beta made 2 pi x/beta overflow and the
         // sampled profile NaN (found by tests/fuzz.rs).
-        if !ALPHA_RANGE.contains(alpha) {
-            return Err(SolverError::Domain { what: format!("alpha must lie in {ALPHA_RANGE} (got {alpha})") });
-        }
-        if !BETA_RANGE.contains(beta) {
-            return Err(SolverError::Domain { what: format!("beta must lie in {BETA_RANGE} (got {beta})") });
-        }
+        in_range(alpha, "alpha", ALPHA_RANGE)?;
+        in_range(beta, "beta", BETA_RANGE)?;
         Ok(Profile::WavyCylinder { alpha, beta })
     }
 
@@ -56,7 +52,7 @@ impl Profile {
     /// follow).
     pub fn sinusoid(alpha: f64, beta: f64) -> Result<Profile> {
         match Profile::wavy_cylinder(alpha, beta)? {
-            _ if alpha == 0.0 => Err(SolverError::Domain { what: "the sinusoid needs alpha > 0".into() }),
+            _ if alpha == 0.0 => Err(SolverError::OutOfRange { arg: "alpha (the sinusoid needs a wave)", value: alpha, allowed: Interval::above(0.0) }),
             _ => Ok(Profile::Sinusoid { alpha, beta }),
         }
     }
@@ -91,9 +87,7 @@ impl Profile {
                 .collect()),
             Profile::Sampled(h) => {
                 if h.len() != grid.cells() {
-                    return Err(SolverError::Domain {
-                        what: format!("the sampled profile has {} values, the grid {} cells", h.len(), grid.cells()),
-                    });
+                    return Err(SolverError::LengthMismatch { arg: "the sampled profile", found: h.len(), expected: grid.cells() });
                 }
                 for &v in h {
                     finite(v, "every profile value")?;
@@ -109,31 +103,16 @@ impl Profile {
     }
 }
 
-/// The interface law.
+/// The interface law: none (Hertz), or an [`AdhesionLaw`] at a Maugis parameter
+/// `lambda` in [`LAMBDA_RANGE`]. The fields are private: an `Adhesion` exists only
+/// through [`Adhesion::NONE`], [`Adhesion::dugdale`], [`Adhesion::exponential`]
+/// or [`AdhesionLaw::at`], which check `lambda`.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
-pub enum Adhesion {
-    /// Frictionless, non-adhesive contact (Hertz).
-    None,
-    /// Dugdale-Maugis: tensile traction `sigma0 = lambda` (units
-    /// `(E*^2 dgamma/R)^(1/3)`) where `0 < g < delta_c = 1/lambda` (units `l_v`),
-    /// zero beyond; work of adhesion `sigma0 delta_c = 1` (units `dgamma`).
-    Dugdale {
-        /// Maugis parameter `lambda > 0`.
-        lambda: f64,
-    },
-    /// A smooth law: a hard wall (`g >= 0`) and the tensile traction
-    /// `sigma(g) = sigma0 exp(-g/rho)` for `g >= 0`, with `sigma0 = lambda`
-    /// and `rho = 1/lambda`. Matched to [`Adhesion::Dugdale`] of the same
-    /// `lambda` as Maugis (1992) and Johnson and Greenwood (1997) match the
-    /// Lennard-Jones law: the same peak stress `sigma0` and the same work of
-    /// adhesion `int sigma dg = sigma0 rho = 1`, hence the same range
-    /// `w/sigma0 = delta_c`; its equivalent Maugis parameter is `lambda`
-    /// itself (`docs/solver.md`).
-    Exponential {
-        /// Maugis parameter `lambda > 0` (peak stress; `1/lambda` the decay length).
-        lambda: f64,
-    },
+pub struct Adhesion {
+    /// `None`: frictionless, non-adhesive contact (Hertz).
+    law: Option<AdhesionLaw>,
+    /// The Maugis parameter (`0` without adhesion).
+    lambda: f64,
 }
 
 /// The adhesion law's name, as the front ends select it.
@@ -142,10 +121,20 @@ pub enum Adhesion {
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 #[non_exhaustive]
 pub enum AdhesionLaw {
-    /// [`Adhesion::Dugdale`] (the paper's law; the default).
+    /// Dugdale-Maugis: tensile traction `sigma0 = lambda` (units
+    /// `(E*^2 dgamma/R)^(1/3)`) where `0 < g < delta_c = 1/lambda` (units `l_v`),
+    /// zero beyond; work of adhesion `sigma0 delta_c = 1` (units `dgamma`). The
+    /// paper's law; the default.
     #[default]
     Dugdale,
-    /// [`Adhesion::Exponential`], the smooth law.
+    /// A smooth law: a hard wall (`g >= 0`) and the tensile traction
+    /// `sigma(g) = sigma0 exp(-g/rho)` for `g >= 0`, with `sigma0 = lambda`
+    /// and `rho = 1/lambda`. Matched to Dugdale of the same `lambda` as
+    /// Maugis (1992) and Johnson and Greenwood (1997) match the Lennard-Jones
+    /// law: the same peak stress `sigma0` and the same work of adhesion
+    /// `int sigma dg = sigma0 rho = 1`, hence the same range
+    /// `w/sigma0 = delta_c`; its equivalent Maugis parameter is `lambda`
+    /// itself (`docs/solver.md`).
     Exponential,
 }
 
@@ -179,37 +168,81 @@ impl AdhesionLaw {
     }
 }
 
+/// The Maugis parameters the solver's adhesion laws accept (narrower than the
+/// model's [`maugis::contact::model::LAMBDA_RANGE`]: beyond it the zone or the
+/// decay length is not resolved by any supported grid).
+pub const LAMBDA_RANGE: Interval = Interval::closed(1e-4, 1e4);
+
 impl Adhesion {
-    /// Dugdale-Maugis with Maugis parameter `lambda`, checked.
-    pub fn dugdale(lambda: f64) -> Result<Adhesion> {
+    /// Frictionless, non-adhesive contact (Hertz).
+    pub const NONE: Adhesion = Adhesion { law: None, lambda: 0.0 };
+
+    /// `law` at Maugis parameter `lambda`, checked: finite and in [`LAMBDA_RANGE`].
+    fn checked(law: AdhesionLaw, lambda: f64) -> Result<Adhesion> {
         finite(lambda, "lambda")?;
-        if !(1e-4..=1e4).contains(&lambda) {
-            return Err(SolverError::Domain { what: format!("lambda must lie in [1e-4, 1e4] (got {lambda})") });
-        }
-        Ok(Adhesion::Dugdale { lambda })
+        in_range(lambda, "lambda", LAMBDA_RANGE)?;
+        Ok(Adhesion { law: Some(law), lambda })
     }
 
-    /// The exponential law with Maugis parameter `lambda`, checked (the range of [`Adhesion::dugdale`]).
+    /// Dugdale-Maugis ([`AdhesionLaw::Dugdale`]) with Maugis parameter `lambda`, checked.
+    pub fn dugdale(lambda: f64) -> Result<Adhesion> {
+        Adhesion::checked(AdhesionLaw::Dugdale, lambda)
+    }
+
+    /// The exponential law ([`AdhesionLaw::Exponential`]) with Maugis parameter
+    /// `lambda`, checked (the range of [`Adhesion::dugdale`]).
     pub fn exponential(lambda: f64) -> Result<Adhesion> {
-        Adhesion::dugdale(lambda).map(|_| Adhesion::Exponential { lambda })
+        Adhesion::checked(AdhesionLaw::Exponential, lambda)
+    }
+
+    /// The law; `None` without adhesion.
+    pub fn law(&self) -> Option<AdhesionLaw> {
+        self.law
+    }
+
+    /// The Maugis parameter; `None` without adhesion.
+    pub fn lambda(&self) -> Option<f64> {
+        self.law.map(|_| self.lambda)
     }
 
     /// How far out of contact a cycle starts, in `l_v`: the range `delta_c`
     /// for Dugdale (no traction beyond it); `4 rho` for the exponential law
     /// (traction below `e^-4 = 1.8 %` of its peak).
     pub fn start_distance(&self) -> f64 {
-        match *self {
-            Adhesion::None => 0.0,
-            Adhesion::Dugdale { lambda } => 1.0 / lambda,
-            Adhesion::Exponential { lambda } => 4.0 / lambda,
+        match self.law {
+            None => 0.0,
+            Some(AdhesionLaw::Dugdale) => 1.0 / self.lambda,
+            Some(AdhesionLaw::Exponential) => 4.0 / self.lambda,
         }
     }
 
     /// `(sigma0, delta_c)`; `(0, 0)` without adhesion.
     pub fn strength_and_range(&self) -> (f64, f64) {
-        match *self {
-            Adhesion::None => (0.0, 0.0),
-            Adhesion::Dugdale { lambda } | Adhesion::Exponential { lambda } => (lambda, 1.0 / lambda),
+        match self.law {
+            None => (0.0, 0.0),
+            Some(_) => (self.lambda, 1.0 / self.lambda),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn adhesion_is_built_only_checked() {
+        assert_eq!((Adhesion::NONE.law(), Adhesion::NONE.lambda()), (None, None));
+        assert_eq!(Adhesion::NONE.strength_and_range(), (0.0, 0.0));
+        let d = Adhesion::dugdale(2.0).unwrap();
+        assert_eq!((d.law(), d.lambda()), (Some(AdhesionLaw::Dugdale), Some(2.0)));
+        assert_eq!((d.start_distance(), d.strength_and_range()), (0.5, (2.0, 0.5)));
+        let e = AdhesionLaw::Exponential.at(2.0).unwrap();
+        assert_eq!((e.law(), e.lambda(), e.start_distance()), (Some(AdhesionLaw::Exponential), Some(2.0), 2.0));
+        for law in AdhesionLaw::ALL {
+            assert!(matches!(law.at(f64::NAN), Err(SolverError::NonFinite { arg: "lambda", .. })));
+            for bad in [0.0, -1.0, 2e4] {
+                assert!(matches!(law.at(bad), Err(SolverError::OutOfRange { arg: "lambda", allowed, .. }) if allowed == LAMBDA_RANGE));
+            }
         }
     }
 }

@@ -13,7 +13,7 @@ use maugis::contact::model::Params;
 
 use crate::contact::{ContactSolver, SolveOptions, State};
 use crate::dissipation::{cycle_dissipation, CycleDissipation};
-use crate::error::{Result, SolverError};
+use crate::error::Result;
 use crate::grid::Grid;
 use crate::path::{
     compare_with_model, cycle, load_controlled, suggested_half_width, Cycle, CycleOptions, LoadControlled, LoadDirection, ModelComparison,
@@ -289,9 +289,7 @@ pub fn simulate(spec: SimulationSpec, progress: &mut dyn FnMut(usize, usize)) ->
 
 /// Runs the simulation with `options` (a profile table, the domain).
 pub fn simulate_with(spec: SimulationSpec, options: SimulationOptions, progress: &mut dyn FnMut(usize, usize)) -> Result<Simulation> {
-    if !(2..=100_000).contains(&spec.steps_per_leg) {
-        return Err(SolverError::Domain { what: format!("steps per leg must lie in [2, 100000] (got {})", spec.steps_per_leg) });
-    }
+    crate::error::count_in_range(spec.steps_per_leg, "steps per leg", 2, 100_000)?;
     let params = Params::new(spec.lambda, spec.alpha, spec.beta)?;
     let half_width = match (options.half_width, options.domain, &options.profile) {
         (Some(x), _, _) => crate::error::finite(x, "the domain half-width")?,

@@ -35,7 +35,7 @@
 use maugis::contact::curve::{load_area_curve, CurveOptions};
 use maugis::contact::model::Params;
 
-use crate::error::{finite, Result, SolverError};
+use crate::error::{count_in_range, finite, in_range, Interval, Result};
 use crate::map::{measure_cycle_under, Resolution, ResolutionRule};
 use crate::profile::AdhesionLaw;
 
@@ -180,18 +180,12 @@ impl TransitionSpec {
         for (v, w) in [(self.alpha, "alpha"), (self.beta, "beta"), (self.amax, "amax"), (self.lambda_min, "lambda_min"), (self.lambda_max, "lambda_max"), (self.fraction, "fraction"), (self.rel_tol, "rel_tol")] {
             finite(v, w)?;
         }
-        if !(self.alpha > 0.0) {
-            return Err(SolverError::Domain { what: format!("lambda* needs a rough cylinder, alpha > 0 (got {})", self.alpha) });
-        }
-        if !(self.lambda_min > 0.0 && self.lambda_max > self.lambda_min) {
-            return Err(SolverError::Domain { what: format!("the lambda range must satisfy 0 < min < max (got {} .. {})", self.lambda_min, self.lambda_max) });
-        }
-        if self.scan < 2 {
-            return Err(SolverError::Domain { what: format!("the scan needs at least 2 points (got {})", self.scan) });
-        }
-        if !(self.fraction > 0.0 && self.rel_tol > 0.0) {
-            return Err(SolverError::Domain { what: format!("fraction and rel_tol must be > 0 (got {}, {})", self.fraction, self.rel_tol) });
-        }
+        in_range(self.alpha, "alpha (lambda* needs a rough cylinder)", Interval::above(0.0))?;
+        in_range(self.lambda_min, "lambda_min", Interval::above(0.0))?;
+        in_range(self.lambda_max, "lambda_max (above lambda_min)", Interval::above(self.lambda_min))?;
+        count_in_range(self.scan, "scan points", 2, usize::MAX)?;
+        in_range(self.fraction, "fraction", Interval::above(0.0))?;
+        in_range(self.rel_tol, "rel_tol", Interval::above(0.0))?;
         Params::new(self.lambda_min, self.alpha, self.beta)?;
         Params::new(self.lambda_max, self.alpha, self.beta)?;
         Ok(())

@@ -31,7 +31,7 @@ fn hertz_half_width(delta: f64, datum: f64) -> f64 {
 fn hertz_load_and_half_width_match_the_exact_solution() {
     let grid = Grid::new(4096, 4.0).unwrap();
     let profile = Profile::wavy_cylinder(0.0, 1.0).unwrap();
-    let mut solver = ContactSolver::new(grid, None, &profile, Adhesion::None, SolveOptions::default()).unwrap();
+    let mut solver = ContactSolver::new(grid, None, &profile, Adhesion::NONE, SolveOptions::default()).unwrap();
     let datum = solver.datum();
     let dx = grid.dx();
     for a in [0.5, 1.0, 2.0, 3.0] {
@@ -56,7 +56,7 @@ fn hertz_load_error_falls_with_the_grid() {
     let mut iterations = Vec::new();
     for cells in [512, 2048, 8192] {
         let grid = Grid::new(cells, 4.0).unwrap();
-        let mut solver = ContactSolver::new(grid, Some(8.0), &profile, Adhesion::None, SolveOptions::default()).unwrap();
+        let mut solver = ContactSolver::new(grid, Some(8.0), &profile, Adhesion::NONE, SolveOptions::default()).unwrap();
         let s = solver.solve(hertz_approach(a, 8.0)).unwrap();
         errors.push((s.load - std::f64::consts::PI * a * a / 4.0).abs());
         iterations.push(s.cg_iterations);
@@ -71,7 +71,7 @@ fn hertz_load_error_falls_with_the_grid() {
 fn no_contact_before_the_profile_touches() {
     let grid = Grid::new(256, 4.0).unwrap();
     let profile = Profile::wavy_cylinder(0.0, 1.0).unwrap();
-    let mut solver = ContactSolver::new(grid, None, &profile, Adhesion::None, SolveOptions::default()).unwrap();
+    let mut solver = ContactSolver::new(grid, None, &profile, Adhesion::NONE, SolveOptions::default()).unwrap();
     let s = solver.solve(-0.1).unwrap();
     assert_eq!(s.contact_intervals(), 0);
     assert_eq!(s.load, 0.0);

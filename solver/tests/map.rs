@@ -7,7 +7,7 @@ use maugis::contact::sweep::{Regime, SweepAxis, SweepGrid};
 use maugis_solver::map::{
     map_cycles, merge_maps, run_map, MapOptions, Resolution, ResolutionRule, SolverRegime, DEFAULT_MARGIN,
 };
-use maugis_solver::SolverError;
+use maugis_solver::{MergeFault, SolverError};
 
 fn grid() -> SweepGrid {
     SweepGrid { lambda_min: 1.0, lambda_max: 6.0, lambda_n: 2, axis: SweepAxis::Alpha, min: 0.0, max: 0.35, n: 2, fixed: 1.125, amax: 6.0, points: 60 }
@@ -62,23 +62,24 @@ fn bad_merges_and_options_are_errors() {
     let (g, o) = (grid(), options());
     let a = run_map(g, o, Some((1, 4)), || ()).unwrap();
     let b = run_map(g, o, Some((2, 4)), || ()).unwrap();
-    let domain = |r: Result<_, SolverError>, what: &str| match r {
-        Err(SolverError::Domain { what: w }) => assert!(w.contains(what), "{w}"),
-        other => panic!("expected a domain error naming '{what}', got {other:?}"),
+    let merge_fault = |r: Result<_, SolverError>| match r {
+        Err(SolverError::Merge { fault }) => fault,
+        other => panic!("expected a merge error, got {other:?}"),
     };
-    domain(merge_maps(&[a.clone(), b.clone()]).map(|_| ()), "missing");
-    domain(merge_maps(&[a.clone(), a.clone()]).map(|_| ()), "two shards");
-    domain(merge_maps(&[]).map(|_| ()), "nothing to merge");
+    let total = g.len();
+    assert!(matches!(merge_fault(merge_maps(&[a.clone(), b.clone()]).map(|_| ())), MergeFault::Missing { missing, total: t } if t == total && missing == total / 2));
+    assert!(matches!(merge_fault(merge_maps(&[a.clone(), a.clone()]).map(|_| ())), MergeFault::Duplicate { .. }));
+    assert_eq!(merge_fault(merge_maps(&[]).map(|_| ())), MergeFault::Empty);
     let other = MapOptions { margin: 0.5, ..o };
     let c = run_map(g, other, Some((3, 4)), || ()).unwrap();
-    domain(merge_maps(&[a, b, c]).map(|_| ()), "different maps");
+    assert_eq!(merge_fault(merge_maps(&[a, b, c]).map(|_| ())), MergeFault::DifferentMaps);
 
-    domain(run_map(g, MapOptions { margin: -1.0, ..o }, None, || ()).map(|_| ()), "margin");
-    domain(run_map(g, MapOptions { margin: f64::NAN, ..o }, None, || ()).map(|_| ()), "margin");
+    assert!(matches!(run_map(g, MapOptions { margin: -1.0, ..o }, None, || ()), Err(SolverError::OutOfRange { arg: "the margin", value: -1.0, .. })));
+    assert!(matches!(run_map(g, MapOptions { margin: f64::NAN, ..o }, None, || ()), Err(SolverError::NonFinite { arg: "margin", .. })));
     let fixed = |cells, steps_per_leg| MapOptions { resolution: ResolutionRule::Fixed(Resolution { cells, steps_per_leg }), ..o };
     assert!(matches!(run_map(g, fixed(1000, 100), None, || ()), Err(SolverError::Grid { cells: 1000, .. })));
-    domain(run_map(g, fixed(1024, 1), None, || ()).map(|_| ()), "steps");
-    domain(run_map(g, o, Some((0, 2)), || ()).map(|_| ()), "shard");
-    domain(run_map(g, o, Some((3, 2)), || ()).map(|_| ()), "shard");
+    assert!(matches!(run_map(g, fixed(1024, 1), None, || ()), Err(SolverError::CountOutOfRange { arg: "steps per leg", value: 1, min: 2, .. })));
+    assert!(matches!(run_map(g, o, Some((0, 2)), || ()), Err(SolverError::BadShard { shard: 0, of: 2 })));
+    assert!(matches!(run_map(g, o, Some((3, 2)), || ()), Err(SolverError::BadShard { shard: 3, of: 2 })));
     assert!(matches!(run_map(SweepGrid { lambda_min: 0.0, ..g }, o, None, || ()), Err(SolverError::Model(_))));
 }

@@ -42,13 +42,14 @@ fn sampled_profile_far_out_of_reach_is_a_typed_error() {
     let mut s = solver(&Profile::Sampled(h), 512, 4.0, 1.0);
     let e = cycle(&mut s, CycleOptions { amax: 2.0, steps_per_leg: 4 }, &mut |_, _| {}).unwrap_err();
     match &e {
-        SolverError::Domain { what } => assert!(what.contains("short of amax"), "{what}"),
-        other => panic!("expected a domain error, got {other:?}"),
+        SolverError::AmaxNotReached { reached, amax, steps } => assert!(*reached < 2.0 && *amax == 2.0 && *steps > 4, "{e}"),
+        other => panic!("expected AmaxNotReached, got {other:?}"),
     }
+    assert!(e.to_string().contains("short of amax"), "{e}");
     // A sampled profile of the wrong length or with a NaN is refused up front.
     let bad = Profile::Sampled(vec![0.0; 100]);
-    assert!(matches!(ContactSolver::new(grid, None, &bad, Adhesion::dugdale(1.0).unwrap(), SolveOptions::default()), Err(SolverError::Domain { .. })));
+    assert!(matches!(ContactSolver::new(grid, None, &bad, Adhesion::dugdale(1.0).unwrap(), SolveOptions::default()), Err(SolverError::LengthMismatch { found: 100, expected: 512, .. })));
     let mut nan = vec![0.0; 512];
     nan[7] = f64::NAN;
-    assert!(matches!(ContactSolver::new(grid, None, &Profile::Sampled(nan), Adhesion::dugdale(1.0).unwrap(), SolveOptions::default()), Err(SolverError::Domain { .. })));
+    assert!(matches!(ContactSolver::new(grid, None, &Profile::Sampled(nan), Adhesion::dugdale(1.0).unwrap(), SolveOptions::default()), Err(SolverError::NonFinite { .. })));
 }

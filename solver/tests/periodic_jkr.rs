@@ -76,7 +76,7 @@ fn worst(states: &[(f64, f64)], exact: fn(f64) -> f64) -> f64 {
 
 #[test]
 fn periodic_hertz_is_westergaard() {
-    let states = loading(Adhesion::None, 2048);
+    let states = loading(Adhesion::NONE, 2048);
     assert!(states.len() > 20);
     let e = worst(&states, westergaard);
     eprintln!("Westergaard: {} states, worst {e:e} ({:e} of p*)", states.len(), e / p_star());

@@ -55,11 +55,11 @@ fn lambda_star_is_bracketed_with_an_uncertainty() {
 #[test]
 fn bad_specs_are_errors() {
     let sp = spec();
-    let domain = |s: TransitionSpec| matches!(transition(s, &mut |_| ()), Err(SolverError::Domain { .. }) | Err(SolverError::Model(_)));
-    assert!(domain(TransitionSpec { alpha: 0.0, ..sp }));
-    assert!(domain(TransitionSpec { lambda_max: 0.1, ..sp }));
-    assert!(domain(TransitionSpec { scan: 1, ..sp }));
-    assert!(domain(TransitionSpec { fraction: 0.0, ..sp }));
-    assert!(domain(TransitionSpec { rel_tol: f64::NAN, ..sp }));
-    assert!(domain(TransitionSpec { beta: -1.0, ..sp }));
+    let err = |s: TransitionSpec| transition(s, &mut |_| ()).unwrap_err();
+    assert!(matches!(err(TransitionSpec { alpha: 0.0, ..sp }), SolverError::OutOfRange { arg, value: 0.0, .. } if arg.starts_with("alpha")));
+    assert!(matches!(err(TransitionSpec { lambda_max: 0.1, ..sp }), SolverError::OutOfRange { arg, value: 0.1, .. } if arg.starts_with("lambda_max")));
+    assert!(matches!(err(TransitionSpec { scan: 1, ..sp }), SolverError::CountOutOfRange { value: 1, min: 2, .. }));
+    assert!(matches!(err(TransitionSpec { fraction: 0.0, ..sp }), SolverError::OutOfRange { arg: "fraction", .. }));
+    assert!(matches!(err(TransitionSpec { rel_tol: f64::NAN, ..sp }), SolverError::NonFinite { arg: "rel_tol", .. }));
+    assert!(matches!(err(TransitionSpec { beta: -1.0, ..sp }), SolverError::Model(maugis::Error::OutOfRange { arg: "beta", .. })));
 }

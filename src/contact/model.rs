@@ -107,19 +107,22 @@ const VALIDITY_SAMPLES: usize = 48;
 
 /// The model parameters: Maugis parameter `lambda`, roughness `alpha` (amplitude)
 /// and `beta` (wavelength).
+///
+/// The fields are private: a `Params` exists only through [`Params::new`] (or
+/// deserialization, which runs the same checks), so every `Params` a function
+/// receives is inside [`LAMBDA_RANGE`], [`ALPHA_RANGE`] and [`BETA_RANGE`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(try_from = "ParamsFields", into = "ParamsFields"))]
 pub struct Params {
-    /// Maugis parameter, `> 0`.
-    pub lambda: f64,
-    /// Normalised wave amplitude, `>= 0` (0 is the smooth cylinder).
-    pub alpha: f64,
-    /// Normalised wavelength, `> 0`.
-    pub beta: f64,
+    pub(crate) lambda: f64,
+    pub(crate) alpha: f64,
+    pub(crate) beta: f64,
 }
 
 impl Params {
-    /// Validated parameters.
+    /// Validated parameters: each finite and inside its range, else
+    /// [`Error::NonFinite`] or [`Error::OutOfRange`] naming it.
     pub fn new(lambda: f64, alpha: f64, beta: f64) -> Result<Params> {
         finite(lambda, "lambda")?;
         finite(alpha, "alpha")?;
@@ -128,6 +131,51 @@ impl Params {
         ALPHA_RANGE.check("alpha", alpha)?;
         BETA_RANGE.check("beta", beta)?;
         Ok(Params { lambda, alpha, beta })
+    }
+
+    /// Maugis parameter, `> 0`.
+    pub fn lambda(&self) -> f64 {
+        self.lambda
+    }
+
+    /// Normalised wave amplitude, `>= 0` (0 is the smooth cylinder).
+    pub fn alpha(&self) -> f64 {
+        self.alpha
+    }
+
+    /// Normalised wavelength, `> 0`.
+    pub fn beta(&self) -> f64 {
+        self.beta
+    }
+
+    /// The same roughness at another Maugis parameter (checked as [`Params::new`]).
+    pub fn with_lambda(&self, lambda: f64) -> Result<Params> {
+        Params::new(lambda, self.alpha, self.beta)
+    }
+}
+
+/// The serialized form of [`Params`]: `{"lambda", "alpha", "beta"}`, checked
+/// by [`Params::new`] on the way in.
+#[cfg(feature = "serde")]
+#[derive(serde::Serialize, serde::Deserialize)]
+struct ParamsFields {
+    lambda: f64,
+    alpha: f64,
+    beta: f64,
+}
+
+#[cfg(feature = "serde")]
+impl TryFrom<ParamsFields> for Params {
+    type Error = Error;
+    fn try_from(f: ParamsFields) -> Result<Params> {
+        Params::new(f.lambda, f.alpha, f.beta)
+    }
+}
+
+#[cfg(feature = "serde")]
+impl From<Params> for ParamsFields {
+    fn from(p: Params) -> ParamsFields {
+        ParamsFields { lambda: p.lambda, alpha: p.alpha, beta: p.beta }
     }
 }
 
@@ -630,6 +678,29 @@ fn refine_extremum<F: Fn(f64) -> f64>(f: F, lo: f64, hi: f64, minimize: bool) ->
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[cfg(feature = "serde")]
+    #[test]
+    fn params_deserialize_through_the_checks() {
+        let p = Params::new(0.5, 0.25, 1.125).unwrap();
+        let json = serde_json::to_string(&p).unwrap();
+        assert_eq!(json, r#"{"lambda":0.5,"alpha":0.25,"beta":1.125}"#);
+        assert_eq!(serde_json::from_str::<Params>(&json).unwrap(), p);
+        // out of range or missing: refused with the constructor's message, not built
+        for bad in [r#"{"lambda":-1.0,"alpha":0.25,"beta":1.125}"#, r#"{"lambda":0.5,"alpha":0.25,"beta":0.0}"#, r#"{"lambda":0.5,"alpha":0.25}"#] {
+            let e = serde_json::from_str::<Params>(bad).unwrap_err().to_string();
+            assert!(e.contains("lambda") || e.contains("beta"), "{bad}: {e}");
+        }
+    }
+
+    #[test]
+    fn params_accessors_and_with_lambda() {
+        let p = Params::new(0.5, 0.25, 1.125).unwrap();
+        assert_eq!((p.lambda(), p.alpha(), p.beta()), (0.5, 0.25, 1.125));
+        assert_eq!(p.with_lambda(3.0).unwrap(), Params::new(3.0, 0.25, 1.125).unwrap());
+        assert!(matches!(p.with_lambda(f64::NAN), Err(Error::NonFinite { what: "lambda" })));
+        assert!(matches!(p.with_lambda(-1.0), Err(Error::OutOfRange { .. })));
+    }
 
     #[test]
     fn smooth_case_is_johnson_greenwood() {

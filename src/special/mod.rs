@@ -19,6 +19,22 @@
 //! `gamma.rs`) is crate-internal, so that it can change without breaking users;
 //! the unit tests next to each file compare the methods where they overlap.
 //!
+//! The names mean the same everywhere:
+//!
+//! | name | inputs | precision argument | returns |
+//! |---|---|---|---|
+//! | `f` | f64 | none | f64 (an estimate within the documented tolerance) |
+//! | `f_bounded` | f64 | none | [`Bounded`]: value and a proven error bound |
+//! | `f_native_bounded` | f64 | a relative tolerance | `Result<Option<Bounded>>`: the native f64 path alone, `None` where it does not certify the tolerance |
+//! | `f_mp` | exact binary `Float`s | output precision `prec` | a [`Ball`] with `rad <= 2^-prec |mid|` (Ziv loop) |
+//! | `f_ball_mp` | [`Ball`]s (a decimal is a ball) | output precision `prec` | a [`Ball`] containing `f` over the input balls |
+//! | `f_<method>` (e.g. `bessel_j_series`, `meijer_g_k_direct_ball`) | `Float`s, or `Ball`s where the name ends in `_ball` | working precision `wp` | a [`Ball`] from that one method at `wp`, whatever accuracy it reached (no Ziv loop) |
+//!
+//! Every function that takes a precision checks it: `prec` against
+//! [`crate::MAX_PREC`], `wp` against [`MAX_WORKING_PREC`] (and both `>= 2`),
+//! with [`Error::Precision`]; `tests/precision_edges.rs` calls each one at 0, 1
+//! and beyond the cap.
+//!
 //! # Precision policy (Ziv)
 //!
 //! Every `*_mp` function takes an output precision `prec` (bits) and returns a
@@ -40,9 +56,12 @@
 //! which is then within one ulp. The fallback's Ziv loop stops at
 //! [`F64_FALLBACK_MAX_WP`] working bits ([`Error::PrecisionExhausted`]): an f64
 //! call answers in bounded time or says why not; the `*_mp` functions remain for
-//! arguments that need more. Fallbacks are counted per function
-//! (`bessel_j_fallbacks`, `hyp1f2_fallbacks`, `meijer_g_k_fallbacks`,
-//! `contact::displacement::bounded::wave_bounded_fallbacks`; 2F1 has no counter yet).
+//! arguments that need more. Fallbacks are counted per route, in one place:
+//! [`fallback_counts`] returns a snapshot of every counter ([`FallbackCounts`]:
+//! `bessel_j`, `hyp1f2`, `hyp2f1`, `meijer_g_k`, `wave_bounded`,
+//! `wave_bounded_mp_contacts`); subtract two snapshots with
+//! [`FallbackCounts::since`]. (The older per-function readers such as
+//! `bessel_j_fallbacks` are deprecated aliases of its fields.)
 //!
 //! # Enums
 //!
@@ -56,6 +75,9 @@ pub mod hyp1f2;
 pub mod hyp2f1;
 pub mod meijer_g;
 pub mod pfq;
+pub mod fallback;
+
+pub use fallback::{fallback_counts, F64Route, FallbackCounts};
 
 use rug::float::Round;
 use rug::ops::{AddAssignRound, AssignRound};
@@ -64,6 +86,15 @@ use rug::Float;
 use crate::ball::{Ball, Bounded};
 use crate::error::{Error, Result};
 use crate::MAX_WORKING_PREC;
+
+/// Checks the relative tolerance of an `f_native_bounded` call: positive and finite.
+pub(crate) fn check_rel_tol(rel_tol: f64) -> Result<()> {
+    if rel_tol.is_finite() && rel_tol > 0.0 {
+        Ok(())
+    } else {
+        Err(Error::OutOfRange { arg: "rel_tol (relative tolerance of the native path)", value: rel_tol, allowed: crate::error::Interval::above(0.0) })
+    }
+}
 
 /// Output precision of the MP fallback used by the f64 functions: 11 bits more
 /// than a double, so the rounded midpoint is within `0.5 + 2^-11` ulp.

@@ -109,6 +109,7 @@ impl Report {
     }
 
     /// The entry whose label is `label`; panics when there is none.
+    #[allow(dead_code)] // a shared test module: the figures test binary does not call it
     pub fn entry(&self, label: &str) -> &Entry {
         self.entries()
             .find(|e| e.label == label)

@@ -1,5 +1,5 @@
 //! One state of a [`ContactSolver`] under a smooth adhesion law
-//! ([`Adhesion::Exponential`]): a fixed point on the adhesive traction around
+//! ([`AdhesionLaw::Exponential`](crate::profile::AdhesionLaw::Exponential)): a fixed point on the adhesive traction around
 //! the Polonsky-Keer contact solve.
 //!
 //! # Problem

@@ -71,6 +71,7 @@ pub(crate) mod bessel_mp;
 pub mod bounded;
 pub mod quadrature;
 pub mod quadrature_ball;
+mod wave;
 mod geometry;
 mod series;
 mod wave_f64;
@@ -80,6 +81,7 @@ pub use bessel_mp::{
     du_wave_at_edge_ball_mp, du_wave_ball_mp, du_wave_mp, u_wave_at_edge_ball_mp, u_wave_ball_mp, u_wave_mp, wave_at_decimals,
 };
 pub use series::{du_wave_series_mp, u_wave_series, u_wave_series_mp, TruncatedSeries};
+pub use wave::Wave;
 pub use wave_f64::{du_wave, du_wave_bounded, u_wave, u_wave_bounded, WaveBessel};
 
 /// Largest `D = 2 pi a/zeta` (contact width in wavelengths times `pi`) accepted.
@@ -143,7 +145,8 @@ pub fn u_hertz_mp(a: &Float, r: &Float, x: &Float, prec: u32) -> Result<Ball> {
     })
 }
 
-/// Profile depth `h(x) = x^2/(2R) + A (1 - cos(2 pi x/zeta))` (Eq. 1).
+/// Profile depth `h(x) = x^2/(2R) + A (1 - cos(2 pi x/zeta))` (Eq. 1). Note the
+/// order `amp, zeta`, the reverse of [`u_wave`]'s: [`Wave::depth`] cannot swap them.
 pub fn profile_depth(r: f64, amp: f64, zeta: f64, x: f64) -> Result<f64> {
     check_positive(r, "r")?;
     check_positive(zeta, "zeta")?;

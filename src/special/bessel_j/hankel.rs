@@ -114,6 +114,7 @@ const RENORM_HIGH: f64 = 1.0 / RENORM_LOW;
 /// `J_n(x)` by Hankel's expansion at working precision `wp` (`x > 0`), summed
 /// until the remainder bound is below `2^-wp`; `None` if the terms diverge first.
 pub fn bessel_j_hankel(n: u64, x: &Float, wp: u32) -> Result<Option<Ball>> {
+    crate::error::check_working_prec(wp)?;
     let xb = Ball::from_float(x, wp);
     let n_i = i64::try_from(n).map_err(|_| Error::IntegerOutOfRange { arg: "n", value: i64::MAX, min: 0, max: i64::MAX })?;
     let four_n2 = 4i128 * (n_i as i128) * (n_i as i128);

@@ -46,7 +46,7 @@
 //!   [`bessel_j`] takes the native value when its bound gives 2 ulp,
 //!   [`bessel_j_bounded`] when it gives `2^-47` relative; elsewhere (next to
 //!   zeros of `J_n`, `x > 2^40`, series cancellation past 52 bits) both fall back
-//!   to the certified MP value at 64 bits and count it ([`bessel_j_fallbacks`]):
+//!   to the certified MP value at 64 bits and count it ([`crate::special::fallback_counts`]):
 //!   over `n <= 60`, `x <= 150` about 0.015% of uniform points for [`bessel_j`],
 //!   none seen for [`bessel_j_bounded`] (examples/bessel_f64.rs).
 //!
@@ -73,7 +73,6 @@ pub(crate) use native_series::{inv_factorials, MAX_TABLE_FACTORIAL, TABLE_ETA};
 pub use series::{bessel_j_series, bessel_j_series_pfq};
 pub use three_term::bessel_j_three_term;
 
-use std::sync::atomic::{AtomicU64, Ordering as AtomicOrdering};
 
 use rug::float::Round;
 use rug::ops::AssignRound;
@@ -415,14 +414,11 @@ fn check_cost(m: u64, x: f64, prec: u32) -> Result<u32> {
     Ok(c.guard)
 }
 
-/// Calls of [`bessel_j`] / [`bessel_j_bounded`] that the native double-double
-/// path could not certify and that went to the MP path.
-static FALLBACKS: AtomicU64 = AtomicU64::new(0);
-
-/// How many f64 calls fell back to the MP path so far (process-wide; the
-/// benches and tests report it).
+/// How many f64 calls fell back to the MP path so far (process-wide): the
+/// `bessel_j` field of [`crate::special::fallback_counts`].
+#[deprecated(note = "use `maugis::special::fallback_counts().bessel_j`: one snapshot of every counter")]
 pub fn bessel_j_fallbacks() -> u64 {
-    FALLBACKS.load(AtomicOrdering::Relaxed)
+    crate::special::fallback_counts().bessel_j
 }
 
 /// Relative bound the native path must prove for [`bessel_j`]: with the final
@@ -467,7 +463,7 @@ where
     let b = match native(m, x.abs(), rel) {
         Some(b) => b,
         None => {
-            FALLBACKS.fetch_add(1, AtomicOrdering::Relaxed);
+            crate::special::fallback::count(crate::special::F64Route::BesselJ);
             fallback(m, &exact(x.abs()))?
         }
     };
@@ -477,7 +473,7 @@ where
 /// `J_n(x)` in f64 with a proven error bound for the f64 `x` as given: the
 /// native double-double method (`native.rs`) with its running error analysis
 /// where that proves `err <= 2^-47 |value|`, else the certified MP fallback
-/// (counted by [`bessel_j_fallbacks`]).
+/// (counted in [`crate::special::fallback_counts`]).
 pub fn bessel_j_bounded(n: i64, x: f64) -> Result<Bounded> {
     f64_entry(n, x, BOUNDED_NATIVE_REL, |m, ax| {
         let guard = check_cost(m, ax.to_f64(), crate::special::F64_FALLBACK_PREC)?;

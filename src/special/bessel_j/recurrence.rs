@@ -17,6 +17,7 @@ use crate::special::check_finite;
 /// stable direction for `n > x` (J_n is the minimal solution there); below `x`
 /// the recurrence is neutral and the radii grow only mildly.
 pub fn bessel_j_sequence_mp(nmax: u64, x: &Float, wp: u32) -> Result<Vec<Ball>> {
+    crate::error::check_working_prec(wp)?;
     check_finite(x, "x")?;
     if *x <= 0 {
         return Err(Error::OutOfRange { arg: "x", value: x.to_f64(), allowed: crate::error::Interval::above(0.0) });

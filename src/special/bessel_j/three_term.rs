@@ -164,6 +164,7 @@ pub(crate) fn below_turning_point(x: &Float) -> u64 {
 /// `J_0(x)`, `J_1(x)` at working precision `wp`: forward for `n < x`, forward
 /// to the turning point then the ratio product for `n >= x`.
 pub fn bessel_j_three_term(n: u64, x: &Float, j0: &Ball, j1: &Ball, wp: u32) -> Result<Ball> {
+    crate::error::check_working_prec(wp)?;
     if n < 2 || *x <= 1 {
         return Err(Error::precondition("three-term recurrence needs n >= 2 and x > 1"));
     }

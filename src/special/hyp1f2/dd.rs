@@ -1,5 +1,5 @@
 //! `1F2(a; b1, b2; z)` summed in double-double with a proven bound: the native
-//! path where the f64 series of [`super::hyp1f2_native_bounded`] loses
+//! path where the f64 series of `super::native_series_bounded` loses
 //! too much to cancellation (large negative `z` against small parameters).
 //!
 //! # Method

@@ -279,11 +279,11 @@ pub const NATIVE_REL_TOL: f64 = 1e-14;
 /// Cap on the terms of the native f64 series.
 const NATIVE_MAX_TERMS: u64 = 20_000;
 
-static NATIVE_FALLBACKS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
 
 /// How many [`hyp1f2_bounded`] / [`hyp1f2`] calls fell back to MP since the process started.
+#[deprecated(note = "use `maugis::special::fallback_counts().hyp1f2`: one snapshot of every counter")]
 pub fn hyp1f2_fallbacks() -> u64 {
-    NATIVE_FALLBACKS.load(std::sync::atomic::Ordering::Relaxed)
+    crate::special::fallback_counts().hyp1f2
 }
 
 /// The series of `1F2(a; b1, b2; z)` summed in f64 with a running error analysis:
@@ -300,7 +300,7 @@ pub fn hyp1f2_fallbacks() -> u64 {
 /// for all `n >= N` (each factor is monotone in `n`), so `sum_{n>=N} |t_n| <= |t_N|/(1 - rho_N)`
 /// when `rho_N < 1`. The bound is evaluated in f64 and inflated by `1 + 2^-30`
 /// for its own roundings (fewer than `2^20` operations).
-pub fn hyp1f2_native_bounded(a: f64, b1: f64, b2: f64, z: f64) -> Option<Bounded> {
+pub(crate) fn native_series_bounded(a: f64, b1: f64, b2: f64, z: f64) -> Option<Bounded> {
     if !(b1 > 0.0 && b2 > 0.0 && a.is_finite() && z.is_finite()) {
         return None;
     }
@@ -349,7 +349,7 @@ pub fn hyp1f2_native_bounded(a: f64, b1: f64, b2: f64, z: f64) -> Option<Bounded
 /// `1F2(a; b1, b2; z)` in f64, within `1e-14` relative: the native series where its
 /// proven bound is at most [`NATIVE_REL_TOL`] relative, else the pFq path.
 pub fn hyp1f2(a: f64, b1: f64, b2: f64, z: f64) -> Result<f64> {
-    if let Some(b) = hyp1f2_native_or_dd(a, b1, b2, z) {
+    if let Some(b) = hyp1f2_native_or_dd(a, b1, b2, z, NATIVE_REL_TOL) {
         return Ok(b.value);
     }
     hyp_pfq(&[a], &[b1, b2], z)
@@ -357,8 +357,8 @@ pub fn hyp1f2(a: f64, b1: f64, b2: f64, z: f64) -> Result<f64> {
 
 /// The f64 series, else the double-double series (`dd.rs`), if
 /// either bound is at most [`NATIVE_REL_TOL`] relative.
-fn hyp1f2_native_or_dd(a: f64, b1: f64, b2: f64, z: f64) -> Option<Bounded> {
-    let accept = |b: Bounded| (b.value.is_finite() && b.err <= NATIVE_REL_TOL * b.value.abs()).then_some(b);
+fn hyp1f2_native_or_dd(a: f64, b1: f64, b2: f64, z: f64, rel_tol: f64) -> Option<Bounded> {
+    let accept = |b: Bounded| (b.value.is_finite() && b.err <= rel_tol * b.value.abs()).then_some(b);
     // the model family where its series cancel (k <= x/2 at z = -x^2): the Bessel
     // route; below its range, the f64 series only where it can certify (about
     // k >= x - 2: the cancellation is e^{2x} x^{-2k-3/2}), else straight to double words
@@ -374,19 +374,34 @@ fn hyp1f2_native_or_dd(a: f64, b1: f64, b2: f64, z: f64) -> Option<Bounded> {
             return dd::hyp1f2_series_dd(a, b1, b2, z)?.finish().and_then(accept);
         }
     }
-    hyp1f2_native_bounded(a, b1, b2, z)
+    native_series_bounded(a, b1, b2, z)
         .and_then(accept)
         .or_else(|| dd::hyp1f2_series_dd(a, b1, b2, z)?.finish().and_then(accept))
+}
+
+/// The native f64 paths of [`hyp1f2_bounded`] alone (the Bessel route, the f64
+/// series, double-double; no MP): `Some` with a proven bound where it certifies
+/// `err <= rel_tol |value|`, `None` where [`hyp1f2_bounded`] would fall back to
+/// MP (for solvers that count or avoid the slow path), and for parameters at a
+/// pole, which [`hyp1f2_bounded`] reports as a typed error. Errors:
+/// [`crate::Error::NonFinite`] for an argument, [`crate::Error::OutOfRange`] for a `rel_tol`
+/// that is not positive and finite.
+pub fn hyp1f2_native_bounded(a: f64, b1: f64, b2: f64, z: f64, rel_tol: f64) -> Result<Option<Bounded>> {
+    for (v, what) in [(a, "a"), (b1, "b1"), (b2, "b2"), (z, "z")] {
+        crate::error::finite(v, what)?;
+    }
+    crate::special::check_rel_tol(rel_tol)?;
+    Ok(hyp1f2_native_or_dd(a, b1, b2, z, rel_tol))
 }
 
 /// `1F2(a; b1, b2; z)` in f64 with a proven error bound for the f64 inputs as given:
 /// for the model family `1F2(1/2; k+1, k+3/2; -s^2)` at `s >= 17`, `k <= s/2`, the
 /// Bessel route in double words (`bessel_f64.rs`); else the native series
-/// ([`hyp1f2_native_bounded`]) when its bound is at most [`NATIVE_REL_TOL`]
+/// (`native_series_bounded`) when its bound is at most [`NATIVE_REL_TOL`]
 /// relative (skipped for the family at `k < s - 2`, where it cannot be), else
 /// the same series in double-double (cancellation: large negative `z` against the
 /// parameters); otherwise the certified MP value at 64 bits, counted by
-/// [`hyp1f2_fallbacks`] (none over the family at `k <= 1000`, `s <= 35`:
+/// [`crate::special::fallback_counts`] (none over the family at `k <= 1000`, `s <= 35`:
 /// `examples/hyp1f2_f64_cpu.rs`, 0.60 us per value on average over `k` in
 /// {0, 1, 2, 5, 10, 50, 200, 1000}, at most 0.95 us for any of them, CPU time at
 /// load 5.8; it was 28 us with MP fallbacks).
@@ -394,10 +409,10 @@ pub fn hyp1f2_bounded(a: f64, b1: f64, b2: f64, z: f64) -> Result<Bounded> {
     for (v, what) in [(a, "a"), (b1, "b1"), (b2, "b2"), (z, "z")] {
         crate::error::finite(v, what)?;
     }
-    if let Some(b) = hyp1f2_native_or_dd(a, b1, b2, z) {
+    if let Some(b) = hyp1f2_native_or_dd(a, b1, b2, z, NATIVE_REL_TOL) {
         return Ok(b);
     }
-    NATIVE_FALLBACKS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    crate::special::fallback::count(crate::special::F64Route::Hyp1f2);
     crate::special::bounded_from_ball("hyp1f2", &hyp1f2_mp_f64(a, b1, b2, z, crate::special::F64_FALLBACK_PREC)?)
 }
 
@@ -491,7 +506,7 @@ mod tests {
             (2.0, 0.25, 0.125, -0.5),
         ] {
             let exact = hyp1f2_mp_f64(a, b1, b2, z, 200).unwrap();
-            if let Some(b) = hyp1f2_native_bounded(a, b1, b2, z) {
+            if let Some(b) = native_series_bounded(a, b1, b2, z) {
                 let diff = Float::with_val(264, exact.mid() - b.value).abs();
                 assert!(diff <= b.err, "{a} {b1} {b2} {z}: {b} vs {exact:?}");
                 if b.err <= NATIVE_REL_TOL * b.value.abs() {

@@ -235,11 +235,25 @@ pub fn hyp2f1_bounded(a: f64, b: f64, c: f64, z: f64) -> Result<Bounded> {
     if let Some(r) = native::hyp2f1_native(a, b, c, z, NATIVE_ACCEPT_REL) {
         return Ok(r);
     }
-    // the f64 fallback of hyp2f1, with its working-precision cap (F64_FALLBACK_MAX_WP)
+    mp_fallback(a, b, c, z, |name, guard, eval| crate::special::bounded_from_mp(name, guard, eval))
+}
+
+/// The MP fallback of the f64 functions ([`hyp2f1`], [`hyp2f1_bounded`]), counted
+/// in [`crate::special::fallback_counts`]: the parameter cap
+/// ([`F64_FALLBACK_MAX_PARAM`]), the plan at 64 bits, and `finish` (the f64
+/// driver, whose Ziv loop stops at `F64_FALLBACK_MAX_WP`) on the chosen method.
+fn mp_fallback<T>(
+    a: f64,
+    b: f64,
+    c: f64,
+    z: f64,
+    finish: impl FnOnce(&'static str, u32, &dyn Fn(u32) -> Result<Ball>) -> Result<T>,
+) -> Result<T> {
     check_fallback_params(a, b, c)?;
+    crate::special::fallback::count(crate::special::F64Route::Hyp2f1);
     let (ae, be, ce, ze) = (exact(a), exact(b), exact(c), exact(z));
     let (alg, lost) = plan(&ae, &be, &ce, &ze, F64_FALLBACK_PREC + DEFAULT_GUARD_BITS);
-    crate::special::bounded_from_mp("hyp2f1", DEFAULT_GUARD_BITS + lost, |wp| evaluate(alg, &ae, &be, &ce, &ze, wp))
+    finish("hyp2f1", DEFAULT_GUARD_BITS + lost, &|wp| evaluate(alg, &ae, &be, &ce, &ze, wp))
 }
 
 /// The native f64 path alone: `Some` with a proven bound where it certifies
@@ -247,6 +261,7 @@ pub fn hyp2f1_bounded(a: f64, b: f64, c: f64, z: f64) -> Result<Bounded> {
 /// (for solvers that count or avoid the slow path). Errors as [`hyp2f1`].
 pub fn hyp2f1_native_bounded(a: f64, b: f64, c: f64, z: f64, rel_tol: f64) -> Result<Option<Bounded>> {
     validate_f64(a, b, c, z)?;
+    crate::special::check_rel_tol(rel_tol)?;
     if z == 0.0 {
         return Ok(Some(Bounded { value: 1.0, err: 0.0 }));
     }
@@ -316,8 +331,5 @@ pub fn hyp2f1(a: f64, b: f64, c: f64, z: f64) -> Result<f64> {
     if let Some(r) = native::hyp2f1_native(a, b, c, z, NATIVE_VALUE_REL) {
         return Ok(r.value);
     }
-    check_fallback_params(a, b, c)?;
-    let (ae, be, ce, ze) = (exact(a), exact(b), exact(c), exact(z));
-    let (alg, lost) = plan(&ae, &be, &ce, &ze, F64_FALLBACK_PREC + DEFAULT_GUARD_BITS);
-    f64_from_mp("hyp2f1", DEFAULT_GUARD_BITS + lost, |wp| evaluate(alg, &ae, &be, &ce, &ze, wp))
+    mp_fallback(a, b, c, z, |name, guard, eval| f64_from_mp(name, guard, eval))
 }

@@ -384,3 +384,29 @@ fn f64_fallback_refuses_what_it_cannot_do_in_time() {
         "{r:?}"
     );
 }
+
+#[test]
+fn f64_mp_fallbacks_are_counted() {
+    // one fallback counter API for every f64 function (issue 26 item 4): 2F1 counts too.
+    // Candidates next to z = 1 and with large parameters, where the native f64 path
+    // does not certify; at least one of them must fall back, or the test checks nothing.
+    let candidates = [(40.5, -35.25, 2.5, 0.999), (100.5, 90.25, 1.5, -0.99), (-60.5, 70.25, 0.75, 0.9999), (1.0e3, 1.5, 2.25, -0.999)];
+    let mut fell_back = 0;
+    for (a, b, c, z) in candidates {
+        if hyp2f1_native_bounded(a, b, c, z, NATIVE_ACCEPT_REL).unwrap().is_some() {
+            continue;
+        }
+        fell_back += 1;
+        let before = crate::special::fallback_counts();
+        let r = hyp2f1_bounded(a, b, c, z);
+        let d = crate::special::fallback_counts().since(&before);
+        assert!(r.is_ok(), "2F1({a}, {b}; {c}; {z}): {r:?}");
+        assert!(d.hyp2f1 >= 1, "2F1({a}, {b}; {c}; {z}) fell back uncounted: {d:?}");
+        if hyp2f1_native_bounded(a, b, c, z, NATIVE_VALUE_REL).unwrap().is_none() {
+            let before = crate::special::fallback_counts();
+            hyp2f1(a, b, c, z).unwrap();
+            assert!(crate::special::fallback_counts().since(&before).hyp2f1 >= 1);
+        }
+    }
+    assert!(fell_back >= 1, "no candidate reached the MP fallback");
+}

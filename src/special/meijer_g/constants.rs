@@ -61,6 +61,7 @@ impl MeijerConstants {
     pub fn cached(k: u32, wp: u32) -> Result<Self> {
         use std::sync::OnceLock;
         static TABLE: OnceLock<Option<Vec<MeijerConstants>>> = OnceLock::new();
+        crate::error::check_working_prec(wp)?;
         if k > CACHED_K_MAX || wp + 32 > CACHED_PREC {
             return MeijerConstants::new(k, wp);
         }

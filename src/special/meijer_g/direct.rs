@@ -125,6 +125,7 @@ pub fn meijer_g_k_from_sum(consts: &MeijerConstants, ln_y: &Ball, s: &Ball) -> B
 /// over the whole ball): every operation is a ball operation, so the result
 /// encloses `G(k, y)` for every `y` in the ball.
 pub fn meijer_g_k_direct_ball(consts: &MeijerConstants, yb: &Ball, wp: u32) -> Result<Ball> {
+    crate::error::check_working_prec(wp)?;
     let s = direct_sum(consts.k, yb, wp)?;
     let bracket = yb.ln()?.neg().sub(&s).add(&consts.psi_diff).mul_pow2(-1);
     Ok(consts.c_k.mul(&bracket))

@@ -78,7 +78,8 @@ mod constants;
 pub(crate) mod dd;
 mod direct;
 pub(crate) mod family;
-pub mod native;
+pub(crate) mod native;
+pub use native::{NEAR_ONE_F64_MAX_KW, NEAR_ONE_F64_MIN_Y, TABLE_K_MAX};
 mod near_one;
 mod slater;
 
@@ -96,7 +97,7 @@ use crate::special::{check_finite, exact, f64_from_mp, ziv, DEFAULT_GUARD_BITS};
 pub const MAX_K: u32 = 1_000_000;
 
 /// Largest `y < 1` of the native f64 series (about `ln(2^-60)/ln(y) = 1300` terms at 0.97);
-/// above it the double-double near-one expansion runs ([`native`], `dd.rs`).
+/// above it the double-double near-one expansion runs (`native.rs`, `dd.rs`).
 pub const Y_NATIVE_MAX: f64 = 0.97;
 
 /// Upper limit of `k (1 - y)` for the near-one expansion: its two sums cancel
@@ -215,12 +216,12 @@ pub fn meijer_g_k_ball_mp(k: u32, y: &Ball, prec: u32) -> Result<Ball> {
 /// Largest relative bound the native f64 path may return (beyond it: MP).
 pub const NATIVE_REL_TOL: f64 = 1e-14;
 
-static NATIVE_FALLBACKS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
 
 /// How many [`meijer_g_k`] / [`meijer_g_k_bounded`] calls fell back to MP since
-/// the process started (see [`native`] for where).
+/// the process started (see `native.rs` for where).
+#[deprecated(note = "use `maugis::special::fallback_counts().meijer_g_k`: one snapshot of every counter")]
 pub fn meijer_g_k_fallbacks() -> u64 {
-    NATIVE_FALLBACKS.load(std::sync::atomic::Ordering::Relaxed)
+    crate::special::fallback_counts().meijer_g_k
 }
 
 /// `G(k, y)` in f64: the native value where its proven bound is at most
@@ -232,14 +233,26 @@ pub fn meijer_g_k(k: u32, y: f64) -> Result<f64> {
     if let Some(b) = native::meijer_g_k_native_bounded(k, y, NATIVE_REL_TOL) {
         return Ok(b.value);
     }
-    NATIVE_FALLBACKS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    crate::special::fallback::count(crate::special::F64Route::MeijerGK);
     f64_from_mp("meijer_g_k", guard_bits(k, y), |wp| meijer_g_k_wp(k, &ye, wp))
 }
 
+/// The native f64 path of [`meijer_g_k_bounded`] alone: `Some` with a proven
+/// bound where it certifies `err <= rel_tol |G|`, `None` where
+/// [`meijer_g_k_bounded`] would fall back to MP (for solvers that count or avoid
+/// the slow path). Errors: as [`meijer_g_k_bounded`] for `k` and `y`;
+/// [`Error::OutOfRange`] for a `rel_tol` that is not positive and finite.
+pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Result<Option<Bounded>> {
+    crate::error::finite(y, "y")?;
+    validate(k, &exact(y))?;
+    crate::special::check_rel_tol(rel_tol)?;
+    Ok(native::meijer_g_k_native_bounded(k, y, rel_tol))
+}
+
 /// `G(k, y)` in f64 with a proven error bound for the f64 `y` as given: native
-/// ([`native`]: f64 sums, double-double next to the
+/// (`native.rs`: f64 sums, double-double next to the
 /// zero of `G(k, .)` and for `y > 0.97`) for `k <= 1000`; else the certified MP
-/// value (counted by [`meijer_g_k_fallbacks`]): `k > 1000`, and the f64 `y`
+/// value (counted by [`crate::special::fallback_counts`]): `k > 1000`, and the f64 `y`
 /// closest to a zero of `G(k, .)` (`|G| <~ 1e-16`). The bound is relative there
 /// too: natively `err <= 1e-14 |value|`, from MP about `2^-64 |value|` (the Ziv
 /// loop raises the precision until the ball is relative; only an exact zero,
@@ -252,7 +265,7 @@ pub fn meijer_g_k_bounded(k: u32, y: f64) -> Result<Bounded> {
     if let Some(b) = native::meijer_g_k_native_bounded(k, y, NATIVE_REL_TOL) {
         return Ok(b);
     }
-    NATIVE_FALLBACKS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    crate::special::fallback::count(crate::special::F64Route::MeijerGK);
     crate::special::bounded_from_mp("meijer_g_k", guard_bits(k, y), |wp| meijer_g_k_wp(k, &ye, wp))
 }
 

@@ -85,6 +85,7 @@ pub fn meijer_g_k_near_one(k: u32, y: &Float, wp: u32) -> Result<Ball> {
 /// [`meijer_g_k_near_one`] for `w = 1 - y` known only as a ball with
 /// `0 <= w <= 1/2` (a lower end below zero is clipped: the true `w` is `>= 0`).
 pub fn meijer_g_k_near_one_ball(consts: &MeijerConstants, w: &Ball, wp: u32) -> Result<Ball> {
+    crate::error::check_working_prec(wp)?;
     let k = consts.k;
     let w = if w.lower() < 0 { Ball::hull(&Float::new(wp), &w.upper(), wp) } else { w.clone() };
     if w.upper() > 0.5 {

@@ -20,6 +20,7 @@ use crate::special::{exact, exact_add, exact_sub};
 /// the principal branch, `(-y)^b = y^b e^{i pi b}` (mpmath's convention).
 /// The parameters must be exactly representable (they are combined exactly).
 pub fn meijer_g33_slater_mp(a: [f64; 3], b: [f64; 3], z: f64, wp: u32) -> Result<(Ball, Ball)> {
+    crate::error::check_working_prec(wp)?;
     for &v in a.iter().chain(b.iter()).chain(std::iter::once(&z)) {
         crate::error::finite(v, "Meijer G argument")?;
     }

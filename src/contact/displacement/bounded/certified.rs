@@ -186,7 +186,7 @@ impl CertifiedBessel {
 
     /// [`CertifiedBessel::new_mp`], counted by [`wave_bounded_mp_contacts`].
     pub(crate) fn new_mp_counted(a: f64, zeta: f64) -> Result<CertifiedBessel> {
-        MP_CONTACTS.fetch_add(1, Ordering::Relaxed);
+        crate::special::fallback::count(crate::special::F64Route::WaveBoundedMpContact);
         Self::new_mp(a, zeta)
     }
 

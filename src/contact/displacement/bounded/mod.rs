@@ -46,7 +46,7 @@
 //! to `2^-60` (over `a in [0.5, 6]`, `zeta = 9/8` the bounds are below `1e-19`;
 //! a unit test checks them against 300-bit values). Where not (`D` beyond
 //! about 60, where `2N+1` passes the `1/n!` table), the data come from MP at
-//! [`CERT_PREC`] bits ([`wave_bounded_mp_contacts`] counts it). The sums become
+//! [`CERT_PREC`] bits (counted in [`crate::special::fallback_counts`]). The sums become
 //! polynomials in `X = q^2` (`u`: coefficients `(-1)^{m+1} J_{2m}`; gradient:
 //! `(1 + q) sum_m T_m X^m`, `T_m = sum_{n>m} (-1)^{n+1} n J_{2n}`), with the
 //! coefficients' bounds.
@@ -124,7 +124,7 @@
 //! The native per-x path certifies for `t <= T_MAX = 3/4`, i.e. `x/a <= 25/7 ~ 3.57`,
 //! which covers the model's range `x/a in [1, 3]`. Beyond it the `*_bounded`
 //! entry points fall back to the certified MP Bessel form at 64 bits;
-//! [`wave_bounded_fallbacks`] counts those calls (the benches report both counters).
+//! [`crate::special::fallback_counts`] counts those calls (the benches report both counters).
 //! Exact products are fused multiply-adds where the CPU has them (detected at
 //! run time, as in `native.rs`), else Dekker's; both are exact.
 //!
@@ -150,7 +150,6 @@
 //! evaluation", Japan J. Indust. Appl. Math. 26 (2009); Higham, *Accuracy and
 //! Stability of Numerical Algorithms*, 2nd ed. (2002).
 
-use std::sync::atomic::{AtomicU64, Ordering};
 
 use crate::ball::U;
 
@@ -188,40 +187,39 @@ const TWO_PI_ERR: f64 = 3.0e-32;
 mod value;
 pub(crate) use value::{wave_scratch_bounded, wave_value};
 
-static FALLBACKS: AtomicU64 = AtomicU64::new(0);
-
 /// How many `u_wave_bounded` / `du_wave_bounded` / `WaveBessel::eval_bounded`
 /// calls (per x) fell back to the MP path since the process started.
+#[deprecated(note = "use `maugis::special::fallback_counts().wave_bounded`: one snapshot of every counter")]
 pub fn wave_bounded_fallbacks() -> u64 {
-    FALLBACKS.load(Ordering::Relaxed)
+    crate::special::fallback_counts().wave_bounded
 }
 
-static SCRATCH_MISSES: AtomicU64 = AtomicU64::new(0);
+static SCRATCH_MISSES: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
 
 /// How many `u_wave_bounded` / `du_wave_bounded` calls since the process
 /// started did not take the one-pass bounded route from scratch (no FMA,
 /// `x/a > 25/7`, `D` beyond the table, or its bound above `2^-50` of the
-/// scales) and went to the per-contact certified data (or MP, counted by
-/// [`wave_bounded_fallbacks`]).
+/// scales) and went to the per-contact certified data (or MP, counted in
+/// `maugis::special::fallback_counts().wave_bounded`). Not an MP fallback,
+/// so not part of `fallback_counts()`.
 pub fn wave_scratch_misses() -> u64 {
-    SCRATCH_MISSES.load(Ordering::Relaxed)
+    SCRATCH_MISSES.load(std::sync::atomic::Ordering::Relaxed)
 }
 
 pub(crate) fn count_scratch_miss() {
-    SCRATCH_MISSES.fetch_add(1, Ordering::Relaxed);
+    SCRATCH_MISSES.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
 }
-
-static MP_CONTACTS: AtomicU64 = AtomicU64::new(0);
 
 /// How many times the per-contact Bessel data of the bounded path were built
 /// in MP (where the native double-double sequence does not certify: `D`
 /// beyond about 60) since the process started.
+#[deprecated(note = "use `maugis::special::fallback_counts().wave_bounded_mp_contacts`: one snapshot of every counter")]
 pub fn wave_bounded_mp_contacts() -> u64 {
-    MP_CONTACTS.load(Ordering::Relaxed)
+    crate::special::fallback_counts().wave_bounded_mp_contacts
 }
 
 pub(crate) fn count_fallback() {
-    FALLBACKS.fetch_add(1, Ordering::Relaxed);
+    crate::special::fallback::count(crate::special::F64Route::WaveBounded);
 }
 
 mod certified;
