@@ -25,7 +25,9 @@
 //!   as in the adhesive Polonsky-Keer of Rey, Anciaux and Molinari, Comput.
 //!   Mech. 60, 2017, 69; also Bazrafshan, de Rooij, Valefi and Schipper,
 //!   Tribol. Int. 112, 2017, 117). A zone change costs one product (the
-//!   cohesive traction's displacement is updated, not recomputed), keeps the
+//!   cohesive traction's displacement is updated, not recomputed; a second
+//!   one when a contact cell joins the zone from outside it, whose shifted
+//!   traction `q` and `kz = sigma0 K 1_S` then move together), keeps the
 //!   traction of contact cells, and resets the conjugacy. Successive changes
 //!   in the same direction are extrapolated (Aitken, see `update_zone`).
 //! * **Contact.** Polonsky and Keer (Wear 231, 1999, 206), displacement
