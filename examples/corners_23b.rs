@@ -26,6 +26,19 @@ fn main() {
                 println!("e {e:e} wp {wp}: {r:?} [{:.3} s]", t1.elapsed().as_secs_f64());
             }
         }
+    } else if which == "resid192" {
+        use maugis::contact::model_mp::strip_residual_ball_mp;
+        use maugis::Ball;
+        let d = |s: &str, p: u32| Decimal::parse(s).unwrap().to_ball(p);
+        for ip in [117u32, 192, 400] {
+            let mid = |b: Ball| Ball::from_float(b.mid(), b.prec());
+            for (name, beta) in [("ball", d("0.001", ip)), ("mid", mid(d("0.001", ip)))] {
+                let m = ModelBalls::new(d("2.5", ip), d("2.5", ip), beta, d("1", ip)).unwrap();
+                let e = Ball::from_f64(6.5325e-5, 53).unwrap();
+                let r = strip_residual_ball_mp(&m, &e, 6824);
+                println!("input prec {ip} {name}: {r:?}");
+            }
+        }
     } else if which == "trace" {
         // each call of eval_at_decimals' closure: input precision, result, time
         let d = |s: &str| Decimal::parse(s).unwrap();
