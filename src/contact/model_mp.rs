@@ -22,7 +22,13 @@
 //! [`solve_m_ball_mp`] starts from the f64 first root of
 //! [`ContactSize::solve_strip`] at the midpoints (solved in `m - 1`, so the
 //! bracket is tight even as `m -> 1`), proves a sign change of `F` across a
-//! small bracket **over the whole input balls** and bisects it. A bisection
+//! small bracket **over the whole input balls** (raising the working precision
+//! by the measured deficit where the balls, not the sign, are the obstacle: the
+//! wave's radius grows by about 0.9 D bits at large `D`), then tries to finish
+//! at once: a secant on ball midpoints estimates the root and two ball
+//! evaluations prove the sign change across a bracket of the target width (the
+//! estimate carries no claim; only those evaluations do). Otherwise it bisects
+//! the bracket. A bisection
 //! point where `F`'s ball straddles zero is re-evaluated at the input
 //! midpoints: if that straddles too the working precision is raised (Ziv);
 //! otherwise the width of the inputs is what keeps the root from being located

@@ -36,6 +36,14 @@
 //! A denominator equal to a non-positive integer is a pole and an error unless
 //! the series terminates before reaching it.
 //!
+//! # Cost
+//!
+//! Before summing, `check_series_cost` proves a lower bound of the terms the
+//! loop must run (it stops only where the ratio bound is below 1, and that bound
+//! is non-increasing in `n`) and refuses with [`Error::TooExpensive`] when the
+//! estimated time passes [`MAX_SERIES_SECONDS`] (for example
+//! `1F2(3.7e18; 20.03, -179.875; 23.7)`, whose terms grow for 4.4 million steps).
+//!
 //! # f64 path
 //!
 //! `pfq_f64` sums the same recurrence in f64 and returns an error *estimate*:
