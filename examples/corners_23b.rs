@@ -1,9 +1,9 @@
 //! Times two slow corners of issue 23: MP hyp1f2 at a parameter ~3.7e18, and
 //! `strip_ratio` at decimal inputs with beta "0.001".
-//! `cargo run --profile test --example corners_23b --features maugis/gmp-no-check -- [hyp|strip] [prec]`
+//! `cargo run --profile test --example corners_23b --features maugis/gmp-no-check -- [hyp|strip|trace|load|resid|resid192] [prec]`
 use maugis::ball::Decimal;
 use maugis::ball::eval_at_decimals;
-use maugis::contact::model_mp::{solve_m_ball_mp, strip_ratio_at_decimals, ModelBalls};
+use maugis::contact::model_mp::{load_at_decimals, solve_m_ball_mp, strip_ratio_at_decimals, ModelBalls};
 use maugis::special::{exact, hyp1f2};
 use std::time::Instant;
 
@@ -26,6 +26,10 @@ fn main() {
                 println!("e {e:e} wp {wp}: {r:?} [{:.3} s]", t1.elapsed().as_secs_f64());
             }
         }
+    } else if which == "load" {
+        let d = |s: &str| Decimal::parse(s).unwrap();
+        let r = load_at_decimals(&[d("2.5"), d("2.5"), d("0.001"), d("1")], prec);
+        println!("load(2.5, 2.5, \"0.001\", 1; {prec}) = {r:?}  [{:.3} s]", t.elapsed().as_secs_f64());
     } else if which == "resid192" {
         use maugis::contact::model_mp::strip_residual_ball_mp;
         use maugis::Ball;
