@@ -429,6 +429,7 @@ pub fn hyp1f2_mp_f64(a: f64, b1: f64, b2: f64, z: f64, prec: u32) -> Result<Ball
 mod tests {
     use super::*;
     use crate::special::bessel_j::bessel_j_mp;
+    use crate::error::Error;
 
     #[test]
     fn reduces_to_bessel_squared() {
@@ -518,6 +519,29 @@ mod tests {
             assert!(diff <= fb.err && fb.err <= 1e-14 * fb.value.abs(), "{a} {b1} {b2} {z}: {fb}");
         }
         assert!(accepted >= 6, "{accepted}");
+    }
+
+    #[test]
+    fn huge_parameter_series_is_refused_at_once_or_answers() {
+        // Fuzz finding (docs/fuzzing.md): a = 3.7e18 makes the terms grow until
+        // n^3 ~ a z, n ~ 4.4e6, so the series (the only method here) needs millions
+        // of terms: 5.4 s at 98 bits. It is refused before summing, with the estimate.
+        let e = |v: f64| Float::with_val(53, v);
+        match hyp1f2_mp(&e(3.7e18), &e(20.03), &e(-179.875), &e(23.7), 98) {
+            Err(Error::TooExpensive { seconds, limit_seconds, .. }) => {
+                assert!(seconds > limit_seconds && limit_seconds == crate::special::pfq::MAX_SERIES_SECONDS, "{seconds}")
+            }
+            other => panic!("expected TooExpensive, got {other:?}"),
+        }
+        let ball = |v: f64| Ball::from_f64(v, 53).unwrap();
+        let refused = hyp1f2_ball_mp(&ball(3.7e18), &ball(20.03), &ball(-179.875), &Ball::from_decimal("23.7", 98).unwrap(), 98);
+        assert!(matches!(refused, Err(Error::TooExpensive { .. })), "{refused:?}");
+        // a = 1e12: about 3e4 terms, within the budget; the exact-parameter series
+        // and the ball series (a separate loop) agree.
+        let v = hyp1f2_mp(&e(1e12), &e(20.03), &e(-179.875), &e(23.7), 98).unwrap();
+        assert!(v.meets_rel(98), "{v:?}");
+        let w = crate::special::pfq::pfq_series(&[ball(1e12).set_prec(160)], &[ball(20.03).set_prec(160), ball(-179.875).set_prec(160)], &ball(23.7).set_prec(160), 160).unwrap().sum;
+        assert!(v.overlaps(&w), "{v:?} vs {w:?}");
     }
 
     #[test]
