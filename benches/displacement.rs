@@ -12,6 +12,7 @@
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use maugis::contact::displacement::{du_wave, du_wave_bounded, u_wave, u_wave_bounded, u_wave_mp, u_wave_series_mp, WaveBessel};
+use maugis::contact::displacement::bounded::wave_scratch_misses;
 use maugis::contact::displacement::quadrature::u_wave_quad;
 use maugis::special::exact;
 
@@ -111,6 +112,26 @@ fn bench_wave_f64_domain(c: &mut Criterion) {
     );
 }
 
+/// `u_wave_bounded` from scratch (the one-pass bounded route: both values and
+/// their bounds per call) point by point over a grid of the model domain,
+/// `a in {0.5, 1.5, 3, 4.5, 6}` x `x/a in {1, 2, 3}`, `zeta = 9/8`: the
+/// per-value time at each point (report min / median / max over the grid),
+/// and the calls the route handed on (must be 0).
+fn bench_wave_bounded_grid(c: &mut Criterion) {
+    let before = wave_scratch_misses();
+    let mut g = c.benchmark_group("wave_bounded_grid");
+    for &a in &[0.5, 1.5, 3.0, 4.5, 6.0] {
+        for &r in &[1.0, 2.0, 3.0] {
+            let x = a * r;
+            g.bench_function(format!("u_wave_bounded/a={a}/x_over_a={r}"), |b| {
+                b.iter(|| u_wave_bounded(black_box(a), BETA, 1.0, black_box(x)).unwrap())
+            });
+        }
+    }
+    g.finish();
+    eprintln!("wave_bounded_grid: calls handed on by the one-pass route: {}", wave_scratch_misses() - before);
+}
+
 fn bench_quadrature(c: &mut Criterion) {
     let mut g = c.benchmark_group("eq11a_quadrature_f64");
     for &abar in &ABARS {
@@ -125,6 +146,6 @@ fn bench_quadrature(c: &mut Criterion) {
 criterion_group! {
     name = benches;
     config = Criterion::default().sample_size(10).warm_up_time(std::time::Duration::from_millis(300)).measurement_time(std::time::Duration::from_secs(1));
-    targets = bench_eq12, bench_bessel_form, bench_wave_f64_domain, bench_quadrature
+    targets = bench_eq12, bench_bessel_form, bench_wave_f64_domain, bench_wave_bounded_grid, bench_quadrature
 }
 criterion_main!(benches);

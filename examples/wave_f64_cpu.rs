@@ -7,7 +7,7 @@
 //! less than wall time; criterion's `wave_f64_domain` group gives wall times.
 //!
 //!     cargo run --release --example wave_f64_cpu [s|p|v<a>]    (s: scratch only, p: precomputed only,
-//!     v<a>: 6400 calls of u_wave at contact size a, for callgrind)
+//!     v<a> / b<a>: 64 REPS calls of u_wave / u_wave_bounded at contact size a, for callgrind)
 
 use maugis::contact::displacement::{du_wave, u_wave, u_wave_bounded, WaveBessel};
 fn cpu_ns() -> f64 {
@@ -15,11 +15,18 @@ fn cpu_ns() -> f64 {
 }
 fn main() {
     let mode = std::env::args().nth(1).unwrap_or_default();
-    if let Some(a) = mode.strip_prefix('v').and_then(|a| a.parse::<f64>().ok()) {
-        // `v<a>`: u_wave only, 64 points x 100 at one a (for callgrind)
+    // `v<a>` / `b<a>`: u_wave / u_wave_bounded only, 64 points x REPS (default 100)
+    // at one a (for callgrind: the difference of two REPS is the cost per call)
+    let bounded = mode.starts_with('b');
+    if let Some(a) = mode.strip_prefix(['v', 'b']).and_then(|a| a.parse::<f64>().ok()) {
+        let reps: usize = std::env::var("REPS").ok().and_then(|v| v.parse().ok()).unwrap_or(100);
         let mut s = 0.0;
         let xs: Vec<f64> = (0..64).map(|i| a * (1.0 + 2.0 * (i as f64 * 0.754877666246693).fract())).collect();
-        for _ in 0..100 { for &x in &xs { s += u_wave(a, 1.125, 1.0, x).unwrap(); } }
+        for _ in 0..reps {
+            for &x in &xs {
+                s += if bounded { u_wave_bounded(a, 1.125, 1.0, x).unwrap().value } else { u_wave(a, 1.125, 1.0, x).unwrap() };
+            }
+        }
         println!("{s}");
         return;
     }

@@ -20,8 +20,10 @@
 //!    evaluation of `f` on that box in *analytic* mode gives `M`, and a finite answer
 //!    proves holomorphy there (every branch cut is checked by [`super::HoloBall`]).
 //!    `X` runs over `2, 4, 8, 32, 512, ...` (Arb's ladder); for each the smallest
-//!    degree from [`DEGREES`] that meets the tolerance is a candidate, and the
-//!    smallest candidate wins (the cost is the number of evaluations).
+//!    degree from [`DEGREES`] (Arb's ladder with a rung between each two) whose bound
+//!    is [`DEGREE_MARGIN_BITS`] below the tolerance is a candidate, and the smallest
+//!    candidate wins (the cost is the number of evaluations). The choice only sets the
+//!    cost: the bound of the degree taken is the one added.
 //!    We bound `(rho - 1) rho^(2n-1) >= 0.7 rho^(2n)` (valid for `rho >= 3.7`, i.e.
 //!    `X >= 2`), so the bound added is `6.1 M / rho^(2n)` with `rho` rounded down.
 //!    Where the box's evaluation is not finite and high degrees are at stake, `M`

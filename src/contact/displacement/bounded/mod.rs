@@ -128,13 +128,19 @@
 //! Exact products are fused multiply-adds where the CPU has them (detected at
 //! run time, as in `native.rs`), else Dekker's; both are exact.
 //!
-//! # The value path (estimate)
+//! # From scratch: one pass (value, and value with a proven bound)
 //!
-//! `u_wave` / `du_wave` from scratch do not build these certified data: the
-//! submodule `value` runs one compensated f64 Miller recurrence with both sums
-//! in the same loop (about 5x fewer instructions than the per-contact data
-//! here). Its error is an estimate, enforced by tests/wave_value.rs (method
-//! block in `value.rs`).
+//! `u_wave` / `du_wave` and `u_wave_bounded` / `du_wave_bounded` from scratch
+//! do not build these per-contact data: the submodule `value` runs one
+//! compensated f64 Miller recurrence with the sums in the same loop. As a
+//! value its error is an estimate (tests/wave_value.rs); with the running
+//! error bound of the recurrence alongside (the proof is the method block of
+//! `value.rs`: the local error of the compensated step, propagated by the
+//! triangle-inequality chain; Miller's start error by Nicholson's formula) it
+//! returns a proven bound, in 3.2k-6.9k instructions per call over the model
+//! domain (the per-contact route here: 9.8k-31.8k). Where that bound exceeds
+//! `2^-50` of the scales (`D` beyond about 40) the `*_bounded` functions use
+//! the per-contact data here; [`wave_scratch_misses`] counts those calls.
 //!
 //! References: seed paper Eq. 12 and Appendix B.11; docs/displacement.md, Route 2;
 //! DLMF 10.2.2, 10.6.1, 10.12.4, 10.14.1, 10.14.4; Dekker (1971); Hida, Li, Bailey (2007);
@@ -179,13 +185,29 @@ const NATIVE_J_ERR_MAX: f64 = 8.673_617_379_884_035e-19; // 2^-60
 const TWO_PI_ERR: f64 = 3.0e-32;
 
 mod value;
-pub(crate) use value::wave_value;
+pub(crate) use value::{wave_scratch_bounded, wave_value};
 
 /// How many `u_wave_bounded` / `du_wave_bounded` / `WaveBessel::eval_bounded`
 /// calls (per x) fell back to the MP path since the process started.
 #[deprecated(note = "use `maugis::special::fallback_counts().wave_bounded`: one snapshot of every counter")]
 pub fn wave_bounded_fallbacks() -> u64 {
     crate::special::fallback_counts().wave_bounded
+}
+
+static SCRATCH_MISSES: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+
+/// How many `u_wave_bounded` / `du_wave_bounded` calls since the process
+/// started did not take the one-pass bounded route from scratch (no FMA,
+/// `x/a > 25/7`, `D` beyond the table, or its bound above `2^-50` of the
+/// scales) and went to the per-contact certified data (or MP, counted in
+/// `maugis::special::fallback_counts().wave_bounded`). Not an MP fallback,
+/// so not part of `fallback_counts()`.
+pub fn wave_scratch_misses() -> u64 {
+    SCRATCH_MISSES.load(std::sync::atomic::Ordering::Relaxed)
+}
+
+pub(crate) fn count_scratch_miss() {
+    SCRATCH_MISSES.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
 }
 
 /// How many times the per-contact Bessel data of the bounded path were built
