@@ -11,6 +11,7 @@ error bound, ``prec=`` returns certified arbitrary-precision balls)::
                               all k = 0..kmax at one argument, float64 with bounds
     u_wave(a, zeta, amp, x)   wave displacement u_w (Eq. 12)
     du_wave(a, zeta, amp, x)  its gradient (Eq. 11b)
+    fallback_counts()         how often the float64 routes fell back to the MP path
 
 Certified integrals of an expression in x (``prec=`` bits; ``b`` may be inf)::
 
@@ -29,7 +30,7 @@ The model (results carry the fields of the ``maugis`` command's JSON)::
 Bad input raises ``ValueError`` with the library's message. See docs/python.md.
 """
 
-from ._maugis import MAX_PREC, PARALLEL_MIN_LEN
+from ._maugis import MAX_PREC, PARALLEL_MIN_LEN, fallback_counts
 from ._model import (
     DEFAULT_DATUM,
     FIG4C_ALPHA,
@@ -64,6 +65,7 @@ __all__ = [
     "hyp1f2_model_family",
     "u_wave",
     "du_wave",
+    "fallback_counts",
     "integrate",
     "run_summary",
     "sweep",

@@ -607,6 +607,25 @@ fn _native_loop_seconds(py: Python<'_>, function: &str, n: PyReadonlyArray1<'_, 
 }
 
 /// The compiled module.
+/// How many times each f64 route fell back to the certified MP path since the
+/// process started (`maugis::special::fallback_counts`), as a dict of ints.
+#[pyfunction]
+fn fallback_counts(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
+    let c = maugis::special::fallback_counts();
+    let out = PyDict::new(py);
+    for (key, n) in [
+        ("bessel_j", c.bessel_j),
+        ("hyp1f2", c.hyp1f2),
+        ("hyp2f1", c.hyp2f1),
+        ("meijer_g_k", c.meijer_g_k),
+        ("wave_bounded", c.wave_bounded),
+        ("wave_bounded_mp_contacts", c.wave_bounded_mp_contacts),
+    ] {
+        out.set_item(key, n)?;
+    }
+    Ok(out)
+}
+
 #[pymodule]
 fn _maugis(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(signature, m)?)?;
@@ -618,6 +637,7 @@ fn _maugis(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(states_json, m)?)?;
     m.add_function(wrap_pyfunction!(sweep_json, m)?)?;
     m.add_function(wrap_pyfunction!(profile_dict, m)?)?;
+    m.add_function(wrap_pyfunction!(fallback_counts, m)?)?;
     simulate::register(m)?;
     m.add_function(wrap_pyfunction!(_native_loop_seconds, m)?)?;
     m.add("PARALLEL_MIN_LEN", PARALLEL_MIN_LEN)?;

@@ -298,3 +298,17 @@ def test_prec_wave_matches_bessel_form():
     mid, rad = maugis.u_wave(6, 1.125, 1, 6.006, prec=128)
     with mpmath.workdps(50):
         assert abs(mid - u_wave_ref(6, 1.125, 1, 6.006)) <= rad + mpmath.mpf(10) ** -44
+
+
+def test_fallback_counts_snapshot_every_route_and_count_2f1():
+    keys = {"bessel_j", "hyp1f2", "hyp2f1", "meijer_g_k", "wave_bounded", "wave_bounded_mp_contacts"}
+    before = maugis.fallback_counts()
+    assert set(before) == keys and all(isinstance(v, int) and v >= 0 for v in before.values())
+    # points next to z = 1 and with large parameters where the native float64 path does not
+    # certify (at least one of them falls back: the Rust test f64_mp_fallbacks_are_counted)
+    a, b, c, z = zip((40.5, -35.25, 2.5, 0.999), (100.5, 90.25, 1.5, -0.99), (-60.5, 70.25, 0.75, 0.9999), (1.0e3, 1.5, 2.25, -0.999))
+    value, err = maugis.hyp2f1(np.array(a), np.array(b), np.array(c), np.array(z), bounded=True)
+    assert np.all(np.isfinite(value)) and np.all(err >= 0)
+    after = maugis.fallback_counts()
+    assert after["hyp2f1"] >= before["hyp2f1"] + 1
+    assert all(after[k] >= before[k] for k in keys)
