@@ -1,5 +1,5 @@
 """Shared output of the side-by-side bench scripts (bench_arb_bessel.py,
-bench_arb_hyp1f2.py): the provenance footer, and writing a markdown table
+bench_arb_hyp1f2.py, bench_arb_hyp1f2_grid.py, bench_f64_targets.py): the provenance footer, and writing a markdown table
 below a marker line so that the prose above it survives a rerun."""
 
 import os
