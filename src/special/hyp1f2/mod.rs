@@ -355,6 +355,16 @@ pub fn hyp1f2(a: f64, b1: f64, b2: f64, z: f64) -> Result<f64> {
     hyp_pfq(&[a], &[b1, b2], z)
 }
 
+/// `L`, about `ln(sum_n |t_n| / |F_k(-x^2)|)` for the model family's series at
+/// `z = -x^2` (`sum |t_n| = 1F2(1/2; k+1, k+3/2; x^2) ~ Gamma(k+1) Gamma(k+3/2)
+/// e^{2x}/(2 sqrt(pi) x^{2k+3/2})` [DLMF 16.11.7], `F_k ~ (2k+1)/(2x)`), with
+/// Stirling's `ln Gamma(k+1) + ln Gamma(k+3/2) ~ 2 ((k+1) ln(k+1) - (k+1)) + ln(2 pi)`.
+/// It only chooses a route (a wrong guess costs time, never a bound).
+fn family_cancellation_ln(k: u32, x: f64) -> f64 {
+    let k1 = k as f64 + 1.0;
+    2.0 * x - (2.0 * k1 - 0.5) * x.ln() + 2.0 * (k1 * k1.ln() - k1) + 1.84 + (x / (k1 - 0.5)).ln() - 1.27
+}
+
 /// The f64 series, else the double-double series (`dd.rs`), if
 /// either bound is at most [`NATIVE_REL_TOL`] relative.
 fn hyp1f2_native_or_dd(a: f64, b1: f64, b2: f64, z: f64, rel_tol: f64) -> Option<Bounded> {
@@ -365,13 +375,20 @@ fn hyp1f2_native_or_dd(a: f64, b1: f64, b2: f64, z: f64, rel_tol: f64) -> Option
     let family = model_family_index_f64(a, b1, b2);
     if let (Some(k), true) = (family, z < 0.0) {
         let x = (-z).sqrt();
+        // the double-word series first where its bound (about 25 u^2 N e^L of the
+        // value, N ~ 100 terms) stays near 1e-15: it is the cheaper route there
+        if (k as f64) < x - 2.0 && family_cancellation_ln(k, x) <= 31.0 {
+            if let Some(b) = dd::family_series_dd(k, z).and_then(|v| v.finish()).and_then(accept) {
+                return Some(b);
+            }
+        }
         if (4 * k as u64) as f64 <= 2.0 * x && z < -BESSEL_F64_MIN_X2 {
             if let Some(b) = bessel_f64::model_family_bessel_f64(k, z).and_then(accept) {
                 return Some(b);
             }
         }
         if (k as f64) < x - 2.0 {
-            return dd::hyp1f2_series_dd(a, b1, b2, z)?.finish().and_then(accept);
+            return dd::family_series_dd(k, z)?.finish().and_then(accept);
         }
     }
     native_series_bounded(a, b1, b2, z)
@@ -395,16 +412,18 @@ pub fn hyp1f2_native_bounded(a: f64, b1: f64, b2: f64, z: f64, rel_tol: f64) -> 
 }
 
 /// `1F2(a; b1, b2; z)` in f64 with a proven error bound for the f64 inputs as given:
-/// for the model family `1F2(1/2; k+1, k+3/2; -s^2)` at `s >= 17`, `k <= s/2`, the
+/// for the model family `1F2(1/2; k+1, k+3/2; -s^2)` at `k < s - 2` where the
+/// series' cancellation allows it, the double-word series with an a-priori bound
+/// (`dd.rs`, `family_series_dd`); then at `s >= 17`, `k <= s/2`, the
 /// Bessel route in double words (`bessel_f64.rs`); else the native series
 /// (`native_series_bounded`) when its bound is at most [`NATIVE_REL_TOL`]
 /// relative (skipped for the family at `k < s - 2`, where it cannot be), else
 /// the same series in double-double (cancellation: large negative `z` against the
 /// parameters); otherwise the certified MP value at 64 bits, counted by
 /// [`crate::special::fallback_counts`] (none over the family at `k <= 1000`, `s <= 35`:
-/// `examples/hyp1f2_f64_cpu.rs`, 0.60 us per value on average over `k` in
-/// {0, 1, 2, 5, 10, 50, 200, 1000}, at most 0.95 us for any of them, CPU time at
-/// load 5.8; it was 28 us with MP fallbacks).
+/// `reference/bench_f64_targets.py`: at most 0.89 us at any of the 512 points of
+/// issue 23's table, `k` in {0, 1, 2, 5, 10, 50, 200, 1000}, CPU time at load 6.5;
+/// it was 28 us per value on average with MP fallbacks).
 pub fn hyp1f2_bounded(a: f64, b1: f64, b2: f64, z: f64) -> Result<Bounded> {
     for (v, what) in [(a, "a"), (b1, "b1"), (b2, "b2"), (z, "z")] {
         crate::error::finite(v, what)?;
