@@ -37,10 +37,11 @@
 //!
 //! with `|d|` the magnitude `|d.hi| + |d.lo|`. **Terms.** Let `E_n = |t~_n - t_n|`.
 //! Then `E_{n+1} <= |t~_n| |rho~_n - rho_n| + |rho_n| E_n + C_MUL |t~_n| |rho~_n|
-//! <= 24 u^2 |t~_n| |rho~_n| + |rho_n| E_n`, and `|t~_n| |rho~_n| <= (1 + 5u) |t~_{n+1}|`,
-//! `|rho_n| <= (1 + 16 u^2) |rho~_n|`. By induction `E_n <= n kappa |t~_n|` with
-//! `kappa = 25 u^2`: the step needs `24 (1 + 5u) + 150 (n - 1) u <= 25`, true for
-//! `n <= 2^40` (the loop stops at [`MAX_TERMS`]). **Sum.** The additions add at most
+//! <= 24 u^2 |t~_n| |rho~_n| + |rho_n| E_n`, and `|t~_n| |rho~_n| <= (1 + 7u) |t~_{n+1}|`
+//! (the product's high part is `fl(p + e)`, `|e| <= 3u |p|`), `|rho_n| <= (1 + 16 u^2) |rho~_n|`.
+//! By induction `E_n <= n kappa |t~_n|` with `kappa = 25 u^2`: the step from `n` to
+//! `n + 1` needs `24 (1 + 7u) + 200 n u <= 25`, true for `n <= 2^44` (the loop stops
+//! at [`MAX_TERMS`]). **Sum.** The additions add at most
 //! `C_ADD (B + A)` with `A = sum_n |t~_n|`, `B = sum_n |s~_{n-1}|` (both summed in
 //! the loop, in f64), so after the terms `0..N-1`
 //! `|s~ - sum_{n<N} t_n| <= kappa (N - 1) A + C_ADD (A + B)`. **Tail** as above, with
