@@ -16,6 +16,9 @@
 //!
 //! (docs/fuzzing.md records the campaigns run and their counts).
 
+#[path = "common/fuzz_real.rs"]
+mod fuzz_real;
+
 use bolero::check;
 use maugis::ball::Decimal;
 use maugis::contact::curve::{load_area_curve, state, CurveOptions};
@@ -34,12 +37,7 @@ const EDGES: [f64; 24] = [
 /// An f64 from 64 random bits: a raw bit pattern, a domain edge, a small
 /// multiple of 1/8, or a value of moderate size.
 fn real(bits: u64) -> f64 {
-    match bits >> 62 {
-        0 => f64::from_bits(bits),
-        1 => EDGES[(bits % EDGES.len() as u64) as usize],
-        2 => ((bits % 4001) as f64 - 2000.0) / 8.0,
-        _ => (bits >> 11) as f64 / (1u64 << 53) as f64 * 40.0 - 10.0,
-    }
+    fuzz_real::real_with(bits, &EDGES)
 }
 
 /// Bits whose [`real`] is NaN, infinite or at most `1e4` in magnitude (larger

@@ -29,6 +29,9 @@
 //! subnormal `beta` (a NaN profile), table rows too close for their rise (a NaN
 //! slope), and `ProfileTable::depth_at(NaN)` (an index underflow: a panic).
 
+#[path = "../../tests/common/fuzz_real.rs"]
+mod fuzz_real;
+
 use bolero::check;
 use maugis_solver::contact::State;
 use maugis_solver::elastic::HalfPlane;
@@ -46,12 +49,7 @@ const EDGES: [f64; 22] = [
 /// An f64 from 64 random bits: a raw bit pattern, a domain edge, a small
 /// multiple of 1/8, or a value of moderate size.
 fn real(bits: u64) -> f64 {
-    match bits >> 62 {
-        0 => f64::from_bits(bits),
-        1 => EDGES[(bits % EDGES.len() as u64) as usize],
-        2 => ((bits % 4001) as f64 - 2000.0) / 8.0,
-        _ => (bits >> 11) as f64 / (1u64 << 53) as f64 * 40.0 - 10.0,
-    }
+    fuzz_real::real_with(bits, &EDGES)
 }
 
 /// A positive parameter of moderate size (the physical range), or an edge.
