@@ -212,7 +212,7 @@ def main():
     ]
     for k, label, t, ours in meijer_rows:
         lines.append(f"| {k} | {label[2:]} | {fmt_s(t) if t else '-'} | {fmt_s(ours)} |")
-    lines.append(footer("bench_mpmath.py", "mpmath in this process, maugis from criterion"))
+    lines += ["", footer("bench_mpmath.py", "mpmath in this process, maugis from criterion")]
     # only the block between the markers: the rest of the file is other scripts' and prose
     write_between_markers(str(out), BEGIN, END, "\n".join(lines))
     print(f"wrote {out}", file=sys.stderr)
