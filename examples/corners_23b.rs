@@ -26,6 +26,30 @@ fn main() {
                 println!("e {e:e} wp {wp}: {r:?} [{:.3} s]", t1.elapsed().as_secs_f64());
             }
         }
+    } else if which == "seqrad" {
+        // radius of the ball downward recurrence against D and wp (issue 23j item 1)
+        use maugis::special::bessel_j::{bessel_j_sequence_mp, bessel_j_sequence_three_term};
+        for d in [10.0f64, 100.0, 1000.0, 2000.0, 6283.185307179586] {
+            for wp in [128u32, 512, 2048] {
+                let x = maugis::rug::Float::with_val(53, d);
+                let nmax = d as u64 + 60;
+                let t1 = Instant::now();
+                let seq = bessel_j_sequence_mp(nmax, &x, wp);
+                let secs = t1.elapsed().as_secs_f64();
+                let Ok(seq) = seq else { println!("D {d} wp {wp}: {seq:?}"); continue };
+                let lr = |b: &maugis::Ball| b.rad_mag().log2();
+                let worst = seq.iter().map(lr).fold(f64::NEG_INFINITY, f64::max);
+                println!("D {d:7.1} wp {wp:5}: log2 rad at n=0 {:8.1}, n=D/2 {:8.1}, n=nmax {:8.1}; max {:8.1}; (max + wp)/D = {:.3}  [{secs:.3} s]",
+                    lr(&seq[0]), lr(&seq[(d / 2.0) as usize]), lr(&seq[nmax as usize]), worst, (worst + wp as f64) / d);
+                let t2 = Instant::now();
+                let new = bessel_j_sequence_three_term(nmax, &x, wp).unwrap();
+                let secs = t2.elapsed().as_secs_f64();
+                let worst = new.iter().map(lr).fold(f64::NEG_INFINITY, f64::max);
+                let apart = seq.iter().zip(&new).filter(|(a, b)| !a.overlaps(b)).count();
+                println!("    midpoint route: n=0 {:8.1}, n=D/2 {:8.1}, n=nmax {:8.1}; max {:8.1} (max + wp = {:.1}); disjoint from ball route at {apart}  [{secs:.3} s]",
+                    lr(&new[0]), lr(&new[(d / 2.0) as usize]), lr(&new[nmax as usize]), worst, worst + wp as f64);
+            }
+        }
     } else if which == "load" {
         let d = |s: &str| Decimal::parse(s).unwrap();
         let r = load_at_decimals(&[d("2.5"), d("2.5"), d("0.001"), d("1")], prec);
@@ -43,6 +67,20 @@ fn main() {
                 println!("input prec {ip} {name}: {r:?}");
             }
         }
+    } else if which == "loadtrace" {
+        // each call of load_at_decimals' closure: input precision, root ball, load ball, time
+        use maugis::contact::model_mp::load_ball_mp;
+        let d = |s: &str| Decimal::parse(s).unwrap();
+        let r = eval_at_decimals(&[d("2.5"), d("2.5"), d("0.001"), d("1")], prec, |b| {
+            let t1 = Instant::now();
+            let inputs = ModelBalls::new(b[0].clone(), b[1].clone(), b[2].clone(), b[3].clone())?;
+            let m = solve_m_ball_mp(&inputs, prec + 32);
+            let tm = t1.elapsed().as_secs_f64();
+            let r = m.clone().and_then(|m| load_ball_mp(&inputs, &m, prec));
+            println!("  input prec {} -> m {m:?} [{tm:.3} s], load {r:?} [{:.3} s]", b[2].prec(), t1.elapsed().as_secs_f64());
+            r
+        });
+        println!("load trace {prec}: {r:?} [{:.3} s]", t.elapsed().as_secs_f64());
     } else if which == "trace" {
         // each call of eval_at_decimals' closure: input precision, result, time
         let d = |s: &str| Decimal::parse(s).unwrap();

@@ -423,7 +423,7 @@ pub fn load_ball_mp(inputs: &ModelBalls, m: &Ball, prec: u32) -> Result<Ball> {
 /// Eq. 14 for a ball of `e = m - 1`, with `sqrt(m^2 - 1) = sqrt(e (e + 2))`.
 fn load_from_m_minus_1(inputs: &ModelBalls, e: &Ball, prec: u32) -> Result<Ball> {
     check_prec(prec)?;
-    let wp = prec + 16;
+    let wp = prec + LOAD_GUARD_BITS + wave_load_guard(inputs);
     if e.upper() < 0 {
         return Err(e.out_of_range("m - 1", Interval::at_least(0.0)));
     }
@@ -444,6 +444,30 @@ fn load_from_m_minus_1(inputs: &ModelBalls, e: &Ball, prec: u32) -> Result<Ball>
         pi.sqr().mul(&alpha).mul(&a).div(&beta)?.mul(&j1)
     };
     Ok(hertz.sub(&adhesive).add(&wave))
+}
+
+/// Guard bits of [`load_from_m_minus_1`] beyond its wave term.
+const LOAD_GUARD_BITS: u32 = 16;
+
+/// Extra guard bits for the wave term of Eq. 14, `(pi^2 alpha abar/beta) J1(D)`,
+/// `D = 2 pi abar/beta`: the roundings in `D` (relative `2^-wp`) reach the load
+/// as `|J1'| D 2^-wp <= D 2^-wp` times the prefactor, against the Hertz load
+/// `pi abar^2/4` that the accuracy is measured on. So about
+/// `log2(pi^2 |alpha| abar/beta (D + 1) / (pi abar^2/4))` bits, from the
+/// midpoints in f64 (an estimate that only sets the working precision; the
+/// ball arithmetic carries the proof). At beta = 0.001 that is 33 bits; before,
+/// the load at 53 bits never met its tolerance and `eval_at_decimals` raised
+/// the input precision to its cap (over 60 s).
+fn wave_load_guard(inputs: &ModelBalls) -> u32 {
+    let [alpha, beta, a] = [&inputs.alpha, &inputs.beta, &inputs.abar].map(|v| v.mid().to_f64().abs());
+    let pi = std::f64::consts::PI;
+    let d = 2.0 * pi * a / beta;
+    let ratio = pi * pi * alpha * a / beta * (d + 1.0) / (pi * a * a / 4.0);
+    if ratio.is_finite() && ratio > 1.0 {
+        ratio.log2().ceil().min(4096.0) as u32
+    } else {
+        0
+    }
 }
 
 /// Eq. 14 in ball arithmetic for a strip ratio known as a ball; the parameters

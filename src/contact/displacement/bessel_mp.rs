@@ -13,7 +13,7 @@ use rug::Float;
 
 use crate::ball::{Ball, MAG_PREC};
 use crate::error::{Error, Interval, Result};
-use crate::special::bessel_j::bessel_j_sequence_mp;
+use crate::special::bessel_j::{bessel_j_sequence_mp, bessel_j_sequence_three_term, MAX_SEQUENCE_ORDER};
 use crate::special::{ziv_up_to, DEFAULT_GUARD_BITS};
 use crate::MAX_WORKING_PREC;
 
@@ -123,6 +123,10 @@ fn wave_bessel_geometry(g: &WaveGeometry, wp: u32) -> Result<(Ball, Ball)> {
         let mut v = vec![Ball::zero(wp); 2 * n_terms as usize + 1];
         v[0] = Ball::one(wp);
         v
+    } else if 2 * n_terms <= MAX_SEQUENCE_ORDER as u64 {
+        // Midpoint recurrence with one proven bound: radii near 2^-wp D^2, where the
+        // ball recurrence widens by about 0.67 D bits (issue 23).
+        bessel_j_sequence_three_term(2 * n_terms, &d_mid, wp)?
     } else {
         bessel_j_sequence_mp(2 * n_terms, &d_mid, wp)?
     };

@@ -71,7 +71,7 @@ pub(crate) use native_hankel::{bessel_j01, HANKEL_MAX_X, HANKEL_MIN_X};
 pub(crate) use native_recurrence::forward_sequence;
 pub(crate) use native_series::{inv_factorials, MAX_TABLE_FACTORIAL, TABLE_ETA};
 pub use series::{bessel_j_series, bessel_j_series_pfq};
-pub use three_term::bessel_j_three_term;
+pub use three_term::{bessel_j_sequence_three_term, bessel_j_three_term};
 
 
 use rug::float::Round;
