@@ -58,24 +58,59 @@
 //!
 //! (`J_k > 0` for `k > x`; `rho_k -> 0` as `k -> inf`, and `rho_{k+1} <= 1`
 //! gives `rho_k <= x/(2k - x) <= 1`: downward induction). Also
-//! `rho_k >= x/(2k)`. The ratios are run backward from `r~_{N+1} = 1/2`
-//! (`|r~_{N+1} - rho_{N+1}| <= 1/2`). For `a, b` in `[0, 1]` and `k >= x + 1`,
-//! `|x/(2k - xa) - x/(2k - xb)| <= R_k^2 |a - b|`, `R_k = x/(2k - x) < 1`
-//! (decreasing in `k`).
+//! `rho_k >= x/(2k)`. For `a, b` in `[0, 1]` and `k >= x + 1`,
+//! `f_k(a) = x/(2k - xa)` is increasing, `f_k(a) <= f_k(1) = R_k`,
+//! `R_k = x/(2k - x) < 1` (decreasing in `k`), and
+//! `|f_k(a) - f_k(b)| <= R_k^2 |a - b|`.
 //!
 //! The ratios are not divided out: the backward recurrence
 //! `y~_{k-1} = fl(fl(k c~) y~_k - y~_{k+1})` runs on bare midpoints from
-//! `y~_{N+1} = 0`, `y~_N = 1`, and `r~_k = y~_k / y~_{k-1}` (exact quotients of
-//! the computed numbers) telescope: `prod_{k=m+2}^n r~_k = y~_n / y~_{m+1}`.
+//! `y~_{N+1} = 0`, `y~_N = 1` (so `r~_{N+1} = 0` and
+//! `eps_{N+1} = |r~_{N+1} - rho_{N+1}| <= 1`), and `r~_k = y~_k / y~_{k-1}`
+//! (exact quotients of the computed numbers) telescope:
+//! `prod_{k=m+2}^n r~_k = y~_n / y~_{m+1}`.
 //! Dividing a step by `y~_k`: `1/r~_k = ((2k/x)(1 + phi) - r~_{k+1})(1 + theta)`,
 //! `|phi| <= 2.01u`, `|theta| <= u`; as `2k/(2k - x r) <= 2` for `k >= x`,
-//! `r~_k = x/(2k - x r~_{k+1}) (1 + eta)` with `|eta| <= 7.1u`, and `r~_k` stays
-//! in `(0, 1)`. So `eps_k = |r~_k - rho_k| <= C_k + 7.1u / (1 - R_k^2)`
-//! (`eps_{N+1} <= 1`), `C_k = prod_{j=k}^N R_j^2 <= C_n` for `k <= n`. A factor's
-//! relative error is `eta_k <= eps_k 2k/x` (`rho_k >= x/(2k)`); with the one
-//! final division, `|ln(P~/P)| <= L = 2 sum eta_k + u` (all terms `<= 1/2`),
-//! and `|P~ - P| <= 2 L P~` for `L <= 1/2`. `N` is chosen (f64 walk) so that
-//! `C_n` is below `2^-wp` over the number of factors.
+//! `r~_k = f_k(r~_{k+1}) (1 + eta)` with `|eta| <= 7.1u`, and `r~_k` stays
+//! in `(0, 1)` (`7.1u x < 2`, implied by the check `L <= 1/2` below). So
+//! `eps_k <= R_k^2 eps_{k+1} + 7.1u R_k`, and unrolled (the `R_j` decrease)
+//! `eps_k <= C_k + 7.1u R_k / (1 - R_k^2)`, `C_k = prod_{j=k}^N R_j^2 <= C_n`
+//! for `k <= n`. A factor's relative error is `eta_k <= eps_k 2k/x`
+//! (`rho_k >= x/(2k)`), and `(2k/x) R_k / (1 - R_k^2) = (2k - x)/(2(k - x))`.
+//! With the one final division, `|ln(P~/P)| <= L = 2 sum eta_k + u` (all
+//! terms `<= 1/2`), and `|P~ - P| <= 2 L P~` for `L <= 1/2`
+//! (`e^L - 1 <= 2L` there). `N` is chosen (f64 walk) so that `C_n` is below
+//! `2^-wp` over the number of factors; the sum `A = sum (2k - x)/(2(k - x))` is
+//! about `(n - x) + (x/2) ln(n - x)`.
+//!
+//! # Sequences: `J_0(x), ..., J_nmax(x)` ([`bessel_j_sequence_three_term`])
+//!
+//! The same two runs, keeping every value (`x > 0`, `m` the largest integer
+//! below `x`, or 0):
+//!
+//! * `J_0`, `J_1`: certified by [`super`] (relative `2^-wp`).
+//! * `2 <= i <= min(m, nmax)`: the forward run to `t = min(m, nmax)`. The bound
+//!   above holds for every `t' <= t` with the same `E` (a bound on every
+//!   `|y~_k|` of the run), so `y~_i` gets the bound with `t = i`:
+//!   `(|e_0| + |e_1| + 2^-F + (i - 1)(i 2^(E-G) + 1) 2^-F)` times the growth at
+//!   `i`. It is largest next to the turning point, about `x^2 2^-wp`.
+//! * `J_{m+1}`: one ball step from `J_{m-1}`, `J_m` (`m >= 1`; `J_1` itself
+//!   when `x <= 1`).
+//! * `m + 2 <= k <= nmax`: one ratio walk from `N` (chosen for `n = nmax`) down
+//!   to `m + 1`, keeping `y~_k`. For each `k` the partial product
+//!   `y~_k / y~_{m+1} = prod_{j=m+2}^k r~_j` has `|ln(y~_k/y~_{m+1}) - ln(J_k/J_{m+1})|
+//!   <= L0 = 2 sum_{j=m+2}^{nmax} eta_j` (its `eta_j` are a subset of the
+//!   whole walk's, with `C_j <= C_nmax`). So
+//!   `J_k in (J_{m+1} / y~_{m+1}) y~_k [1 +- 2 L0]`: one ball division, then
+//!   one ball product per `k`.
+//!
+//! No radius is carried from step to step, so nothing grows like the ball
+//! recurrence's `~2^(0.67 x)` (the downward ball recurrence adds the radii of
+//! `(2n/x) J_n` and `J_{n+1}`: the growth of `|y_{n-1}| = (2n/x)|y_n| + |y_{n+1}|`,
+//! `exp(int_0^x asinh(n/x) dn) = e^(0.467 x)`, measured as `0.68 x` bits).
+//! Radii: at most `2^-wp` times about `x^2` absolute below the turning point,
+//! `x^{7/3}` relative at it, and `x^{7/3} + 28 A` relative past it (the
+//! tolerance table of `tests/bessel_sequence_mp.rs`).
 //!
 //! Cost: `max(n, x)` steps of three MPFR operations at `wp` bits plus two
 //! certified values at `x`: about 0.1 us per step at 200 bits.
@@ -274,7 +309,7 @@ fn ratio_walk(n: u64, m: u64, x: &Float, wp: u32, mut visit: impl FnMut(u64, &Fl
     let mut b = Float::with_val(wp, 1); // y~_k
     let mut s = Float::new(wp);
     let mut ck = Float::new(wp); // fl(k c~)
-    // sum over the product's range of (2k/x) / (1 - R_k^2) = (2k - x)^2 / (2x (k - x))
+    // sum over the product's range of (2k/x) R_k / (1 - R_k^2) = (2k - x) / (2 (k - x))
     let mut amp_sum = 0.0f64;
     let mut k = top - 1;
     loop {
@@ -282,7 +317,7 @@ fn ratio_walk(n: u64, m: u64, x: &Float, wp: u32, mut visit: impl FnMut(u64, &Fl
             visit(k, &b);
             if k >= m + 2 {
                 let kf = k as f64;
-                amp_sum += (2.0 * kf - xf) * (2.0 * kf - xf) / (2.0 * xf * (kf - xf));
+                amp_sum += (2.0 * kf - xf) / (2.0 * (kf - xf));
             }
         }
         if k == m + 1 {
