@@ -1,6 +1,7 @@
-//! Times two slow corners of issue 23: MP hyp1f2 at a parameter ~3.7e18, and
-//! `strip_ratio` at decimal inputs with beta "0.001".
-//! `cargo run --profile test --example corners_23b --features maugis/gmp-no-check -- [hyp|strip|trace|load|resid|resid192] [prec]`
+//! Times slow corners of issue 23: MP hyp1f2 at a parameter ~3.7e18, `strip_ratio`
+//! and `load` at decimal inputs with beta "0.001" (or as given), and the radius of
+//! the two certified J_n sequences against D (`seqrad`).
+//! `cargo run --profile test --example corners_23b --features maugis/gmp-no-check -- [hyp|strip|trace|load|loadtrace|resid|resid192|seqrad] [prec] [beta]`
 use maugis::ball::Decimal;
 use maugis::ball::eval_at_decimals;
 use maugis::contact::model_mp::{load_at_decimals, solve_m_ball_mp, strip_ratio_at_decimals, ModelBalls};
@@ -10,6 +11,9 @@ use std::time::Instant;
 fn main() {
     let which: String = std::env::args().nth(1).unwrap_or_default();
     let prec: u32 = std::env::args().nth(2).and_then(|s| s.parse().ok()).unwrap_or(53);
+    // beta as typed (load, strip, trace, loadtrace); "0.001" unless given
+    let beta_text: String = std::env::args().nth(3).unwrap_or_else(|| "0.001".to_string());
+    let beta = beta_text.as_str();
     let t = Instant::now();
     if which == "hyp" {
         let r = hyp1f2::hyp1f2_mp(&exact(3.7e18), &exact(20.03), &exact(-179.875), &exact(23.7), prec);
@@ -52,8 +56,8 @@ fn main() {
         }
     } else if which == "load" {
         let d = |s: &str| Decimal::parse(s).unwrap();
-        let r = load_at_decimals(&[d("2.5"), d("2.5"), d("0.001"), d("1")], prec);
-        println!("load(2.5, 2.5, \"0.001\", 1; {prec}) = {r:?}  [{:.3} s]", t.elapsed().as_secs_f64());
+        let r = load_at_decimals(&[d("2.5"), d("2.5"), d(beta), d("1")], prec);
+        println!("load(2.5, 2.5, \"{beta}\", 1; {prec}) = {r:?}  [{:.3} s]", t.elapsed().as_secs_f64());
     } else if which == "resid192" {
         use maugis::contact::model_mp::strip_residual_ball_mp;
         use maugis::Ball;
@@ -71,7 +75,7 @@ fn main() {
         // each call of load_at_decimals' closure: input precision, root ball, load ball, time
         use maugis::contact::model_mp::load_ball_mp;
         let d = |s: &str| Decimal::parse(s).unwrap();
-        let r = eval_at_decimals(&[d("2.5"), d("2.5"), d("0.001"), d("1")], prec, |b| {
+        let r = eval_at_decimals(&[d("2.5"), d("2.5"), d(beta), d("1")], prec, |b| {
             let t1 = Instant::now();
             let inputs = ModelBalls::new(b[0].clone(), b[1].clone(), b[2].clone(), b[3].clone())?;
             let m = solve_m_ball_mp(&inputs, prec + 32);
@@ -84,7 +88,7 @@ fn main() {
     } else if which == "trace" {
         // each call of eval_at_decimals' closure: input precision, result, time
         let d = |s: &str| Decimal::parse(s).unwrap();
-        let r = eval_at_decimals(&[d("2.5"), d("2.5"), d("0.001"), d("1")], prec, |b| {
+        let r = eval_at_decimals(&[d("2.5"), d("2.5"), d(beta), d("1")], prec, |b| {
             let t1 = Instant::now();
             let r = ModelBalls::new(b[0].clone(), b[1].clone(), b[2].clone(), b[3].clone()).and_then(|m| solve_m_ball_mp(&m, prec));
             println!("  input prec {} -> {r:?} [{:.3} s]", b[2].prec(), t1.elapsed().as_secs_f64());
@@ -93,7 +97,7 @@ fn main() {
         println!("strip_ratio trace {prec}: {r:?} [{:.3} s]", t.elapsed().as_secs_f64());
     } else {
         let d = |s: &str| Decimal::parse(s).unwrap();
-        let r = strip_ratio_at_decimals(&[d("2.5"), d("2.5"), d("0.001"), d("1")], prec);
-        println!("strip_ratio(2.5, 2.5, \"0.001\", 1; {prec}) = {r:?}  [{:.3} s]", t.elapsed().as_secs_f64());
+        let r = strip_ratio_at_decimals(&[d("2.5"), d("2.5"), d(beta), d("1")], prec);
+        println!("strip_ratio(2.5, 2.5, \"{beta}\", 1; {prec}) = {r:?}  [{:.3} s]", t.elapsed().as_secs_f64());
     }
 }
