@@ -54,6 +54,15 @@ fn main() {
                     lr(&new[0]), lr(&new[(d / 2.0) as usize]), lr(&new[nmax as usize]), worst, worst + wp as f64);
             }
         }
+    } else if which == "wave" {
+        // u_w and du_w at decimal inputs a = 1, zeta = beta, amp = 2.5, x = 1.5 (D = 2 pi/beta)
+        use maugis::contact::displacement::wave_at_decimals;
+        let d = |s: &str| Decimal::parse(s).unwrap();
+        for gradient in [false, true] {
+            let t1 = Instant::now();
+            let r = wave_at_decimals(&[d("1"), d(beta), d("2.5"), d("1.5")], prec, gradient);
+            println!("wave(gradient {gradient}; 1, \"{beta}\", 2.5, 1.5; {prec}) = {r:?}  [{:.3} s]", t1.elapsed().as_secs_f64());
+        }
     } else if which == "load" {
         let d = |s: &str| Decimal::parse(s).unwrap();
         let r = load_at_decimals(&[d("2.5"), d("2.5"), d(beta), d("1")], prec);
