@@ -180,3 +180,25 @@ fn bad_arguments_are_typed_errors() {
     assert_eq!(bessel_j_sequence_three_term(0, &x, 64).unwrap().len(), 1);
     assert_eq!(bessel_j_sequence_three_term(1, &x, 64).unwrap().len(), 2);
 }
+
+/// The model's use, end to end: the Bessel form of `u_w` at the contact edge
+/// `x = a` sums the whole sequence, `A (1 - J_0(D) - 2 sum (-1)^n J_2n(D))`,
+/// and must equal `A (1 - cos D)` [DLMF 10.12.3 at theta = pi/2], computed here
+/// by ball sine and cosine, for `D` up to 3e4 (beta = 0.001 is `D = 6283`).
+#[test]
+fn wave_edge_identity_at_large_d() {
+    use maugis::contact::displacement::u_wave_mp;
+    let amp = Float::with_val(53, 2.5);
+    for (a, zeta) in [(3.0, 0.03), (1.0, 0.001), (1.0, 2.0 * std::f64::consts::PI / 1e4), (0.5, 1e-4)] {
+        let (af, zf) = (Float::with_val(53, a), Float::with_val(53, zeta));
+        for prec in PRECS {
+            let u = u_wave_mp(&af, &zf, &amp, &af, prec).unwrap_or_else(|e| panic!("a = {a}, zeta = {zeta}, prec {prec}: {e:?}"));
+            let wp = prec + 64;
+            let d = Ball::pi(wp).mul(&Ball::from_float(&af, wp)).mul_pow2(1).div(&Ball::from_float(&zf, wp)).unwrap();
+            let edge = Ball::one(wp).sub(&d.sin_cos().1).mul(&Ball::from_float(&amp, wp));
+            assert!(u.overlaps(&edge), "a = {a}, zeta = {zeta}, prec {prec}: {u:?} vs A (1 - cos D) = {edge:?}");
+            let scale = Float::with_val(53, &amp);
+            assert!(u.meets_rel(prec) || u.meets_abs(prec, &scale), "a = {a}, zeta = {zeta}, prec {prec}: {u:?}");
+        }
+    }
+}
