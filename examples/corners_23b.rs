@@ -1,7 +1,7 @@
 //! Times slow corners of issue 23: MP hyp1f2 at a parameter ~3.7e18, `strip_ratio`
 //! and `load` at decimal inputs with beta "0.001" (or as given), and the radius of
 //! the two certified J_n sequences against D (`seqrad`).
-//! `cargo run --profile test --example corners_23b --features maugis/gmp-no-check -- [hyp|strip|trace|load|loadtrace|resid|resid192|seqrad] [prec] [beta]`
+//! `cargo run --profile test --example corners_23b --features maugis/gmp-no-check -- [hyp|strip|trace|load|loadtrace|resid|resid192|seqrad|seqtime|wave] [prec] [beta]`
 use maugis::ball::Decimal;
 use maugis::ball::eval_at_decimals;
 use maugis::contact::model_mp::{load_at_decimals, solve_m_ball_mp, strip_ratio_at_decimals, ModelBalls};
@@ -53,6 +53,25 @@ fn main() {
                 println!("    midpoint route: n=0 {:8.1}, n=D/2 {:8.1}, n=nmax {:8.1}; max {:8.1} (max + wp = {:.1}); disjoint from ball route at {apart}  [{secs:.3} s]",
                     lr(&new[0]), lr(&new[(d / 2.0) as usize]), lr(&new[nmax as usize]), worst, worst + wp as f64);
             }
+        }
+    } else if which == "seqtime" {
+        // CPU per call of the two certified sequences at the wave's nmax (D + 2 (D/2)^{1/3} wp^{2/3}-ish)
+        use maugis::special::bessel_j::{bessel_j_sequence_mp, bessel_j_sequence_three_term};
+        for d in [0.5f64, 2.5, 10.0, 75.0, 628.0, 6283.185307179586] {
+            let x = maugis::rug::Float::with_val(53, d);
+            let nmax = (d * 1.1) as u64 + 40;
+            let reps = (2000.0 / (d + 10.0)).ceil() as u32;
+            let t1 = Instant::now();
+            for _ in 0..reps {
+                std::hint::black_box(bessel_j_sequence_mp(nmax, &x, prec).unwrap());
+            }
+            let old = t1.elapsed().as_secs_f64() / reps as f64;
+            let t2 = Instant::now();
+            for _ in 0..reps {
+                std::hint::black_box(bessel_j_sequence_three_term(nmax, &x, prec).unwrap());
+            }
+            let new = t2.elapsed().as_secs_f64() / reps as f64;
+            println!("D {d:9.3} nmax {nmax:5} wp {prec}: ball route {:9.1} us, midpoint route {:9.1} us (ratio {:.2})", old * 1e6, new * 1e6, new / old);
         }
     } else if which == "wave" {
         // u_w and du_w at decimal inputs a = 1, zeta = beta, amp = 2.5, x = 1.5 (D = 2 pi/beta)
