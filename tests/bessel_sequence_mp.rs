@@ -202,3 +202,42 @@ fn wave_edge_identity_at_large_d() {
         }
     }
 }
+
+/// The ball recurrence's sequence, with its working precision raised (from
+/// `wp_ref`) until every ball is tighter than the one of `seq` it is checked
+/// against (past the turning point it loses more than `0.7 x` bits).
+fn tight_reference(seq: &[Ball], nmax: u64, x: &Float, mut wp_ref: u32) -> Vec<Ball> {
+    for _ in 0..4 {
+        let reference = bessel_j_sequence_mp(nmax, x, wp_ref).unwrap();
+        let short = seq.iter().zip(&reference).map(|(b, r)| r.rad_mag().log2() - b.rad_mag().log2()).fold(f64::NEG_INFINITY, f64::max);
+        if short <= 0.0 {
+            return reference;
+        }
+        wp_ref += short.ceil() as u32 + 64;
+    }
+    panic!("no tight reference at x = {x}, nmax = {nmax}");
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+    /// Random binary `x` (log-uniform over 2^-40 .. 2^14), `nmax` from 0 to
+    /// `1.5 x + 100`, `wp` from 40 to 700: the sequence contains the ball
+    /// recurrence's values run with enough more bits to be tighter, and the
+    /// table holds.
+    #[test]
+    fn random_points_enclose_the_ball_recurrence(log_x in -40.0f64..14.0, frac in 0.0f64..1.5, extra in 0u64..100, wp in 40u32..700) {
+        let x = 2f64.powf(log_x);
+        let nmax = (frac * x) as u64 + extra;
+        let xf = Float::with_val(53, x);
+        let seq = bessel_j_sequence_three_term(nmax, &xf, wp).unwrap();
+        let reference = tight_reference(&seq, nmax, &xf, wp + (0.7 * x) as u32 + 96);
+        let mut worst = Worst::new();
+        for (n, (b, r)) in seq.iter().zip(&reference).enumerate() {
+            proptest::prop_assert!(contains_ball(b, r), "x = {}, n = {}, wp = {}: {:?} does not contain {:?}", x, n, wp, b, r);
+            record(&mut worst, n as u64, x, nmax, b, wp);
+        }
+        for (region, (lost, allowed, at)) in &worst {
+            proptest::prop_assert!(lost <= allowed, "{}: {:.1} bits lost > {:.1} at {}", region, lost, allowed, at);
+        }
+    }
+}
