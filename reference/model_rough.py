@@ -21,6 +21,9 @@ import time
 import mpmath
 from mpmath import mp, mpf
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import generate  # noqa: E402  (the model's root search, shared with model_decimal)
+
 BITS = (450, 600)
 OUT_DIGITS = 100
 INPUTS = [("2.5", "2.5", "0.001", "1"), ("1", "0.3535533905932737622004221810524245196424", "0.001", "1.5")]
@@ -91,35 +94,21 @@ class Model:
 
 
 def first_root(args, bits, margin_factor):
-    """A scan of e on a geometric grid and bisection at 80 bits, then the secant
-    method at `bits`, and a sign change of F across the result at `bits`."""
-    mp.prec = 80
-    low = Model(args, margin_factor)
-    lo = hi = None
-    prev = mpf(0)
-    for i in range(2400):
-        e = mpf(10) ** -14 * mpf("1.02") ** i
-        if low.residual(e) > 0:
-            lo, hi = prev, e
-            break
-        prev = e
-    if hi is None:
-        raise ValueError("no sign change of F below e = %s" % e)
-    while hi - lo > hi * mpf(2) ** -60:
-        mid = (lo + hi) / 2
-        if low.residual(mid) > 0:
-            hi = mid
-        else:
-            lo = mid
+    """generate.py's root search (a scan and bisection at 80 bits, the secant
+    method and a sign change at `bits`) on F with this file's J_n, and the load."""
+    models = {}
+
+    def residual(lam, alpha, beta, abar, e):
+        if mp.prec not in models:  # one sequence per precision (it depends on D only)
+            models[mp.prec] = Model(args, margin_factor)
+        return models[mp.prec].residual(e)
+
     mp.prec = bits
-    model = Model(args, margin_factor)
-    for k, ref in ((0, mpmath.besselj(0, model.d)), (1, mpmath.besselj(1, model.d))):
-        if not abs(model.j[k] - ref) < mpf(2) ** (-bits + 16):
+    root = generate.model_first_root(args, residual)
+    model = models[bits]
+    for k in (0, 1):
+        if not abs(model.j[k] - mpmath.besselj(k, model.d)) < mpf(2) ** (-bits + 16):
             raise ValueError("Miller J_%d disagrees with mpmath.besselj" % k)
-    root = mpmath.findroot(model.residual, (mpf(lo), mpf(hi)), solver="secant", tol=mpf(2) ** (-2 * bits))
-    delta = abs(root) * mpf(2) ** (-bits + 24)
-    if not (model.residual(root - delta) < 0 < model.residual(root + delta)):
-        raise ValueError("no sign change of F across the refined root at %d bits" % bits)
     return root, model.load(1 + root)
 
 
