@@ -1,7 +1,7 @@
 //! Times slow corners of issue 23: MP hyp1f2 at a parameter ~3.7e18, `strip_ratio`
 //! and `load` at decimal inputs with beta "0.001" (or as given), and the radius of
 //! the two certified J_n sequences against D (`seqrad`).
-//! `cargo run --profile test --example corners_23b --features maugis/gmp-no-check -- [hyp|strip|trace|load|loadtrace|resid|resid192|seqrad|seqtime|wave] [prec] [beta]`
+//! `cargo run --profile test --example corners_23b --features maugis/gmp-no-check -- [hyp|strip|trace|load|loadtrace|resid|resid192|seqrad|seqtime|wave|wavef64] [prec] [beta]`
 use maugis::ball::Decimal;
 use maugis::ball::eval_at_decimals;
 use maugis::contact::model_mp::{load_at_decimals, solve_m_ball_mp, strip_ratio_at_decimals, ModelBalls};
@@ -72,6 +72,17 @@ fn main() {
             }
             let new = t2.elapsed().as_secs_f64() / reps as f64;
             println!("D {d:9.3} nmax {nmax:5} wp {prec}: ball route {:9.1} us, midpoint route {:9.1} us (ratio {:.2})", old * 1e6, new * 1e6, new / old);
+        }
+    } else if which == "wavef64" {
+        // the f64 routes at large D, and whether they fell back to MP
+        use maugis::contact::displacement::{du_wave_bounded, u_wave_bounded};
+        for zeta in [0.01, 0.001, 0.0002, 0.0001] {
+            let before = maugis::special::fallback_counts();
+            let t1 = Instant::now();
+            let u = u_wave_bounded(1.0, zeta, 2.5, 1.5);
+            let du = du_wave_bounded(1.0, zeta, 2.5, 1.5);
+            let f = maugis::special::fallback_counts().since(&before);
+            println!("zeta {zeta}: u {u:?} du {du:?} [{:.3} s] fallbacks {f:?}", t1.elapsed().as_secs_f64());
         }
     } else if which == "wave" {
         // u_w and du_w at decimal inputs a = 1, zeta = beta, amp = 2.5, x = 1.5 (D = 2 pi/beta)
