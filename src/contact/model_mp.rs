@@ -453,9 +453,10 @@ const LOAD_GUARD_BITS: u32 = 16;
 
 /// Extra guard bits for the wave term of Eq. 14, `(pi^2 alpha abar/beta) J1(D)`,
 /// `D = 2 pi abar/beta`: the roundings in `D` (relative `2^-wp`) reach the load
-/// as `|J1'| D 2^-wp <= D 2^-wp` times the prefactor, against the Hertz load
-/// `pi abar^2/4` that the accuracy is measured on. So about
-/// `log2(pi^2 |alpha| abar/beta (D + 1) / (pi abar^2/4))` bits, from the
+/// as `|J1'| D 2^-wp <= D 2^-wp` times the prefactor, and those of the
+/// prefactor as `|J1| <= min(1, D/2)` [DLMF 10.14.1, 10.14.4] times it, against
+/// the Hertz load `pi abar^2/4` that the accuracy is measured on. So about
+/// `log2(pi^2 |alpha| abar/beta (D + min(1, D/2)) / (pi abar^2/4))` bits, from the
 /// midpoints in f64 (an estimate that only sets the working precision; the
 /// ball arithmetic carries the proof). At beta = 0.001 that is 28 bits; before,
 /// the load at 53 bits never met its tolerance and `eval_at_decimals` raised
@@ -464,7 +465,7 @@ fn wave_load_guard(inputs: &ModelBalls) -> u32 {
     let [alpha, beta, a] = [&inputs.alpha, &inputs.beta, &inputs.abar].map(|v| v.mid().to_f64().abs());
     let pi = std::f64::consts::PI;
     let d = 2.0 * pi * a / beta;
-    let ratio = pi * pi * alpha * a / beta * (d + 1.0) / (pi * a * a / 4.0);
+    let ratio = pi * pi * alpha * a / beta * (d + (d / 2.0).min(1.0)) / (pi * a * a / 4.0);
     if ratio.is_finite() && ratio > 1.0 {
         ratio.log2().ceil().min(4096.0) as u32
     } else {
