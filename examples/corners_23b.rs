@@ -1,7 +1,7 @@
 //! Times slow corners of issue 23: MP hyp1f2 at a parameter ~3.7e18, `strip_ratio`
 //! and `load` at decimal inputs with beta "0.001" (or as given), and the radius of
 //! the two certified J_n sequences against D (`seqrad`).
-//! `cargo run --profile test --example corners_23b --features maugis/gmp-no-check -- [hyp|strip|trace|load|loadtrace|resid|resid192|seqrad|seqtime|wave|wavef64] [prec] [beta]`
+//! `cargo run --profile test --example corners_23b --features maugis/gmp-no-check -- [hyp|strip|trace|load|loadtrace|resid|resid192|seqrad|seqtime|seqone|wave|wavef64] [prec] [beta]`
 use maugis::ball::Decimal;
 use maugis::ball::eval_at_decimals;
 use maugis::contact::model_mp::{load_at_decimals, solve_m_ball_mp, strip_ratio_at_decimals, ModelBalls};
@@ -72,6 +72,20 @@ fn main() {
             }
             let new = t2.elapsed().as_secs_f64() / reps as f64;
             println!("D {d:9.3} nmax {nmax:5} wp {prec}: ball route {:9.1} us, midpoint route {:9.1} us (ratio {:.2})", old * 1e6, new * 1e6, new / old);
+        }
+    } else if which == "seqone" {
+        // one route 200 times at D (args: prec, D, "ball" or "mid"), for callgrind
+        use maugis::special::bessel_j::{bessel_j_sequence_mp, bessel_j_sequence_three_term};
+        let d: f64 = std::env::args().nth(3).and_then(|s| s.parse().ok()).unwrap_or(75.0);
+        let ball = std::env::args().nth(4).is_some_and(|s| s == "ball");
+        let x = maugis::rug::Float::with_val(53, d);
+        let nmax = (d * 1.1) as u64 + 40;
+        for _ in 0..200 {
+            if ball {
+                std::hint::black_box(bessel_j_sequence_mp(nmax, &x, prec).unwrap());
+            } else {
+                std::hint::black_box(bessel_j_sequence_three_term(nmax, &x, prec).unwrap());
+            }
         }
     } else if which == "wavef64" {
         // the f64 routes at large D, and whether they fell back to MP
