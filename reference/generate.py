@@ -1456,15 +1456,17 @@ def model_residual(lam, alpha, beta, abar, e):
     return lam * (hertz + adhesive + wave) - 1
 
 
-def model_first_root(args):
+def model_first_root(args, residual=None):
     """The first root e = m - 1 > 0 of F (F(1) = -1 < 0): a scan on a
     geometric grid of e and bisection at 80 bits, then the secant method at
     the current precision, and a proven-by-evaluation sign change of F across
-    the result at that precision."""
+    the result at that precision. `residual(lam, alpha, beta, abar, e)` is
+    `model_residual` unless given (reference/model_rough.py passes its own)."""
+    residual = residual or model_residual
     work = mp.prec
     mp.prec = 80
     lam, alpha, beta, abar = (mpf(v) for v in args)
-    f = lambda e: model_residual(lam, alpha, beta, abar, e)
+    f = lambda e: residual(lam, alpha, beta, abar, e)
     lo = hi = None
     prev = mpf(0)
     for i in range(2400):
@@ -1483,7 +1485,7 @@ def model_first_root(args):
             lo = mid
     mp.prec = work
     lam, alpha, beta, abar = (mpf(v) for v in args)
-    f = lambda e: model_residual(lam, alpha, beta, abar, e)
+    f = lambda e: residual(lam, alpha, beta, abar, e)
     root = mpmath.findroot(f, (mpf(lo), mpf(hi)), solver="secant", tol=mpf(2) ** (-2 * work))
     delta = abs(root) * mpf(2) ** (-work + 20)
     if not (f(root - delta) < 0 < f(root + delta)):

@@ -49,6 +49,7 @@ fn special_functions_refuse_precision_zero_and_beyond_the_cap() {
     check(&mut bad, "bessel_j_series", |p| bessel_j::bessel_j_series(3, &fl(2.5), p));
     check(&mut bad, "bessel_j_series_pfq", |p| bessel_j::bessel_j_series_pfq(3, &fl(2.5), p));
     check(&mut bad, "bessel_j_sequence_mp", |p| bessel_j::bessel_j_sequence_mp(3, &fl(2.5), p));
+    check(&mut bad, "bessel_j_sequence_three_term", |p| bessel_j::bessel_j_sequence_three_term(8, &fl(2.5), p));
     check(&mut bad, "bessel_j_three_term", |p| {
         let (j0, j1) = (bessel_j::bessel_j_mp(0, &fl(2.5), 64).unwrap(), bessel_j::bessel_j_mp(1, &fl(2.5), 64).unwrap());
         bessel_j::bessel_j_three_term(3, &fl(2.5), &j0, &j1, p)

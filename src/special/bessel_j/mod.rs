@@ -28,8 +28,12 @@
 //!   proves the bound). `max(n, x)` steps of three MPFR operations. It takes
 //!   `n ~ x` (J_10000(20000.5): 61 ms by Hankel before, a few ms now) and
 //!   `n << x` where `n^2/x` is large (J_10000(99999.5)).
-//! * **Sequences** (`recurrence.rs`): `J_0..J_nmax`, certified downward from
-//!   two certified values, and Miller's algorithm in double-double.
+//! * **Sequences**: `J_0..J_nmax` certified by the three-term method's two
+//!   runs on midpoints with every value kept (`three_term.rs`,
+//!   [`bessel_j_sequence_three_term`]: radii `2^-wp` times about `x^2`); the
+//!   older route downward in balls from two certified values
+//!   (`recurrence.rs`, [`bessel_j_sequence_mp`]: the radius grows by about
+//!   `0.68 x` bits); Miller's algorithm in double-double (an estimate).
 //!
 //! Not here (issue 13 item 4, issue 8 item 3): the Debye and Airy-type uniform
 //! expansions [DLMF 10.19, 10.20] with Olver's bounds, which would make
@@ -71,7 +75,7 @@ pub(crate) use native_hankel::{bessel_j01, HANKEL_MAX_X, HANKEL_MIN_X};
 pub(crate) use native_recurrence::forward_sequence;
 pub(crate) use native_series::{inv_factorials, MAX_TABLE_FACTORIAL, TABLE_ETA};
 pub use series::{bessel_j_series, bessel_j_series_pfq};
-pub use three_term::bessel_j_three_term;
+pub use three_term::{bessel_j_sequence_three_term, bessel_j_three_term};
 
 
 use rug::float::Round;

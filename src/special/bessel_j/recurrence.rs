@@ -15,7 +15,11 @@ use crate::special::check_finite;
 /// from the three-term recurrence run downward, `J_{n-1} = (2n/x) J_n - J_{n+1}`
 /// [DLMF 10.6.1], in ball arithmetic, so every entry is certified. Downward is the
 /// stable direction for `n > x` (J_n is the minimal solution there); below `x`
-/// the recurrence is neutral and the radii grow only mildly.
+/// the values do not grow, but the radii do: each step adds the radii of
+/// `(2n/x) J_n` and `J_{n+1}`, the growth of `|y_{n-1}| = (2n/x)|y_n| + |y_{n+1}|`,
+/// about `0.68 x` bits down to `J_0` (measured in `examples/corners_23b seqrad`).
+/// For large `x`, [`super::bessel_j_sequence_three_term`] keeps the radii near
+/// `2^-wp x^2` at the same working precision.
 pub fn bessel_j_sequence_mp(nmax: u64, x: &Float, wp: u32) -> Result<Vec<Ball>> {
     crate::error::check_working_prec(wp)?;
     check_finite(x, "x")?;
