@@ -241,3 +241,24 @@ proptest::proptest! {
         }
     }
 }
+
+/// Arguments at the ends of the range answer without a panic and overlap the
+/// ball recurrence: `x` below f64's range (the ratio walk's bookkeeping is in
+/// base-2 logarithms), and `x` at the cap with a short sequence.
+#[test]
+fn extreme_arguments_answer() {
+    for (x, nmax) in [(Float::with_val(53, 1) >> 2000u32, 10u64), (Float::with_val(53, 1) >> 60000u32, 3), (Float::with_val(53, MAX_SEQUENCE_ARGUMENT), 5)] {
+        let exp = x.get_exp().unwrap_or(0);
+        let seq = std::panic::catch_unwind(|| bessel_j_sequence_three_term(nmax, &x, 64))
+            .unwrap_or_else(|_| panic!("panicked at x = 2^{exp}"))
+            .unwrap_or_else(|e| panic!("x = 2^{exp}: {e}"));
+        assert_eq!(seq.len(), nmax as usize + 1);
+        let reference = bessel_j_sequence_mp(nmax, &x, 64 + 96).unwrap();
+        for (n, (b, r)) in seq.iter().zip(&reference).enumerate() {
+            assert!(b.is_finite() && b.overlaps(r), "x = 2^{exp}, n = {n}: {b:?} vs {r:?}");
+            if n > 0 && (x.to_f64() as u64) < n as u64 {
+                assert!(b.meets_rel(40), "x = 2^{exp}, n = {n}: {b:?}");
+            }
+        }
+    }
+}

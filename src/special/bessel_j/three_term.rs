@@ -79,8 +79,9 @@
 //! (`rho_k >= x/(2k)`), and `(2k/x) R_k / (1 - R_k^2) = (2k - x)/(2(k - x))`.
 //! With the one final division, `|ln(P~/P)| <= L = 2 sum eta_k + u` (all
 //! terms `<= 1/2`), and `|P~ - P| <= 2 L P~` for `L <= 1/2`
-//! (`e^L - 1 <= 2L` there). `N` is chosen (f64 walk) so that `C_n` is below
-//! `2^-wp` over the number of factors; the sum `A = sum (2k - x)/(2(k - x))` is
+//! (`e^L - 1 <= 2L` there). `N` is chosen (an f64 walk on `log2 R_k`, so that
+//! `x` below f64's range works too) so that `C_n` is below `2^-wp` over the
+//! number of factors; the sum `A = sum (2k - x)/(2(k - x))` is
 //! about `(n - x) + (x/2) ln(n - x)`.
 //!
 //! # Sequences: `J_0(x), ..., J_nmax(x)` ([`bessel_j_sequence_three_term`])
@@ -286,17 +287,22 @@ fn past_turning_point(m: u64, x: &Float, jm1: &Ball, jm: &Ball) -> Result<Ball> 
 fn ratio_walk(n: u64, m: u64, x: &Float, wp: u32, mut visit: impl FnMut(u64, &Float)) -> Result<Mag> {
     debug_assert!(n >= m + 2);
     // x < n <= 2^24 here (the callers' caps), so x's f64 rounding moves every
-    // f64 quantity below by far less than the slack factors used.
+    // f64 quantity below by far less than the slack used. R_k and C_n are kept
+    // as base-2 logarithms (x may be far below f64's range: x = 2^-2000).
     let xf = x.to_f64();
-    // R_k = x/(2k - x), with relative slack for the f64 rounding of x and of the operations.
-    let r_of = |k: u64| xf / (2.0 * k as f64 - xf) * (1.0 + 1e-9);
+    let lx = Float::with_val(64, x.log2_ref()).to_f64(); // log2 x, within 2^-60 relative
+    // log2 R_k = log2 x - log2(2k - x), raised by a relative slack (an upper bound)
+    let log_r = |k: u64| {
+        let l = lx - (2.0 * k as f64 - xf).log2();
+        l + 1e-9 * (1.0 + l.abs())
+    };
     let factors = (n - m - 1) as f64;
     // Walk up from n until C_n = prod_{j=n}^N R_j^2 <= 2^-(wp + log2(factors n / x) + 8).
-    let want = wp as f64 + (factors * n as f64 / xf).log2().max(0.0) + 8.0;
-    let mut log_c = 0.0f64; // log2 C_n (an upper bound: the terms are scaled toward zero)
+    let want = wp as f64 + ((factors * n as f64).log2() - lx).max(0.0) + 8.0;
+    let mut log_c = 0.0f64; // log2 C_n (an upper bound)
     let mut top = n;
     while -log_c < want {
-        log_c += 2.0 * r_of(top).log2() * (1.0 - 1e-9);
+        log_c += 2.0 * log_r(top);
         top += 1;
         if top - n > MAX_RATIO_STEPS {
             return Err(Error::NoConvergence { function: "bessel_j (ratio recurrence)", terms: top - n });
@@ -333,7 +339,9 @@ fn ratio_walk(n: u64, m: u64, x: &Float, wp: u32, mut visit: impl FnMut(u64, &Fl
     // L0 = 2 [ C_n factors (2n/x) + 7.1 u A ] in Mag (u = 2^-wp), the f64 parts with slack
     // (A is a sum of positive f64 terms: relative error far below 1e-6).
     let slack = 1.0 + 1e-6;
-    let c_part = Mag::from_f64(factors * 2.0 * n as f64 / xf * slack).mul(Mag::pow2(log_c.ceil() as i64));
+    // C_n factors (2n/x) = 2^(log2(2 factors n) - log2 x + log2 C_n)
+    let log_c_part = (2.0 * factors * n as f64 * slack).log2() - lx + log_c;
+    let c_part = Mag::pow2((log_c_part + 1e-9 * (1.0 + log_c_part.abs())).ceil() as i64);
     let u_part = Mag::from_f64(7.1 * amp_sum * slack).mul(Mag::pow2(-(wp as i64)));
     Ok(c_part.add(u_part).mul_2exp(1))
 }
