@@ -137,6 +137,11 @@
 //! beyond: `3.8e-16` at `D = 37.7`, `1.3e-14` at `D = 41.9`, `5e-12` at `D = 54`,
 //! `8e-9` at `D = 63`; the caller (`wave_f64.rs`) takes the per-contact certified
 //! path wherever the bound exceeds `2^-50` of the scales (`D` beyond about 40).
+//! The compensation of the recurrence is what keeps the bound this small: an
+//! uncompensated f64 recurrence could not be proven better than `2.7e-14` (u)
+//! and `2.3e-14` (du) of the scales on the model domain even with its exact
+//! Green's functions (`reference/wave_plain_miller_bound.py`; the orders above
+//! `1.5 D` contribute below `1e-17`; docs/performance.md, "the floor of a proven bound").
 //!
 //! Where it does not apply (no fused multiply-add, `x/a > 25/7`, `D` beyond
 //! the table) both paths return `None` and the callers use the previous routes.
