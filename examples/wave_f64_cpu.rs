@@ -9,8 +9,8 @@
 //!
 //!     cargo run --release --example wave_f64_cpu [s|p|g|v<a>]    (s: scratch only, p: precomputed only,
 //!     g: `u_wave_bounded` and `du_wave_bounded` from scratch point by point over the model-domain
-//!     grid, min / median / max; v<a> / b<a>: 64 REPS calls of u_wave / u_wave_bounded at contact
-//!     size a, for callgrind)
+//!     grid, min / median / max; v<a> / b<a> / d<a>: 64 REPS calls of u_wave / u_wave_bounded /
+//!     du_wave_bounded at contact size a, for callgrind)
 
 use maugis::contact::displacement::bounded::wave_scratch_misses;
 use maugis::contact::displacement::{du_wave, du_wave_bounded, u_wave, u_wave_bounded, WaveBessel};
@@ -82,16 +82,22 @@ fn main() {
         grid();
         return;
     }
-    // `v<a>` / `b<a>`: u_wave / u_wave_bounded only, 64 points x REPS (default 100)
+    // `v<a>` / `b<a>` / `d<a>`: u_wave / u_wave_bounded / du_wave_bounded only, 64 points x REPS (default 100)
     // at one a (for callgrind: the difference of two REPS is the cost per call)
-    let bounded = mode.starts_with('b');
-    if let Some(a) = mode.strip_prefix(['v', 'b']).and_then(|a| a.parse::<f64>().ok()) {
+    let (bounded, gradient) = (mode.starts_with('b'), mode.starts_with('d'));
+    if let Some(a) = mode.strip_prefix(['v', 'b', 'd']).and_then(|a| a.parse::<f64>().ok()) {
         let reps: usize = std::env::var("REPS").ok().and_then(|v| v.parse().ok()).unwrap_or(100);
         let mut s = 0.0;
         let xs: Vec<f64> = (0..64).map(|i| a * (1.0 + 2.0 * (i as f64 * 0.754877666246693).fract())).collect();
         for _ in 0..reps {
             for &x in &xs {
-                s += if bounded { u_wave_bounded(a, 1.125, 1.0, x).unwrap().value } else { u_wave(a, 1.125, 1.0, x).unwrap() };
+                s += if bounded {
+                    u_wave_bounded(a, 1.125, 1.0, x).unwrap().value
+                } else if gradient {
+                    du_wave_bounded(a, 1.125, 1.0, x).unwrap().value
+                } else {
+                    u_wave(a, 1.125, 1.0, x).unwrap()
+                };
             }
         }
         println!("{s}");
