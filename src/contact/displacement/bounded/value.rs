@@ -39,7 +39,9 @@
 //!   `U = sum_{m>=1} p_{2m} Y^{m-1}` and `S = sum_{i>=0} V_i Y^i`. The Horner
 //!   sums start at the order `n_x` with `|X|^{n_x} (top+1)^2 <= 2^-64` (from
 //!   `-ln |X| >= 2 (acosh - 10^-15)`, the margin covering the rounding of
-//!   `X` and of `acosh`; `n_x = top` near `x = a`).
+//!   `X` and of `acosh`; for the gradient alone, which needs no `acosh`, from
+//!   an upper bound of `|X|` through the tangent bound `ln_upper` of `ln`;
+//!   `n_x = top` near `x = a`).
 //! * **Assembly** (bounded double-doubles, `crate::ball::dd_bounded`):
 //!   `u_w = A [1 + (-p_0 + D p_1 acosh + 2 X U)/Lambda]`,
 //!   `du_w/dx = (8A/a) q S/Lambda` ([`super`]: `(1 - t)(1 + q) = 2q`).
@@ -310,7 +312,8 @@ fn recip(b: Dd) -> Dd {
 }
 
 /// The geometry of one `x`: `q`, `X = q^2`, `acosh(x/a) = -ln q` (each with its
-/// bound), and `1/a`.
+/// bound; `acosh` only with `ACOSH`, else zero: the gradient does not use it),
+/// and `1/a`.
 struct Geometry {
     q: BoundedDd,
     big_x: BoundedDd,
@@ -319,7 +322,7 @@ struct Geometry {
 }
 
 #[inline(always)]
-fn geometry(a: f64, x: f64) -> Option<Geometry> {
+fn geometry<const ACOSH: bool>(a: f64, x: f64) -> Option<Geometry> {
     let rm1 = BoundedDd { v: Dd::diff(x, a), e: 0.0 }; // x - a, exact
     let rp1 = BoundedDd { v: Dd::diff(x, -a), e: 0.0 }; // x + a, exact
     let t = div_p::<Fused>(rm1, rp1)?.sqrt_p::<Fused>()?;
@@ -331,22 +334,38 @@ fn geometry(a: f64, x: f64) -> Option<Geometry> {
     // q = (1 - t)/(1 + t) = (1 - t)^2 (x + a)/(2a)
     let q = one_minus_t.mul_p::<Fused>(one_minus_t).mul_p::<Fused>(rp1.mul_p::<Fused>(inv_a).mul_f64_p::<Fused>(0.5));
     let big_x = q.mul_p::<Fused>(q);
-    let acosh = neg_ln::<Fused>(q)?;
+    let acosh = if ACOSH { neg_ln::<Fused>(q)? } else { BoundedDd { v: Dd::ZERO, e: 0.0 } };
     Some(Geometry { q, big_x, acosh, inv_a })
 }
 
 /// Where the Horner sums in `Y = -X` start: the order `n_x` with
-/// `|X|^{n_x} (top + 1)^2 <= 2^-64`, from `-ln |X| >= 2 (acosh - 10^-15)`
-/// (the margin covers the rounding of `X` and of `acosh`, whose low part and
-/// bound are checked below `4e-16`); `top` near `x = a`.
+/// `|X|^{n_x} (top + 1)^2 <= 2^-64`, from a lower bound of `-ln |X|`: with
+/// `acosh` ([`neg_ln_x_from_acosh`]) where the geometry has it, else from `X`
+/// alone ([`neg_ln_x_from_x`]); `top` near `x = a`, where the bound is not positive.
 #[inline(always)]
-fn horner_start(acosh: BoundedDd, top: usize) -> usize {
-    let lo = acosh.v.hi - 1e-15;
-    if !(lo > 0.0 && acosh.v.lo.abs() + acosh.e <= 4e-16) {
+fn horner_start(neg_ln_x_lower: f64, top: usize) -> usize {
+    let lo = neg_ln_x_lower;
+    if !(lo > 0.0) {
         return top;
     }
-    let need = (LN2_64_UP + 2.0 * ln_upper((top + 1) as f64)) / (2.0 * lo) * CHAIN_INFLATION;
+    let need = (LN2_64_UP + 2.0 * ln_upper((top + 1) as f64)) / lo * CHAIN_INFLATION;
     if need < top as f64 { need.ceil() as usize } else { top }
+}
+
+/// `-ln |X| >= 2 (acosh - 10^-15)` (the margin covers the rounding of `X` and of
+/// `acosh`, whose low part and bound are checked below `4e-16`; 0 where not).
+#[inline(always)]
+fn neg_ln_x_from_acosh(acosh: BoundedDd) -> f64 {
+    let lo = acosh.v.hi - 1e-15;
+    if lo > 0.0 && acosh.v.lo.abs() + acosh.e <= 4e-16 { 2.0 * lo } else { 0.0 }
+}
+
+/// `-ln |X| >= -ln_upper(x_up)`, `x_up` the bound `|X~.hi| + |X~.lo| + e_X` of
+/// `|X|` times `1 + 4u` (its two sums and the product rounded), `ln_upper` the
+/// tangent bound of `kernels.rs` (within 0.072 of `ln`).
+#[inline(always)]
+fn neg_ln_x_from_x(big_x: BoundedDd) -> f64 {
+    -ln_upper((big_x.v.hi.abs() + big_x.v.lo.abs() + big_x.e) * (1.0 + 4.0 * U))
 }
 
 /// What one pass leaves: `p_0`, `p_1` (as `h + l`), `Lambda = sum_{m>=1} p_{2m}`,
@@ -475,8 +494,8 @@ fn contact(a: f64, zeta: f64) -> Option<(BoundedDd, Dd, usize, Bucket)> {
 #[inline(always)]
 fn wave_value_with(a: f64, zeta: f64, amp: f64, x: f64) -> Option<(f64, f64)> {
     let (d, inv_d, top, _) = contact(a, zeta)?;
-    let g = geometry(a, x)?;
-    let n_x = horner_start(g.acosh, top);
+    let g = geometry::<true>(a, x)?;
+    let n_x = horner_start(neg_ln_x_from_acosh(g.acosh), top);
     let (yh, yl) = (-g.big_x.v.hi, -g.big_x.v.lo);
     let p = miller_pass::<false, true, true>(inv_d, top, n_x, yh, yl, 0.0);
     let (p0, p1) = (dd(p.p0.0, p.p0.1), dd(p.p1.0, p.p1.1));
@@ -508,8 +527,8 @@ fn wave_bounded_with<const DU: bool>(a: f64, zeta: f64, amp: f64, x: f64) -> Opt
     if !(d_low > 0.0) {
         return None;
     }
-    let g = geometry(a, x)?;
-    let n_x = horner_start(g.acosh, top);
+    let g = if DU { geometry::<false>(a, x)? } else { geometry::<true>(a, x)? };
+    let n_x = horner_start(if DU { neg_ln_x_from_x(g.big_x) } else { neg_ln_x_from_acosh(g.acosh) }, top);
     let (yh, yl) = (-g.big_x.v.hi, -g.big_x.v.lo);
     // the recurrence's local error (method block): rho_c bounds the relative
     // error of the multipliers c + cl against 2k/D; |delta_k| <= mu (z_{k-1} + c z_k)
