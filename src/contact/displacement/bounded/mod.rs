@@ -137,8 +137,9 @@
 //! error bound of the recurrence alongside (the proof is the method block of
 //! `value.rs`: the local error of the compensated step, propagated by the
 //! triangle-inequality chain; Miller's start error by Nicholson's formula) it
-//! returns a proven bound, in 3.2k-6.9k instructions per call over the model
-//! domain (the per-contact route here: 9.8k-31.8k). Where that bound exceeds
+//! returns a proven bound for one result per call (each entry point forms only
+//! the sums its result needs), in 2.6k-5.5k instructions per `u_w` over the
+//! model domain (the per-contact route here: 9.8k-31.8k). Where that bound exceeds
 //! `2^-50` of the scales (`D` beyond about 40) the `*_bounded` functions use
 //! the per-contact data here; [`wave_scratch_misses`] counts those calls.
 //!

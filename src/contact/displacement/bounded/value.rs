@@ -5,7 +5,11 @@
 //! at most `1e-15` of `max(|u_w|, |A|)`, and of `max(|du_w/dx|, 2 pi |A|/zeta)`)
 //! and with a **proven bound** ([`wave_scratch_bounded`]: the running error
 //! bound below runs alongside; tests/wave_bounded.rs and the unit test here
-//! check it against the certified MP values).
+//! check it against the certified MP values). The bounded pass forms one result
+//! per call: for `u_w` it skips the gradient's `V_i`, `S` and the chain's
+//! `sum n^2 e_{2n}`, for `du_w/dx` the Horner sum `U` and the `u_w` assembly
+//! (each result's bound below uses only its own inputs); that saves about a
+//! fifth of the instructions of the pass that formed both.
 //!
 //! # Method
 //!
@@ -35,7 +39,9 @@
 //!   `U = sum_{m>=1} p_{2m} Y^{m-1}` and `S = sum_{i>=0} V_i Y^i`. The Horner
 //!   sums start at the order `n_x` with `|X|^{n_x} (top+1)^2 <= 2^-64` (from
 //!   `-ln |X| >= 2 (acosh - 10^-15)`, the margin covering the rounding of
-//!   `X` and of `acosh`; `n_x = top` near `x = a`).
+//!   `X` and of `acosh`; for the gradient alone, which needs no `acosh`, from
+//!   an upper bound of `|X|` through the tangent bound `ln_upper` of `ln`;
+//!   `n_x = top` near `x = a`).
 //! * **Assembly** (bounded double-doubles, `crate::ball::dd_bounded`):
 //!   `u_w = A [1 + (-p_0 + D p_1 acosh + 2 X U)/Lambda]`,
 //!   `du_w/dx = (8A/a) q S/Lambda` ([`super`]: `(1 - t)(1 + q) = 2q`).
@@ -137,6 +143,11 @@
 //! beyond: `3.8e-16` at `D = 37.7`, `1.3e-14` at `D = 41.9`, `5e-12` at `D = 54`,
 //! `8e-9` at `D = 63`; the caller (`wave_f64.rs`) takes the per-contact certified
 //! path wherever the bound exceeds `2^-50` of the scales (`D` beyond about 40).
+//! The compensation of the recurrence is what keeps the bound this small: an
+//! uncompensated f64 recurrence could not be proven better than `2.7e-14` (u)
+//! and `2.3e-14` (du) of the scales on the model domain even with its exact
+//! Green's functions (`reference/wave_plain_miller_bound.py`; the orders above
+//! `1.5 D` contribute below `1e-17`; docs/performance.md, "the floor of a proven bound").
 //!
 //! Where it does not apply (no fused multiply-add, `x/a > 25/7`, `D` beyond
 //! the table) both paths return `None` and the callers use the previous routes.
@@ -236,14 +247,15 @@ pub(crate) fn wave_value(a: f64, zeta: f64, amp: f64, x: f64) -> Option<(f64, f6
     None
 }
 
-/// `(u_w(x), du_w/dx)` with proven bounds by the same single pass (module docs,
-/// "Error bound"), or `None` where it does not apply (no FMA, `x/a > 25/7`,
+/// `u_w(x)` (`DU = false`) or `du_w/dx` (`DU = true`) with a proven bound by
+/// the same single pass (module docs, "Error bound"), which forms only the sums
+/// that result needs; `None` where it does not apply (no FMA, `x/a > 25/7`,
 /// `D` beyond the table, a non-finite intermediate).
-pub(crate) fn wave_scratch_bounded(a: f64, zeta: f64, amp: f64, x: f64) -> Option<(Bounded, Bounded)> {
+pub(crate) fn wave_scratch_bounded<const DU: bool>(a: f64, zeta: f64, amp: f64, x: f64) -> Option<Bounded> {
     #[cfg(target_arch = "x86_64")]
     if has_fma() {
         // SAFETY: the CPU supports FMA (checked just above).
-        return unsafe { wave_bounded_fma(a, zeta, amp, x) };
+        return unsafe { wave_bounded_fma::<DU>(a, zeta, amp, x) };
     }
     let _ = (a, zeta, amp, x);
     None
@@ -257,8 +269,8 @@ unsafe fn wave_value_fma(a: f64, zeta: f64, amp: f64, x: f64) -> Option<(f64, f6
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "fma")]
-unsafe fn wave_bounded_fma(a: f64, zeta: f64, amp: f64, x: f64) -> Option<(Bounded, Bounded)> {
-    wave_bounded_with(a, zeta, amp, x)
+unsafe fn wave_bounded_fma<const DU: bool>(a: f64, zeta: f64, amp: f64, x: f64) -> Option<Bounded> {
+    wave_bounded_with::<DU>(a, zeta, amp, x)
 }
 
 /// One compensated Horner step `acc <- acc Y + c` (`acc = h + l`, `Y = yh + yl`,
@@ -300,7 +312,8 @@ fn recip(b: Dd) -> Dd {
 }
 
 /// The geometry of one `x`: `q`, `X = q^2`, `acosh(x/a) = -ln q` (each with its
-/// bound), and `1/a`.
+/// bound; `acosh` only with `ACOSH`, else zero: the gradient does not use it),
+/// and `1/a`.
 struct Geometry {
     q: BoundedDd,
     big_x: BoundedDd,
@@ -309,7 +322,7 @@ struct Geometry {
 }
 
 #[inline(always)]
-fn geometry(a: f64, x: f64) -> Option<Geometry> {
+fn geometry<const ACOSH: bool>(a: f64, x: f64) -> Option<Geometry> {
     let rm1 = BoundedDd { v: Dd::diff(x, a), e: 0.0 }; // x - a, exact
     let rp1 = BoundedDd { v: Dd::diff(x, -a), e: 0.0 }; // x + a, exact
     let t = div_p::<Fused>(rm1, rp1)?.sqrt_p::<Fused>()?;
@@ -321,22 +334,38 @@ fn geometry(a: f64, x: f64) -> Option<Geometry> {
     // q = (1 - t)/(1 + t) = (1 - t)^2 (x + a)/(2a)
     let q = one_minus_t.mul_p::<Fused>(one_minus_t).mul_p::<Fused>(rp1.mul_p::<Fused>(inv_a).mul_f64_p::<Fused>(0.5));
     let big_x = q.mul_p::<Fused>(q);
-    let acosh = neg_ln::<Fused>(q)?;
+    let acosh = if ACOSH { neg_ln::<Fused>(q)? } else { BoundedDd { v: Dd::ZERO, e: 0.0 } };
     Some(Geometry { q, big_x, acosh, inv_a })
 }
 
 /// Where the Horner sums in `Y = -X` start: the order `n_x` with
-/// `|X|^{n_x} (top + 1)^2 <= 2^-64`, from `-ln |X| >= 2 (acosh - 10^-15)`
-/// (the margin covers the rounding of `X` and of `acosh`, whose low part and
-/// bound are checked below `4e-16`); `top` near `x = a`.
+/// `|X|^{n_x} (top + 1)^2 <= 2^-64`, from a lower bound of `-ln |X|`: with
+/// `acosh` ([`neg_ln_x_from_acosh`]) where the geometry has it, else from `X`
+/// alone ([`neg_ln_x_from_x`]); `top` near `x = a`, where the bound is not positive.
 #[inline(always)]
-fn horner_start(acosh: BoundedDd, top: usize) -> usize {
-    let lo = acosh.v.hi - 1e-15;
-    if !(lo > 0.0 && acosh.v.lo.abs() + acosh.e <= 4e-16) {
+fn horner_start(neg_ln_x_lower: f64, top: usize) -> usize {
+    let lo = neg_ln_x_lower;
+    if !(lo > 0.0) {
         return top;
     }
-    let need = (LN2_64_UP + 2.0 * ln_upper((top + 1) as f64)) / (2.0 * lo) * CHAIN_INFLATION;
+    let need = (LN2_64_UP + 2.0 * ln_upper((top + 1) as f64)) / lo * CHAIN_INFLATION;
     if need < top as f64 { need.ceil() as usize } else { top }
+}
+
+/// `-ln |X| >= 2 (acosh - 10^-15)` (the margin covers the rounding of `X` and of
+/// `acosh`, whose low part and bound are checked below `4e-16`; 0 where not).
+#[inline(always)]
+fn neg_ln_x_from_acosh(acosh: BoundedDd) -> f64 {
+    let lo = acosh.v.hi - 1e-15;
+    if lo > 0.0 && acosh.v.lo.abs() + acosh.e <= 4e-16 { 2.0 * lo } else { 0.0 }
+}
+
+/// `-ln |X| >= -ln_upper(x_up)`, `x_up` the bound `|X~.hi| + |X~.lo| + e_X` of
+/// `|X|` times `1 + 4u` (its two sums and the product rounded), `ln_upper` the
+/// tangent bound of `kernels.rs` (within 0.072 of `ln`).
+#[inline(always)]
+fn neg_ln_x_from_x(big_x: BoundedDd) -> f64 {
+    -ln_upper((big_x.v.hi.abs() + big_x.v.lo.abs() + big_x.e) * (1.0 + 4.0 * U))
 }
 
 /// What one pass leaves: `p_0`, `p_1` (as `h + l`), `Lambda = sum_{m>=1} p_{2m}`,
@@ -360,9 +389,18 @@ struct Pass {
 /// Miller's recurrence from `p_{2 top + 1} = 0`, `p_{2 top} = 1` with the three
 /// sums in the same loop (module docs). With `BOUND`, the running error bound
 /// of the recurrence in units of `mu` (`e_{k-1} = c (e_k + z_k) + e_{k+1} + z_{k-1}`,
-/// `z_j = |h_j| + kappa |l_j|`) and its sums run alongside.
+/// `z_j = |h_j| + kappa |l_j|`) and its sums run alongside. Without `WITH_U`
+/// the Horner sum `U` is not formed, without `WITH_S` neither the `V_i` nor `S`
+/// nor the chain's `sum_n n^2 e_{2n}` (the result that needs them is not asked for).
 #[inline(always)]
-fn miller_pass<const BOUND: bool>(inv_d: Dd, top: usize, n_x: usize, yh: f64, yl: f64, kappa: f64) -> Pass {
+fn miller_pass<const BOUND: bool, const WITH_U: bool, const WITH_S: bool>(
+    inv_d: Dd,
+    top: usize,
+    n_x: usize,
+    yh: f64,
+    yl: f64,
+    kappa: f64,
+) -> Pass {
     let (mut h1, mut l1) = (0.0f64, 0.0f64); // p_{k+1}
     let (mut h0, mut l0) = (1.0f64, 0.0f64); // p_k, k = 2n
     let (mut lam_h, mut lam_l) = (1.0f64, 0.0f64); // sum_{n>=1} p_{2n}
@@ -409,24 +447,28 @@ fn miller_pass<const BOUND: bool>(inv_d: Dd, top: usize, n_x: usize, yh: f64, yl
         lam_h = s;
         lam_l += e + le;
         // V_{m-1} = m p_{2m} - V_m
-        let pm = mf * he;
-        let pm_e = mf.mul_add(he, -pm);
-        let (s, e) = two_sum(pm, -vh);
-        vh = s;
-        vl = mf.mul_add(le, pm_e + e) - vl;
+        if WITH_S {
+            let pm = mf * he;
+            let pm_e = mf.mul_add(he, -pm);
+            let (s, e) = two_sum(pm, -vh);
+            vh = s;
+            vl = mf.mul_add(le, pm_e + e) - vl;
+        }
         if mf <= n_x {
-            let (a1, b1) = horner_step(uh, ul, yh, yl, he, le);
-            uh = a1;
-            ul = b1;
-            let (a2, b2) = horner_step(sh, sl, yh, yl, vh, vl);
-            sh = a2;
-            sl = b2;
+            if WITH_U {
+                (uh, ul) = horner_step(uh, ul, yh, yl, he, le);
+            }
+            if WITH_S {
+                (sh, sl) = horner_step(sh, sl, yh, yl, vh, vl);
+            }
         }
         if BOUND {
             sum_z += z0;
             e_lam += e0;
-            ev = mf.mul_add(e0, ev);
-            e_s += ev;
+            if WITH_S {
+                ev = mf.mul_add(e0, ev);
+                e_s += ev;
+            }
         }
         kk -= 4.0;
         mf -= 1.0;
@@ -452,10 +494,10 @@ fn contact(a: f64, zeta: f64) -> Option<(BoundedDd, Dd, usize, Bucket)> {
 #[inline(always)]
 fn wave_value_with(a: f64, zeta: f64, amp: f64, x: f64) -> Option<(f64, f64)> {
     let (d, inv_d, top, _) = contact(a, zeta)?;
-    let g = geometry(a, x)?;
-    let n_x = horner_start(g.acosh, top);
+    let g = geometry::<true>(a, x)?;
+    let n_x = horner_start(neg_ln_x_from_acosh(g.acosh), top);
     let (yh, yl) = (-g.big_x.v.hi, -g.big_x.v.lo);
-    let p = miller_pass::<false>(inv_d, top, n_x, yh, yl, 0.0);
+    let p = miller_pass::<false, true, true>(inv_d, top, n_x, yh, yl, 0.0);
     let (p0, p1) = (dd(p.p0.0, p.p0.1), dd(p.p1.0, p.p1.1));
     let lambda = p0 + dd(p.lam.0, p.lam.1).mul_f64_p::<Fused>(2.0);
     let inv_lambda = recip(lambda);
@@ -474,15 +516,19 @@ fn wave_value_with(a: f64, zeta: f64, amp: f64, x: f64) -> Option<(f64, f64)> {
     Some((u, du))
 }
 
+/// The bounded pass and the assembly of one result (`DU` selects `du_w/dx`):
+/// the common part (`D`, the geometry, the pass with `p_0`, `p_1`, `Lambda` and
+/// the chain), then only the sum and the assembly that result needs (method
+/// block, 5 and 6; each result's bound uses only its own inputs).
 #[inline(always)]
-fn wave_bounded_with(a: f64, zeta: f64, amp: f64, x: f64) -> Option<(Bounded, Bounded)> {
+fn wave_bounded_with<const DU: bool>(a: f64, zeta: f64, amp: f64, x: f64) -> Option<Bounded> {
     let (d, inv_d, top, bucket) = contact(a, zeta)?;
     let d_low = d.v.hi - d.v.lo.abs() - d.e;
     if !(d_low > 0.0) {
         return None;
     }
-    let g = geometry(a, x)?;
-    let n_x = horner_start(g.acosh, top);
+    let g = if DU { geometry::<false>(a, x)? } else { geometry::<true>(a, x)? };
+    let n_x = horner_start(if DU { neg_ln_x_from_x(g.big_x) } else { neg_ln_x_from_acosh(g.acosh) }, top);
     let (yh, yl) = (-g.big_x.v.hi, -g.big_x.v.lo);
     // the recurrence's local error (method block): rho_c bounds the relative
     // error of the multipliers c + cl against 2k/D; |delta_k| <= mu (z_{k-1} + c z_k)
@@ -490,37 +536,43 @@ fn wave_bounded_with(a: f64, zeta: f64, amp: f64, x: f64) -> Option<(Bounded, Bo
     let rho_c = d.e / d_low + 13.0 * u2;
     let mu = 23.07 * u2 + 1.001 * rho_c;
     let kappa = (3.11 * U + 1.001 * rho_c) / mu * (1.0 + 4.0 * U);
-    let p = miller_pass::<true>(inv_d, top, n_x, yh, yl, kappa);
+    let p = if DU {
+        miller_pass::<true, false, true>(inv_d, top, n_x, yh, yl, kappa)
+    } else {
+        miller_pass::<true, true, false>(inv_d, top, n_x, yh, yl, kappa)
+    };
     let scale = mu * CHAIN_INFLATION;
     let (e0, e1, e_lam, e_s) = (p.e0 * scale, p.e1 * scale, p.e_lam * scale, p.e_s * scale);
     let tf = top as f64;
-    let t3 = tf * tf * tf;
     let sa = p.sum_z * CHAIN_INFLATION;
     let sb = sa / kappa;
     let drop = TAIL * 1.01 * (sa + sb);
     let sec_lam = U * tf * (5.0 * U * tf * sa + 3.0 * sb);
-    let sec_u = U * tf * (29.0 * U * tf * sa + 10.0 * sb) + drop / ((tf + 1.0) * (tf + 1.0)) + g.big_x.e * tf * 1.02 * (sa + sb);
-    let sec_s = U * t3 * (70.0 * U * tf * sa + 13.0 * sb) + drop + g.big_x.e * t3 * 1.02 * (sa + sb);
     let b = |v: (f64, f64), e: f64| BoundedDd { v: dd(v.0, v.1), e };
     let p0 = b(p.p0, e0);
-    let p1 = b(p.p1, e1);
     let lambda = p0.add(b(p.lam, e_lam + sec_lam).mul_f64_p::<Fused>(2.0));
-    let su = b(p.u, 1.01 * e_lam + sec_u);
-    let ss = b(p.s, 1.01 * e_s + sec_s);
-    let u_sum = su.mul_p::<Fused>(g.big_x).mul_f64_p::<Fused>(2.0);
-    let bracket = d.mul_p::<Fused>(p1).mul_p::<Fused>(g.acosh).add(u_sum).sub(p0);
-    let mut r = div_p::<Fused>(bracket, lambda)?;
     // Miller's start (P_k against J_k) and the orders beyond 2 top, scaled from
     // the bucket's D_hi to D by (D/D_hi)^{2 top}: every term there has order > 2 top
     let shrink = (pow_int(((d.mag() + d.e) / bucket.d_hi).min(1.0), 2 * top as u32) * CHAIN_INFLATION).min(1.0);
     let (miller, tail0, tail2) = (bucket.miller * shrink, bucket.tail0 * shrink, bucket.tail2 * shrink);
-    let weight = 1.0 + (d.mag() + d.e) * (g.acosh.mag() + g.acosh.e) + 2.0 * tf;
-    r.e += miller * weight + 2.0 * tail0;
-    let u = BoundedDd::ONE.add(r).mul_f64_p::<Fused>(amp).finish()?;
-    let mut gs = div_p::<Fused>(ss.mul_p::<Fused>(g.q), lambda)?;
-    gs.e += miller * t3 + tail2;
-    let du = gs.mul_p::<Fused>(g.inv_a.mul_f64_p::<Fused>(8.0 * amp)).finish()?;
-    Some((u, du))
+    if DU {
+        let t3 = tf * tf * tf;
+        let sec_s = U * t3 * (70.0 * U * tf * sa + 13.0 * sb) + drop + g.big_x.e * t3 * 1.02 * (sa + sb);
+        let ss = b(p.s, 1.01 * e_s + sec_s);
+        let mut gs = div_p::<Fused>(ss.mul_p::<Fused>(g.q), lambda)?;
+        gs.e += miller * t3 + tail2;
+        gs.mul_p::<Fused>(g.inv_a.mul_f64_p::<Fused>(8.0 * amp)).finish()
+    } else {
+        let sec_u = U * tf * (29.0 * U * tf * sa + 10.0 * sb) + drop / ((tf + 1.0) * (tf + 1.0)) + g.big_x.e * tf * 1.02 * (sa + sb);
+        let p1 = b(p.p1, e1);
+        let su = b(p.u, 1.01 * e_lam + sec_u);
+        let u_sum = su.mul_p::<Fused>(g.big_x).mul_f64_p::<Fused>(2.0);
+        let bracket = d.mul_p::<Fused>(p1).mul_p::<Fused>(g.acosh).add(u_sum).sub(p0);
+        let mut r = div_p::<Fused>(bracket, lambda)?;
+        let weight = 1.0 + (d.mag() + d.e) * (g.acosh.mag() + g.acosh.e) + 2.0 * tf;
+        r.e += miller * weight + 2.0 * tail0;
+        BoundedDd::ONE.add(r).mul_f64_p::<Fused>(amp).finish()
+    }
 }
 
 #[cfg(test)]
@@ -543,7 +595,8 @@ mod tests {
         for &(a, zeta) in &[(0.5, 1.125), (1.0, 1.125), (3.0, 1.125), (6.0, 1.125), (6.0, 1.0), (6.0, 0.95), (6.0, 0.9), (6.0, 0.7), (6.0, 0.6), (2.0, 0.25), (0.1, 5.0)] {
             for &r in &[1.0, 1.0 + f64::EPSILON, 1.0 + 1e-15, 1.0 + 1e-9, 1.01, 1.5, 2.0, 3.0, 3.5] {
                 let x = a * r;
-                let (u, du) = wave_scratch_bounded(a, zeta, 1.0, x).unwrap();
+                let u = wave_scratch_bounded::<false>(a, zeta, 1.0, x).unwrap();
+                let du = wave_scratch_bounded::<true>(a, zeta, 1.0, x).unwrap();
                 let (ae, ze, me, xe) = (exact(a), exact(zeta), exact(1.0), exact(x));
                 let u_ref = u_wave_mp(&ae, &ze, &me, &xe, 200).unwrap();
                 let du_ref = du_wave_mp(&ae, &ze, &me, &xe, 200).unwrap();
