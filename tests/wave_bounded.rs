@@ -74,6 +74,19 @@ fn bound_holds_one_ulp_above_the_edge() {
     }
 }
 
+/// Short wavelengths (`D = 2 pi a/zeta` from 628 to 2513), where the per-contact
+/// Bessel data are built in MP: their sequence must carry digits (the ball
+/// recurrence it used lost about `0.68 D` bits, and `u_wave_bounded(1, 0.01, 1, x)`
+/// came back with a bound of 5.7e136 around a value of -31.6).
+#[test]
+fn short_wavelengths_keep_a_tight_bound() {
+    for &(a, zeta) in &[(1.0, 0.01), (2.0, 0.005)] {
+        for &r in &[1.0, 1.5, 3.0] {
+            check_point(a, zeta, 1.0, a * r);
+        }
+    }
+}
+
 #[test]
 fn beyond_the_native_region_the_mp_fallback_answers_and_is_counted() {
     let before = maugis::special::fallback_counts().wave_bounded;
