@@ -10,6 +10,9 @@
 //! `reference/bench_mpmath.py` times mpmath on the same cases; the side-by-side
 //! table is in docs/performance.md.
 
+#[path = "common/wave_domain.rs"]
+mod wave_domain;
+
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use maugis::contact::displacement::{du_wave, du_wave_bounded, u_wave, u_wave_bounded, u_wave_mp, u_wave_series_mp, WaveBessel};
 use maugis::contact::displacement::bounded::wave_scratch_misses;
@@ -18,7 +21,7 @@ use maugis::special::exact;
 
 const ABARS: [f64; 3] = [1.0, 3.0, 6.0];
 const RATIOS: [f64; 3] = [1.0, 1.001, 2.0];
-const BETA: f64 = 1.125;
+const BETA: f64 = wave_domain::ZETA;
 
 /// The issue-8 grid of x/a for the Eq. 12 slow band (a in {1, 3, 6}, x/a in [1, 3]).
 const GRID_RATIOS: [f64; 13] = [1.0, 1.0005, 1.001, 1.01, 1.05, 1.1, 1.2, 1.35, 1.5, 1.75, 2.0, 2.5, 3.0];
@@ -61,24 +64,11 @@ fn bench_bessel_form(c: &mut Criterion) {
     g.finish();
 }
 
-/// 64 points over the issue-8 domain a in [0.5, 6], zeta = 9/8, x/a in [1, 3]
-/// (a fixed low-discrepancy sequence, so every run times the same points).
-fn domain_points() -> Vec<(f64, f64)> {
-    (0..64)
-        .map(|i| {
-            let u = (i as f64 * 0.618_033_988_749_895).fract();
-            let v = (i as f64 * 0.754_877_666_246_693).fract();
-            let a = 0.5 + 5.5 * u;
-            (a, a * (1.0 + 2.0 * v))
-        })
-        .collect()
-}
-
 /// The f64 wave functions per value over the domain, from scratch and with the
 /// contact precomputed (the solver's case), estimate and proven-bound paths.
 /// Criterion reports elements per second: 64 values per iteration.
 fn bench_wave_f64_domain(c: &mut Criterion) {
-    let pts = domain_points();
+    let pts = wave_domain::wave_points();
     let (before, before_contacts) = (maugis::special::fallback_counts().wave_bounded, maugis::special::fallback_counts().wave_bounded_mp_contacts);
     let mut g = c.benchmark_group("wave_f64_domain");
     g.throughput(Throughput::Elements(pts.len() as u64));
