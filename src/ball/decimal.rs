@@ -227,8 +227,9 @@ pub const MAX_DECIMAL_INPUT_PREC: u32 = 1 << 16;
 /// The decimals are rounded at `max(prec, 53) + 64` bits first. When the
 /// result misses `rad <= 2^-prec |mid|` and some input is not exact, the input
 /// precision is raised by the bits missing plus a margin (at least doubled) and
-/// `f` runs again, up to [`MAX_DECIMAL_INPUT_PREC`] bits; past that the last
-/// (enclosing but wider) ball is returned. Binary-fraction inputs are exact from
+/// `f` runs again, up to [`MAX_DECIMAL_INPUT_PREC`] bits; past that the answer is
+/// [`crate::Error::PrecisionExhausted`] (an enclosing ball wider than `prec` is not
+/// returned as if it met it). Binary-fraction inputs are exact from
 /// the start, so for them `f` runs once. A domain error of `f` (an edge inside
 /// an input ball) is retried with tighter balls while an input is inexact, and
 /// returned once the balls are exact or at the cap; other errors return at once.
@@ -264,8 +265,12 @@ where
             Err(e) => return Err(e),
         };
         let meets_floor = floor.is_some_and(|fl| !fl.is_zero() && out.meets_abs(prec, fl));
-        if all_exact || out.meets_rel(prec) || meets_floor || input_prec >= MAX_DECIMAL_INPUT_PREC {
+        if all_exact || out.meets_rel(prec) || meets_floor {
             return Ok(out);
+        }
+        if input_prec >= MAX_DECIMAL_INPUT_PREC {
+            // an enclosing ball wider than asked is not returned as if it met `prec`
+            return Err(crate::error::Error::PrecisionExhausted { function: "eval_at_decimals", working_prec: input_prec });
         }
         let achieved = out.rel_accuracy_bits();
         let missing = if achieved.is_finite() { (prec as f64 - achieved).max(0.0) } else { input_prec as f64 };
@@ -359,6 +364,23 @@ mod tests {
         })
         .unwrap();
         assert_eq!(calls, 1);
+    }
+
+    #[test]
+    fn a_ball_that_never_meets_prec_is_an_error_at_the_cap() {
+        // f ignores how tight its inputs are (a radius of 2^-20 whatever the input
+        // precision): the loop raises the input precision to the cap and then says
+        // so, instead of returning the wide ball as if it met 53 bits
+        let tenth = Decimal::parse("0.1").unwrap();
+        let mut calls = 0;
+        let r = eval_at_decimals(&[tenth], 53, |b| {
+            calls += 1;
+            let mut out = b[0].clone();
+            out.add_error(&Float::with_val(53, 2f64.powi(-20)));
+            Ok(out)
+        });
+        assert!(matches!(r, Err(crate::error::Error::PrecisionExhausted { working_prec, .. }) if working_prec == MAX_DECIMAL_INPUT_PREC), "{r:?}");
+        assert!(calls > 1 && calls < 20, "{calls} calls");
     }
 
     #[test]
