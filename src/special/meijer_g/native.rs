@@ -54,6 +54,9 @@ use std::sync::OnceLock;
 use crate::ball::{Ball, Bounded, BoundedDd, Dd, Dekker};
 use super::constants::MeijerConstants;
 use super::dd::{meijer_g_k_dd, DdConstants};
+use super::elementary::{ln_bounded, Val};
+use super::beta_series::{meijer_g_k_beta_series, BETA_SERIES_MIN_KW};
+use super::near_one_fast::near_one_fast;
 pub use super::Y_NATIVE_MAX;
 
 /// Largest `k` of the constants table.
@@ -65,13 +68,6 @@ const MAX_TERMS: u64 = 4000;
 
 const U: f64 = f64::EPSILON / 2.0;
 const BOUND_INFLATION: f64 = 1.0 + 1.0 / (1u64 << 30) as f64;
-
-/// An f64 and a bound on its error.
-#[derive(Debug, Clone, Copy)]
-struct Val {
-    v: f64,
-    e: f64,
-}
 
 /// A certified ball as a double-double whose bound covers the split and the radius.
 fn dd_from_ball(b: &Ball) -> BoundedDd {
@@ -127,49 +123,6 @@ fn table() -> Option<&'static Tables> {
 /// table could not be built).
 pub(crate) fn dd_constants(k: u32) -> Option<DdConstants> {
     (k <= TABLE_K_MAX).then(|| table().map(|t| t.dd_constants(k))).flatten()
-}
-
-/// `ln y` for `0 < y <= 1` with a proven bound.
-fn ln_bounded(y: f64) -> Option<Val> {
-    if !(y > 0.0 && y <= 1.0) || y < f64::MIN_POSITIVE {
-        return None;
-    }
-    let bits = y.to_bits();
-    let mut e = ((bits >> 52) & 0x7ff) as i64 - 1022;
-    let mut m = f64::from_bits((bits & !(0x7ffu64 << 52)) | (1022u64 << 52)); // [0.5, 1)
-    if m < std::f64::consts::FRAC_1_SQRT_2 {
-        m *= 2.0;
-        e -= 1;
-    }
-    let v = (m - 1.0) / (m + 1.0);
-    let g2 = 2.0 * U / (1.0 - 2.0 * U);
-    let ev = g2 * v.abs();
-    let s = v * v;
-    let s_up = (v.abs() + ev) * (v.abs() + ev) * (1.0 + 4.0 * U);
-    let es = s_up - s + U * s; // |s~ - v*^2| (covers the rounding of s and the error of v)
-    // Horner over J terms, J with s^J/((2J+1)(1-s)) <= 2^-64
-    let mut j_terms = 1usize;
-    let mut sp = s_up;
-    while sp / ((2 * j_terms + 1) as f64 * (1.0 - s_up)) > 1.0 / (1u64 << 63) as f64 / 2.0 {
-        sp *= s_up;
-        j_terms += 1;
-    }
-    let mut p = 1.0 / (2 * (j_terms - 1) + 1) as f64;
-    let mut mu = p / 2.0;
-    for j in (0..j_terms - 1).rev() {
-        p = p * s + 1.0 / (2 * j + 1) as f64;
-        mu = s * mu + p.abs();
-    }
-    let p_abs = 1.0 / (1.0 - s_up);
-    let trunc = sp / ((2 * j_terms + 1) as f64 * (1.0 - s_up));
-    let ep = U * (2.0 * mu - p.abs()) * 1.01 + U * p_abs + trunc + es / (2.0 * (1.0 - s_up) * (1.0 - s_up));
-    let at = v * p; // atanh(v)
-    let e_at = v.abs() * ep + p.abs() * ev + ep * ev + U * at.abs();
-    let l1 = e as f64 * std::f64::consts::LN_2;
-    let e_l1 = (e as f64).abs() * 2.4e-17 + U * l1.abs();
-    let l = l1 + 2.0 * at;
-    let e_l = e_l1 + 2.0 * e_at + U * l.abs();
-    Some(Val { v: l, e: e_l })
 }
 
 /// A compensated sum of positive f64 terms, each carrying a relative error of
@@ -268,6 +221,15 @@ pub const NEAR_ONE_F64_MAX_KW: f64 = 1.25;
 /// cancel towards the zero of `G(k, .)`), while the direct series needs at most
 /// about 240 terms.
 pub const NEAR_ONE_F64_MIN_Y: f64 = 0.85;
+
+/// Smallest `y` at which the plain double-double near-one expansion
+/// ([`super::near_one_fast`]) is tried (below, the f64 direct series is cheaper).
+pub const NEAR_ONE_FAST_MIN_Y: f64 = 0.875;
+
+/// Largest `k w/(1 - w)` (`>= -k ln(1 - w)`, the log of the growth of the parts before
+/// they cancel) at which the plain double-double near-one expansion is tried: its bound
+/// is `~1e-31 (1-w)^{-k}` of `|G|`, `1e-14` relative up to about 30 (measured).
+pub const NEAR_ONE_FAST_MAX_GROWTH: f64 = 31.0;
 
 /// `G(k, 1 - w)` by the near-one expansion (module docs of
 /// [`super::dd`]: `G = C_k B_k(1) + C_k (k+1) I1(w) - 2 sqrt(pi) w^{3/2} I2'(w)`)
@@ -368,8 +330,25 @@ pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Option<Bounded
     }
     let tables = table()?;
     let accept = |b: Bounded| (b.value.is_finite() && b.err <= rel_tol * b.value.abs()).then_some(b);
-    if y > NEAR_ONE_F64_MIN_Y && y < 1.0 && k as f64 * (1.0 - y) <= NEAR_ONE_F64_MAX_KW {
+    let kw = k as f64 * (1.0 - y);
+    if y >= 0.5 && y < 1.0 && kw >= BETA_SERIES_MIN_KW {
+        let [c, p, _] = tables.per_k[k as usize];
+        if let Some(b) = meijer_g_k_beta_series(k, y, val_from_dd(c), val_from_dd(p)).and_then(accept) {
+            return Some(b);
+        }
+    }
+    if y > NEAR_ONE_F64_MIN_Y && y < 1.0 && kw <= NEAR_ONE_F64_MAX_KW {
         if let Some(b) = near_one_f64(tables, k, 1.0 - y).and_then(accept) {
+            return Some(b);
+        }
+    }
+    let consts = tables.dd_constants(k);
+    // the plain double-double near-one expansion: before the direct series above
+    // NEAR_ONE_FAST_MIN_Y (cheaper there), after it below (next to the zeros of G(k, .))
+    let fast_fits = y > 0.5 && y < 1.0 && kw <= NEAR_ONE_FAST_MAX_GROWTH * y;
+    let near_one_fast_accepted = || near_one_fast(k, 1.0 - y, &consts).and_then(|b| b.finish()).and_then(accept);
+    if fast_fits && y >= NEAR_ONE_FAST_MIN_Y {
+        if let Some(b) = near_one_fast_accepted() {
             return Some(b);
         }
     }
@@ -378,7 +357,11 @@ pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Option<Bounded
             return Some(b);
         }
     }
-    let consts = tables.dd_constants(k);
+    if fast_fits && y < NEAR_ONE_FAST_MIN_Y {
+        if let Some(b) = near_one_fast_accepted() {
+            return Some(b);
+        }
+    }
     meijer_g_k_dd(k, y, &consts)?.finish().and_then(accept)
 }
 
@@ -420,17 +403,6 @@ mod tests {
             }
         }
         assert!(accepted >= 500, "only {accepted} of 600 points native");
-    }
-
-    #[test]
-    fn ln_bound_holds() {
-        for &y in &[1.0, 0.5, std::f64::consts::FRAC_1_SQRT_2, 0.75, 1e-300, 0.999999, 0.1, 3.0e-5] {
-            let l = ln_bounded(y).unwrap();
-            let exact = Float::with_val(200, y).ln();
-            let d = Float::with_val(200, &exact - l.v).abs().to_f64();
-            assert!(d <= l.e, "y={y}: {} +/- {} vs {exact}", l.v, l.e);
-            assert!(l.e <= 4e-16 * l.v.abs().max(1.0), "y={y}: {}", l.e);
-        }
     }
 
     /// Checks `b` against the certified 200-bit `G(k, y)`: the bound holds, and where
