@@ -82,42 +82,212 @@ pub(crate) fn near_one_fast_portable(k: u32, w: f64, c: &DdConstants) -> Option<
     near_one_fast_with::<crate::ball::Dekker>(k, w, c)
 }
 
-/// `R = w n/d` for exact integers `n`, `d` as a normalized double-double, given
-/// `inv = fl(fl(1/(d d')) d')`, `1/d` within `gamma_2` (module docs: relative error
-/// `<= 20 eps`).
-#[inline(always)]
-fn ratio<P: ExactProduct>(w: f64, n: f64, d: f64, inv: f64) -> Dd {
-    let (a, ae) = P::two_prod(w, n); // a + ae = w n exactly
-    let rh = a * inv;
-    let (p, pe) = P::two_prod(rh, d); // rh d = p + pe exactly; a - p exact (Sterbenz)
-    let rl = (((a - p) - pe) + ae) * inv;
-    let hi = rh + rl; // quick_two_sum (|rl| <= 4.1 u rh): exact
-    Dd { hi, lo: rl - (hi - rh) }
+/// Two lanes, `a` for the recurrence of `T1` and `b` for that of `T2`: the same
+/// operations on both, in one SSE2 register on x86-64 (each lane rounds as the scalar
+/// operation would, so the analysis holds lane by lane and every build gives the same
+/// bits), two f64 elsewhere.
+#[cfg(target_arch = "x86_64")]
+mod lanes {
+    use std::arch::x86_64::{__m128d, _mm_add_pd, _mm_cvtsd_f64, _mm_div_pd, _mm_mul_pd, _mm_set_pd, _mm_shuffle_pd, _mm_sub_pd, _mm_unpackhi_pd};
+
+    #[derive(Clone, Copy)]
+    pub(super) struct L2(pub(super) __m128d);
+
+    // SAFETY (every `unsafe` block): SSE2 is part of the x86-64 baseline, and the
+    // intrinsics only read and write their register operands.
+    impl L2 {
+        #[inline(always)]
+        pub(super) fn new(a: f64, b: f64) -> L2 {
+            L2(unsafe { _mm_set_pd(b, a) })
+        }
+        #[inline(always)]
+        pub(super) fn a(self) -> f64 {
+            unsafe { _mm_cvtsd_f64(self.0) }
+        }
+        #[inline(always)]
+        pub(super) fn b(self) -> f64 {
+            unsafe { _mm_cvtsd_f64(_mm_unpackhi_pd(self.0, self.0)) }
+        }
+        #[inline(always)]
+        pub(super) fn add(self, o: L2) -> L2 {
+            L2(unsafe { _mm_add_pd(self.0, o.0) })
+        }
+        #[inline(always)]
+        pub(super) fn sub(self, o: L2) -> L2 {
+            L2(unsafe { _mm_sub_pd(self.0, o.0) })
+        }
+        #[inline(always)]
+        pub(super) fn mul(self, o: L2) -> L2 {
+            L2(unsafe { _mm_mul_pd(self.0, o.0) })
+        }
+        #[inline(always)]
+        pub(super) fn div(self, o: L2) -> L2 {
+            L2(unsafe { _mm_div_pd(self.0, o.0) })
+        }
+        /// `(b, a)`.
+        #[inline(always)]
+        pub(super) fn swap(self) -> L2 {
+            L2(unsafe { _mm_shuffle_pd::<1>(self.0, self.0) })
+        }
+    }
 }
 
-/// One step of both recurrences: `tau_m` and `sigma_{m-1}` (module docs), added to
-/// the accumulators `t1`, `t2`; `w1`, `w2` collect the weighted error sums (units of `eps`).
+/// Two lanes as two f64 (targets other than x86-64).
+#[cfg(not(target_arch = "x86_64"))]
+mod lanes {
+    #[derive(Clone, Copy)]
+    pub(super) struct L2(f64, f64);
+
+    impl L2 {
+        #[inline(always)]
+        pub(super) fn new(a: f64, b: f64) -> L2 {
+            L2(a, b)
+        }
+        #[inline(always)]
+        pub(super) fn a(self) -> f64 {
+            self.0
+        }
+        #[inline(always)]
+        pub(super) fn b(self) -> f64 {
+            self.1
+        }
+        #[inline(always)]
+        pub(super) fn add(self, o: L2) -> L2 {
+            L2(self.0 + o.0, self.1 + o.1)
+        }
+        #[inline(always)]
+        pub(super) fn sub(self, o: L2) -> L2 {
+            L2(self.0 - o.0, self.1 - o.1)
+        }
+        #[inline(always)]
+        pub(super) fn mul(self, o: L2) -> L2 {
+            L2(self.0 * o.0, self.1 * o.1)
+        }
+        #[inline(always)]
+        pub(super) fn div(self, o: L2) -> L2 {
+            L2(self.0 / o.0, self.1 / o.1)
+        }
+        /// `(b, a)`.
+        #[inline(always)]
+        pub(super) fn swap(self) -> L2 {
+            L2(self.1, self.0)
+        }
+    }
+}
+
+use lanes::L2;
+
+/// The exact products lane by lane, `a b = p + e` ([`ExactProduct`] on two lanes):
+/// one fused multiply-add per lane pair (Fused), or Dekker's splitting in the same
+/// order as the scalar `two_prod` (Dekker); both exact, so bit-identical.
+trait TwoProd2: ExactProduct {
+    fn two_prod2(a: L2, b: L2) -> (L2, L2);
+}
+
+impl TwoProd2 for crate::ball::Dekker {
+    #[inline(always)]
+    fn two_prod2(a: L2, b: L2) -> (L2, L2) {
+        let p = a.mul(b);
+        let splitter = L2::new(134_217_729.0, 134_217_729.0); // 2^27 + 1
+        let split = |x: L2| {
+            let t = splitter.mul(x);
+            let hi = t.sub(t.sub(x));
+            (hi, x.sub(hi))
+        };
+        let (ah, al) = split(a);
+        let (bh, bl) = split(b);
+        let e = ah.mul(bh).sub(p).add(ah.mul(bl)).add(al.mul(bh)).add(al.mul(bl));
+        (p, e)
+    }
+}
+
+impl TwoProd2 for crate::ball::Fused {
+    #[inline(always)]
+    fn two_prod2(a: L2, b: L2) -> (L2, L2) {
+        #[cfg(target_arch = "x86_64")]
+        {
+            let p = a.mul(b);
+            // SAFETY: `Fused` runs only inside the function compiled with `fma`, after the
+            // run-time check (`cpu_dispatch`).
+            (p, L2(unsafe { std::arch::x86_64::_mm_fmsub_pd(a.0, b.0, p.0) }))
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            let (pa, ea) = <Self as ExactProduct>::two_prod(a.a(), b.a());
+            let (pb, eb) = <Self as ExactProduct>::two_prod(a.b(), b.b());
+            (L2::new(pa, pb), L2::new(ea, eb))
+        }
+    }
+}
+
+/// A double-double per lane.
+#[derive(Clone, Copy)]
+struct Dd2 {
+    hi: L2,
+    lo: L2,
+}
+
+impl Dd2 {
+    /// Fast2Sum `s + t` (exact for `|s| >= |t|`).
+    #[inline(always)]
+    fn quick(s: L2, t: L2) -> Dd2 {
+        let hi = s.add(t);
+        Dd2 { hi, lo: t.sub(hi.sub(s)) }
+    }
+    /// The house product ([`Dd::mul_p`], lane by lane): `<= 8 eps` relative.
+    #[inline(always)]
+    fn mul<P: TwoProd2>(self, o: Dd2) -> Dd2 {
+        let (p, e) = P::two_prod2(self.hi, o.hi);
+        Dd2::quick(p, e.add(self.hi.mul(o.lo).add(self.lo.mul(o.hi))))
+    }
+    /// The house sum (`Dd + Dd`, lane by lane): `<= 8 eps` of the result for positive operands.
+    #[inline(always)]
+    fn add(self, o: Dd2) -> Dd2 {
+        let s = self.hi.add(o.hi);
+        let bb = s.sub(self.hi);
+        let e = self.hi.sub(s.sub(bb)).add(o.hi.sub(bb));
+        Dd2::quick(s, e.add(self.lo).add(o.lo))
+    }
+}
+
+/// `R = w n/d` lane by lane for exact integers `n`, `d`, given `inv` (`1/d` within
+/// `gamma_2`; module docs: relative error `<= 20 eps`), as a normalized double-double.
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
-fn step<P: ExactProduct>(m: u64, kf: f64, w: f64, tau: &mut Dd, sigma: &mut Dd, t1: &mut Dd, t2: &mut Dd, w1: &mut f64, w2: &mut f64) {
-    let mf = m as f64;
-    let jf = mf - 1.0; // sigma's index
-    let d1 = mf * (2.0 * mf - 3.0);
-    let d2 = jf * (2.0 * jf + 3.0);
-    // one quotient for both ratios: 1/d1 = d2/(d1 d2) (d1 d2 < 2^53, exact)
-    let q = 1.0 / (d1 * d2);
-    // tau_m = tau_{m-1} w (2k+2m-1)(m-1)/(m(2m-3))
-    *tau = tau.mul_p::<P>(ratio::<P>(w, (2.0 * kf + 2.0 * mf - 1.0) * (mf - 1.0), d1, q * d2));
-    *t1 = *t1 + *tau;
-    *w1 += 32.0 * (mf - 1.0) * tau.hi + 8.0 * t1.hi;
-    // sigma_j = sigma_{j-1} w (k+1+j)(2j+1)/(j(2j+3)), j = m - 1
-    *sigma = sigma.mul_p::<P>(ratio::<P>(w, (kf + 1.0 + jf) * (2.0 * jf + 1.0), d2, q * d1));
-    *t2 = *t2 + *sigma;
-    *w2 += (16.0 + 32.0 * jf) * sigma.hi + 8.0 * t2.hi;
+fn ratio<P: TwoProd2>(w: L2, n: L2, d: L2, inv: L2) -> Dd2 {
+    let (a, ae) = P::two_prod2(w, n); // a + ae = w n exactly
+    let rh = a.mul(inv);
+    let (p, pe) = P::two_prod2(rh, d); // rh d = p + pe exactly; a - p exact (Sterbenz)
+    let rl = a.sub(p).sub(pe).add(ae).mul(inv);
+    Dd2::quick(rh, rl) // |rl| <= 4.1 u rh: exact
+}
+
+/// The ratios of step `m` (`mm = (m, m)`): `tau_m/tau_{m-1}` (lane a) and
+/// `sigma_{m-1}/sigma_{m-2}` (lane b), `j = m - 1`:
+/// `w (2k-1+2m)(m-1)/(m(2m-3))` and `w (k+m)(2m-1)/((m-1)(2m+1))`, numerators
+/// `(alpha + 2m)(gamma + m)` and denominators `(delta + m)(zeta + 2m)` lane by lane
+/// (exact integers), with one quotient for both (`1/d_a = d_b/(d_a d_b)`,
+/// `d_a d_b < 2^53` exact).
+#[inline(always)]
+fn ratios<P: TwoProd2>(mm: L2, k: &RatioConsts, w: L2) -> Dd2 {
+    let m2 = mm.add(mm);
+    let n = k.alpha.add(m2).mul(k.gamma.add(mm));
+    let d = k.delta.add(mm).mul(k.zeta.add(m2));
+    let ds = d.swap();
+    let q = k.one.div(d.mul(ds)); // 1/(d_a d_b) in both lanes
+    ratio::<P>(w, n, d, q.mul(ds))
+}
+
+/// The lane constants of [`ratios`].
+struct RatioConsts {
+    alpha: L2,
+    gamma: L2,
+    delta: L2,
+    zeta: L2,
+    one: L2,
 }
 
 #[inline(always)]
-fn near_one_fast_with<P: ExactProduct>(k: u32, w: f64, c: &DdConstants) -> Option<BoundedDd> {
+fn near_one_fast_with<P: TwoProd2>(k: u32, w: f64, c: &DdConstants) -> Option<BoundedDd> {
     if !(w > 0.0 && w <= 0.5) {
         return None;
     }
@@ -127,48 +297,71 @@ fn near_one_fast_with<P: ExactProduct>(k: u32, w: f64, c: &DdConstants) -> Optio
     // stop a sum when its tail is below rel_stop of it: 2^-64 (1-w)^k (an estimate of
     // |G| over the parts; only the cost depends on it), at least 2^-104
     let rel_stop = (5.421010862427522e-20 * (kf * (-w).ln_1p()).exp()).max(4.930380657631324e-32);
-    // T1: tau_1 = w (2k+1)/2 (exact), T2: sigma_0 = 2/3
-    let mut tau = Dd::prod_p::<P>(w, 2.0 * kf + 1.0);
-    tau = Dd { hi: 0.5 * tau.hi, lo: 0.5 * tau.lo };
-    let mut t1 = tau;
-    let mut w1 = 8.0 * t1.hi; // sum eta_m t~_m + 8 s~_m, in units of eps
-    let mut sigma = crate::ball::div_f64_p::<P>(Dd::from_f64(2.0), 3.0);
-    let mut t2 = sigma;
-    let mut w2 = 16.0 * sigma.hi + 8.0 * t2.hi;
-    // second accumulators (odd m), so that the additions form two chains each; the two
-    // recurrences run the same number of steps (their counts differ by a few at most)
-    let (mut t1b, mut t2b) = (Dd::ZERO, Dd::ZERO);
-    let mut m = 1u64; // index of the last tau (and of the last sigma plus one)
+    // x = (tau_m, sigma_{m-1}): tau_1 = w (2k+1)/2 (exact), sigma_0 = 2/3
+    let tau1 = Dd::prod_p::<P>(w, 2.0 * kf + 1.0);
+    let sigma0 = crate::ball::div_f64_p::<P>(Dd::from_f64(2.0), 3.0);
+    let mut x = Dd2 { hi: L2::new(0.5 * tau1.hi, sigma0.hi), lo: L2::new(0.5 * tau1.lo, sigma0.lo) };
+    // two accumulators per sum (even and odd m), so that the additions form two chains
+    let mut acc_e = x;
+    let mut acc_o = Dd2 { hi: L2::new(0.0, 0.0), lo: L2::new(0.0, 0.0) };
+    // sum eta_m t~_m + 8 s~_m per lane, in units of eps (eta(sigma_0) = 16)
+    let mut wt = L2::new(8.0 * acc_e.hi.a(), 24.0 * acc_e.hi.b());
+    let rc = RatioConsts {
+        alpha: L2::new(2.0 * kf - 1.0, -1.0),
+        gamma: L2::new(-1.0, kf),
+        delta: L2::new(0.0, -1.0),
+        zeta: L2::new(-3.0, 1.0),
+        one: L2::new(1.0, 1.0),
+    };
+    let (ww, one) = (L2::new(w, w), L2::new(1.0, 1.0));
+    let mut mm = L2::new(1.0, 1.0); // (m, m)
+    let mut m = 1u64; // x holds tau_m, sigma_{m-1}
     let (e1, e2) = loop {
-        step::<P>(m + 1, kf, w, &mut tau, &mut sigma, &mut t1, &mut t2, &mut w1, &mut w2);
-        step::<P>(m + 2, kf, w, &mut tau, &mut sigma, &mut t1b, &mut t2b, &mut w1, &mut w2);
+        // two steps, m+1 (off the chain) and m+2 = x R_{m+1} R_{m+2} (on it)
+        let mf = m as f64;
+        mm = mm.add(one);
+        let r1 = ratios::<P>(mm, &rc, ww);
+        mm = mm.add(one);
+        let r2 = ratios::<P>(mm, &rc, ww);
+        let x1 = x.mul::<P>(r1);
+        x = x.mul::<P>(r1.mul::<P>(r2));
+        acc_e = acc_e.add(x1);
+        acc_o = acc_o.add(x);
+        // eta(tau_m) <= 32 (m-1) eps, eta(sigma_j) <= (16 + 32 j) eps, j = m - 1
+        let c1 = L2::new(32.0 * mf, 32.0 * mf + 16.0);
+        let c2 = L2::new(32.0 * mf + 32.0, 32.0 * mf + 48.0);
+        let eight = L2::new(8.0, 8.0);
+        wt = wt.add(c1.mul(x1.hi)).add(eight.mul(acc_e.hi)).add(c2.mul(x.hi)).add(eight.mul(acc_o.hi));
         m += 2;
         if m % 4 != 1 {
             continue;
         }
+        let eight = L2::new(8.0, 8.0);
         let mf = m as f64;
         let jf = mf - 1.0;
+        let (tau, sigma) = (x.hi.a(), x.hi.b());
         // T1: rho_{m+1} = tau_m (2m/(2m-1)) w (2k+2m+1)/(2m+1); ratio_{m+1} = w (2k+2m+3)/(2m+3)
         let r1 = w * (2.0 * kf + 2.0 * mf + 3.0) / (2.0 * mf + 3.0) * up;
         // T2: ratio bound w (k+2+j)/(j+1)
         let r2 = w * (kf + 2.0 + jf) / (jf + 1.0) * up;
         if r1 < 1.0 && r2 < 1.0 {
-            let tau_up = tau.hi * (1.0 + 2.0 * U + 32.0 * mf * eps);
+            let tau_up = tau * (1.0 + 2.0 * U + 32.0 * mf * eps);
             let rho_next = tau_up * (2.0 * mf / (2.0 * mf - 1.0)) * w * (2.0 * kf + 2.0 * mf + 1.0) / (2.0 * mf + 1.0) * up;
             let tail1 = rho_next / (1.0 - r1) * up;
-            let tail2 = sigma.hi * (1.0 + 2.0 * U + (16.0 + 32.0 * jf) * eps) * r2 / (1.0 - r2) * up;
-            if tail1 <= rel_stop * (t1.hi + t1b.hi) && tail2 <= rel_stop * (t2.hi + t2b.hi) {
-                t1 = t1 + t1b;
-                t2 = t2 + t2b;
-                w1 += 8.0 * t1.hi;
-                w2 += 8.0 * t2.hi;
-                break (tail1 + eps * w1 * (1.0 + 2.0 * U) * SLACK, tail2 + eps * w2 * (1.0 + 2.0 * U) * SLACK);
+            let tail2 = sigma * (1.0 + 2.0 * U + (16.0 + 32.0 * jf) * eps) * r2 / (1.0 - r2) * up;
+            if tail1 <= rel_stop * (acc_e.hi.a() + acc_o.hi.a()) && tail2 <= rel_stop * (acc_e.hi.b() + acc_o.hi.b()) {
+                let total = acc_e.add(acc_o);
+                wt = wt.add(eight.mul(total.hi));
+                acc_e = total;
+                break (tail1 + eps * wt.a() * (1.0 + 2.0 * U) * SLACK, tail2 + eps * wt.b() * (1.0 + 2.0 * U) * SLACK);
             }
         }
         if m > MAX_TERMS {
             return None;
         }
     };
+    let t1 = Dd { hi: acc_e.hi.a(), lo: acc_e.lo.a() };
+    let t2 = Dd { hi: acc_e.hi.b(), lo: acc_e.lo.b() };
     let t1 = BoundedDd { v: t1, e: e1 };
     let t2 = BoundedDd { v: t2, e: e2 };
     let w32 = BoundedDd::exact(w).sqrt_p::<P>()?.mul_f64_p::<P>(w);
