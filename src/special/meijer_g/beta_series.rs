@@ -105,24 +105,6 @@ mod tests {
         meijer_g_k_beta_series(k, y, val_from_dd(c.c), val_from_dd(c.p))
     }
 
-    /// `y` with `G(k, y)` changing sign between `y` and its f64 neighbour above.
-    fn f64_next_to_zero(k: u32) -> f64 {
-        let sign = |y: f64| meijer_g_k_mp(k, &exact(y), 64).unwrap().mid().is_sign_positive();
-        let (mut lo, mut hi) = (0.5f64, 0.6f64);
-        assert!(sign(lo) && !sign(hi));
-        loop {
-            let mid = 0.5 * (lo + hi);
-            if mid <= lo || mid >= hi {
-                return lo;
-            }
-            if sign(mid) {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-    }
-
     #[test]
     fn bound_holds_and_is_relative_where_k_w_is_large() {
         // k w >= BETA_SERIES_MIN_KW on the y list (and the switch itself), and
@@ -135,7 +117,7 @@ mod tests {
             let switch = 1.0 - BETA_SERIES_MIN_KW / k as f64;
             let mut ys = vec![0.5, 0.5f64.next_up(), 0.6, 0.7, 0.8, 0.85, 0.9, 0.93, 0.95, 0.96, 0.966, 0.97, switch.next_down(), switch];
             if k >= 100 {
-                let y0 = f64_next_to_zero(k);
+                let y0 = crate::special::meijer_g::dd::tests::f64_next_to_zero(k);
                 ys.extend([y0, y0.next_up(), y0 - 1e-9, y0 + 1e-9, y0 - 1e-6, y0 + 1e-6, y0 - 1e-3, y0 + 1e-3]);
             }
             for &y in &ys {

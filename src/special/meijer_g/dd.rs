@@ -283,7 +283,7 @@ pub(crate) fn near_one_dd<P: ExactProduct>(k: u32, w: f64, c: &DdConstants) -> O
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::special::exact;
     use crate::special::meijer_g::meijer_g_k_mp;
@@ -303,7 +303,7 @@ mod tests {
 
     /// `y` with `G(k, y)` changing sign between `y` and its f64 neighbour above
     /// (bisection on the sign of the certified 64-bit value).
-    fn f64_next_to_zero(k: u32) -> f64 {
+    pub(crate) fn f64_next_to_zero(k: u32) -> f64 {
         let sign = |y: f64| meijer_g_k_mp(k, &exact(y), 64).unwrap().mid().is_sign_positive();
         let (mut lo, mut hi) = (0.3f64, 0.95f64);
         assert!(sign(lo) && !sign(hi));
