@@ -69,11 +69,23 @@ const MAX_TERMS: u64 = 6000;
 /// f64 evaluation of the bounds themselves).
 const SLACK: f64 = 1.0 + 1.0 / (1u64 << 20) as f64;
 
+/// `G(k, 1 - w)` by the near-one expansion in plain double-double, `0 < w <= 1/2`
+/// exact, with its proven bound (module docs): on four AVX lanes with FMA products where
+/// the CPU has both, else on two lanes with FMA or Dekker's products (all bit-identical).
+pub(crate) fn near_one_fast(k: u32, w: f64, c: &DdConstants) -> Option<BoundedDd> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if std::arch::is_x86_feature_detected!("avx") && std::arch::is_x86_feature_detected!("fma") {
+            // SAFETY: the CPU has AVX and FMA (checked just above).
+            return unsafe { near_one_fast_avx(k, w, c) };
+        }
+    }
+    near_one_fast_2lane(k, w, c)
+}
+
 cpu_dispatch! {
-    /// `G(k, 1 - w)` by the near-one expansion in plain double-double, `0 < w <= 1/2`
-    /// exact, with its proven bound (module docs). FMA products where the CPU has them
-    /// (bit-identical to Dekker's).
-    pub(crate) fn near_one_fast(k: u32, w: f64, c: &DdConstants) -> Option<BoundedDd> => near_one_fast_with
+    /// [`near_one_fast`] on two lanes: FMA products where the CPU has them, else Dekker's.
+    fn near_one_fast_2lane(k: u32, w: f64, c: &DdConstants) -> Option<BoundedDd> => near_one_fast_with
 }
 
 /// [`near_one_fast`] with Dekker's products (tests compare the two).
@@ -286,37 +298,76 @@ struct RatioConsts {
     one: L2,
 }
 
+/// The start of both recurrences: `x = (tau_1, sigma_0)` (`tau_1 = w (2k+1)/2` exact,
+/// `sigma_0 = 2/3` one quotient), the weighted error sums of the first terms (units of
+/// `eps`; `eta(sigma_0) = 16`), and the stopping threshold: a sum stops when its tail is
+/// below `2^-64 (1-w)^k` of it (an estimate of `|G|` over the parts; only the cost
+/// depends on it), at least `2^-104`.
 #[inline(always)]
-fn near_one_fast_with<P: TwoProd2>(k: u32, w: f64, c: &DdConstants) -> Option<BoundedDd> {
-    if !(w > 0.0 && w <= 0.5) {
-        return None;
-    }
-    let kf = k as f64;
-    let up = 1.0 + 8.0 * U;
-    let eps = U * U;
-    // stop a sum when its tail is below rel_stop of it: 2^-64 (1-w)^k (an estimate of
-    // |G| over the parts; only the cost depends on it), at least 2^-104
-    let rel_stop = (5.421010862427522e-20 * (kf * (-w).ln_1p()).exp()).max(4.930380657631324e-32);
-    // x = (tau_m, sigma_{m-1}): tau_1 = w (2k+1)/2 (exact), sigma_0 = 2/3
+fn start<P: TwoProd2>(kf: f64, w: f64) -> (Dd2, L2, f64) {
     let tau1 = Dd::prod_p::<P>(w, 2.0 * kf + 1.0);
     let sigma0 = crate::ball::div_f64_p::<P>(Dd::from_f64(2.0), 3.0);
-    let mut x = Dd2 { hi: L2::new(0.5 * tau1.hi, sigma0.hi), lo: L2::new(0.5 * tau1.lo, sigma0.lo) };
-    // two accumulators per sum (even and odd m), so that the additions form two chains
-    let mut acc_e = x;
-    let mut acc_o = Dd2 { hi: L2::new(0.0, 0.0), lo: L2::new(0.0, 0.0) };
-    // sum eta_m t~_m + 8 s~_m per lane, in units of eps (eta(sigma_0) = 16)
-    let mut wt = L2::new(8.0 * acc_e.hi.a(), 24.0 * acc_e.hi.b());
-    let rc = RatioConsts {
+    let x = Dd2 { hi: L2::new(0.5 * tau1.hi, sigma0.hi), lo: L2::new(0.5 * tau1.lo, sigma0.lo) };
+    let we = L2::new(8.0 * x.hi.a(), 24.0 * x.hi.b());
+    let rel_stop = (5.421010862427522e-20 * (kf * (-w).ln_1p()).exp()).max(4.930380657631324e-32);
+    (x, we, rel_stop)
+}
+
+/// The lane constants of [`ratios`] for `k`.
+#[inline(always)]
+fn ratio_consts(kf: f64) -> RatioConsts {
+    RatioConsts {
         alpha: L2::new(2.0 * kf - 1.0, -1.0),
         gamma: L2::new(-1.0, kf),
         delta: L2::new(0.0, -1.0),
         zeta: L2::new(-3.0, 1.0),
         one: L2::new(1.0, 1.0),
-    };
-    let (ww, one) = (L2::new(w, w), L2::new(1.0, 1.0));
+    }
+}
+
+/// The stopping test after the step to `x = (tau_m, sigma_{m-1})`, `m = 1 (mod 4)`: the
+/// tails of both sums (module docs) and, once both are below `rel_stop` of their sums,
+/// the two sums (the even and odd accumulators added) with their bounds.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn stop(m: u64, kf: f64, w: f64, x: Dd2, acc_e: Dd2, acc_o: Dd2, we: L2, wo: L2, rel_stop: f64) -> Option<(Dd2, f64, f64)> {
+    let up = 1.0 + 8.0 * U;
+    let eps = U * U;
+    let mf = m as f64;
+    let jf = mf - 1.0;
+    let (tau, sigma) = (x.hi.a(), x.hi.b());
+    // T1: rho_{m+1} = tau_m (2m/(2m-1)) w (2k+2m+1)/(2m+1); ratio_{m+1} = w (2k+2m+3)/(2m+3)
+    let r1 = w * (2.0 * kf + 2.0 * mf + 3.0) / (2.0 * mf + 3.0) * up;
+    // T2: ratio bound w (k+2+j)/(j+1)
+    let r2 = w * (kf + 2.0 + jf) / (jf + 1.0) * up;
+    if !(r1 < 1.0 && r2 < 1.0) {
+        return None;
+    }
+    let tau_up = tau * (1.0 + 2.0 * U + 32.0 * mf * eps);
+    let rho_next = tau_up * (2.0 * mf / (2.0 * mf - 1.0)) * w * (2.0 * kf + 2.0 * mf + 1.0) / (2.0 * mf + 1.0) * up;
+    let tail1 = rho_next / (1.0 - r1) * up;
+    let tail2 = sigma * (1.0 + 2.0 * U + (16.0 + 32.0 * jf) * eps) * r2 / (1.0 - r2) * up;
+    if !(tail1 <= rel_stop * (acc_e.hi.a() + acc_o.hi.a()) && tail2 <= rel_stop * (acc_e.hi.b() + acc_o.hi.b())) {
+        return None;
+    }
+    let total = acc_e.add(acc_o);
+    let wt = we.add(wo).add(L2::new(8.0, 8.0).mul(total.hi));
+    Some((total, tail1 + eps * wt.a() * (1.0 + 2.0 * U) * SLACK, tail2 + eps * wt.b() * (1.0 + 2.0 * U) * SLACK))
+}
+
+/// Both sums, two lanes at a time (module docs): `(T1, T2)` and their bounds.
+#[inline(always)]
+fn sums_2lane<P: TwoProd2>(kf: f64, w: f64) -> Option<(Dd2, f64, f64)> {
+    let (mut x, mut we, rel_stop) = start::<P>(kf, w);
+    // two accumulators per sum (even and odd m), so that the additions form two chains
+    let mut acc_e = x;
+    let mut acc_o = Dd2 { hi: L2::new(0.0, 0.0), lo: L2::new(0.0, 0.0) };
+    let mut wo = L2::new(0.0, 0.0);
+    let rc = ratio_consts(kf);
+    let (ww, one, eight) = (L2::new(w, w), L2::new(1.0, 1.0), L2::new(8.0, 8.0));
     let mut mm = L2::new(1.0, 1.0); // (m, m)
     let mut m = 1u64; // x holds tau_m, sigma_{m-1}
-    let (e1, e2) = loop {
+    loop {
         // two steps, m+1 (off the chain) and m+2 = x R_{m+1} R_{m+2} (on it)
         let mf = m as f64;
         mm = mm.add(one);
@@ -328,42 +379,27 @@ fn near_one_fast_with<P: TwoProd2>(k: u32, w: f64, c: &DdConstants) -> Option<Bo
         acc_e = acc_e.add(x1);
         acc_o = acc_o.add(x);
         // eta(tau_m) <= 32 (m-1) eps, eta(sigma_j) <= (16 + 32 j) eps, j = m - 1
-        let c1 = L2::new(32.0 * mf, 32.0 * mf + 16.0);
-        let c2 = L2::new(32.0 * mf + 32.0, 32.0 * mf + 48.0);
-        let eight = L2::new(8.0, 8.0);
-        wt = wt.add(c1.mul(x1.hi)).add(eight.mul(acc_e.hi)).add(c2.mul(x.hi)).add(eight.mul(acc_o.hi));
+        we = we.add(L2::new(32.0 * mf, 32.0 * mf + 16.0).mul(x1.hi)).add(eight.mul(acc_e.hi));
+        wo = wo.add(L2::new(32.0 * mf + 32.0, 32.0 * mf + 48.0).mul(x.hi)).add(eight.mul(acc_o.hi));
         m += 2;
-        if m % 4 != 1 {
-            continue;
-        }
-        let eight = L2::new(8.0, 8.0);
-        let mf = m as f64;
-        let jf = mf - 1.0;
-        let (tau, sigma) = (x.hi.a(), x.hi.b());
-        // T1: rho_{m+1} = tau_m (2m/(2m-1)) w (2k+2m+1)/(2m+1); ratio_{m+1} = w (2k+2m+3)/(2m+3)
-        let r1 = w * (2.0 * kf + 2.0 * mf + 3.0) / (2.0 * mf + 3.0) * up;
-        // T2: ratio bound w (k+2+j)/(j+1)
-        let r2 = w * (kf + 2.0 + jf) / (jf + 1.0) * up;
-        if r1 < 1.0 && r2 < 1.0 {
-            let tau_up = tau * (1.0 + 2.0 * U + 32.0 * mf * eps);
-            let rho_next = tau_up * (2.0 * mf / (2.0 * mf - 1.0)) * w * (2.0 * kf + 2.0 * mf + 1.0) / (2.0 * mf + 1.0) * up;
-            let tail1 = rho_next / (1.0 - r1) * up;
-            let tail2 = sigma * (1.0 + 2.0 * U + (16.0 + 32.0 * jf) * eps) * r2 / (1.0 - r2) * up;
-            if tail1 <= rel_stop * (acc_e.hi.a() + acc_o.hi.a()) && tail2 <= rel_stop * (acc_e.hi.b() + acc_o.hi.b()) {
-                let total = acc_e.add(acc_o);
-                wt = wt.add(eight.mul(total.hi));
-                acc_e = total;
-                break (tail1 + eps * wt.a() * (1.0 + 2.0 * U) * SLACK, tail2 + eps * wt.b() * (1.0 + 2.0 * U) * SLACK);
+        if m % 4 == 1 {
+            if let Some(done) = stop(m, kf, w, x, acc_e, acc_o, we, wo, rel_stop) {
+                return Some(done);
             }
         }
         if m > MAX_TERMS {
             return None;
         }
-    };
-    let t1 = Dd { hi: acc_e.hi.a(), lo: acc_e.lo.a() };
-    let t2 = Dd { hi: acc_e.hi.b(), lo: acc_e.lo.b() };
-    let t1 = BoundedDd { v: t1, e: e1 };
-    let t2 = BoundedDd { v: t2, e: e2 };
+    }
+}
+
+/// The assembly: `G = C_k (B_k(1) - ln(y)/2 + T1) - 2 sqrt(pi) w^{3/2} T2` in bounded
+/// double-doubles.
+#[inline(always)]
+fn assemble<P: TwoProd2>(w: f64, c: &DdConstants, sums: (Dd2, f64, f64)) -> Option<BoundedDd> {
+    let (total, e1, e2) = sums;
+    let t1 = BoundedDd { v: Dd { hi: total.hi.a(), lo: total.lo.a() }, e: e1 };
+    let t2 = BoundedDd { v: Dd { hi: total.hi.b(), lo: total.lo.b() }, e: e2 };
     let w32 = BoundedDd::exact(w).sqrt_p::<P>()?.mul_f64_p::<P>(w);
     let part2 = c.two_sqrt_pi.mul_p::<P>(w32).mul_p::<P>(t2);
     let base = c.b1.add(t1);
@@ -379,6 +415,177 @@ fn near_one_fast_with<P: TwoProd2>(k: u32, w: f64, c: &DdConstants) -> Option<Bo
     }
     let half_ln_y = ln_dd::<P>(y, c.ln2)?.mul_f64_p::<P>(0.5);
     Some(c.c.mul_p::<P>(base.sub(half_ln_y)).sub(part2))
+}
+
+#[inline(always)]
+fn near_one_fast_with<P: TwoProd2>(k: u32, w: f64, c: &DdConstants) -> Option<BoundedDd> {
+    if !(w > 0.0 && w <= 0.5) {
+        return None;
+    }
+    assemble::<P>(w, c, sums_2lane::<P>(k as f64, w)?)
+}
+
+/// Four lanes (AVX): the two steps of both recurrences of one iteration of
+/// [`sums_2lane`] side by side, `(tau_{m+1}, sigma_m, tau_{m+2}, sigma_{m+1})`, the same
+/// operations lane by lane (so the same bits).
+#[cfg(target_arch = "x86_64")]
+mod avx {
+    use super::{lanes::L2, ratio_consts, start, stop, Dd2, MAX_TERMS};
+    use crate::ball::Fused;
+    use std::arch::x86_64::*;
+
+    #[derive(Clone, Copy)]
+    struct L4(__m256d);
+
+    // SAFETY (every `unsafe` block): these functions are inlined only into
+    // `near_one_fast_avx`, which runs after the run-time check for AVX and FMA.
+    impl L4 {
+        #[inline(always)]
+        fn new(a: f64, b: f64, c: f64, d: f64) -> L4 {
+            L4(unsafe { _mm256_set_pd(d, c, b, a) })
+        }
+        #[inline(always)]
+        fn join(lo: L2, hi: L2) -> L4 {
+            L4(unsafe { _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(lo.0), hi.0) })
+        }
+        #[inline(always)]
+        fn low(self) -> L2 {
+            L2(unsafe { _mm256_castpd256_pd128(self.0) })
+        }
+        #[inline(always)]
+        fn high(self) -> L2 {
+            L2(unsafe { _mm256_extractf128_pd::<1>(self.0) })
+        }
+        #[inline(always)]
+        fn add(self, o: L4) -> L4 {
+            L4(unsafe { _mm256_add_pd(self.0, o.0) })
+        }
+        #[inline(always)]
+        fn sub(self, o: L4) -> L4 {
+            L4(unsafe { _mm256_sub_pd(self.0, o.0) })
+        }
+        #[inline(always)]
+        fn mul(self, o: L4) -> L4 {
+            L4(unsafe { _mm256_mul_pd(self.0, o.0) })
+        }
+        #[inline(always)]
+        fn div(self, o: L4) -> L4 {
+            L4(unsafe { _mm256_div_pd(self.0, o.0) })
+        }
+        /// The lanes of each half swapped.
+        #[inline(always)]
+        fn swap(self) -> L4 {
+            L4(unsafe { _mm256_permute_pd::<0b0101>(self.0) })
+        }
+        #[inline(always)]
+        fn two_prod(self, o: L4) -> (L4, L4) {
+            let p = self.mul(o);
+            (p, L4(unsafe { _mm256_fmsub_pd(self.0, o.0, p.0) }))
+        }
+    }
+
+    #[derive(Clone, Copy)]
+    struct Dd4 {
+        hi: L4,
+        lo: L4,
+    }
+
+    impl Dd4 {
+        #[inline(always)]
+        fn join(lo: Dd2, hi: Dd2) -> Dd4 {
+            Dd4 { hi: L4::join(lo.hi, hi.hi), lo: L4::join(lo.lo, hi.lo) }
+        }
+        #[inline(always)]
+        fn low(self) -> Dd2 {
+            Dd2 { hi: self.hi.low(), lo: self.lo.low() }
+        }
+        #[inline(always)]
+        fn high(self) -> Dd2 {
+            Dd2 { hi: self.hi.high(), lo: self.lo.high() }
+        }
+        #[inline(always)]
+        fn quick(s: L4, t: L4) -> Dd4 {
+            let hi = s.add(t);
+            Dd4 { hi, lo: t.sub(hi.sub(s)) }
+        }
+        /// [`Dd2::mul`] on four lanes.
+        #[inline(always)]
+        fn mul(self, o: Dd4) -> Dd4 {
+            let (p, e) = self.hi.two_prod(o.hi);
+            Dd4::quick(p, e.add(self.hi.mul(o.lo).add(self.lo.mul(o.hi))))
+        }
+        /// [`Dd2::add`] on four lanes.
+        #[inline(always)]
+        fn add(self, o: Dd4) -> Dd4 {
+            let s = self.hi.add(o.hi);
+            let bb = s.sub(self.hi);
+            let e = self.hi.sub(s.sub(bb)).add(o.hi.sub(bb));
+            Dd4::quick(s, e.add(self.lo).add(o.lo))
+        }
+    }
+
+    /// [`super::ratios`] for `m` in the low half and `m + 1` in the high half (`mm`).
+    #[inline(always)]
+    fn ratios4(mm: L4, alpha: L4, gamma: L4, delta: L4, zeta: L4, one: L4, w: L4) -> Dd4 {
+        let m2 = mm.add(mm);
+        let n = alpha.add(m2).mul(gamma.add(mm));
+        let d = delta.add(mm).mul(zeta.add(m2));
+        let ds = d.swap();
+        let inv = one.div(d.mul(ds)).mul(ds);
+        let (a, ae) = w.two_prod(n);
+        let rh = a.mul(inv);
+        let (p, pe) = rh.two_prod(d);
+        let rl = a.sub(p).sub(pe).add(ae).mul(inv);
+        Dd4::quick(rh, rl)
+    }
+
+    /// [`super::sums_2lane`] on four lanes, with FMA products (the same bits).
+    #[inline(always)]
+    pub(super) fn sums_4lane(kf: f64, w: f64) -> Option<(Dd2, f64, f64)> {
+        let (mut x, we0, rel_stop) = start::<Fused>(kf, w);
+        let zero = L2::new(0.0, 0.0);
+        let mut acc = Dd4::join(x, Dd2 { hi: zero, lo: zero });
+        let mut wt = L4::join(we0, zero);
+        let rc = ratio_consts(kf);
+        let dup = |v: L2| L4::join(v, v);
+        let (alpha, gamma, delta, zeta, one) = (dup(rc.alpha), dup(rc.gamma), dup(rc.delta), dup(rc.zeta), dup(rc.one));
+        let ww = L4::new(w, w, w, w);
+        let eight = L4::new(8.0, 8.0, 8.0, 8.0);
+        let (two, sixty_four) = (L4::new(2.0, 2.0, 2.0, 2.0), L4::new(64.0, 64.0, 64.0, 64.0));
+        let mut mm = L4::new(2.0, 2.0, 3.0, 3.0); // (m+1, m+1, m+2, m+2)
+        let mut coef = L4::new(32.0, 48.0, 64.0, 80.0); // (32 m, 32 m + 16, 32 m + 32, 32 m + 48)
+        let mut m = 1u64;
+        loop {
+            let rv = ratios4(mm, alpha, gamma, delta, zeta, one, ww);
+            let (r1, r2) = (rv.low(), rv.high());
+            let r12 = r1.mul::<Fused>(r2);
+            let y = Dd4::join(x, x).mul(Dd4::join(r1, r12));
+            acc = acc.add(y);
+            wt = wt.add(coef.mul(y.hi)).add(eight.mul(acc.hi));
+            x = y.high();
+            mm = mm.add(two);
+            coef = coef.add(sixty_four);
+            m += 2;
+            if m % 4 == 1 {
+                if let Some(done) = stop(m, kf, w, x, acc.low(), acc.high(), wt.low(), wt.high(), rel_stop) {
+                    return Some(done);
+                }
+            }
+            if m > MAX_TERMS {
+                return None;
+            }
+        }
+    }
+}
+
+/// [`near_one_fast_with`] on four AVX lanes with FMA products.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx,fma")]
+fn near_one_fast_avx(k: u32, w: f64, c: &DdConstants) -> Option<BoundedDd> {
+    if !(w > 0.0 && w <= 0.5) {
+        return None;
+    }
+    assemble::<crate::ball::Fused>(w, c, avx::sums_4lane(k as f64, w)?)
 }
 
 #[cfg(test)]
