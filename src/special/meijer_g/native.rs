@@ -223,11 +223,13 @@ pub const NEAR_ONE_F64_MAX_KW: f64 = 1.25;
 pub const NEAR_ONE_F64_MIN_Y: f64 = 0.85;
 
 /// Smallest `y` at which the plain double-double near-one expansion
-/// ([`super::near_one_fast`]) is tried before the f64 direct series (and from `0.78`
-/// for `k <= 40`): about `0.12 + 0.009 m` us for `m` terms a sum against
-/// `0.05 + 0.0033 N` us for the `N ~ 40/(1-y)` terms of the direct series (measured on
-/// the grid of `examples/meijer_g_grid.rs`). Below, it runs after the direct series
-/// where that misses `1e-14` (next to the zeros of `G(2, .)`, `G(3, .)`).
+/// ([`super::near_one_fast`]) is tried before the f64 direct series, at every `k`; also
+/// from `0.84` for `k <= 150`, `0.78` for `k <= 40` and `0.65` for `k <= 3`. It costs
+/// about `0.1 + 0.006 m` us for `m` terms a sum (`m ~ 25-120`, four AVX lanes), the
+/// direct series `0.05 + 0.0035 N` us for `N ~ 40/(1-y)` terms (measured on the grid of
+/// `examples/meijer_g_grid.rs`); for `k <= 3` from `0.65` because next to the zeros of
+/// `G(2, .)` (0.807) and `G(3, .)` (0.70) the direct series misses `1e-14` and would be
+/// paid for twice. Elsewhere it runs after the direct series where that misses `1e-14`.
 pub const NEAR_ONE_FAST_MIN_Y: f64 = 0.875;
 
 /// Largest `k w/(1 - w)` (`>= -k ln(1 - w)`, the log of the growth of the parts before
@@ -335,9 +337,20 @@ pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Option<Bounded
     let tables = table()?;
     let accept = |b: Bounded| (b.value.is_finite() && b.err <= rel_tol * b.value.abs()).then_some(b);
     let kw = k as f64 * (1.0 - y);
-    if y >= 0.5 && y < 1.0 && kw >= BETA_SERIES_MIN_KW {
+    let consts = tables.dd_constants(k);
+    // the plain double-double near-one expansion fits while its parts grow by at most
+    // e^31 (its bound is then 1e-14 relative); where it also fits, the Beta series
+    // (k w >= 28) is cheaper but reaches 1e-14 only from k w ~ 30-33, so near y = 1
+    // (y > 0.95, k >= 300) the expansion goes first
+    let fast_fits = y > 0.5 && y < 1.0 && kw <= NEAR_ONE_FAST_MAX_GROWTH * y;
+    let beta_fits = y >= 0.5 && y < 1.0 && kw >= BETA_SERIES_MIN_KW;
+    let beta_first = beta_fits && !(fast_fits && y > 0.95);
+    let beta = || {
         let [c, p, _] = tables.per_k[k as usize];
-        if let Some(b) = meijer_g_k_beta_series(k, y, val_from_dd(c), val_from_dd(p)).and_then(accept) {
+        meijer_g_k_beta_series(k, y, val_from_dd(c), val_from_dd(p)).and_then(accept)
+    };
+    if beta_first {
+        if let Some(b) = beta() {
             return Some(b);
         }
     }
@@ -346,12 +359,10 @@ pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Option<Bounded
             return Some(b);
         }
     }
-    let consts = tables.dd_constants(k);
-    // the plain double-double near-one expansion: before the direct series above
-    // NEAR_ONE_FAST_MIN_Y (cheaper there), after it below (next to the zeros of G(k, .))
-    let fast_fits = y > 0.5 && y < 1.0 && kw <= NEAR_ONE_FAST_MAX_GROWTH * y;
+    // before the direct series where it is cheaper (NEAR_ONE_FAST_MIN_Y), after it
+    // elsewhere (next to the zeros of G(2, .), G(3, .))
+    let fast_first = y >= NEAR_ONE_FAST_MIN_Y || (y >= 0.84 && k <= 150) || (y >= 0.78 && k <= 40) || (y >= 0.65 && k <= 3);
     let near_one_fast_accepted = || near_one_fast(k, 1.0 - y, &consts).and_then(|b| b.finish()).and_then(accept);
-    let fast_first = y >= NEAR_ONE_FAST_MIN_Y || (y >= 0.78 && k <= 40);
     if fast_fits && fast_first {
         if let Some(b) = near_one_fast_accepted() {
             return Some(b);
@@ -364,6 +375,11 @@ pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Option<Bounded
     }
     if fast_fits && !fast_first {
         if let Some(b) = near_one_fast_accepted() {
+            return Some(b);
+        }
+    }
+    if beta_fits && !beta_first {
+        if let Some(b) = beta() {
             return Some(b);
         }
     }
