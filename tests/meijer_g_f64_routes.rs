@@ -1,7 +1,7 @@
 //! Every f64 route of `meijer_g_k_bounded` (issue 23, item 4), through the public API:
 //! on a grid of `k` and `y` that crosses every route switch (the Beta-expectation series
-//! at `k (1-y) = 28`, the plain double-double near-one expansion at `k w = 31 y` and
-//! `y = 0.78, 0.875`, the f64 near-one expansion at `y = 0.85`, `k w = 1.25`, the direct
+//! at `k (1-y) = 28` and `28 + 2.5 ln(k/300)`, the plain double-double near-one expansion
+//! at `k w = 32 y` and `y = 0.78, 0.875`, the f64 near-one expansion at `y = 0.85`, `k w = 1.25`, the direct
 //! series at `y = 0.97`), next to `y = 1`, next to each zero of `G(k, .)` and at tiny `y`,
 //! the returned bound encloses the certified 200-bit value, it is `1e-14` relative
 //! (the tolerance table below, enforced), and no point falls back to MP except the two
@@ -79,12 +79,15 @@ fn every_route_encloses_and_is_relative() {
             ys.push((y, region));
         }
         // the f64 neighbours of every switch
-        let mut switches = vec![0.78, 0.85, 0.875, 0.97];
+        let mut switches = vec![0.65, 0.78, 0.84, 0.85, 0.875, 0.97];
         if k > 0 {
-            switches.extend([1.0 - 1.25 / kf, kf / (kf + 31.0)]);
+            switches.extend([1.0 - 1.25 / kf, kf / (kf + 32.0)]);
         }
         if k >= 56 {
             switches.push(1.0 - 28.0 / kf);
+        }
+        if k >= 300 {
+            switches.push(1.0 - (28.0 + 2.5 * (kf / 300.0).ln()) / kf);
         }
         for s in switches {
             if s > 0.5 && s < 1.0 {

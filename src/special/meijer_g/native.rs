@@ -21,12 +21,7 @@
 //!   the errors collected, Ogita-Rump-Oishi *Sum2*): it adds at most
 //!   `u |S| + gamma_{N-1}^2 S` (all terms positive), not `N u S`.
 //!   Tail: the ratio of `r_n` is at most `y`, so `sum_{n>N} r_n/n <= y r_N/((N+1)(1-y))`.
-//! * `ln y`: `y = m 2^e`, `m in [1/sqrt2, sqrt2)`, `ln y = e ln2 + 2 atanh(v)`,
-//!   `v = (m-1)/(m+1)` (`m - 1` exact by Sterbenz; two roundings: `|v~ - v| <= gamma_2 |v|`),
-//!   `|v| <= 0.1716`; `atanh(v) = v P(v^2)`, `P(s) = sum_j s^j/(2j+1)` by Horner with
-//!   Higham's running bound (Alg. 5.1), the coefficients' roundings `u P(|s|)`, the
-//!   truncation `s^J/((2J+1)(1-s))` and the input error through `P'(s) <= 1/(2(1-s)^2)`;
-//!   `|ln2 - fl(ln2)| <= 2.4e-17`.
+//! * `ln y`: [`super::elementary::ln_bounded`] (atanh series with a running bound).
 //! * The bracket and the product: one rounding each (`u |result|`), input errors
 //!   propagated to first and second order. The bound is evaluated in f64 and
 //!   inflated by `1 + 2^-30` for its own roundings.
@@ -40,14 +35,26 @@
 //!   direct series at `0.85 < y <= 0.97` and 1-2 us for the double-double path
 //!   above 0.97 (issue 23, item 4).
 //!
-//! The native value is returned when its bound is at most `rel_tol |G|`. Where
-//! the f64 sums miss that (next to the zero of `G(k, .)`, `k >= 2`, where `B`
-//! cancels) and for `Y_NATIVE_MAX < y < 1` (the direct series converges slowly;
-//! the near-one expansion cancels by `e^{k w}`), the double-double paths of
-//! `dd.rs` run (0.5-4 us). Left to MP (counted by the caller):
-//! `k > TABLE_K_MAX`, and the two to four f64 `y` next to a zero of `G(k, .)`
-//! (`|G| <~ 1e-16`), where even the double-double bound (absolute, `~1e-30`)
-//! is not `1e-14` relative.
+//! * For `k (1 - y) >= 28`, `y >= 1/2`: the Beta-expectation series of
+//!   [`super::beta_series`] (`B = (ln(w/y) + A + P_k)/2`, an alternating series in
+//!   `y/w` with a rigorous remainder), a few dozen f64 terms.
+//! * For `k w <= 31 y` (the parts of the near-one expansion grow by at most `e^31`):
+//!   the near-one expansion in plain double-double with an a-priori bound,
+//!   [`super::near_one_fast`] (four AVX lanes), 0.1-1 us.
+//!
+//! The routes in order (the first whose bound is at most `rel_tol |G|` answers; see
+//! [`meijer_g_k_native_bounded`]): the Beta series (`k w >= 28`, not next to one where the
+//! next one also fits and the series is short of 1e-14), `near_one_f64` (`y > 0.85`,
+//! `k w <= 1.25`), `near_one_fast` where it is cheaper than the direct series
+//! ([`NEAR_ONE_FAST_MIN_Y`]), the Beta series where it was deferred, the f64 direct series
+//! (`y <= Y_NATIVE_MAX`), `near_one_fast` elsewhere (next to the zeros of `G(2, .)`,
+//! `G(3, .)`), and last the double-double paths of
+//! `dd.rs` with running bounds (next to the zeros of `G(k, .)` for `k >= 4`, and the
+//! few points in no other route's range: `k = 1000`, `0.961 < y < 0.969`, where
+//! `31 < k w < 39` and neither the near-one expansion nor the Beta series reaches
+//! `1e-14`; 1.5-5 us). Left to MP (counted by the caller): `k > TABLE_K_MAX`, and the
+//! f64 `y` next to a zero of `G(k, .)` (`|G| <~ 1e-16`), where even the double-double
+//! bound (absolute, `~1e-30`) is not `1e-14` relative.
 
 use std::sync::OnceLock;
 
@@ -235,7 +242,7 @@ pub const NEAR_ONE_FAST_MIN_Y: f64 = 0.875;
 /// Largest `k w/(1 - w)` (`>= -k ln(1 - w)`, the log of the growth of the parts before
 /// they cancel) at which the plain double-double near-one expansion is tried: its bound
 /// is `~1e-31 (1-w)^{-k}` of `|G|`, `1e-14` relative up to about 30 (measured).
-pub const NEAR_ONE_FAST_MAX_GROWTH: f64 = 31.0;
+pub const NEAR_ONE_FAST_MAX_GROWTH: f64 = 32.0;
 
 /// `G(k, 1 - w)` by the near-one expansion (module docs of
 /// [`super::dd`]: `G = C_k B_k(1) + C_k (k+1) I1(w) - 2 sqrt(pi) w^{3/2} I2'(w)`)
@@ -339,12 +346,13 @@ pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Option<Bounded
     let kw = k as f64 * (1.0 - y);
     let consts = tables.dd_constants(k);
     // the plain double-double near-one expansion fits while its parts grow by at most
-    // e^31 (its bound is then 1e-14 relative); where it also fits, the Beta series
-    // (k w >= 28) is cheaper but reaches 1e-14 only from k w ~ 30-33, so near y = 1
-    // (y > 0.95, k >= 300) the expansion goes first
+    // about e^31 (its bound is then 1e-14 relative). Where it also fits, the Beta series
+    // (k w >= 28) is cheaper but reaches 1e-14 only from k w ~ 28 + 2.5 ln(k/300)
+    // (measured: 28 at k = 300, 29.5 at 500, 31 at 1000; its smallest term is about
+    // e^{-k w} times a factor growing with y/w), so below that the expansion goes first
     let fast_fits = y > 0.5 && y < 1.0 && kw <= NEAR_ONE_FAST_MAX_GROWTH * y;
     let beta_fits = y >= 0.5 && y < 1.0 && kw >= BETA_SERIES_MIN_KW;
-    let beta_first = beta_fits && !(fast_fits && y > 0.95);
+    let beta_first = beta_fits && (!fast_fits || kw >= BETA_SERIES_MIN_KW + 2.5 * (k as f64 / 300.0).ln());
     let beta = || {
         let [c, p, _] = tables.per_k[k as usize];
         meijer_g_k_beta_series(k, y, val_from_dd(c), val_from_dd(p)).and_then(accept)
@@ -368,6 +376,11 @@ pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Option<Bounded
             return Some(b);
         }
     }
+    if beta_fits && !beta_first {
+        if let Some(b) = beta() {
+            return Some(b);
+        }
+    }
     if y == 1.0 || y <= Y_NATIVE_MAX {
         if let Some(b) = meijer_g_k_f64(tables, k, y).and_then(accept) {
             return Some(b);
@@ -375,11 +388,6 @@ pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Option<Bounded
     }
     if fast_fits && !fast_first {
         if let Some(b) = near_one_fast_accepted() {
-            return Some(b);
-        }
-    }
-    if beta_fits && !beta_first {
-        if let Some(b) = beta() {
             return Some(b);
         }
     }
