@@ -1,6 +1,6 @@
 //! Every f64 route of `meijer_g_k_bounded` (issue 23, item 4), through the public API:
 //! on a grid of `k` and `y` that crosses every route switch (the Beta-expectation series
-//! at `k (1-y) = 28` and `28 + 2.5 ln(k/300)`, the plain double-double near-one expansion
+//! from `k (1-y) = 14`, first from 14.5-30 by `k`, the plain double-double near-one expansion
 //! at `k w = 32 y` and `y = 0.78, 0.875`, the f64 near-one expansion at `y = 0.85`, `k w = 1.25`, the direct
 //! series at `y = 0.97`), next to `y = 1`, next to each zero of `G(k, .)` and at tiny `y`,
 //! the returned bound encloses the certified 200-bit value, it is `1e-14` relative
@@ -70,7 +70,7 @@ fn every_route_encloses_and_is_relative() {
             } else if y == 1.0 {
                 "y = 1"
             } else if kf * (1.0 - y) >= 28.0 && y >= 0.5 {
-                "k w >= 28 (Beta series)"
+                "k w >= 28"
             } else if y > 0.97 {
                 "0.97 < y < 1"
             } else {
@@ -83,11 +83,19 @@ fn every_route_encloses_and_is_relative() {
         if k > 0 {
             switches.extend([1.0 - 1.25 / kf, kf / (kf + 32.0)]);
         }
-        if k >= 56 {
-            switches.push(1.0 - 28.0 / kf);
+        if k >= 28 {
+            switches.push(1.0 - 14.0 / kf);
         }
-        if k >= 300 {
-            switches.push(1.0 - (28.0 + 2.5 * (kf / 300.0).ln()) / kf);
+        // where the Beta series goes first (meijer_g/native.rs, beta_series_kw)
+        let beta_kw = match k {
+            30 => 14.5,
+            100 => 21.5,
+            300 => 27.3,
+            1000 => 30.0,
+            _ => 0.0,
+        };
+        if beta_kw > 0.0 {
+            switches.push(1.0 - beta_kw / kf);
         }
         for s in switches {
             if s > 0.5 && s < 1.0 {

@@ -325,6 +325,19 @@ fn near_one_f64(tables: &Tables, k: u32, w: f64) -> Option<Bounded> {
     at_one.add(t1).sub(t2).finish()
 }
 
+/// The `k w` from which the Beta series' bound is `1e-14` relative (its smallest term is
+/// about `e^{-k w}` times a factor that grows with `y/w`): measured on the unit probe
+/// of 2026-11-27 at `k = 30, 56, 100, 200, 300, 500, 1000` (`14.5, 17.2, 21.5, 25.5,
+/// 27.3, 28.8, 30.0`), linear in `ln k` between. It only orders the routes: where the
+/// series misses, the next route answers.
+fn beta_series_kw(k: u32) -> f64 {
+    const AT: [(f64, f64); 7] = [(30.0, 14.5), (56.0, 17.2), (100.0, 21.5), (200.0, 25.5), (300.0, 27.3), (500.0, 28.8), (1000.0, 30.0)];
+    let kf = (k as f64).clamp(AT[0].0, AT[6].0);
+    let i = AT.iter().position(|&(kk, _)| kk >= kf).unwrap_or(6).max(1);
+    let ((k0, t0), (k1, t1)) = (AT[i - 1], AT[i]);
+    t0 + (t1 - t0) * (kf / k0).ln() / (k1 / k0).ln()
+}
+
 /// `G(k, y)` natively with a proven bound, if that bound is at most `rel_tol |G|`.
 /// Arguments are validated by the caller (`0 < y <= 1`).
 ///
@@ -346,13 +359,11 @@ pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Option<Bounded
     let kw = k as f64 * (1.0 - y);
     let consts = tables.dd_constants(k);
     // the plain double-double near-one expansion fits while its parts grow by at most
-    // about e^31 (its bound is then 1e-14 relative). Where it also fits, the Beta series
-    // (k w >= 28) is cheaper but reaches 1e-14 only from k w ~ 28 + 2.5 ln(k/300)
-    // (measured: 28 at k = 300, 29.5 at 500, 31 at 1000; its smallest term is about
-    // e^{-k w} times a factor growing with y/w), so below that the expansion goes first
+    // about e^32 (its bound is then 1e-14 relative). Where it also fits, the Beta series
+    // is cheaper and goes first once it reaches 1e-14 (k w >= beta_series_kw(k))
     let fast_fits = y > 0.5 && y < 1.0 && kw <= NEAR_ONE_FAST_MAX_GROWTH * y;
     let beta_fits = y >= 0.5 && y < 1.0 && kw >= BETA_SERIES_MIN_KW;
-    let beta_first = beta_fits && (!fast_fits || kw >= BETA_SERIES_MIN_KW + 2.5 * (k as f64 / 300.0).ln());
+    let beta_first = beta_fits && (!fast_fits || kw >= beta_series_kw(k));
     let beta = || {
         let [c, p, _] = tables.per_k[k as usize];
         meijer_g_k_beta_series(k, y, val_from_dd(c), val_from_dd(p)).and_then(accept)
@@ -376,13 +387,19 @@ pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Option<Bounded
             return Some(b);
         }
     }
-    if beta_fits && !beta_first {
+    // the deferred Beta series: before the direct series where that is long (y > 0.9)
+    if beta_fits && !beta_first && y > 0.9 {
         if let Some(b) = beta() {
             return Some(b);
         }
     }
     if y == 1.0 || y <= Y_NATIVE_MAX {
         if let Some(b) = meijer_g_k_f64(tables, k, y).and_then(accept) {
+            return Some(b);
+        }
+    }
+    if beta_fits && !beta_first && y <= 0.9 {
+        if let Some(b) = beta() {
             return Some(b);
         }
     }
