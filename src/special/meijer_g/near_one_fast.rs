@@ -337,7 +337,11 @@ fn start<P: TwoProd2>(kf: f64, w: f64) -> (Dd2, L2, f64) {
     let sigma0 = crate::ball::div_f64_p::<P>(Dd::from_f64(2.0), 3.0);
     let x = Dd2 { hi: L2::new(0.5 * tau1.hi, sigma0.hi), lo: L2::new(0.5 * tau1.lo, sigma0.lo) };
     let we = L2::new(8.0 * x.hi.a(), 24.0 * x.hi.b());
-    let rel_stop = (5.421010862427522e-20 * (kf * (-w).ln_1p()).exp()).max(4.930380657631324e-32);
+    // 2^-64 (1-w)^k from an estimate of k ln(1-w) (the first four terms of its series,
+    // which only underestimate |ln(1-w)|), as a power of two built from its bits
+    let lam = kf * w * (1.0 + w * (0.5 + w * (1.0 / 3.0 + 0.25 * w)));
+    let e2 = (64.0 + lam * std::f64::consts::LOG2_E).min(104.0);
+    let rel_stop = f64::from_bits(((1023.0 - e2.ceil()) as u64) << 52);
     (x, we, rel_stop)
 }
 
@@ -359,11 +363,25 @@ fn ratio_consts(kf: f64) -> RatioConsts {
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
 fn stop(m: u64, kf: f64, w: f64, x: Dd2, acc_e: Dd2, acc_o: Dd2, we: L2, wo: L2, rel_stop: f64) -> Option<(Dd2, f64, f64)> {
-    let up = 1.0 + 8.0 * U;
-    let eps = U * U;
     let mf = m as f64;
     let jf = mf - 1.0;
     let (tau, sigma) = (x.hi.a(), x.hi.b());
+    let (s1, s2) = (acc_e.hi.a() + acc_o.hi.a(), acc_e.hi.b() + acc_o.hi.b());
+    // A test without quotients first (it only decides the cost: the tails added below are
+    // the proven ones): ratio_{m+1} = n1/d1 < 1 and tail1 = rho_{m+1}/(1 - n1/d1) below
+    // rel_stop s1 (rho_{m+1} ~ tau w (2k+2m+1)/(2m+1), the factor 2m/(2m-1) and the
+    // roundings covered by 1.1), and the same for T2 with n2/d2 = w (k+2+j)/(j+1)
+    let (n1, d1) = (w * (2.0 * kf + 2.0 * mf + 3.0), 2.0 * mf + 3.0);
+    let (n2, d2) = (w * (kf + 2.0 + jf), jf + 1.0);
+    if !(n1 < d1 && n2 < d2) {
+        return None;
+    }
+    let rho = tau * w * (2.0 * kf + 2.0 * mf + 1.0);
+    if !(1.1 * rho * d1 <= rel_stop * s1 * (2.0 * mf + 1.0) * (d1 - n1) && 1.1 * sigma * n2 <= rel_stop * s2 * (d2 - n2)) {
+        return None;
+    }
+    let up = 1.0 + 8.0 * U;
+    let eps = U * U;
     // T1: rho_{m+1} = tau_m (2m/(2m-1)) w (2k+2m+1)/(2m+1); ratio_{m+1} = w (2k+2m+3)/(2m+3)
     let r1 = w * (2.0 * kf + 2.0 * mf + 3.0) / (2.0 * mf + 3.0) * up;
     // T2: ratio bound w (k+2+j)/(j+1)
@@ -375,9 +393,6 @@ fn stop(m: u64, kf: f64, w: f64, x: Dd2, acc_e: Dd2, acc_o: Dd2, we: L2, wo: L2,
     let rho_next = tau_up * (2.0 * mf / (2.0 * mf - 1.0)) * w * (2.0 * kf + 2.0 * mf + 1.0) / (2.0 * mf + 1.0) * up;
     let tail1 = rho_next / (1.0 - r1) * up;
     let tail2 = sigma * (1.0 + 2.0 * U + (16.0 + 32.0 * jf) * eps) * r2 / (1.0 - r2) * up;
-    if !(tail1 <= rel_stop * (acc_e.hi.a() + acc_o.hi.a()) && tail2 <= rel_stop * (acc_e.hi.b() + acc_o.hi.b())) {
-        return None;
-    }
     let total = acc_e.add(acc_o);
     let wt = we.add(wo).add(L2::new(8.0, 8.0).mul(total.hi));
     Some((total, tail1 + eps * wt.a() * (1.0 + 2.0 * U) * SLACK, tail2 + eps * wt.b() * (1.0 + 2.0 * U) * SLACK))
