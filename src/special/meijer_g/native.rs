@@ -362,7 +362,7 @@ pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Option<Bounded
     // about e^32 (its bound is then 1e-14 relative). Where it also fits, the Beta series
     // is cheaper and goes first once it reaches 1e-14 (k w >= beta_series_kw(k))
     let fast_fits = y > 0.5 && y < 1.0 && kw <= NEAR_ONE_FAST_MAX_GROWTH * y;
-    let beta_fits = y >= 0.5 && y < 1.0 && kw >= BETA_SERIES_MIN_KW;
+    let beta_fits = (0.5..1.0).contains(&y) && kw >= BETA_SERIES_MIN_KW;
     let beta_first = beta_fits && (!fast_fits || kw >= beta_series_kw(k));
     let beta = || {
         let [c, p, _] = tables.per_k[k as usize];
