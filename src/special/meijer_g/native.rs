@@ -381,7 +381,7 @@ pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Option<Bounded
     // before the direct series where it is cheaper (NEAR_ONE_FAST_MIN_Y), after it
     // elsewhere (next to the zeros of G(2, .), G(3, .))
     let fast_first = y >= NEAR_ONE_FAST_MIN_Y || (y >= 0.84 && k <= 150) || (y >= 0.78 && k <= 40) || (y >= 0.65 && k <= 3);
-    let near_one_fast_accepted = || near_one_fast(k, 1.0 - y, &consts).and_then(|b| b.finish()).and_then(accept);
+    let near_one_fast_accepted = || near_one_fast(k, 1.0 - y, &consts, rel_tol).and_then(|b| b.finish()).and_then(accept);
     if fast_fits && fast_first {
         if let Some(b) = near_one_fast_accepted() {
             return Some(b);

@@ -64,7 +64,8 @@
 //! their sums (the parts grow like `(1-w)^{-k}` before they cancel, so that is about
 //! `2^-64 |G|`), or `2^-104`, whichever is larger: the stopping rule only sets the cost,
 //! the tail added is the proven one. `ln y` is the f64 [`super::elementary::ln_bounded`]
-//! where its error `u |ln y|/2` is below `1/8` of `1e-14 |G|/C_k`, else the double-double
+//! where the whole bound, its error `C_k u |ln y|/2` included, meets the caller's
+//! `rel_tol`, else the double-double
 //! [`super::dd::ln_dd`] (next to the zeros of `G(2, .)`, `G(3, .)`); the assembly (six
 //! operations, where the parts cancel) runs in the bounded double-doubles of
 //! `dd_bounded.rs`.
@@ -100,26 +101,26 @@ const SLACK: f64 = 1.0 + 1.0 / (1u64 << 20) as f64;
 /// `G(k, 1 - w)` by the near-one expansion in plain double-double, `0 < w <= 1/2`
 /// exact, with its proven bound (module docs): on four AVX lanes with FMA products where
 /// the CPU has both, else on two lanes with FMA or Dekker's products (all bit-identical).
-pub(crate) fn near_one_fast(k: u32, w: f64, c: &DdConstants) -> Option<BoundedDd> {
+pub(crate) fn near_one_fast(k: u32, w: f64, c: &DdConstants, rel_tol: f64) -> Option<BoundedDd> {
     #[cfg(target_arch = "x86_64")]
     {
         if std::arch::is_x86_feature_detected!("avx") && std::arch::is_x86_feature_detected!("fma") {
             // SAFETY: the CPU has AVX and FMA (checked just above).
-            return unsafe { near_one_fast_avx(k, w, c) };
+            return unsafe { near_one_fast_avx(k, w, c, rel_tol) };
         }
     }
-    near_one_fast_2lane(k, w, c)
+    near_one_fast_2lane(k, w, c, rel_tol)
 }
 
 cpu_dispatch! {
     /// [`near_one_fast`] on two lanes: FMA products where the CPU has them, else Dekker's.
-    fn near_one_fast_2lane(k: u32, w: f64, c: &DdConstants) -> Option<BoundedDd> => near_one_fast_with
+    fn near_one_fast_2lane(k: u32, w: f64, c: &DdConstants, rel_tol: f64) -> Option<BoundedDd> => near_one_fast_with
 }
 
 /// [`near_one_fast`] with Dekker's products (tests compare the two).
 #[cfg(test)]
-pub(crate) fn near_one_fast_portable(k: u32, w: f64, c: &DdConstants) -> Option<BoundedDd> {
-    near_one_fast_with::<crate::ball::Dekker>(k, w, c)
+pub(crate) fn near_one_fast_portable(k: u32, w: f64, c: &DdConstants, rel_tol: f64) -> Option<BoundedDd> {
+    near_one_fast_with::<crate::ball::Dekker>(k, w, c, rel_tol)
 }
 
 /// Two lanes, `a` for the recurrence of `T1` and `b` for that of `T2`: the same
@@ -439,20 +440,21 @@ fn sums_2lane<P: TwoProd2>(kf: f64, w: f64) -> Option<(Dd2, f64, f64)> {
 /// The assembly: `G = C_k (B_k(1) - ln(y)/2 + T1) - 2 sqrt(pi) w^{3/2} T2` in bounded
 /// double-doubles.
 #[inline(always)]
-fn assemble<P: TwoProd2>(w: f64, c: &DdConstants, sums: (Dd2, f64, f64)) -> Option<BoundedDd> {
+fn assemble<P: TwoProd2>(w: f64, c: &DdConstants, sums: (Dd2, f64, f64), rel_tol: f64) -> Option<BoundedDd> {
     let (total, e1, e2) = sums;
     let t1 = BoundedDd { v: Dd { hi: total.hi.a(), lo: total.lo.a() }, e: e1 };
     let t2 = BoundedDd { v: Dd { hi: total.hi.b(), lo: total.lo.b() }, e: e2 };
     let w32 = BoundedDd::exact(w).sqrt_p::<P>()?.mul_f64_p::<P>(w);
     let part2 = c.two_sqrt_pi.mul_p::<P>(w32).mul_p::<P>(t2);
     let base = c.b1.add(t1);
-    // ln y in f64 (about 30 ns) where its error, C_k |ln y| u/2, is below 1/8 of the
-    // 1e-14 |G| the caller asks; else in double-double (ln_dd, about 0.2-0.3 us)
+    // ln y in f64 (about 30 ns) where the whole bound, its error C_k |ln y| u/2 included,
+    // meets rel_tol (with the final rounding and inflation of `finish`); else in
+    // double-double (ln_dd, about 0.2-0.3 us: next to the zeros of G(2, .), G(3, .))
     let y = 1.0 - w;
     if let Some(l) = ln_bounded(y) {
         let half_ln_y = BoundedDd { v: Dd::from_f64(0.5 * l.v), e: 0.5 * l.e };
         let g = c.c.mul_p::<P>(base.sub(half_ln_y)).sub(part2);
-        if c.c.v.hi * half_ln_y.e <= 1.25e-15 * g.v.hi.abs() {
+        if (g.e + 2.0 * U * g.v.hi.abs()) * (1.0 + 1e-9) <= rel_tol * g.v.hi.abs() {
             return Some(g);
         }
     }
@@ -461,11 +463,11 @@ fn assemble<P: TwoProd2>(w: f64, c: &DdConstants, sums: (Dd2, f64, f64)) -> Opti
 }
 
 #[inline(always)]
-fn near_one_fast_with<P: TwoProd2>(k: u32, w: f64, c: &DdConstants) -> Option<BoundedDd> {
+fn near_one_fast_with<P: TwoProd2>(k: u32, w: f64, c: &DdConstants, rel_tol: f64) -> Option<BoundedDd> {
     if !(w > 0.0 && w <= 0.5) {
         return None;
     }
-    assemble::<P>(w, c, sums_2lane::<P>(k as f64, w)?)
+    assemble::<P>(w, c, sums_2lane::<P>(k as f64, w)?, rel_tol)
 }
 
 /// Four lanes (AVX): the two steps of both recurrences of one iteration of
@@ -624,11 +626,11 @@ mod avx {
 /// [`near_one_fast_with`] on four AVX lanes with FMA products.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx,fma")]
-fn near_one_fast_avx(k: u32, w: f64, c: &DdConstants) -> Option<BoundedDd> {
+fn near_one_fast_avx(k: u32, w: f64, c: &DdConstants, rel_tol: f64) -> Option<BoundedDd> {
     if !(w > 0.0 && w <= 0.5) {
         return None;
     }
-    assemble::<crate::ball::Fused>(w, c, avx::sums_4lane(k as f64, w)?)
+    assemble::<crate::ball::Fused>(w, c, avx::sums_4lane(k as f64, w)?, rel_tol)
 }
 
 #[cfg(test)]
@@ -657,8 +659,8 @@ mod tests {
                     continue;
                 }
                 let c = dd_constants(k).unwrap();
-                let raw = near_one_fast(k, w, &c).expect("a bound for 0 < w <= 1/2");
-                let portable = near_one_fast_portable(k, w, &c).unwrap();
+                let raw = near_one_fast(k, w, &c, 1e-14).expect("a bound for 0 < w <= 1/2");
+                let portable = near_one_fast_portable(k, w, &c, 1e-14).unwrap();
                 assert_eq!((raw.v.hi, raw.v.lo, raw.e), (portable.v.hi, portable.v.lo, portable.e), "k={k} y={y}");
                 let b = raw.finish().unwrap();
                 let reference = meijer_g_k_mp(k, &exact(y), 200).unwrap();
@@ -683,7 +685,7 @@ mod tests {
     fn refuses_outside_its_range() {
         let c = dd_constants(5).unwrap();
         for w in [0.0, -0.1, 0.5f64.next_up(), f64::NAN] {
-            assert!(near_one_fast(5, w, &c).is_none(), "w={w}");
+            assert!(near_one_fast(5, w, &c, 1e-14).is_none(), "w={w}");
         }
     }
 }
