@@ -60,9 +60,9 @@
 //! (off the dependency chains), so the bound is what this evaluation incurred, not a
 //! worst case over the longest sum.
 //!
-//! The sums stop (checked every 4 terms) when both tails are below `2^-64 (1-w)^k` of
+//! The sums stop (checked every 4 terms) when both tails are below `2^-56 (1-w)^k` of
 //! their sums (the parts grow like `(1-w)^{-k}` before they cancel, so that is about
-//! `2^-64 |G|`), or `2^-104`, whichever is larger: the stopping rule only sets the cost,
+//! `2^-56 |G|`, up to the factor by which the parts exceed `(1-w)^{-k} |G|`, ~5 measured), or `2^-104`, whichever is larger: the stopping rule only sets the cost,
 //! the tail added is the proven one. `ln y` is the f64 [`super::elementary::ln_bounded`]
 //! where the whole bound, its error `C_k u |ln y|/2` included, meets the caller's
 //! `rel_tol`, else the double-double
@@ -330,7 +330,7 @@ struct RatioConsts {
 /// The start of both recurrences: `x = (tau_1, sigma_0)` (`tau_1 = w (2k+1)/2` exact,
 /// `sigma_0 = 2/3` one quotient), the weighted error sums of the first terms (units of
 /// `eps`; `eta(sigma_0) = 16`), and the stopping threshold: a sum stops when its tail is
-/// below `2^-64 (1-w)^k` of it (an estimate of `|G|` over the parts; only the cost
+/// below `2^-56 (1-w)^k` of it (an estimate of `|G|` over the parts; only the cost
 /// depends on it), at least `2^-104`.
 #[inline(always)]
 fn start<P: TwoProd2>(kf: f64, w: f64) -> (Dd2, L2, f64) {
@@ -338,10 +338,10 @@ fn start<P: TwoProd2>(kf: f64, w: f64) -> (Dd2, L2, f64) {
     let sigma0 = crate::ball::div_f64_p::<P>(Dd::from_f64(2.0), 3.0);
     let x = Dd2 { hi: L2::new(0.5 * tau1.hi, sigma0.hi), lo: L2::new(0.5 * tau1.lo, sigma0.lo) };
     let we = L2::new(8.0 * x.hi.a(), 24.0 * x.hi.b());
-    // 2^-64 (1-w)^k from an estimate of k ln(1-w) (the first four terms of its series,
+    // 2^-56 (1-w)^k from an estimate of k ln(1-w) (the first four terms of its series,
     // which only underestimate |ln(1-w)|), as a power of two built from its bits
     let lam = kf * w * (1.0 + w * (0.5 + w * (1.0 / 3.0 + 0.25 * w)));
-    let e2 = (64.0 + lam * std::f64::consts::LOG2_E).min(104.0);
+    let e2 = (56.0 + lam * std::f64::consts::LOG2_E).min(104.0);
     let rel_stop = f64::from_bits(((1023.0 - e2.ceil()) as u64) << 52);
     (x, we, rel_stop)
 }
