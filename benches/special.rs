@@ -144,6 +144,19 @@ fn bench_hyp1f2_domain(c: &mut Criterion) {
     eprintln!("hyp1f2_model_family_f64: MP fallbacks during the run: {}", maugis::special::fallback_counts().hyp1f2 - before);
 }
 
+/// A criterion group of `meijer_g_k_bounded` over named point sets (elements per
+/// second), with the MP fallbacks of the run printed.
+fn bench_meijer_point_sets(c: &mut Criterion, group: &str, sets: &[(&str, &Vec<(u32, f64)>)]) {
+    let before = maugis::special::fallback_counts().meijer_g_k;
+    let mut g = c.benchmark_group(group);
+    for &(name, pts) in sets {
+        g.throughput(criterion::Throughput::Elements(pts.len() as u64));
+        g.bench_function(name, |b| b.iter(|| pts.iter().map(|&(k, y)| meijer_g::meijer_g_k_bounded(k, black_box(y)).unwrap().value).sum::<f64>()));
+    }
+    g.finish();
+    eprintln!("{group}: MP fallbacks during the run: {}", maugis::special::fallback_counts().meijer_g_k - before);
+}
+
 /// `meijer_g_k_bounded(k, y)` over the issue-8 domain k <= 1000, y in (0, 1]
 /// (64 fixed points; elements per second), with the MP fallbacks printed.
 fn bench_meijer_domain(c: &mut Criterion) {
@@ -157,19 +170,21 @@ fn bench_meijer_domain(c: &mut Criterion) {
     g.finish();
     eprintln!("meijer_g_k_f64_domain: MP fallbacks during the run: {}", maugis::special::fallback_counts().meijer_g_k - before);
     // The paths next to y = 1 and the zeros: y > 0.97 (near-one expansion: f64 where
-    // k (1 - y) <= 1.25, else double-double), 1e-9 next to the zero of G(k, .) (direct
-    // formula in double words), and the f64 near-one expansion at 0.9 <= y < 0.97.
+    // k (1 - y) <= 1.25, else plain double-double with four AVX lanes), 1e-9 next to the
+    // zero of G(k, .) (direct formula in double words), and the f64 near-one expansion
+    // at 0.9 <= y < 0.97.
     let near_one: Vec<(u32, f64)> = [0u32, 2, 100, 472, 1000].iter().flat_map(|&k| [(k, 0.9705), (k, 0.99), (k, 1.0 - 1e-9)]).collect();
     let near_one_f64: Vec<(u32, f64)> = [0u32, 1, 2, 5, 10].iter().flat_map(|&k| [(k, 0.9), (k, 0.93), (k, 0.95), (k, 0.96)]).collect();
     let near_zero: Vec<(u32, f64)> = vec![(2, 0.807_135_927_66), (5, 0.637_762_065), (10, 0.571_703_529_38), (100, 0.507_463_152_53), (1000, 0.500_749_626_68)];
-    let before = maugis::special::fallback_counts().meijer_g_k;
-    let mut g = c.benchmark_group("meijer_g_k_f64_dd_paths");
-    for (name, pts) in [("near_one", &near_one), ("next_to_zero", &near_zero), ("near_one_f64_below_0.97", &near_one_f64)] {
-        g.throughput(criterion::Throughput::Elements(pts.len() as u64));
-        g.bench_function(name, |b| b.iter(|| pts.iter().map(|&(k, y)| meijer_g::meijer_g_k_bounded(k, black_box(y)).unwrap().value).sum::<f64>()));
-    }
-    g.finish();
-    eprintln!("meijer_g_k_f64_dd_paths: MP fallbacks during the run: {}", maugis::special::fallback_counts().meijer_g_k - before);
+    bench_meijer_point_sets(c, "meijer_g_k_f64_dd_paths", &[("near_one", &near_one), ("next_to_zero", &near_zero), ("near_one_f64_below_0.97", &near_one_f64)]);
+    // The routes of issue 23 item 4 (meijer_g/beta_series.rs, meijer_g/near_one_fast.rs):
+    // the Beta series (k w >= 14.5-30 by k, and the cells at y = 1/2 for large k), the
+    // plain double-double near-one expansion at growth -k ln y from 3 to 32 (and next to the
+    // zeros of G(2, .), G(3, .)), and its slowest cells (k w ~ 20-30 at large k).
+    let beta: Vec<(u32, f64)> = vec![(100, 0.5), (1000, 0.5), (300, 0.85), (1000, 0.9), (1000, 0.95), (1000, 0.97)];
+    let fast: Vec<(u32, f64)> = vec![(30, 0.9), (100, 0.93), (300, 0.98), (100, 0.97), (2, 0.8), (3, 0.7)];
+    let slowest: Vec<(u32, f64)> = vec![(1000, 0.9705), (1000, 0.98), (300, 0.93), (100, 0.85)];
+    bench_meijer_point_sets(c, "meijer_g_k_f64_routes", &[("beta_series", &beta), ("near_one_fast", &fast), ("near_one_fast_slowest", &slowest)]);
     // The whole family k = 0..=1000 at one y (elements: 1001 values per call).
     let before = maugis::special::fallback_counts().meijer_g_k;
     let mut g = c.benchmark_group("meijer_g_k_family_f64");

@@ -1,6 +1,6 @@
 //! Time per value of the f64 `meijer_g_k_bounded(k, y)` on a grid over `k <= 1000`,
 //! `y in (0, 1]` (issue 23, item 4: at most 1 us everywhere), with the MP fallbacks
-//! marked. Each cell is the wall time of the fastest of 15 batches of 40 calls (the
+//! marked. Each cell is the wall time of the fastest of 40 batches of 40 calls (the
 //! machine is shared: batches of 10-300 us are shorter than a scheduler slice, so the
 //! fastest is the one least disturbed by other load); a `*` marks a cell that fell back
 //! to MP. Prints a markdown table, a summary line, and the mean over the 64 points
@@ -15,10 +15,10 @@ mod meijer_domain;
 use std::hint::black_box;
 use std::time::Instant;
 
-/// Wall time per call of `f` in us, fastest of 15 batches of `calls`.
+/// Wall time per call of `f` in us, fastest of 40 batches of `calls`.
 fn per_call(calls: usize, mut f: impl FnMut() -> f64) -> f64 {
     let mut best = f64::INFINITY;
-    for _ in 0..15 {
+    for _ in 0..40 {
         let t = Instant::now();
         let mut s = 0.0;
         for _ in 0..calls {

@@ -18,7 +18,8 @@
 //!     `ln y = e ln 2 + 2 atanh(v)`, `v = (m-1)/(m+1)` (`m - 1` exact by Sterbenz,
 //!     `m + 1` exact as a double-double by TwoSum, the quotient a certified
 //!     double-double division), `|v| <= 0.1716`; `atanh v = v P(v^2)`,
-//!     `P(s) = sum_{j<J} s^j/(2j+1)` by Horner in double-double, truncation
+//!     `P(s) = sum_{j<J} s^j/(2j+1)` by Horner in `s^2` on its even and odd parts in
+//!     double-double, truncation
 //!     `s^J/((2J+1)(1-s)) <= 2^-110` (`J <= 13`).
 //!   - `S(y) = sum t_n`, `t_n = r_n/n = t_{n-1} y A_n/B_n`,
 //!     `A_n = (2k+2n-1) max(n-1, 1)`, `B_n = (2k+2n+2) n` (exact integers) in double-double; positive terms with ratio `<= y`, so the tail
@@ -163,10 +164,25 @@ pub(crate) fn ln_dd<P: ExactProduct>(y: f64, ln2: BoundedDd) -> Option<BoundedDd
         j_terms += 1;
     }
     let trunc = 1.01 * sp / ((2 * j_terms + 1) as f64 * (1.0 - s_up));
-    let mut p = BoundedDd::ONE.div_f64_p::<P>((2 * j_terms - 1) as f64);
-    for j in (0..j_terms - 1).rev() {
-        p = p.mul_p::<P>(s).add(BoundedDd::ONE.div_f64_p::<P>((2 * j + 1) as f64));
+    // P(s) = E(s^2) + s O(s^2), E and O by Horner in s^2 side by side (two dependency
+    // chains of half the length; the running bound follows every operation either way)
+    let coef = |j: usize| BoundedDd::ONE.div_f64_p::<P>((2 * j + 1) as f64);
+    let s2 = s.mul_p::<P>(s);
+    let top = j_terms - 1; // highest power of s
+    let (mut even, mut odd) = (BoundedDd::ZERO, BoundedDd::ZERO);
+    for j in (0..=top).rev().step_by(2) {
+        // j and j - 1 have different parities: one step of each chain
+        if j % 2 == 0 {
+            even = even.mul_p::<P>(s2).add(coef(j));
+            if j >= 1 {
+                odd = odd.mul_p::<P>(s2).add(coef(j - 1));
+            }
+        } else {
+            odd = odd.mul_p::<P>(s2).add(coef(j));
+            even = even.mul_p::<P>(s2).add(coef(j - 1));
+        }
     }
+    let mut p = even.add(s.mul_p::<P>(odd));
     p.e += trunc;
     let atanh2 = v.mul_p::<P>(p).mul_f64_p::<P>(2.0);
     Some(ln2.mul_f64_p::<P>(e as f64).add(atanh2))
@@ -283,7 +299,7 @@ pub(crate) fn near_one_dd<P: ExactProduct>(k: u32, w: f64, c: &DdConstants) -> O
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::special::exact;
     use crate::special::meijer_g::meijer_g_k_mp;
@@ -303,7 +319,7 @@ mod tests {
 
     /// `y` with `G(k, y)` changing sign between `y` and its f64 neighbour above
     /// (bisection on the sign of the certified 64-bit value).
-    fn f64_next_to_zero(k: u32) -> f64 {
+    pub(crate) fn f64_next_to_zero(k: u32) -> f64 {
         let sign = |y: f64| meijer_g_k_mp(k, &exact(y), 64).unwrap().mid().is_sign_positive();
         let (mut lo, mut hi) = (0.3f64, 0.95f64);
         assert!(sign(lo) && !sign(hi));

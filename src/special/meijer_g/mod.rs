@@ -74,13 +74,16 @@
 
 use rug::Float;
 
+mod beta_series;
 mod constants;
 pub(crate) mod dd;
 mod direct;
+mod elementary;
 pub(crate) mod family;
 pub(crate) mod native;
 pub use native::{NEAR_ONE_F64_MAX_KW, NEAR_ONE_F64_MIN_Y, TABLE_K_MAX};
 mod near_one;
+mod near_one_fast;
 mod slater;
 
 pub use constants::MeijerConstants;

@@ -21,12 +21,7 @@
 //!   the errors collected, Ogita-Rump-Oishi *Sum2*): it adds at most
 //!   `u |S| + gamma_{N-1}^2 S` (all terms positive), not `N u S`.
 //!   Tail: the ratio of `r_n` is at most `y`, so `sum_{n>N} r_n/n <= y r_N/((N+1)(1-y))`.
-//! * `ln y`: `y = m 2^e`, `m in [1/sqrt2, sqrt2)`, `ln y = e ln2 + 2 atanh(v)`,
-//!   `v = (m-1)/(m+1)` (`m - 1` exact by Sterbenz; two roundings: `|v~ - v| <= gamma_2 |v|`),
-//!   `|v| <= 0.1716`; `atanh(v) = v P(v^2)`, `P(s) = sum_j s^j/(2j+1)` by Horner with
-//!   Higham's running bound (Alg. 5.1), the coefficients' roundings `u P(|s|)`, the
-//!   truncation `s^J/((2J+1)(1-s))` and the input error through `P'(s) <= 1/(2(1-s)^2)`;
-//!   `|ln2 - fl(ln2)| <= 2.4e-17`.
+//! * `ln y`: [`super::elementary::ln_bounded`] (atanh series with a running bound).
 //! * The bracket and the product: one rounding each (`u |result|`), input errors
 //!   propagated to first and second order. The bound is evaluated in f64 and
 //!   inflated by `1 + 2^-30` for its own roundings.
@@ -40,20 +35,35 @@
 //!   direct series at `0.85 < y <= 0.97` and 1-2 us for the double-double path
 //!   above 0.97 (issue 23, item 4).
 //!
-//! The native value is returned when its bound is at most `rel_tol |G|`. Where
-//! the f64 sums miss that (next to the zero of `G(k, .)`, `k >= 2`, where `B`
-//! cancels) and for `Y_NATIVE_MAX < y < 1` (the direct series converges slowly;
-//! the near-one expansion cancels by `e^{k w}`), the double-double paths of
-//! `dd.rs` run (0.5-4 us). Left to MP (counted by the caller):
-//! `k > TABLE_K_MAX`, and the two to four f64 `y` next to a zero of `G(k, .)`
-//! (`|G| <~ 1e-16`), where even the double-double bound (absolute, `~1e-30`)
-//! is not `1e-14` relative.
+//! * For `k (1 - y) >= 28`, `y >= 1/2`: the Beta-expectation series of
+//!   [`super::beta_series`] (`B = (ln(w/y) + A + P_k)/2`, an alternating series in
+//!   `y/w` with a rigorous remainder), a few dozen f64 terms.
+//! * For `k w <= 31 y` (the parts of the near-one expansion grow by at most `e^31`):
+//!   the near-one expansion in plain double-double with an a-priori bound,
+//!   [`super::near_one_fast`] (four AVX lanes), 0.1-1 us.
+//!
+//! The routes in order (the first whose bound is at most `rel_tol |G|` answers; see
+//! [`meijer_g_k_native_bounded`]): the Beta series (`k w >= 28`, not next to one where the
+//! next one also fits and the series is short of 1e-14), `near_one_f64` (`y > 0.85`,
+//! `k w <= 1.25`), `near_one_fast` where it is cheaper than the direct series
+//! ([`NEAR_ONE_FAST_MIN_Y`]), the Beta series where it was deferred, the f64 direct series
+//! (`y <= Y_NATIVE_MAX`), `near_one_fast` elsewhere (next to the zeros of `G(2, .)`,
+//! `G(3, .)`), and last the double-double paths of
+//! `dd.rs` with running bounds (next to the zeros of `G(k, .)` for `k >= 4`, and the
+//! few points in no other route's range: `k = 1000`, `0.961 < y < 0.969`, where
+//! `31 < k w < 39` and neither the near-one expansion nor the Beta series reaches
+//! `1e-14`; 1.5-5 us). Left to MP (counted by the caller): `k > TABLE_K_MAX`, and the
+//! f64 `y` next to a zero of `G(k, .)` (`|G| <~ 1e-16`), where even the double-double
+//! bound (absolute, `~1e-30`) is not `1e-14` relative.
 
 use std::sync::OnceLock;
 
 use crate::ball::{Ball, Bounded, BoundedDd, Dd, Dekker};
 use super::constants::MeijerConstants;
 use super::dd::{meijer_g_k_dd, DdConstants};
+use super::elementary::{ln_bounded, Val};
+use super::beta_series::{meijer_g_k_beta_series, BETA_SERIES_MIN_KW};
+use super::near_one_fast::near_one_fast;
 pub use super::Y_NATIVE_MAX;
 
 /// Largest `k` of the constants table.
@@ -66,13 +76,6 @@ const MAX_TERMS: u64 = 4000;
 const U: f64 = f64::EPSILON / 2.0;
 const BOUND_INFLATION: f64 = 1.0 + 1.0 / (1u64 << 30) as f64;
 
-/// An f64 and a bound on its error.
-#[derive(Debug, Clone, Copy)]
-struct Val {
-    v: f64,
-    e: f64,
-}
-
 /// A certified ball as a double-double whose bound covers the split and the radius.
 fn dd_from_ball(b: &Ball) -> BoundedDd {
     let hi = b.mid().to_f64();
@@ -84,7 +87,7 @@ fn dd_from_ball(b: &Ball) -> BoundedDd {
 }
 
 /// The leading double of a [`BoundedDd`] and its bound.
-fn val_from_dd(b: BoundedDd) -> Val {
+pub(crate) fn val_from_dd(b: BoundedDd) -> Val {
     Val { v: b.v.hi, e: (b.v.lo.abs() + b.e).next_up() }
 }
 
@@ -127,49 +130,6 @@ fn table() -> Option<&'static Tables> {
 /// table could not be built).
 pub(crate) fn dd_constants(k: u32) -> Option<DdConstants> {
     (k <= TABLE_K_MAX).then(|| table().map(|t| t.dd_constants(k))).flatten()
-}
-
-/// `ln y` for `0 < y <= 1` with a proven bound.
-fn ln_bounded(y: f64) -> Option<Val> {
-    if !(y > 0.0 && y <= 1.0) || y < f64::MIN_POSITIVE {
-        return None;
-    }
-    let bits = y.to_bits();
-    let mut e = ((bits >> 52) & 0x7ff) as i64 - 1022;
-    let mut m = f64::from_bits((bits & !(0x7ffu64 << 52)) | (1022u64 << 52)); // [0.5, 1)
-    if m < std::f64::consts::FRAC_1_SQRT_2 {
-        m *= 2.0;
-        e -= 1;
-    }
-    let v = (m - 1.0) / (m + 1.0);
-    let g2 = 2.0 * U / (1.0 - 2.0 * U);
-    let ev = g2 * v.abs();
-    let s = v * v;
-    let s_up = (v.abs() + ev) * (v.abs() + ev) * (1.0 + 4.0 * U);
-    let es = s_up - s + U * s; // |s~ - v*^2| (covers the rounding of s and the error of v)
-    // Horner over J terms, J with s^J/((2J+1)(1-s)) <= 2^-64
-    let mut j_terms = 1usize;
-    let mut sp = s_up;
-    while sp / ((2 * j_terms + 1) as f64 * (1.0 - s_up)) > 1.0 / (1u64 << 63) as f64 / 2.0 {
-        sp *= s_up;
-        j_terms += 1;
-    }
-    let mut p = 1.0 / (2 * (j_terms - 1) + 1) as f64;
-    let mut mu = p / 2.0;
-    for j in (0..j_terms - 1).rev() {
-        p = p * s + 1.0 / (2 * j + 1) as f64;
-        mu = s * mu + p.abs();
-    }
-    let p_abs = 1.0 / (1.0 - s_up);
-    let trunc = sp / ((2 * j_terms + 1) as f64 * (1.0 - s_up));
-    let ep = U * (2.0 * mu - p.abs()) * 1.01 + U * p_abs + trunc + es / (2.0 * (1.0 - s_up) * (1.0 - s_up));
-    let at = v * p; // atanh(v)
-    let e_at = v.abs() * ep + p.abs() * ev + ep * ev + U * at.abs();
-    let l1 = e as f64 * std::f64::consts::LN_2;
-    let e_l1 = (e as f64).abs() * 2.4e-17 + U * l1.abs();
-    let l = l1 + 2.0 * at;
-    let e_l = e_l1 + 2.0 * e_at + U * l.abs();
-    Some(Val { v: l, e: e_l })
 }
 
 /// A compensated sum of positive f64 terms, each carrying a relative error of
@@ -269,6 +229,21 @@ pub const NEAR_ONE_F64_MAX_KW: f64 = 1.25;
 /// about 240 terms.
 pub const NEAR_ONE_F64_MIN_Y: f64 = 0.85;
 
+/// Smallest `y` at which the plain double-double near-one expansion
+/// ([`super::near_one_fast`]) is tried before the f64 direct series, at every `k`; also
+/// from `0.84` for `k <= 150`, `0.78` for `k <= 40` and `0.65` for `k <= 3`. It costs
+/// about `0.1 + 0.006 m` us for `m` terms a sum (`m ~ 25-120`, four AVX lanes), the
+/// direct series `0.05 + 0.0035 N` us for `N ~ 40/(1-y)` terms (measured on the grid of
+/// `examples/meijer_g_grid.rs`); for `k <= 3` from `0.65` because next to the zeros of
+/// `G(2, .)` (0.807) and `G(3, .)` (0.70) the direct series misses `1e-14` and would be
+/// paid for twice. Elsewhere it runs after the direct series where that misses `1e-14`.
+pub const NEAR_ONE_FAST_MIN_Y: f64 = 0.875;
+
+/// Largest `k w/(1 - w)` (`>= -k ln(1 - w)`, the log of the growth of the parts before
+/// they cancel) at which the plain double-double near-one expansion is tried: its bound
+/// is `~1e-31 (1-w)^{-k}` of `|G|`, `1e-14` relative up to about 30 (measured).
+pub const NEAR_ONE_FAST_MAX_GROWTH: f64 = 32.0;
+
 /// `G(k, 1 - w)` by the near-one expansion (module docs of
 /// [`super::dd`]: `G = C_k B_k(1) + C_k (k+1) I1(w) - 2 sqrt(pi) w^{3/2} I2'(w)`)
 /// in f64 with a proven bound, `0 < w <= 1/2` exact.
@@ -350,6 +325,19 @@ fn near_one_f64(tables: &Tables, k: u32, w: f64) -> Option<Bounded> {
     at_one.add(t1).sub(t2).finish()
 }
 
+/// The `k w` from which the Beta series' bound is `1e-14` relative (its smallest term is
+/// about `e^{-k w}` times a factor that grows with `y/w`): measured on the unit probe
+/// of 2026-11-27 at `k = 30, 56, 100, 200, 300, 500, 1000` (`14.5, 17.2, 21.5, 25.5,
+/// 27.3, 28.8, 30.0`), linear in `ln k` between. It only orders the routes: where the
+/// series misses, the next route answers.
+fn beta_series_kw(k: u32) -> f64 {
+    const AT: [(f64, f64); 7] = [(30.0, 14.5), (56.0, 17.2), (100.0, 21.5), (200.0, 25.5), (300.0, 27.3), (500.0, 28.8), (1000.0, 30.0)];
+    let kf = (k as f64).clamp(AT[0].0, AT[6].0);
+    let i = AT.iter().position(|&(kk, _)| kk >= kf).unwrap_or(6).max(1);
+    let ((k0, t0), (k1, t1)) = (AT[i - 1], AT[i]);
+    t0 + (t1 - t0) * (kf / k0).ln() / (k1 / k0).ln()
+}
+
 /// `G(k, y)` natively with a proven bound, if that bound is at most `rel_tol |G|`.
 /// Arguments are validated by the caller (`0 < y <= 1`).
 ///
@@ -368,8 +356,40 @@ pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Option<Bounded
     }
     let tables = table()?;
     let accept = |b: Bounded| (b.value.is_finite() && b.err <= rel_tol * b.value.abs()).then_some(b);
-    if y > NEAR_ONE_F64_MIN_Y && y < 1.0 && k as f64 * (1.0 - y) <= NEAR_ONE_F64_MAX_KW {
+    let kw = k as f64 * (1.0 - y);
+    let consts = tables.dd_constants(k);
+    // the plain double-double near-one expansion fits while its parts grow by at most
+    // about e^32 (its bound is then 1e-14 relative). Where it also fits, the Beta series
+    // is cheaper and goes first once it reaches 1e-14 (k w >= beta_series_kw(k))
+    let fast_fits = y > 0.5 && y < 1.0 && kw <= NEAR_ONE_FAST_MAX_GROWTH * y;
+    let beta_fits = (0.5..1.0).contains(&y) && kw >= BETA_SERIES_MIN_KW;
+    let beta_first = beta_fits && (!fast_fits || kw >= beta_series_kw(k));
+    let beta = || {
+        let [c, p, _] = tables.per_k[k as usize];
+        meijer_g_k_beta_series(k, y, val_from_dd(c), val_from_dd(p)).and_then(accept)
+    };
+    if beta_first {
+        if let Some(b) = beta() {
+            return Some(b);
+        }
+    }
+    if y > NEAR_ONE_F64_MIN_Y && y < 1.0 && kw <= NEAR_ONE_F64_MAX_KW {
         if let Some(b) = near_one_f64(tables, k, 1.0 - y).and_then(accept) {
+            return Some(b);
+        }
+    }
+    // before the direct series where it is cheaper (NEAR_ONE_FAST_MIN_Y), after it
+    // elsewhere (next to the zeros of G(2, .), G(3, .))
+    let fast_first = y >= NEAR_ONE_FAST_MIN_Y || (y >= 0.84 && k <= 150) || (y >= 0.78 && k <= 40) || (y >= 0.65 && k <= 3);
+    let near_one_fast_accepted = || near_one_fast(k, 1.0 - y, &consts, rel_tol).and_then(|b| b.finish()).and_then(accept);
+    if fast_fits && fast_first {
+        if let Some(b) = near_one_fast_accepted() {
+            return Some(b);
+        }
+    }
+    // the deferred Beta series: before the direct series where that is long (y > 0.9)
+    if beta_fits && !beta_first && y > 0.9 {
+        if let Some(b) = beta() {
             return Some(b);
         }
     }
@@ -378,7 +398,16 @@ pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Option<Bounded
             return Some(b);
         }
     }
-    let consts = tables.dd_constants(k);
+    if beta_fits && !beta_first && y <= 0.9 {
+        if let Some(b) = beta() {
+            return Some(b);
+        }
+    }
+    if fast_fits && !fast_first {
+        if let Some(b) = near_one_fast_accepted() {
+            return Some(b);
+        }
+    }
     meijer_g_k_dd(k, y, &consts)?.finish().and_then(accept)
 }
 
@@ -420,17 +449,6 @@ mod tests {
             }
         }
         assert!(accepted >= 500, "only {accepted} of 600 points native");
-    }
-
-    #[test]
-    fn ln_bound_holds() {
-        for &y in &[1.0, 0.5, std::f64::consts::FRAC_1_SQRT_2, 0.75, 1e-300, 0.999999, 0.1, 3.0e-5] {
-            let l = ln_bounded(y).unwrap();
-            let exact = Float::with_val(200, y).ln();
-            let d = Float::with_val(200, &exact - l.v).abs().to_f64();
-            assert!(d <= l.e, "y={y}: {} +/- {} vs {exact}", l.v, l.e);
-            assert!(l.e <= 4e-16 * l.v.abs().max(1.0), "y={y}: {}", l.e);
-        }
     }
 
     /// Checks `b` against the certified 200-bit `G(k, y)`: the bound holds, and where
