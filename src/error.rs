@@ -91,6 +91,16 @@ pub enum Error {
         /// The pole (approximate).
         at: f64,
     },
+    /// A named argument given as text (a decimal, or a mantissa of a mantissa and
+    /// binary exponent pair) that is not a number of the kind the parameter takes.
+    NotANumber {
+        /// The argument.
+        arg: &'static str,
+        /// The text given.
+        text: String,
+        /// What the parameter takes (for example "a decimal such as 2.5, -0.125 or 3.8317e-2").
+        expected: &'static str,
+    },
     /// Text that is not a plain decimal number (`[+-]digits[.digits][e[+-]digits]`).
     NotADecimal {
         /// The text given.
@@ -290,6 +300,7 @@ impl fmt::Display for Error {
         match self {
             Error::NonFinite { what } => write!(f, "{what} must be a finite number (got NaN or infinity)"),
             Error::Domain { what } => write!(f, "argument out of domain: {what}"),
+            Error::NotANumber { arg, text, expected } => write!(f, "{arg} = {text} is not {expected}"),
             Error::Precision { requested } => write!(
                 f,
                 "precision {requested} bits is out of range: use 2 ..= {} bits",

@@ -273,7 +273,7 @@ impl MpArg {
     fn to_decimal(&self, what: &'static str) -> maugis::Result<Decimal> {
         match self {
             MpArg::Exact { man, exp } => {
-                let bad = || Error::Domain { what: format!("{what} = {self} is not a number") };
+                let bad = || Error::NotANumber { arg: what, text: self.to_string(), expected: "a number (its mantissa is not an integer)" };
                 let m: Integer = man.parse().map_err(|_| bad())?;
                 let e = i32::try_from(*exp).map_err(|_| Error::Overflow { what: format!("the exponent of {what}") })?;
                 let q = if e >= 0 { Rational::from(m << e as u32) } else { Rational::from((m, Integer::from(1) << e.unsigned_abs())) };
@@ -282,8 +282,10 @@ impl MpArg {
             MpArg::Decimal(s) => Decimal::parse(s).map_err(|e| match e {
                 // unparseable text: say which argument; other errors (exponent or
                 // length out of range) carry their own message
-                Error::NotADecimal { .. } => Error::Domain {
-                    what: format!("{what} = {s:?} is not a number (expected a decimal such as 2.5, -0.125 or 3.8317e-2)"),
+                Error::NotADecimal { .. } => Error::NotANumber {
+                    arg: what,
+                    text: format!("{s:?}"),
+                    expected: "a number (expected a decimal such as 2.5, -0.125 or 3.8317e-2)",
                 },
                 other => other,
             }),
@@ -303,7 +305,7 @@ impl MpArg {
         v.to_integer()
             .filter(|_| v.is_integer())
             .and_then(|i| i.to_i64())
-            .ok_or_else(|| Error::Domain { what: format!("{what} must be an integer (got {self})") })
+            .ok_or_else(|| Error::NotANumber { arg: what, text: self.to_string(), expected: "an integer" })
     }
 }
 

@@ -98,7 +98,7 @@ def test_order_must_be_an_integer():
         maugis.bessel_j(np.nan, 1.0)
     with pytest.raises(ValueError, match="k must be an integer"):
         maugis.meijer_g_k([1.0, 1.5], 0.5)
-    with pytest.raises(ValueError, match="n must be an integer"):
+    with pytest.raises(ValueError, match="n = .* is not an integer"):
         maugis.bessel_j(2.5, 1.0, prec=64)
     with pytest.raises(TypeError):
         maugis.bessel_j("3", 1.0)
