@@ -278,7 +278,7 @@ mod tests {
 
     #[test]
     fn sin_cos_enclose() {
-        for &r in &[0.0, 1e-20, -0.3, 0.7853981633974483, -0.8, 0.5] {
+        for &r in &[0.0, 1e-20, -0.3, std::f64::consts::FRAC_PI_4, -0.8, 0.5] {
             let (s, c) = sin_cos_reduced::<Dekker>(tables(), Dd { hi: r, lo: r * 1e-17 }).unwrap();
             let rf = to_float(Dd { hi: r, lo: r * 1e-17 });
             assert!(encloses(s, &Float::with_val(300, rf.sin_ref())), "sin {r}");
