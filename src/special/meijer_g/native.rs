@@ -63,6 +63,7 @@ use super::constants::MeijerConstants;
 use super::dd::{meijer_g_k_dd, DdConstants};
 use super::elementary::{ln_bounded, Val};
 use super::beta_series::{meijer_g_k_beta_series, BETA_SERIES_MIN_KW};
+use super::beta_series_dd::meijer_g_k_beta_series_dd;
 use super::near_one_fast::near_one_fast;
 pub use super::Y_NATIVE_MAX;
 
@@ -368,9 +369,17 @@ pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Option<Bounded
         let [c, p, _] = tables.per_k[k as usize];
         meijer_g_k_beta_series(k, y, val_from_dd(c), val_from_dd(p)).and_then(accept)
     };
+    // next to the zero of G(k, .) (y < 0.9 here) the f64 Beta series misses 1e-14 by
+    // cancellation, not truncation: the double-double one answers there
+    let beta_dd = || meijer_g_k_beta_series_dd(k, y, &consts).and_then(|b| b.finish()).and_then(accept);
     if beta_first {
         if let Some(b) = beta() {
             return Some(b);
+        }
+        if y < 0.9 {
+            if let Some(b) = beta_dd() {
+                return Some(b);
+            }
         }
     }
     if y > NEAR_ONE_F64_MIN_Y && y < 1.0 && kw <= NEAR_ONE_F64_MAX_KW {
@@ -405,6 +414,11 @@ pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Option<Bounded
     }
     if fast_fits && !fast_first {
         if let Some(b) = near_one_fast_accepted() {
+            return Some(b);
+        }
+    }
+    if beta_fits && !beta_first && y < 0.9 {
+        if let Some(b) = beta_dd() {
             return Some(b);
         }
     }
