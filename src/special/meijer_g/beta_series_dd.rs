@@ -15,10 +15,14 @@
 //! charged per operation by the error model of `src/ball/dd_bounded.rs`; Joldes, Muller,
 //! Popescu, ACM TOMS 44 (2017)), so the bound follows the evaluation:
 //!
-//! * `ln(w/y) = ln w - ln y`, each by [`super::dd::ln_dd`] (`2^-110` truncation, a few
-//!   `u^2` of `|ln|` rounding): the difference errs by about `1e-32 (|ln w| + |ln y|)`,
-//!   absolute, which is `~1e-29` of the scale `A + P_k ~ 3/k` (`k <= 1000`).
-//! * `x = y/w` one double-double quotient; `t_j = t_{j-1} x N_j/D_j`,
+//! * `ln(w/y) = 2 atanh(1 - 2y)` (`(1+v)/(1-v) = w/y` for `v = 1 - 2y`, exact in f64 for
+//!   `y >= 1/4` by Sterbenz) by [`super::dd::two_atanh_dd`] where `|1 - 2y| <= 0.17`
+//!   (truncation `2^-110`, a few `u^2` relative: relative also where it vanishes); else
+//!   `ln w - ln y`, each by [`super::dd::ln_dd`], whose difference errs by about
+//!   `1e-32 (|ln w| + |ln y|)`, absolute, `~1e-29` of the scale `A + P_k ~ 3/k` (`k <= 1000`).
+//!   For `y < 1/2`, `w = 1 - y = wh + wl` exactly (TwoSum, `|wl| <= 2^-54`) and
+//!   `ln w = ln wh + ln(1 + wl/wh)`, `|ln(1 + d) - fl(d)| <= d^2 + u |d|`.
+//! * `x = y/w` one double-double quotient (by the f64 `w`, or by `wh + wl`); `t_j = t_{j-1} x N_j/D_j`,
 //!   `N_j = (2j+1) max(j-1, 1)`, `D_j = (2k+2+2j) j` (exact integers below `2^53`):
 //!   one product and two operations by an exact f64 a term.
 //! * The alternating sum: one bounded addition a term. The remainder: half the next
@@ -36,7 +40,7 @@
 //! References: DLMF 4.6.1, 5.12.1, 5.12.3 (the Beta moments).
 
 use crate::ball::{cpu_dispatch, two_sum, BoundedDd, Dd, ExactProduct};
-use super::dd::{ln_dd, DdConstants};
+use super::dd::{ln_dd, two_atanh_dd, DdConstants};
 
 /// Cap on the terms.
 const MAX_TERMS: u32 = 2000;
@@ -64,15 +68,23 @@ fn beta_dd_with<P: ExactProduct>(k: u32, y: f64, c: &DdConstants) -> Option<Boun
     }
     // w = wh + wl exactly (wl = 0 for y >= 1/2 by Sterbenz; |wl| <= 2^-54 below)
     let (wh, wl) = two_sum(1.0, -y);
-    let (ln_w, x) = if wl == 0.0 {
-        (ln_dd::<P>(wh, c.ln2)?, BoundedDd::exact(y).div_f64_p::<P>(wh))
+    // ln(w/y) = 2 atanh(1 - 2y) (1 - 2y exact, Sterbenz): one series, relative at y = 1/2
+    let v = 1.0 - 2.0 * y;
+    let two_atanh = if v.abs() <= 0.17 { two_atanh_dd::<P>(BoundedDd::exact(v)) } else { None };
+    let x = if wl == 0.0 {
+        BoundedDd::exact(y).div_f64_p::<P>(wh)
     } else {
-        // ln w = ln wh + ln(1 + d), d = wl/wh, |d| <= 2^-53: |ln(1 + d) - fl(d)| <= d^2 + u |d|
-        let d = wl / wh;
-        let ln_1pd = BoundedDd { v: Dd::from_f64(d), e: d * d + 1.0001 * crate::ball::U * d.abs() };
-        (ln_dd::<P>(wh, c.ln2)?.add(ln_1pd), BoundedDd::exact(y).div(BoundedDd { v: Dd { hi: wh, lo: wl }, e: 0.0 })?)
+        BoundedDd::exact(y).div(BoundedDd { v: Dd { hi: wh, lo: wl }, e: 0.0 })?
     };
-    let l = ln_w.sub(ln_dd::<P>(y, c.ln2)?);
+    let l = match two_atanh {
+        Some(l) => l,
+        None => {
+            // ln w = ln wh + ln(1 + d), d = wl/wh, |d| <= 2^-53: |ln(1 + d) - fl(d)| <= d^2 + u |d|
+            let d = wl / wh;
+            let ln_1pd = BoundedDd { v: Dd::from_f64(d), e: d * d + 1.0001 * crate::ball::U * d.abs() };
+            ln_dd::<P>(wh, c.ln2)?.add(ln_1pd).sub(ln_dd::<P>(y, c.ln2)?)
+        }
+    };
     let kf = k as f64;
     let scale0 = l.mag() + c.p.mag();
     let mut t = BoundedDd::ONE; // t_0 := 1 starts the recurrence of t_j = b_j/j

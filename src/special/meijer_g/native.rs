@@ -339,6 +339,25 @@ fn beta_series_kw(k: u32) -> f64 {
     t0 + (t1 - t0) * (kf / k0).ln() / (k1 / k0).ln()
 }
 
+/// Whether `y` is so close to the zero of `G(k, .)` that the f64 sum tried first misses
+/// `1e-14`: an estimate of `|B| = |ln(w/y) + A + P_k|/2` (`A` from its first two terms,
+/// `x = y/w`) against the scale of that sum's parts, `|ln(w/y)| + A + P_k` for the f64
+/// Beta series (`y >= 1/2`, misses below about `1e-2` of it, measured), `|ln y| + |ln w| +
+/// P_k` for the f64 direct series (`y < 1/2`). It only orders the routes.
+fn near_zero(k: u32, y: f64, p: f64) -> bool {
+    let w = 1.0 - y;
+    let (ln_y, ln_w) = (y.ln(), w.ln());
+    let x = y / w;
+    let t1 = x * 1.5 / (k as f64 + 2.0);
+    let a = t1 - 0.5 * t1 * x * 2.5 / (k as f64 + 3.0);
+    let b = (ln_w - ln_y + a + p).abs();
+    if y >= 0.5 {
+        b < 0.01 * ((ln_w - ln_y).abs() + a + p)
+    } else {
+        b < 0.05 * (ln_y.abs() + ln_w.abs() + p)
+    }
+}
+
 /// `G(k, y)` natively with a proven bound, if that bound is at most `rel_tol |G|`.
 /// Arguments are validated by the caller (`0 < y <= 1`).
 ///
@@ -372,11 +391,19 @@ pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Option<Bounded
     // next to the zero of G(k, .) (y < 0.9 here) the f64 Beta series misses 1e-14 by
     // cancellation, not truncation: the double-double one answers there
     let beta_dd = || meijer_g_k_beta_series_dd(k, y, &consts).and_then(|b| b.finish()).and_then(accept);
+    // next to the zero the f64 sums miss 1e-14 (measured: |B| below ~1e-2 of the parts'
+    // scale); there the double-double Beta series goes first (the estimate only orders)
+    let near_zero = (0.25..0.9).contains(&y) && k >= 100 && near_zero(k, y, consts.p.v.hi);
+    if near_zero {
+        if let Some(b) = beta_dd() {
+            return Some(b);
+        }
+    }
     if beta_first {
         if let Some(b) = beta() {
             return Some(b);
         }
-        if y < 0.9 {
+        if y < 0.9 && !near_zero {
             if let Some(b) = beta_dd() {
                 return Some(b);
             }
@@ -419,7 +446,7 @@ pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Option<Bounded
     }
     // below y = 1/2 (x = y/w < 1, so the series converges at every k; about 30 terms at
     // k = 100, more below) where the f64 direct series missed (|B| small towards the zero)
-    if (0.25..0.5).contains(&y) && k >= 100 {
+    if (0.25..0.5).contains(&y) && k >= 100 && !near_zero {
         if let Some(b) = beta_dd() {
             return Some(b);
         }
