@@ -42,14 +42,23 @@
 //!   the near-one expansion in plain double-double with an a-priori bound,
 //!   [`super::near_one_fast`] (four AVX lanes), 0.1-1 us.
 //!
+//! * Next to the zero of `G(k, .)` for `k >= 100`, `1/4 <= y < 0.9`: the Beta series in
+//!   double-double with a running bound, [`super::beta_series_dd`] (`ln(w/y) = 2 atanh(1-2y)`,
+//!   `w` an exact double-double below `1/2`), 15-30 terms, 0.7-0.8 us; it keeps `1e-14`
+//!   down to `|B| ~ 1e-13` of its parts' scale.
+//!
 //! The routes in order (the first whose bound is at most `rel_tol |G|` answers; see
-//! [`meijer_g_k_native_bounded`]): the Beta series (`k w >= 28`, not next to one where the
-//! next one also fits and the series is short of 1e-14), `near_one_f64` (`y > 0.85`,
+//! [`meijer_g_k_native_bounded`]): the double-double Beta series where `near_zero`
+//! estimates that the f64 sum tried next would miss (`k >= 100`, `1/4 <= y < 0.9`; the
+//! estimate only orders), the Beta series (`k w >= 28`, not next to one where the
+//! next one also fits and the series is short of 1e-14; then its double-double version
+//! if it misses at `y < 0.9`), `near_one_f64` (`y > 0.85`,
 //! `k w <= 1.25`), `near_one_fast` where it is cheaper than the direct series
 //! ([`NEAR_ONE_FAST_MIN_Y`]), the Beta series where it was deferred, the f64 direct series
-//! (`y <= Y_NATIVE_MAX`), `near_one_fast` elsewhere (next to the zeros of `G(2, .)`,
+//! (`y <= Y_NATIVE_MAX`), the double-double Beta series below `1/2` (`k >= 100`),
+//! `near_one_fast` elsewhere (next to the zeros of `G(2, .)`,
 //! `G(3, .)`), and last the double-double paths of
-//! `dd.rs` with running bounds (next to the zeros of `G(k, .)` for `k >= 4`, and the
+//! `dd.rs` with running bounds (next to the zeros of `G(k, .)` for `4 <= k < 100`, and the
 //! few points in no other route's range: `k = 1000`, `0.961 < y < 0.969`, where
 //! `31 < k w < 39` and neither the near-one expansion nor the Beta series reaches
 //! `1e-14`; 1.5-5 us). Left to MP (counted by the caller): `k > TABLE_K_MAX`, and the
