@@ -28,6 +28,14 @@
 //! * The alternating sum: one bounded addition a term. The remainder: half the next
 //!   term is added (`R` is in the interval between 0 and it) and half its upper bound
 //!   is charged on top of its own error.
+//! * *f64 tail*: once a term is below `2^-46` of the scale, the rest runs in f64
+//!   ([`f64_tail`]): `xf = x.hi`, `tf = t.hi` with relative errors `(|lo| + e)/(hi - |lo| - e)`;
+//!   each step `tf = fl(fl(fl(tf xf) N_j)/D_j)` adds three roundings and `x`'s error to the
+//!   running relative bound `eta_j` [Higham, *Accuracy and Stability*, 3.1], charged
+//!   `eta_j tf_j (1 + 2 eta_j)` a term; the plain alternating sum `u sum |partial sums|`;
+//!   the remainder as above from `tf` (half added exactly, `t_j/2 + |t_j - tf|/2` charged).
+//!   These errors are `~3 j u 2^-46` of the scale, below the `2^-92` of the stopping rule's
+//!   order, and a term costs a few f64 operations instead of three bounded double-double ones.
 //! * `P_k` and `C_k` from the certified 128-bit table ([`super::native`]), the bracket
 //!   and the product `C_k B` bounded, then rounded once ([`BoundedDd::finish`]).
 //!
@@ -48,6 +56,9 @@ const MAX_TERMS: u32 = 2000;
 
 /// The stopping threshold relative to the scale `|ln(w/y)| + |A| + P_k` (`2^-92`).
 const STOP_REL: f64 = 2.019_483_917_365_790_2e-28;
+
+/// The terms below this fraction of the scale (`2^-46`) are summed in f64 (module docs).
+const F64_TAIL_REL: f64 = 1.4210854715202004e-14;
 
 cpu_dispatch! {
     /// `G(k, y)` by the Beta-expectation series in double-double (module docs),
@@ -106,9 +117,59 @@ fn beta_dd_with<P: ExactProduct>(k: u32, y: f64, c: &DdConstants) -> Option<Boun
         s = if j % 2 == 1 { s.add(t) } else { s.sub(t) };
         prev = tu;
         j += 1;
+        let scale = scale0 + s.mag();
+        if tu <= F64_TAIL_REL * scale {
+            // the rest in f64: its rounding errors weigh 2^-46 of the scale at most
+            s = s.add(f64_tail(t, x, j, kf, STOP_REL * scale, tu)?);
+            break;
+        }
     }
     let b = l.add(s).add(c.p).mul_f64_p::<P>(0.5);
     Some(c.c.mul_p::<P>(b))
+}
+
+/// `sum_{i >= j} (-1)^{i+1} t_i` with its remainder (module docs, *f64 tail*), in f64 from
+/// the double-double `t_{j-1}` and `x`; `stop` the stopping threshold, `prev` the upper
+/// bound of `t_{j-1}`. `None` if the relative errors grow past `1e-7` (they stay near
+/// `3 j u`).
+fn f64_tail(t: BoundedDd, x: BoundedDd, mut j: u32, kf: f64, stop: f64, mut prev: f64) -> Option<BoundedDd> {
+    const U: f64 = crate::ball::U;
+    const SMALL: f64 = 1e-7;
+    let rel = |b: BoundedDd| (b.v.lo.abs() + b.e) / (b.v.hi - b.v.lo.abs() - b.e);
+    let xf = x.v.hi;
+    let ex = rel(x); // xf = x (1 + theta), |theta| <= ex
+    let mut tf = t.v.hi;
+    let mut eta = rel(t); // tf = t_{j-1} (1 + theta), |theta| <= eta
+    if !(ex < SMALL && eta < SMALL && xf > 0.0 && tf > 0.0) {
+        return None;
+    }
+    let (mut sf, mut abs_partials, mut term_err) = (0.0f64, 0.0f64, 0.0f64);
+    loop {
+        let jf = j as f64;
+        tf = tf * xf * ((2.0 * jf + 1.0) * (jf - 1.0).max(1.0)) / ((2.0 * kf + 2.0 + 2.0 * jf) * jf);
+        // three roundings and x's error; (1 + 1e-6) covers the second-order terms
+        eta = (eta + ex + 3.0 * U) * (1.0 + 1e-6);
+        if !(eta < SMALL) {
+            return None;
+        }
+        // |t_j - tf| <= eta t_j <= eta tf (1 + 2 eta); tu >= t_j
+        let tu = tf * (1.0 + 2.0 * eta) * (1.0 + 4.0 * U);
+        if tu <= stop || tu >= prev || j >= MAX_TERMS {
+            // R_{j-1} between 0 and (-1)^{j+1} t_j: add tf/2 (exact), charge t_j/2 + |t_j - tf|/2
+            sf = if j % 2 == 1 { sf + 0.5 * tf } else { sf - 0.5 * tf };
+            abs_partials += sf.abs();
+            term_err += 0.5 * tu + 0.5 * eta * tf * (1.0 + 2.0 * eta);
+            break;
+        }
+        sf = if j % 2 == 1 { sf + tf } else { sf - tf };
+        abs_partials += sf.abs();
+        term_err += eta * tf * (1.0 + 2.0 * eta);
+        prev = tu;
+        j += 1;
+    }
+    // each addition errs by at most u |partial sum|; (1 + 1e-6) covers the f64 evaluation
+    // of the bound (at most a few thousand roundings of positive terms)
+    Some(BoundedDd { v: Dd::from_f64(sf), e: (term_err + U * abs_partials) * (1.0 + 1e-6) })
 }
 
 #[cfg(test)]

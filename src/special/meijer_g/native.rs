@@ -44,7 +44,8 @@
 //!
 //! * Next to the zero of `G(k, .)` for `k >= 100`, `1/4 <= y < 0.9`: the Beta series in
 //!   double-double with a running bound, [`super::beta_series_dd`] (`ln(w/y) = 2 atanh(1-2y)`,
-//!   `w` an exact double-double below `1/2`), 15-30 terms, 0.7-0.8 us; it keeps `1e-14`
+//!   `w` an exact double-double below `1/2`, the terms below `2^-46` of the scale in f64),
+//!   15-30 terms, 0.6-0.8 us; it keeps `1e-14`
 //!   down to `|B| ~ 1e-13` of its parts' scale.
 //!
 //! The routes in order (the first whose bound is at most `rel_tol |G|` answers; see
