@@ -42,11 +42,11 @@
 //!   the near-one expansion in plain double-double with an a-priori bound,
 //!   [`super::near_one_fast`] (four AVX lanes), 0.1-1 us.
 //!
-//! * Next to the zero of `G(k, .)` for `k >= 100`, `1/4 <= y < 0.9`: the Beta series in
+//! * Next to the zero of `G(k, .)`, `1/4 <= y < 0.9` (first for `k >= 100`, else after the
+//!   f64 Beta series where that misses): the Beta series in
 //!   double-double with a running bound, [`super::beta_series_dd`] (`ln(w/y) = 2 atanh(1-2y)`,
 //!   `w` an exact double-double below `1/2`, the terms below `2^-46` of the scale in f64),
-//!   15-30 terms, 0.6-0.8 us; it keeps `1e-14`
-//!   down to `|B| ~ 1e-13` of its parts' scale.
+//!   15-30 terms, 0.6-0.8 us; it keeps `1e-14` down to `|B| ~ 1e-13` of its parts' scale.
 //!
 //! The routes in order (the first whose bound is at most `rel_tol |G|` answers; see
 //! [`meijer_g_k_native_bounded`]): the double-double Beta series where `near_zero`
