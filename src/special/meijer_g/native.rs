@@ -42,7 +42,7 @@
 //!   the near-one expansion in plain double-double with an a-priori bound,
 //!   [`super::near_one_fast`] (four AVX lanes), 0.1-1 us.
 //!
-//! * Next to the zero of `G(k, .)`, `1/4 <= y < 0.9` (first for `k >= 100`, else after the
+//! * Next to the zero of `G(k, .)`, `1/4 <= y < 0.9` (first for `k >= 25`, else after the
 //!   f64 Beta series where that misses): the Beta series in
 //!   double-double with a running bound, [`super::beta_series_dd`] (`ln(w/y) = 2 atanh(1-2y)`,
 //!   `w` an exact double-double below `1/2`, the terms below `2^-46` of the scale in f64),
@@ -50,7 +50,7 @@
 //!
 //! The routes in order (the first whose bound is at most `rel_tol |G|` answers; see
 //! [`meijer_g_k_native_bounded`]): the double-double Beta series where `near_zero`
-//! estimates that the f64 sum tried next would miss (`k >= 100`, `1/4 <= y < 0.9`; the
+//! estimates that the f64 sum tried next would miss (`k >= 25`, `1/4 <= y < 0.9`; the
 //! estimate only orders), the Beta series (`k w >= 28`, not next to one where the
 //! next one also fits and the series is short of 1e-14; then its double-double version
 //! if it misses at `y < 0.9`), `near_one_f64` (`y > 0.85`,
@@ -349,6 +349,13 @@ fn beta_series_kw(k: u32) -> f64 {
     t0 + (t1 - t0) * (kf / k0).ln() / (k1 / k0).ln()
 }
 
+/// Smallest `k` at which the double-double Beta series goes first next to the zero of
+/// `G(k, .)`: there `x = y/w ~ 1 + 3/k` and its terms decrease down to `2^-92` of the
+/// scale (below, at `k = 20`, they turn before; measured: its bound is `1e-14` relative at
+/// `y_0 +- 1e-6` for `k = 25, 30`, not for `k = 20`; at `y_0 +- 1e-12` not for `k = 25`, and
+/// the next route answers). It takes 1.8-2.6 us there against 5 us for `dd.rs`.
+const NEAR_ZERO_DD_MIN_K: u32 = 25;
+
 /// Whether `y` is so close to the zero of `G(k, .)` that the f64 sum tried first misses
 /// `1e-14`: an estimate of `|B| = |ln(w/y) + A + P_k|/2` (`A` from its first two terms,
 /// `x = y/w`) against the scale of that sum's parts, `|ln(w/y)| + A + P_k` for the f64
@@ -403,7 +410,7 @@ pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Option<Bounded
     let beta_dd = || meijer_g_k_beta_series_dd(k, y, &consts).and_then(|b| b.finish()).and_then(accept);
     // next to the zero the f64 sums miss 1e-14 (measured: |B| below ~1e-2 of the parts'
     // scale); there the double-double Beta series goes first (the estimate only orders)
-    let near_zero = (0.25..0.9).contains(&y) && k >= 100 && near_zero(k, y, consts.p.v.hi);
+    let near_zero = (0.25..0.9).contains(&y) && k >= NEAR_ZERO_DD_MIN_K && near_zero(k, y, consts.p.v.hi);
     if near_zero {
         if let Some(b) = beta_dd() {
             return Some(b);
