@@ -59,10 +59,11 @@
 //! (`y <= Y_NATIVE_MAX`), the double-double Beta series below `1/2` (`k >= 100`),
 //! `near_one_fast` elsewhere (next to the zeros of `G(2, .)`,
 //! `G(3, .)`), and last the double-double paths of
-//! `dd.rs` with running bounds (next to the zeros of `G(k, .)` for `4 <= k < 100`, and the
-//! few points in no other route's range: `k = 1000`, `0.961 < y < 0.969`, where
-//! `31 < k w < 39` and neither the near-one expansion nor the Beta series reaches
-//! `1e-14`; 1.5-5 us). Left to MP (counted by the caller): `k > TABLE_K_MAX`, and the
+//! `dd.rs` with running bounds (next to the zeros of `G(k, .)` for `4 <= k < 25`, and at
+//! `k = 25-30` where the estimate does not send the double-double Beta series first, e.g.
+//! `y_0 +- 1e-3`; and any point no other route certifies: at `k = 1000`,
+//! `0.958 <= y <= 0.974` every point is the Beta series' or `near_one_fast`'s, probed
+//! 2026-11-27). Left to MP (counted by the caller): `k > TABLE_K_MAX`, and the
 //! f64 `y` next to a zero of `G(k, .)` (`|G| <~ 1e-16`), where even the double-double
 //! bound (absolute, `~1e-30`) is not `1e-14` relative.
 
