@@ -61,7 +61,7 @@
 //! `G(3, .)`), and last the double-double paths of
 //! `dd.rs` with running bounds (next to the zeros of `G(k, .)` for `4 <= k < 25`, and at
 //! `k = 25-30` where the estimate does not send the double-double Beta series first, e.g.
-//! `y_0 +- 1e-3`; and any point no other route certifies: at `k = 1000`,
+//! `y_0 - 5e-3` at `k = 25`; and any point no other route certifies: at `k = 1000`,
 //! `0.958 <= y <= 0.974` every point is the Beta series' or `near_one_fast`'s, probed
 //! 2026-11-27). Left to MP (counted by the caller): `k > TABLE_K_MAX`, and the
 //! f64 `y` next to a zero of `G(k, .)` (`|G| <~ 1e-16`), where even the double-double
@@ -361,8 +361,10 @@ const NEAR_ZERO_DD_MIN_K: u32 = 25;
 /// Whether `y` is so close to the zero of `G(k, .)` that the f64 sum tried first misses
 /// `1e-14`: an estimate of `|B| = |ln(w/y) + A + P_k|/2` (`A` from its first two terms,
 /// `x = y/w`) against the scale of that sum's parts, `|ln(w/y)| + A + P_k` for the f64
-/// Beta series (`y >= 1/2`, misses below about `1e-2` of it, measured), `|ln y| + |ln w| +
-/// P_k` for the f64 direct series (`y < 1/2`). It only orders the routes.
+/// Beta series (`y >= 1/2`, misses below about `1e-2` of it, measured; `5e-2` for
+/// `k < 100`, where the f64 routes tried before `dd.rs` miss farther from the zero:
+/// `y_0 +- 1e-3` at `k = 25, 30` 4.5-5.6 -> 1.7-2.6 us), `|ln y| + |ln w| + P_k` for the
+/// f64 direct series (`y < 1/2`). It only orders the routes.
 fn near_zero(k: u32, y: f64, p: f64) -> bool {
     let w = 1.0 - y;
     let (ln_y, ln_w) = (y.ln(), w.ln());
@@ -371,7 +373,7 @@ fn near_zero(k: u32, y: f64, p: f64) -> bool {
     let a = t1 - 0.5 * t1 * x * 2.5 / (k as f64 + 3.0);
     let b = (ln_w - ln_y + a + p).abs();
     if y >= 0.5 {
-        b < 0.01 * ((ln_w - ln_y).abs() + a + p)
+        b < if k < 100 { 0.05 } else { 0.01 } * ((ln_w - ln_y).abs() + a + p)
     } else {
         b < 0.05 * (ln_y.abs() + ln_w.abs() + p)
     }
