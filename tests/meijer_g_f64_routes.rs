@@ -1,6 +1,6 @@
 //! Every f64 route of `meijer_g_k_bounded` (issue 23, item 4), through the public API:
 //! on a grid of `k` and `y` that crosses every route switch (the Beta-expectation series
-//! from `k (1-y) = 14`, first from 14.5-30 by `k`, the plain double-double near-one expansion
+//! from `k (1-y) = 14`, first from 14.5-29.4 by `k`, the plain double-double near-one expansion
 //! at `k w = 32 y` and `y = 0.78, 0.875`, the f64 near-one expansion at `y = 0.85`, `k w = 1.25`, the direct
 //! series at `y = 0.97`), next to `y = 1`, next to each zero of `G(k, .)` and at tiny `y`,
 //! the returned bound encloses the certified 200-bit value, it is `1e-14` relative
@@ -89,9 +89,9 @@ fn every_route_encloses_and_is_relative() {
         // where the Beta series goes first (meijer_g/native.rs, beta_series_kw)
         let beta_kw = match k {
             30 => 14.5,
-            100 => 21.5,
-            300 => 27.3,
-            1000 => 30.0,
+            100 => 21.2,
+            300 => 26.9,
+            1000 => 29.4,
             _ => 0.0,
         };
         if beta_kw > 0.0 {
@@ -107,11 +107,16 @@ fn every_route_encloses_and_is_relative() {
         }
     }
     // next to the zeros: G(2, .) at 0.807, G(3, .) at 0.70, G(k, .) at 1/2 + O(1/k)
-    for &(k, lo, hi) in &[(2u32, 0.75, 0.85), (3, 0.6, 0.8), (10, 0.5, 0.7), (30, 0.5, 0.6), (100, 0.5, 0.6), (1000, 0.5, 0.6)] {
+    // (k >= 100: the double-double Beta series, meijer_g/beta_series_dd.rs; k = 519 is the
+    // slowest point of the criterion domain before it)
+    for &(k, lo, hi) in &[(2u32, 0.75, 0.85), (3, 0.6, 0.8), (10, 0.5, 0.7), (30, 0.5, 0.6), (100, 0.5, 0.6), (300, 0.5, 0.6), (519, 0.5, 0.6), (1000, 0.5, 0.6)] {
         let y0 = f64_next_to_zero(k, lo, hi);
         check(k, y0, "the two f64 y around a zero", true);
         check(k, y0.next_up(), "the two f64 y around a zero", true);
-        for d in [1e-12, 1e-9, 1e-6, 1e-3] {
+        // and below y = 1/2 for k >= 100 (y0 - 1e-2: the double-double Beta series with
+        // w = 1 - y a double-double)
+        let ds: &[f64] = if k >= 100 { &[1e-12, 1e-9, 1e-6, 1e-3, 1e-2] } else { &[1e-12, 1e-9, 1e-6, 1e-3] };
+        for &d in ds {
             check(k, y0 - d, "next to a zero (1e-12 to 1e-3)", false);
             check(k, y0 + d, "next to a zero (1e-12 to 1e-3)", false);
         }

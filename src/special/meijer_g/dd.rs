@@ -149,6 +149,15 @@ pub(crate) fn ln_dd<P: ExactProduct>(y: f64, ln2: BoundedDd) -> Option<BoundedDd
     }
     let (bh, bl) = two_sum(m, 1.0); // m + 1 exactly
     let v = BoundedDd::exact(m - 1.0).div(BoundedDd { v: Dd { hi: bh, lo: bl }, e: 0.0 })?;
+    let atanh2 = two_atanh_dd::<P>(v)?;
+    Some(ln2.mul_f64_p::<P>(e as f64).add(atanh2))
+}
+
+/// `2 atanh(v) = ln((1+v)/(1-v))` in double-double for `v^2 < 0.03` (`|v| <~ 0.173`):
+/// `v P(v^2)`, `P(s) = sum_{j<J} s^j/(2j+1)` with truncation `s^J/((2J+1)(1-s)) <= 2^-110`
+/// (the module docs' `ln y`); `None` for larger `|v|`.
+#[inline(always)]
+pub(crate) fn two_atanh_dd<P: ExactProduct>(v: BoundedDd) -> Option<BoundedDd> {
     let s = v.mul_p::<P>(v);
     let s_up = upper(s);
     if !(s_up < 0.03) {
@@ -184,8 +193,7 @@ pub(crate) fn ln_dd<P: ExactProduct>(y: f64, ln2: BoundedDd) -> Option<BoundedDd
     }
     let mut p = even.add(s.mul_p::<P>(odd));
     p.e += trunc;
-    let atanh2 = v.mul_p::<P>(p).mul_f64_p::<P>(2.0);
-    Some(ln2.mul_f64_p::<P>(e as f64).add(atanh2))
+    Some(v.mul_p::<P>(p).mul_f64_p::<P>(2.0))
 }
 
 /// `S(y) = sum_{n>=1} r_n/n` for `Y_DD_MIN <= y < 1` in double-double.

@@ -75,6 +75,7 @@
 use rug::Float;
 
 mod beta_series;
+mod beta_series_dd;
 mod constants;
 pub(crate) mod dd;
 mod direct;

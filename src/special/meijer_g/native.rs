@@ -42,17 +42,28 @@
 //!   the near-one expansion in plain double-double with an a-priori bound,
 //!   [`super::near_one_fast`] (four AVX lanes), 0.1-1 us.
 //!
+//! * Next to the zero of `G(k, .)`, `1/4 <= y < 0.9` (first for `k >= 25`, else after the
+//!   f64 Beta series where that misses): the Beta series in
+//!   double-double with a running bound, [`super::beta_series_dd`] (`ln(w/y) = 2 atanh(1-2y)`,
+//!   `w` an exact double-double below `1/2`, the terms below `2^-46` of the scale in f64),
+//!   15-30 terms, 0.6-0.8 us; it keeps `1e-14` down to `|B| ~ 1e-13` of its parts' scale.
+//!
 //! The routes in order (the first whose bound is at most `rel_tol |G|` answers; see
-//! [`meijer_g_k_native_bounded`]): the Beta series (`k w >= 28`, not next to one where the
-//! next one also fits and the series is short of 1e-14), `near_one_f64` (`y > 0.85`,
+//! [`meijer_g_k_native_bounded`]): the double-double Beta series where `near_zero`
+//! estimates that the f64 sum tried next would miss (`k >= 25`, `1/4 <= y < 0.9`; the
+//! estimate only orders), the Beta series (`k w >= 28`, not next to one where the
+//! next one also fits and the series is short of 1e-14; then its double-double version
+//! if it misses at `y < 0.9`), `near_one_f64` (`y > 0.85`,
 //! `k w <= 1.25`), `near_one_fast` where it is cheaper than the direct series
 //! ([`NEAR_ONE_FAST_MIN_Y`]), the Beta series where it was deferred, the f64 direct series
-//! (`y <= Y_NATIVE_MAX`), `near_one_fast` elsewhere (next to the zeros of `G(2, .)`,
+//! (`y <= Y_NATIVE_MAX`), the double-double Beta series below `1/2` (`k >= 100`),
+//! `near_one_fast` elsewhere (next to the zeros of `G(2, .)`,
 //! `G(3, .)`), and last the double-double paths of
-//! `dd.rs` with running bounds (next to the zeros of `G(k, .)` for `k >= 4`, and the
-//! few points in no other route's range: `k = 1000`, `0.961 < y < 0.969`, where
-//! `31 < k w < 39` and neither the near-one expansion nor the Beta series reaches
-//! `1e-14`; 1.5-5 us). Left to MP (counted by the caller): `k > TABLE_K_MAX`, and the
+//! `dd.rs` with running bounds (next to the zeros of `G(k, .)` for `4 <= k < 25`, and at
+//! `k = 25-30` where the estimate does not send the double-double Beta series first, e.g.
+//! `y_0 - 5e-3` at `k = 25`; and any point no other route certifies: at `k = 1000`,
+//! `0.958 <= y <= 0.974` every point is the Beta series' or `near_one_fast`'s, probed
+//! 2026-11-27). Left to MP (counted by the caller): `k > TABLE_K_MAX`, and the
 //! f64 `y` next to a zero of `G(k, .)` (`|G| <~ 1e-16`), where even the double-double
 //! bound (absolute, `~1e-30`) is not `1e-14` relative.
 
@@ -63,6 +74,7 @@ use super::constants::MeijerConstants;
 use super::dd::{meijer_g_k_dd, DdConstants};
 use super::elementary::{ln_bounded, Val};
 use super::beta_series::{meijer_g_k_beta_series, BETA_SERIES_MIN_KW};
+use super::beta_series_dd::meijer_g_k_beta_series_dd;
 use super::near_one_fast::near_one_fast;
 pub use super::Y_NATIVE_MAX;
 
@@ -327,15 +339,44 @@ fn near_one_f64(tables: &Tables, k: u32, w: f64) -> Option<Bounded> {
 
 /// The `k w` from which the Beta series' bound is `1e-14` relative (its smallest term is
 /// about `e^{-k w}` times a factor that grows with `y/w`): measured on the unit probe
-/// of 2026-11-27 at `k = 30, 56, 100, 200, 300, 500, 1000` (`14.5, 17.2, 21.5, 25.5,
-/// 27.3, 28.8, 30.0`), linear in `ln k` between. It only orders the routes: where the
-/// series misses, the next route answers.
+/// of 2026-11-27 at `k = 30, 56, 100, 200, 300, 500, 1000` (`14.5, 17.2, 21.2, 25.3,
+/// 26.9, 28.3, 29.4` since the remainder's interval from Jensen's inequality; were
+/// `21.5, 25.5, 27.3, 28.8, 30.0` from 100 on), linear in `ln k` between. It only orders
+/// the routes: where the series misses, the next route answers.
 fn beta_series_kw(k: u32) -> f64 {
-    const AT: [(f64, f64); 7] = [(30.0, 14.5), (56.0, 17.2), (100.0, 21.5), (200.0, 25.5), (300.0, 27.3), (500.0, 28.8), (1000.0, 30.0)];
+    const AT: [(f64, f64); 7] = [(30.0, 14.5), (56.0, 17.2), (100.0, 21.2), (200.0, 25.3), (300.0, 26.9), (500.0, 28.3), (1000.0, 29.4)];
     let kf = (k as f64).clamp(AT[0].0, AT[6].0);
     let i = AT.iter().position(|&(kk, _)| kk >= kf).unwrap_or(6).max(1);
     let ((k0, t0), (k1, t1)) = (AT[i - 1], AT[i]);
     t0 + (t1 - t0) * (kf / k0).ln() / (k1 / k0).ln()
+}
+
+/// Smallest `k` at which the double-double Beta series goes first next to the zero of
+/// `G(k, .)`: there `x = y/w ~ 1 + 3/k` and its terms decrease down to `2^-92` of the
+/// scale (below, at `k = 20`, they turn before; measured: its bound is `1e-14` relative at
+/// `y_0 +- 1e-6` for `k = 25, 30`, not for `k = 20`; at `y_0 +- 1e-12` not for `k = 25`, and
+/// the next route answers). It takes 1.8-2.6 us there against 5 us for `dd.rs`.
+const NEAR_ZERO_DD_MIN_K: u32 = 25;
+
+/// Whether `y` is so close to the zero of `G(k, .)` that the f64 sum tried first misses
+/// `1e-14`: an estimate of `|B| = |ln(w/y) + A + P_k|/2` (`A` from its first two terms,
+/// `x = y/w`) against the scale of that sum's parts, `|ln(w/y)| + A + P_k` for the f64
+/// Beta series (`y >= 1/2`, misses below about `1e-2` of it, measured; `5e-2` for
+/// `k < 100`, where the f64 routes tried before `dd.rs` miss farther from the zero:
+/// `y_0 +- 1e-3` at `k = 25, 30` 4.5-5.6 -> 1.7-2.6 us), `|ln y| + |ln w| + P_k` for the
+/// f64 direct series (`y < 1/2`). It only orders the routes.
+fn near_zero(k: u32, y: f64, p: f64) -> bool {
+    let w = 1.0 - y;
+    let (ln_y, ln_w) = (y.ln(), w.ln());
+    let x = y / w;
+    let t1 = x * 1.5 / (k as f64 + 2.0);
+    let a = t1 - 0.5 * t1 * x * 2.5 / (k as f64 + 3.0);
+    let b = (ln_w - ln_y + a + p).abs();
+    if y >= 0.5 {
+        b < if k < 100 { 0.05 } else { 0.01 } * ((ln_w - ln_y).abs() + a + p)
+    } else {
+        b < 0.05 * (ln_y.abs() + ln_w.abs() + p)
+    }
 }
 
 /// `G(k, y)` natively with a proven bound, if that bound is at most `rel_tol |G|`.
@@ -368,9 +409,25 @@ pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Option<Bounded
         let [c, p, _] = tables.per_k[k as usize];
         meijer_g_k_beta_series(k, y, val_from_dd(c), val_from_dd(p)).and_then(accept)
     };
+    // next to the zero of G(k, .) (y < 0.9 here) the f64 Beta series misses 1e-14 by
+    // cancellation, not truncation: the double-double one answers there
+    let beta_dd = || meijer_g_k_beta_series_dd(k, y, &consts).and_then(|b| b.finish()).and_then(accept);
+    // next to the zero the f64 sums miss 1e-14 (measured: |B| below ~1e-2 of the parts'
+    // scale); there the double-double Beta series goes first (the estimate only orders)
+    let near_zero = (0.25..0.9).contains(&y) && k >= NEAR_ZERO_DD_MIN_K && near_zero(k, y, consts.p.v.hi);
+    if near_zero {
+        if let Some(b) = beta_dd() {
+            return Some(b);
+        }
+    }
     if beta_first {
         if let Some(b) = beta() {
             return Some(b);
+        }
+        if y < 0.9 && !near_zero {
+            if let Some(b) = beta_dd() {
+                return Some(b);
+            }
         }
     }
     if y > NEAR_ONE_F64_MIN_Y && y < 1.0 && kw <= NEAR_ONE_F64_MAX_KW {
@@ -405,6 +462,13 @@ pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Option<Bounded
     }
     if fast_fits && !fast_first {
         if let Some(b) = near_one_fast_accepted() {
+            return Some(b);
+        }
+    }
+    // below y = 1/2 (x = y/w < 1, so the series converges at every k; about 30 terms at
+    // k = 100, more below) where the f64 direct series missed (|B| small towards the zero)
+    if (0.25..0.5).contains(&y) && k >= 100 && !near_zero {
+        if let Some(b) = beta_dd() {
             return Some(b);
         }
     }
