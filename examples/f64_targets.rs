@@ -8,7 +8,7 @@
 //! Every point is timed by the calling thread's CPU time
 //! (`CLOCK_THREAD_CPUTIME_ID`, exact to the nanosecond, unlike
 //! `/proc/thread-self/schedstat`, which moves only at scheduler ticks): the
-//! fastest of 15 batches of `calls` calls, so a batch that the scheduler or a
+//! fastest of 40 batches of `calls` calls, so a batch that the scheduler or a
 //! cache-cold start disturbed does not count. Output is CSV on stdout, one row
 //! per measured point, for `reference/bench_f64_targets.py`, which writes the
 //! tables in `docs/performance.md`:
@@ -42,10 +42,10 @@ fn thread_cpu_ns() -> f64 {
     ts.tv_sec as f64 * 1e9 + ts.tv_nsec as f64
 }
 
-/// CPU time per call of `f` in us: the fastest of 15 batches of `calls`.
+/// CPU time per call of `f` in us: the fastest of 40 batches of `calls`.
 fn per_call(calls: usize, mut f: impl FnMut() -> f64) -> f64 {
     let mut best = f64::INFINITY;
-    for _ in 0..15 {
+    for _ in 0..40 {
         let t = thread_cpu_ns();
         let mut s = 0.0;
         for _ in 0..calls {

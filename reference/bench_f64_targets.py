@@ -176,7 +176,7 @@ def tables(rows, anc):
             statistics.median(r["us"] for r in du), max(r["us"] for r in du), max(r["rel"] for r in u + du)))
     out.append("")
     out.append("One run of `python3 reference/bench_f64_targets.py` (examples/f64_targets: thread CPU time per call,"
-               " fastest of 15 batches of 40 calls, every value with its proven bound); load average %s (1/5/15 min)"
+               " fastest of 40 batches of 40 calls, every value with its proven bound); load average %s (1/5/15 min)"
                " on the 2 shared cores." % rows["load"])
     return "\n".join(out)
 
