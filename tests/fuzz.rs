@@ -7,8 +7,8 @@
 //! A panic fails the test; so does an `Ok` that carries a non-finite number
 //! (bad input must be an error, never a NaN).
 //!
-//! `./dev test` runs each target for bolero's default time (about a second), from
-//! the fixed seed `./dev` sets. A campaign:
+//! `./dev test` runs 1000 inputs a target from the fixed seed `./dev` sets (the same
+//! inputs on every machine). A campaign:
 //!
 //! ```text
 //! BOLERO_RANDOM_ITERATIONS=1000000 cargo test --release --features maugis/gmp-no-check --test fuzz
