@@ -1142,6 +1142,37 @@ def write_bessel_j_decimal():
         BESSEL_DECIMAL_BITS, BESSEL_DECIMAL_OUT_DIGITS, "n,x,value", bessel_j_decimal_rows())
 
 
+# J_n at the decimal "0.001" itself (bessel_j_grid holds the binary64 nearest it),
+# for the issue-23 request J_10000("0.001") and tests/ball_input_relative.rs: at
+# 512 bits the tests need more digits than bessel_j_decimal prints.
+BESSEL_TINY_X = "0.001"
+BESSEL_TINY_ORDERS = (0, 1, 7, 60, 500, 2000, 10000)
+BESSEL_TINY_BITS = (1000, 1300)
+BESSEL_TINY_OUT_DIGITS = 180
+
+
+def bessel_j_tiny_decimal_rows():
+    """J_n(x) at the decimal x = 0.001 (mpmath.besselj from the decimal string)."""
+    rows = []
+    for n in BESSEL_TINY_ORDERS:
+        vals = []
+        for bits in BESSEL_TINY_BITS:
+            mp.prec = bits
+            vals.append(mpmath.besselj(n, mpf(BESSEL_TINY_X)))
+        mp.prec = BESSEL_TINY_BITS[1]
+        rel = abs(vals[0] - vals[1]) / abs(vals[1])
+        if not rel < mpf(10) ** -(BESSEL_TINY_OUT_DIGITS + 20):
+            sys.exit("bessel_j_tiny_decimal: n=%d disagrees between precisions (%s)" % (n, mpmath.nstr(rel, 3)))
+        rows.append((n, BESSEL_TINY_X, mpmath.nstr(vals[1], BESSEL_TINY_OUT_DIGITS, min_fixed=1, max_fixed=0)))
+    return rows
+
+
+def write_bessel_j_tiny_decimal():
+    return write_decimal_table(
+        "bessel_j_tiny_decimal",
+        ["J_n(x) at the DECIMAL x = 0.001 as typed (not its binary64 neighbour), for large n;"],
+        BESSEL_TINY_BITS, BESSEL_TINY_OUT_DIGITS, "n,x,value", bessel_j_tiny_decimal_rows())
+
 # --------------------------------------------------------------------------
 # J_n on the large (n, x) plane (issue 13 grid), 170 digits
 # --------------------------------------------------------------------------
@@ -1545,7 +1576,7 @@ def write_model_decimal():
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--jobs", type=int, default=2)
-    ap.add_argument("--only", default="bessel_j,hyp1f2,hyp2f1,meijer_g_k,bessel_j_decimal,hyp2f1_decimal,bessel_j_grid,ball_inputs_decimal,model_decimal")
+    ap.add_argument("--only", default="bessel_j,hyp1f2,hyp2f1,meijer_g_k,bessel_j_decimal,bessel_j_tiny_decimal,hyp2f1_decimal,bessel_j_grid,ball_inputs_decimal,model_decimal")
     ap.add_argument("--limit", type=int, default=0, help="debug: only the first N points per table")
     args = ap.parse_args()
     tables = args.only.split(",")
@@ -1553,6 +1584,11 @@ def main():
     if "bessel_j_grid" in tables:
         write_bessel_j_grid(args.jobs)
         tables = [t for t in tables if t != "bessel_j_grid"]
+        if not tables:
+            return
+    if "bessel_j_tiny_decimal" in tables:
+        write_bessel_j_tiny_decimal()
+        tables = [t for t in tables if t != "bessel_j_tiny_decimal"]
         if not tables:
             return
     if "bessel_j_decimal" in tables:

@@ -107,6 +107,10 @@ INTEGRALS = [
     ("Xatan", "int_0^1 atan(x) dx = pi/4 - log(2)/2",
      lambda: mp.pi / 4 - mpmath.log(2) / 2,
      lambda: mpmath.quad(mpmath.atan, [0, 1])),
+    ("Xcos_rsqrt", "int_0^1 x^(-1/2) cos(x) dx = sqrt(2 pi) C(sqrt(2/pi)) (weight x^(-1/2), g = cos; C Fresnel's integral)",
+     lambda: mpmath.sqrt(2 * mp.pi) * mpmath.fresnelc(mpmath.sqrt(2 / mp.pi)),
+     # x = u^2: int_0^1 2 cos(u^2) du, no endpoint singularity for the check
+     lambda: 2 * mpmath.quad(lambda u: mpmath.cos(u * u), [0, 1])),
 ]
 
 

@@ -10,9 +10,10 @@
 //! * `u_w`, `du_w` at `x = a (1 + 1e-15)` typed as a decimal answer at every
 //!   precision from 8 to 4096 bits.
 //!
-//! References for `x = 0.001` at the decimal: mpmath 1.3.0, `besselj(n, mpf(1)/1000)`
-//! at 230 digits, printed to 180 digits. The other grid points are binary
-//! fractions, checked against `reference/data/bessel_j_grid.csv`.
+//! References for `x = 0.001` at the decimal: `reference/data/bessel_j_tiny_decimal.csv`
+//! (`reference/generate.py --only bessel_j_tiny_decimal`: mpmath from the decimal string
+//! at 1000 and 1300 bits, 180 digits). The other grid points are binary fractions,
+//! checked against `reference/data/bessel_j_grid.csv`.
 
 mod common;
 
@@ -23,16 +24,20 @@ use maugis::Ball;
 use proptest::prelude::*;
 use rug::Float;
 
-/// `J_n(0.001)` at the decimal (mpmath, 180 digits).
-const AT_0_001: [(i64, &str); 7] = [
-    (0, "0.999999750000015624999565972229003906182183160193172499526204805540539901648033580474850340233905629674281074734141489690396310470296800038290748732800624979880391262764942659652417"),
-    (1, "0.000499999937500002604166612413195122612841570818899380046283907421092390895847524632454242128659746332061682958182226096175031610079246697447029450880956707613307031934293353893837692"),
-    (7, "1.55009915790860682357975905394291012553820054403251128993337008470548536507396370323527250117453533214185237588398778932689028243033512271700353108471678625021013958124226335931091e-27"),
-    (60, "1.0423784133801953963178087669871701186339383266712703671674022463338493340300859903352924198178250469441612709139640750553856310717475697487468934472149457099493086507043843305462e-280"),
-    (500, "2.50376539491272074900629277522873813440072369677399888842424968554705253300536220374409717925396580474446030330914115869275432320927511483112046130019100466320514749145907150156209e-2785"),
-    (2000, "2.62638338868707423885560371248630858448581044839909274786819503777628375817336638613579993451596701648453738702969309383127954912424622829870940646058904043217474623460109276312894e-12338"),
-    (10000, "1.76103845432198475570715472694143617561877699279191292371591076832893657701494160959865169782955582948453033800691351092038635206415550500445708370609188351582222834171384754946623e-68670"),
-];
+/// `J_n(0.001)` at the decimal as typed: `reference/data/bessel_j_tiny_decimal.csv`
+/// (mpmath from the decimal string, 180 digits; `bessel_j_grid` holds the binary64
+/// number nearest 0.001). `(n, value)` in the table's order.
+fn at_0_001() -> Vec<(i64, String)> {
+    let rows = common::load("bessel_j_tiny_decimal");
+    assert!(rows.len() >= 7 && rows.iter().all(|r| r["x"] == "0.001"), "bessel_j_tiny_decimal: {} rows", rows.len());
+    rows.iter().map(|r| (common::col_i64(r, "n"), r["value"].to_string())).collect()
+}
+
+/// The reference row for order `n`.
+fn at_0_001_n(n: i64) -> Float {
+    let row = at_0_001().into_iter().find(|(m, _)| *m == n).expect("order in bessel_j_tiny_decimal");
+    parse(&row.1)
+}
 
 /// Relative slack of a 180-digit reference.
 const REF_SLACK: &str = "1e-175";
@@ -56,7 +61,7 @@ fn parse(s: &str) -> Float {
 #[test]
 fn issue_request_j10000_at_decimal_0_001() {
     // `{"fn":"bessel_j","n":10000,"x":"0.001","prec":128}` was 1.761e-68670 +- 9.7e-19732.
-    let r = parse(AT_0_001[6].1);
+    let r = at_0_001_n(10000);
     for prec in [53u32, 128, 512] {
         let b = at_decimal(10000, "0.001", prec);
         assert!(b.meets_rel(prec), "prec {prec}: {:.1} bits: {b:?}", b.rel_accuracy_bits());
@@ -77,10 +82,10 @@ fn issue_13_grid_at_decimals_keeps_prec_bits() {
     let mut failures = Vec::new();
     let mut points = 0;
     for prec in [53u32, 128, 512] {
-        for &(n, reference) in &AT_0_001 {
+        for (n, reference) in at_0_001() {
             let b = at_decimal(n, "0.001", prec);
             points += 1;
-            if !b.meets_rel(prec) || !encloses(&b, &parse(reference)) {
+            if !b.meets_rel(prec) || !encloses(&b, &parse(&reference)) {
                 failures.push(format!("prec {prec} n={n} x=0.001: {:.1} bits {b:?}", b.rel_accuracy_bits()));
             }
         }
@@ -145,7 +150,7 @@ fn complex_ball_real_path_keeps_relative_precision() {
     let x = Decimal::parse("0.001").unwrap().to_ball(prec + 64);
     let j = CBall::from_real(x).bessel_j(2000);
     assert!(j.re().meets_rel(prec), "{j:?}");
-    assert!(encloses(j.re(), &parse(AT_0_001[5].1)), "{j:?}");
+    assert!(encloses(j.re(), &at_0_001_n(2000)), "{j:?}");
 }
 
 proptest! {

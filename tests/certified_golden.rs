@@ -62,8 +62,9 @@ fn scaled(mut o: Outcome, k: i64) -> Outcome {
 }
 
 /// The ids of the golden set, in the CSV's order.
-const IDS: [&str; 19] = [
+const IDS: [&str; 20] = [
     "I0", "I1", "I2", "I3", "I10", "I12", "I13", "I14", "I15", "I17", "I18", "I19", "I20", "I24", "I31", "Xexp", "Xsqrt", "XxJ0", "Xatan",
+    "Xcos_rsqrt",
 ];
 
 /// Run at 3333 bits by default: the integrals that take at most a few seconds there
@@ -165,6 +166,11 @@ fn compute(id: &str, p: u32) -> Outcome {
         "XxJ0" => one(integrate(|x| x * x.besselj(0), &zero, &one_, p, &o).unwrap()),
         // int_0^1 atan x
         "Xatan" => one(integrate(|x| x.atan(), &zero, &one_, p, &o).unwrap()),
+        // int_0^1 x^(-1/2) cos x: weight x^(-1/2), g = cos
+        "Xcos_rsqrt" => {
+            let w = Weight::new(Ball::from_ratio(-1, 2, p), Ball::zero(p), 0).unwrap();
+            one(integrate_weighted(|x| x.cos(), &zero, &one_, &w, p, &o).unwrap())
+        }
         _ => panic!("no integrand for {id}"),
     }
 }
