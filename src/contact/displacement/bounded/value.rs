@@ -575,6 +575,127 @@ fn wave_bounded_with<const DU: bool>(a: f64, zeta: f64, amp: f64, x: f64) -> Opt
     }
 }
 
+/// Where the time of one from-scratch bounded call goes (issue 23, item 5): thread
+/// CPU time per call (the fastest of 15 batches), min / median / max over the
+/// model-domain grid (`a` from 0.5 to 6 in steps of 1/4, `x/a` in {1, 1.001, 1.1,
+/// 1.5, 2, 2.5, 3}, `zeta = 9/8`), of: the whole `u_w` bounded route; its fixed
+/// part alone (`D`, the bucket, the geometry with `-ln q`); the compensated
+/// recurrence alone (with `Lambda`, no other sum, no bound); a plain f64 Miller
+/// recurrence of the same length (one fused multiply-add a step); the fixed part
+/// with the pass with `U`, with the bound, and with both (the assembly is the rest);
+/// and, to read the others in cycles, one fused multiply-add of a dependent chain.
+/// A measurement that asserts nothing; needs FMA. Run by hand:
+/// `cargo test --release --features maugis/gmp-no-check --lib cost_split -- --ignored --nocapture`.
+#[cfg(all(test, target_arch = "x86_64"))]
+mod cost_split {
+    use super::*;
+    use std::hint::black_box;
+
+    fn cpu_ns() -> f64 {
+        let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
+        // SAFETY: a valid, writable timespec; a clock id Linux defines.
+        let rc = unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut ts) };
+        assert_eq!(rc, 0);
+        ts.tv_sec as f64 * 1e9 + ts.tv_nsec as f64
+    }
+
+    /// Fastest of 15 batches of `reps` calls, ns per call.
+    fn per_call(reps: usize, mut f: impl FnMut() -> f64) -> f64 {
+        let mut best = f64::INFINITY;
+        let mut acc = 0.0;
+        for _ in 0..15 {
+            let t0 = cpu_ns();
+            for _ in 0..reps {
+                acc += f();
+            }
+            best = best.min((cpu_ns() - t0) / reps as f64);
+        }
+        black_box(acc);
+        best
+    }
+
+    #[target_feature(enable = "fma")]
+    unsafe fn fixed_part(a: f64, zeta: f64, x: f64) -> f64 {
+        let (d, inv_d, top, _) = contact(a, zeta).unwrap();
+        let g = geometry::<true>(a, x).unwrap();
+        d.v.hi + inv_d.lo + top as f64 + g.acosh.v.hi + g.big_x.e
+    }
+
+    #[target_feature(enable = "fma")]
+    unsafe fn compensated(a: f64, zeta: f64) -> f64 {
+        let (_, inv_d, top, _) = contact(a, zeta).unwrap();
+        let p = miller_pass::<false, false, false>(inv_d, top, 0, 0.0, 0.0, 0.0);
+        p.lam.0 + p.lam.1 + p.p0.0 + p.p0.1 + p.p1.0 + p.p1.1
+    }
+
+    #[target_feature(enable = "fma")]
+    unsafe fn pass<const BOUND: bool, const WITH_U: bool>(a: f64, zeta: f64, x: f64) -> f64 {
+        let (_, inv_d, top, _) = contact(a, zeta).unwrap();
+        let g = geometry::<true>(a, x).unwrap();
+        let n_x = horner_start(neg_ln_x_from_acosh(g.acosh), top);
+        let p = miller_pass::<BOUND, WITH_U, false>(inv_d, top, n_x, -g.big_x.v.hi, -g.big_x.v.lo, 1e15);
+        // every field, so that none of the pass is optimised away
+        p.lam.0 + p.lam.1 + p.p0.0 + p.p0.1 + p.p1.0 + p.p1.1 + p.u.0 + p.u.1 + p.e0 + p.e1 + p.e_lam + p.sum_z
+    }
+
+    #[target_feature(enable = "fma")]
+    unsafe fn fma_chain() -> f64 {
+        let (mut v, a, b) = (black_box(1.0f64), black_box(0.999_999_9f64), black_box(1e-9f64));
+        for _ in 0..1000 {
+            v = v.mul_add(a, b);
+        }
+        v
+    }
+
+    #[target_feature(enable = "fma")]
+    unsafe fn plain(a: f64, zeta: f64) -> f64 {
+        let (_, inv_d, top, _) = contact(a, zeta).unwrap();
+        let (mut p1, mut p0, mut lam) = (0.0f64, 1.0f64, 0.0f64);
+        let mut kk = 4.0 * top as f64;
+        for _ in 0..top {
+            let po = (kk * inv_d.hi).mul_add(p0, -p1);
+            let pe = ((kk - 2.0) * inv_d.hi).mul_add(po, -p0);
+            (p1, p0) = (po, pe);
+            lam += pe;
+            kk -= 4.0;
+        }
+        lam + p0
+    }
+
+    #[test]
+    #[ignore = "measurement, asserts nothing: run by hand (see the doc comment)"]
+    fn cost_split() {
+        assert!(has_fma());
+        let zeta = 1.125;
+        let mut rows: [Vec<f64>; 7] = Default::default();
+        for i in 0..=22 {
+            let a = 0.5 + 0.25 * i as f64;
+            for r in [1.0, 1.001, 1.1, 1.5, 2.0, 2.5, 3.0] {
+                let x = a * r;
+                let reps = 2000;
+                // SAFETY: FMA asserted above.
+                unsafe {
+                    rows[0].push(per_call(reps, || wave_scratch_bounded::<false>(black_box(a), zeta, 1.0, black_box(x)).unwrap().value));
+                    rows[1].push(per_call(reps, || fixed_part(black_box(a), zeta, black_box(x))));
+                    rows[2].push(per_call(reps, || compensated(black_box(a), zeta)));
+                    rows[3].push(per_call(reps, || plain(black_box(a), zeta)));
+                    rows[4].push(per_call(reps, || pass::<false, true>(black_box(a), zeta, black_box(x))));
+                    rows[5].push(per_call(reps, || pass::<true, false>(black_box(a), zeta, black_box(x))));
+                    rows[6].push(per_call(reps, || pass::<true, true>(black_box(a), zeta, black_box(x))));
+                }
+            }
+        }
+        // SAFETY: FMA asserted above.
+        let chain = per_call(1, || unsafe { fma_chain() }) / 1000.0;
+        eprintln!("{:44} {chain:6.3} ns", "one fused multiply-add of a dependent chain");
+        let names = ["u_w bounded, whole route", "fixed part (D, bucket, geometry, -ln q)", "compensated recurrence alone", "plain f64 recurrence alone", "fixed + pass with U, no bound", "fixed + pass with bound, no U", "fixed + pass with U and bound"];
+        for (name, mut v) in names.into_iter().zip(rows) {
+            v.sort_by(f64::total_cmp);
+            eprintln!("{name:44} min {:6.1} / median {:6.1} / max {:6.1} ns per call", v[0], v[v.len() / 2], v[v.len() - 1]);
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
