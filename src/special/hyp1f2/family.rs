@@ -43,8 +43,8 @@ pub const FAMILY_MAX_K: u32 = 1_000_000;
 /// model's `z = -s^2`; any finite `z` is accepted). Method in the module docs.
 ///
 /// # Errors
-/// [`Error::NonFinite`] for a NaN or infinite `z`; [`Error::Domain`] for
-/// `kmax > FAMILY_MAX_K`.
+/// [`Error::NonFinite`] for a NaN or infinite `z`; [`Error::IntegerOutOfRange`]
+/// for `kmax > FAMILY_MAX_K`.
 pub fn hyp1f2_model_family_f64(kmax: u32, z: f64) -> Result<Vec<Bounded>> {
     crate::error::finite(z, "z")?;
     if kmax > FAMILY_MAX_K {

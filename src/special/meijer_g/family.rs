@@ -62,8 +62,8 @@ const MAX_TERMS: u64 = 20_000;
 /// method). `0 < y <= 1`, `kmax <= MAX_K` of [`super`].
 ///
 /// # Errors
-/// [`Error::NonFinite`] for a NaN or infinite `y`; [`Error::Domain`] for `y`
-/// outside `(0, 1]` or `kmax` above the supported maximum.
+/// [`Error::NonFinite`] for a NaN or infinite `y`; [`Error::OutOfRange`] for `y`
+/// outside `(0, 1]`; [`Error::IntegerOutOfRange`] for `kmax` above the supported maximum.
 pub fn meijer_g_k_family_f64(kmax: u32, y: f64) -> Result<Vec<Bounded>> {
     crate::error::finite(y, "y")?;
     if !(y > 0.0 && y <= 1.0) {
