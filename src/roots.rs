@@ -14,7 +14,13 @@
 //!   unimodal function, until the bracket is below `rel_tol (1 + |a|)`; the
 //!   function may fail (its error is passed through).
 //!
-//! Both are f64 estimates, not certified enclosures: the callers' tolerances
+//! * `first_crossing` (crate-internal): the first upward zero crossing of a
+//!   function negative at the start, by an outward scan whose every sampled
+//!   local maximum below zero is refined by `golden_section_min` (an excursion
+//!   above zero narrower than a step rises between the samples): the bracket
+//!   for [`brent`].
+//!
+//! All are f64 estimates, not certified enclosures: the callers' tolerances
 //! (`contact::model`'s gap and traction slacks) absorb their errors.
 //!
 //! # Layering
@@ -28,6 +34,44 @@ use crate::error::{Error, Result};
 /// Relative tolerance of [`brent`]'s root (the model's `m - 1` needs `1e-13`:
 /// `contact::model::M_REL_TOL`).
 pub const BRENT_REL_TOL: f64 = 1e-13;
+
+/// A bracket `(a, b, f(a), f(b))` with `f(a) < 0 <= f(b)` around the first upward
+/// crossing of `f` after `start` (where `f` is `f_start < 0`), scanning at
+/// `s_{i+1} = next(s_i)` (increasing) and stopping with `None` past `limit`. A
+/// sampled local maximum below zero (`f(s_{i-1}) < f(s_i) > f(s_{i+1})`, the
+/// first sample counting `before` as its left neighbour when given) is refined by
+/// golden-section search on `[s_{i-1}, s_{i+1}]` to `peak_rel_tol`; a maximum at
+/// or above zero closes the bracket there. An estimate: an excursion that leaves
+/// no sampled local maximum (two maxima within one step) is not seen.
+pub(crate) fn first_crossing<E, F: FnMut(f64) -> std::result::Result<f64, E>>(
+    mut f: F,
+    before: Option<(f64, f64)>,
+    start: (f64, f64),
+    next: impl Fn(f64) -> f64,
+    limit: f64,
+    peak_rel_tol: f64,
+) -> std::result::Result<Option<(f64, f64, f64, f64)>, E> {
+    let mut prev2 = before;
+    let (mut s_prev, mut f_prev) = start;
+    while s_prev <= limit {
+        let s = next(s_prev);
+        let fs = f(s)?;
+        if fs >= 0.0 {
+            return Ok(Some((s_prev, s, f_prev, fs)));
+        }
+        if let Some((s2, f2)) = prev2 {
+            if f_prev > f2 && f_prev > fs {
+                let (s_max, neg_max) = golden_section_min(|t| f(t).map(|v| -v), s2, s, peak_rel_tol, 80)?;
+                if -neg_max >= 0.0 {
+                    return Ok(Some((s2, s_max, f2, -neg_max)));
+                }
+            }
+        }
+        prev2 = Some((s_prev, f_prev));
+        (s_prev, f_prev) = (s, fs);
+    }
+    Ok(None)
+}
 
 /// Golden-section search for a minimum of `g` on `[a, b]`, until the bracket is
 /// below `rel_tol (1 + |a|)` or after `max_iter` steps. Returns `(x, g(x))`.

@@ -150,6 +150,35 @@ proptest! {
     }
 }
 
+/// Narrow excursions of the strip residual above zero between the scan's samples:
+/// parameter sets (from `examples/strip_scan_check`, seeds 12345 and 777) where the
+/// scan that only sampled returned a later root (m = 1.345 for the first root 1.065
+/// in the first). The solved root is the first: `F < 0` on a grid 128 times finer
+/// than the scan's step before it.
+#[test]
+fn narrow_excursions_give_the_first_root() {
+    let cases: [(f64, f64, f64, f64); 6] = [
+        (4.363588407919058, 0.5609992413514902, 0.3927145531829456, 0.9282460795995899),
+        (3.667550995800001, 0.3774591463912429, 0.3887307937067545, 3.6353204913991095),
+        (6.40209213200273, 1.3885202199549516, 0.3911052726074446, 3.67195851395496),
+        (0.8488220292248414, 1.7670720559009596, 0.765072705265549, 4.174321615457957),
+        (0.2782795979351793, 1.4219059021923666, 1.2157279696356502, 0.6472891560620659),
+        (0.6305568529321575, 1.8478528714314952, 0.7573293254258013, 2.60352504879329),
+    ];
+    for (lambda, alpha, beta, abar) in cases {
+        let cs = ContactSize::new(Params::new(lambda, alpha, beta).unwrap(), abar).unwrap();
+        let m = cs.solve_m().unwrap();
+        assert!(cs.strip_residual(m).unwrap().abs() < 1e-9, "lambda {lambda}: F(m) at m = {m}");
+        let (step, end) = (beta / 2048.0, (m - 1.0) * abar);
+        let mut s = step;
+        while s < end - step {
+            let f = cs.strip_residual_m_minus_1(s / abar).unwrap();
+            assert!(f < 0.0, "lambda {lambda} alpha {alpha} beta {beta} abar {abar}: F = {f:e} >= 0 at m = {} before the root {m}", 1.0 + s / abar);
+            s += step;
+        }
+    }
+}
+
 /// The JKR (E.42a) and M-DMT (E.43a) curves are approached at lambda = 6 and 1/10
 /// (Fig. 4c roughness), over the valid part of the curve.
 #[test]

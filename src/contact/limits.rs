@@ -24,7 +24,7 @@ use rayon::prelude::*;
 use crate::contact::curve::load_at;
 use crate::contact::located::{At, LocatedError};
 use crate::contact::model::Params;
-use crate::roots::brent;
+use crate::roots::{brent, first_crossing};
 use crate::error::{finite, Error, Interval, Result};
 use crate::special::bessel_j::bessel_j_sequence;
 
@@ -60,27 +60,35 @@ pub fn jkr_envelope(alpha: f64, beta: f64, abar: f64) -> Result<(f64, f64)> {
     Ok((base - h, base + h))
 }
 
-/// The M-DMT strip end `cbar`: the first root of E.43b, found by scanning
-/// outward from 0 in steps of at most `beta/16` and refining with Brent.
+/// The M-DMT strip end `cbar`: the first root of E.43b,
+/// `f(c) = lambda c^2/2 + 2 alpha lambda sin^2(pi c/beta) - 1`. Below
+/// `c_lo = sqrt(2 (1 - 2 alpha lambda)/lambda)` (0 when `2 alpha lambda >= 1`)
+/// `f < 0` (`sin^2 <= 1`), and at the first crest `beta (k + 1/2) >= c_lo`
+/// `f >= 0`: the root lies within one wave period after `c_lo`. Scanned from
+/// there in steps of `beta/16`, every sampled local maximum refined
+/// (`roots::first_crossing`), then Brent.
 pub fn mdmt_strip_end(params: Params) -> Result<f64> {
     let Params { lambda, alpha, beta } = params;
     let f = |c: f64| {
         let s = (PI * c / beta).sin();
         lambda * c * c / 2.0 + 2.0 * alpha * lambda * s * s - 1.0
     };
-    let step = (beta / 16.0).min(0.05);
-    let (mut lo, mut flo) = (0.0, -1.0);
-    let mut c = step;
-    while c < 1e6 {
-        let fc = f(c);
-        if fc >= 0.0 {
-            return brent(f, lo, c, flo, fc);
-        }
-        lo = c;
-        flo = fc;
-        c += step.max(c * 1e-3);
+    let rest = 1.0 - 2.0 * alpha * lambda;
+    // a little below c_lo, where f < 0 with room for the rounding of f and of c_lo
+    let mut lo = if rest > 0.0 { (2.0 * rest / lambda).sqrt() * (1.0 - 1e-9) } else { 0.0 };
+    let mut flo = f(lo);
+    while !(flo < 0.0) && lo > 0.0 {
+        lo = if lo > 1e-300 { lo * 0.5 } else { 0.0 };
+        flo = f(lo);
     }
-    Err(Error::NoStripEnd { model: "M-DMT, E.43b, c", limit: 1e6 })
+    let step = beta / 16.0;
+    // the crest after c_lo plus a step: f >= 0 there, up to rounding
+    let limit = lo + 2.0 * beta;
+    let never = |c: f64| Ok::<f64, std::convert::Infallible>(f(c));
+    match first_crossing(never, None, (lo, flo), |c| c + step, limit, 1e-12) {
+        Ok(Some((a, b, fa, fb))) => brent(f, a, b, fa, fb),
+        _ => Err(Error::NoStripEnd { model: "M-DMT, E.43b, c", limit }),
+    }
 }
 
 /// E.43c: the rigid pull-off load `L'_p = 2 lambda cbar`.
@@ -259,6 +267,36 @@ pub fn appendix_e_rows(params: Params, amax: f64, points: usize) -> std::result:
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The M-DMT strip end is the first root of E.43b: `f(c) = 0` to rounding and
+    /// `f < 0` on a grid of `beta/1024` before it, over lambda from 1e-3 to 1e4,
+    /// alpha from 0 to 3 and beta from 1e-3 to 10 (the scan starts at `c_lo`, within a
+    /// wave period of the root, so tiny beta costs no more steps).
+    #[test]
+    fn mdmt_strip_end_is_the_first_root() {
+        let mut checked = 0;
+        for &lambda in &[1e-3, 0.05, 0.3, 1.0, 4.0, 30.0, 1e4] {
+            for &alpha in &[0.0, 0.01, 0.2, 0.7, 1.5, 3.0] {
+                for &beta in &[1e-3, 0.05, 0.4, 1.125, 3.0, 10.0] {
+                    let p = Params::new(lambda, alpha, beta).unwrap();
+                    let c = mdmt_strip_end(p).unwrap();
+                    let f = |c: f64| {
+                        let s = (PI * c / beta).sin();
+                        lambda * c * c / 2.0 + 2.0 * alpha * lambda * s * s - 1.0
+                    };
+                    assert!(f(c).abs() < 1e-9 * (1.0 + lambda * c * c + alpha * lambda), "lambda {lambda} alpha {alpha} beta {beta}: f({c}) = {:e}", f(c));
+                    let step = beta / 1024.0;
+                    let samples = ((c / step) as usize).min(2_000_000);
+                    for i in 1..samples.saturating_sub(1) {
+                        let t = c * i as f64 / samples as f64;
+                        assert!(f(t) < 0.0, "lambda {lambda} alpha {alpha} beta {beta}: f({t}) = {:e} >= 0 before the root {c}", f(t));
+                    }
+                    checked += 1;
+                }
+            }
+        }
+        assert_eq!(checked, 7 * 6 * 6);
+    }
 
     #[test]
     fn smooth_mdmt_pull_off_is_2_sqrt_2_lambda() {
