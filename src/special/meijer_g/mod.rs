@@ -86,6 +86,7 @@ pub use native::{NEAR_ONE_F64_MAX_KW, NEAR_ONE_F64_MIN_Y, TABLE_K_MAX};
 mod near_one;
 mod near_one_fast;
 mod slater;
+mod zero_taylor;
 
 pub use constants::MeijerConstants;
 pub use direct::{direct_sums_sweep, meijer_g_k_direct, meijer_g_k_direct_ball, meijer_g_k_from_sum};
