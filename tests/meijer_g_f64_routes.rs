@@ -128,10 +128,12 @@ fn every_route_encloses_and_is_relative() {
             check(k, y0 - d, "next to a zero (1e-15 to 1e-12)", false);
             check(k, y0 + d, "next to a zero (1e-15 to 1e-12)", false);
         }
-        for &d in &[1e-9, 1e-6, 1e-3, 5e-3, 1e-2, 3e-2] {
-            check(k, y0 - d, "near a zero (1e-9 to 3e-2)", false);
-            check(k, y0 + d, "near a zero (1e-9 to 3e-2)", false);
+        for &d in &[1e-9, 1e-6, 1e-3, 5e-3, 1e-2] {
+            check(k, y0 - d, "near a zero (1e-9 to 1e-2)", false);
+            check(k, y0 + d, "near a zero (1e-9 to 1e-2)", false);
         }
+        check(k, y0 - 3e-2, "3e-2 from a zero", false);
+        check(k, y0 + 3e-2, "3e-2 from a zero", false);
     }
     // the tolerance table: the bound is 1e-14 relative everywhere, natively, and the value
     // within it
