@@ -10,6 +10,7 @@
 //! first call at that `k` (which builds the Taylor route's table, `meijer_g/zero_taylor.rs`).
 //!
 //! `cargo run --release --example meijer_g_grid --features maugis/gmp-no-check`
+//! (`MEIJER_G_POINT=k,y MEIJER_G_CALLS=n` times one point only, for callgrind)
 
 use maugis::special::meijer_g;
 
@@ -52,6 +53,17 @@ fn next_to_zero(k: u32) -> f64 {
 }
 
 fn main() {
+    // `MEIJER_G_POINT=k,y MEIJER_G_CALLS=n`: only n calls at one point after a warm-up call
+    // (for callgrind: the difference of two counts over the difference of n is one call)
+    if let Ok(point) = std::env::var("MEIJER_G_POINT") {
+        let (k, y) = point.split_once(',').expect("MEIJER_G_POINT=k,y");
+        let (k, y): (u32, f64) = (k.parse().expect("k"), y.parse().expect("y"));
+        let calls: usize = std::env::var("MEIJER_G_CALLS").ok().and_then(|c| c.parse().ok()).unwrap_or(1);
+        meijer_g::meijer_g_k_bounded(k, y).unwrap();
+        let s: f64 = (0..calls).map(|_| meijer_g::meijer_g_k_bounded(k, black_box(y)).unwrap().value).sum();
+        println!("{s:e}");
+        return;
+    }
     let ks = [0u32, 1, 2, 3, 5, 10, 30, 100, 300, 1000];
     let ys = [1e-10, 0.1, 0.5, 0.7, 0.8, 0.85, 0.9, 0.93, 0.95, 0.96, 0.97, 0.9705, 0.98, 0.99, 0.999, 1.0 - 1e-6, 1.0 - 1e-12, 1.0];
     meijer_g::meijer_g_k_bounded(0, 0.5).unwrap(); // the constants table, built once
