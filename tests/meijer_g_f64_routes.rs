@@ -128,6 +128,12 @@ fn every_route_encloses_and_is_relative() {
             check(k, y0 - d, "next to a zero (1e-15 to 1e-12)", false);
             check(k, y0 + d, "next to a zero (1e-15 to 1e-12)", false);
         }
+        // and 16 quasi-random offsets in (-1e-12, 1e-12), log-spread from 1e-16
+        for i in 0..16u32 {
+            let f = (i as f64 * 0.618_033_988_749_895 + k as f64 * 0.1).fract();
+            let d = 1e-16 * 1e4f64.powf(f) * if i % 2 == 0 { 1.0 } else { -1.0 };
+            check(k, y0 + d, "next to a zero (1e-15 to 1e-12)", false);
+        }
         for &d in &[1e-9, 1e-6, 1e-3, 5e-3, 1e-2] {
             check(k, y0 - d, "near a zero (1e-9 to 1e-2)", false);
             check(k, y0 + d, "near a zero (1e-9 to 1e-2)", false);
