@@ -59,8 +59,9 @@
 //! # Accuracy
 //!
 //! * MP: certified, `rad <= 2^-prec |mid|` (`G(1, 1) = 0` is returned exactly).
-//! * f64: the certified 64-bit value rounded (within 1 ulp; tolerance `1e-14`
-//!   relative, absolute near the zero of `G(k, .)` for `k >= 2`).
+//! * f64: for `k <= 1000` native with a proven bound of at most `1e-14` relative
+//!   (`native.rs`; next to the zero of `G(k, .)`, `k >= 2`, the Taylor route of
+//!   `zero_taylor.rs`), else the certified 64-bit value rounded (within 1 ulp).
 //!
 //! # Slater's theorem
 //!
