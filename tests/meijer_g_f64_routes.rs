@@ -4,8 +4,8 @@
 //! at `k w = 32 y` and `y = 0.78, 0.875`, the f64 near-one expansion at `y = 0.85`, `k w = 1.25`, the direct
 //! series at `y = 0.97`), next to `y = 1`, next to each zero of `G(k, .)` and at tiny `y`,
 //! the returned bound encloses the certified 200-bit value, it is `1e-14` relative
-//! (the tolerance table below, enforced), and no point falls back to MP except the two
-//! f64 `y` around each zero.
+//! (the tolerance table below, enforced), and no point falls back to MP, the f64 `y`
+//! around each zero included (the Taylor route about the zero, `meijer_g/zero_taylor.rs`).
 
 use maugis::special::{exact, fallback_counts, meijer_g};
 use rug::Float;
@@ -106,23 +106,43 @@ fn every_route_encloses_and_is_relative() {
             check(k, y, region, false);
         }
     }
-    // next to the zeros: G(2, .) at 0.807, G(3, .) at 0.70, G(k, .) at 1/2 + O(1/k)
-    // (k >= 100: the double-double Beta series, meijer_g/beta_series_dd.rs; k = 519 is the
-    // slowest point of the criterion domain before it)
-    for &(k, lo, hi) in &[(2u32, 0.75, 0.85), (3, 0.6, 0.8), (10, 0.5, 0.7), (30, 0.5, 0.6), (100, 0.5, 0.6), (300, 0.5, 0.6), (519, 0.5, 0.6), (1000, 0.5, 0.6)] {
-        let y0 = f64_next_to_zero(k, lo, hi);
-        check(k, y0, "the two f64 y around a zero", true);
-        check(k, y0.next_up(), "the two f64 y around a zero", true);
-        // and below y = 1/2 for k >= 100 (y0 - 1e-2: the double-double Beta series with
-        // w = 1 - y a double-double)
-        let ds: &[f64] = if k >= 100 { &[1e-12, 1e-9, 1e-6, 1e-3, 1e-2] } else { &[1e-12, 1e-9, 1e-6, 1e-3] };
-        for &d in ds {
-            check(k, y0 - d, "next to a zero (1e-12 to 1e-3)", false);
-            check(k, y0 + d, "next to a zero (1e-12 to 1e-3)", false);
+    // next to the zeros: G(2, .) at 0.807, G(3, .) at 0.70, G(k, .) at 1/2 + O(1/k): every
+    // k >= 2 has exactly one (meijer_g/zero_taylor.rs). The two f64 y around each zero, the
+    // next four f64 either side, and offsets up to 1e-2 (the window of the Taylor route about
+    // the zero is min(y_0, 1 - y_0)/10 >= 1.9e-2; beyond it the double-double routes answer)
+    let mut zero_ks: Vec<u32> = (2..25).collect();
+    zero_ks.extend([30, 100, 300, 519, 1000]);
+    for &k in &zero_ks {
+        let y0 = f64_next_to_zero(k, 0.5, 0.85);
+        let mut next_to = vec![y0, y0.next_up()];
+        let (mut below, mut above) = (y0, y0.next_up());
+        for _ in 0..4 {
+            below = below.next_down();
+            above = above.next_up();
+            next_to.extend([below, above]);
         }
+        for y in next_to {
+            check(k, y, "the ten f64 y around a zero", false);
+        }
+        for &d in &[1e-15, 1e-14, 1e-13, 1e-12] {
+            check(k, y0 - d, "next to a zero (1e-15 to 1e-12)", false);
+            check(k, y0 + d, "next to a zero (1e-15 to 1e-12)", false);
+        }
+        // and 16 quasi-random offsets in (-1e-12, 1e-12), log-spread from 1e-16
+        for i in 0..16u32 {
+            let f = (i as f64 * 0.618_033_988_749_895 + k as f64 * 0.1).fract();
+            let d = 1e-16 * 1e4f64.powf(f) * if i % 2 == 0 { 1.0 } else { -1.0 };
+            check(k, y0 + d, "next to a zero (1e-15 to 1e-12)", false);
+        }
+        for &d in &[1e-9, 1e-6, 1e-3, 5e-3, 1e-2] {
+            check(k, y0 - d, "near a zero (1e-9 to 1e-2)", false);
+            check(k, y0 + d, "near a zero (1e-9 to 1e-2)", false);
+        }
+        check(k, y0 - 3e-2, "3e-2 from a zero", false);
+        check(k, y0 + 3e-2, "3e-2 from a zero", false);
     }
-    // the tolerance table: the bound is 1e-14 relative everywhere (natively, or from MP
-    // at the f64 y around a zero), and the value within it
+    // the tolerance table: the bound is 1e-14 relative everywhere, natively, and the value
+    // within it
     let tolerance = meijer_g::NATIVE_REL_TOL;
     eprintln!("| region | points | MP fallbacks | max bound/|G| | max error/|G| | tolerance |");
     eprintln!("|---|---:|---:|---:|---:|---:|");

@@ -27,8 +27,8 @@
 //!   The absolute error is then a few `u^2 (|ln y| + S + P_k)` (about `1e-30`),
 //!   so the relative bound holds down to `|B| ~ 1e-15`. The f64 `y` closest to
 //!   the zero (`|B| ~ |B'(y_0)| ulp(y_0) ~ 1e-16`) may still miss `1e-14`
-//!   relative: there the caller falls back to MP, which returns a relative
-//!   bound. What the double-double path returns there is still a proven
+//!   relative: there the Taylor route about the zero ([`super::zero_taylor`], tried
+//!   first) answers. What the double-double path returns there is still a proven
 //!   absolute bound (`err ~ 1e-30 + u |value|`; the unit tests check it at the
 //!   two f64 neighbours of the zero for seven `k`).
 //! * **Near the singular point** `y > Y_NATIVE_MAX`, and below it for `y > 1/2`

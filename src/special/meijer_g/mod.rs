@@ -59,8 +59,9 @@
 //! # Accuracy
 //!
 //! * MP: certified, `rad <= 2^-prec |mid|` (`G(1, 1) = 0` is returned exactly).
-//! * f64: the certified 64-bit value rounded (within 1 ulp; tolerance `1e-14`
-//!   relative, absolute near the zero of `G(k, .)` for `k >= 2`).
+//! * f64: for `k <= 1000` native with a proven bound of at most `1e-14` relative
+//!   (`native.rs`; next to the zero of `G(k, .)`, `k >= 2`, the Taylor route of
+//!   `zero_taylor.rs`), else the certified 64-bit value rounded (within 1 ulp).
 //!
 //! # Slater's theorem
 //!
@@ -86,6 +87,7 @@ pub use native::{NEAR_ONE_F64_MAX_KW, NEAR_ONE_F64_MIN_Y, TABLE_K_MAX};
 mod near_one;
 mod near_one_fast;
 mod slater;
+mod zero_taylor;
 
 pub use constants::MeijerConstants;
 pub use direct::{direct_sums_sweep, meijer_g_k_direct, meijer_g_k_direct_ball, meijer_g_k_from_sum};
@@ -146,13 +148,32 @@ pub fn choose_algorithm(k: u32, y: f64) -> Algorithm {
 
 fn validate(k: u32, y: &Float) -> Result<()> {
     check_finite(y, "y")?;
+    validate_k(k)?;
+    if !(*y > 0 && *y <= 1) {
+        return Err(y_out_of_range(y.to_f64()));
+    }
+    Ok(())
+}
+
+/// [`validate`] for an f64 `y` (no MPFR float: the native path's arguments are checked in f64).
+fn validate_f64(k: u32, y: f64) -> Result<()> {
+    crate::error::finite(y, "y")?;
+    validate_k(k)?;
+    if !(y > 0.0 && y <= 1.0) {
+        return Err(y_out_of_range(y));
+    }
+    Ok(())
+}
+
+fn validate_k(k: u32) -> Result<()> {
     if k > MAX_K {
         return Err(Error::IntegerOutOfRange { arg: "k", value: k as i64, min: 0, max: MAX_K as i64 });
     }
-    if !(*y > 0 && *y <= 1) {
-        return Err(Error::OutOfRange { arg: "y (= (a/x)^2 with x >= a)", value: y.to_f64(), allowed: Interval::left_open(0.0, 1.0) });
-    }
     Ok(())
+}
+
+fn y_out_of_range(y: f64) -> Error {
+    Error::OutOfRange { arg: "y (= (a/x)^2 with x >= a)", value: y, allowed: Interval::left_open(0.0, 1.0) }
 }
 
 fn meijer_g_k_wp(k: u32, y: &Float, wp: u32) -> Result<Ball> {
@@ -231,12 +252,11 @@ pub fn meijer_g_k_fallbacks() -> u64 {
 /// `G(k, y)` in f64: the native value where its proven bound is at most
 /// [`NATIVE_REL_TOL`] relative, else the certified 64-bit value, rounded.
 pub fn meijer_g_k(k: u32, y: f64) -> Result<f64> {
-    crate::error::finite(y, "y")?;
-    let ye = exact(y);
-    validate(k, &ye)?;
+    validate_f64(k, y)?;
     if let Some(b) = native::meijer_g_k_native_bounded(k, y, NATIVE_REL_TOL) {
         return Ok(b.value);
     }
+    let ye = exact(y);
     crate::special::fallback::count(crate::special::F64Route::MeijerGK);
     f64_from_mp("meijer_g_k", guard_bits(k, y), |wp| meijer_g_k_wp(k, &ye, wp))
 }
@@ -247,28 +267,27 @@ pub fn meijer_g_k(k: u32, y: f64) -> Result<f64> {
 /// the slow path). Errors: as [`meijer_g_k_bounded`] for `k` and `y`;
 /// [`Error::OutOfRange`] for a `rel_tol` that is not positive and finite.
 pub fn meijer_g_k_native_bounded(k: u32, y: f64, rel_tol: f64) -> Result<Option<Bounded>> {
-    crate::error::finite(y, "y")?;
-    validate(k, &exact(y))?;
+    validate_f64(k, y)?;
     crate::special::check_rel_tol(rel_tol)?;
     Ok(native::meijer_g_k_native_bounded(k, y, rel_tol))
 }
 
 /// `G(k, y)` in f64 with a proven error bound for the f64 `y` as given: native
-/// (`native.rs`: f64 sums, double-double next to the
-/// zero of `G(k, .)` and for `y > 0.97`) for `k <= 1000`; else the certified MP
-/// value (counted by [`crate::special::fallback_counts`]): `k > 1000`, and the f64 `y`
-/// closest to a zero of `G(k, .)` (`|G| <~ 1e-16`). The bound is relative there
-/// too: natively `err <= 1e-14 |value|`, from MP about `2^-64 |value|` (the Ziv
+/// (`native.rs`: f64 sums, the Taylor series about the zero of `G(k, .)`, double-double
+/// near it and for `y > 0.97`) for `k <= 1000`; else the certified MP
+/// value (counted by [`crate::special::fallback_counts`]): `k > 1000`. The bound is
+/// relative: natively `err <= 1e-14 |value|`, from MP about `2^-64 |value|` (the Ziv
 /// loop raises the precision until the ball is relative; only an exact zero,
 /// `G(1, 1) = 0`, returned as `0 +/- 0`, or an f64 `y` on a zero of `G`, which
 /// none of the tested `k` has, would end in `Error::PrecisionExhausted`).
 pub fn meijer_g_k_bounded(k: u32, y: f64) -> Result<Bounded> {
-    crate::error::finite(y, "y")?;
-    let ye = exact(y);
-    validate(k, &ye)?;
+    // checked in f64: an MPFR float for y (about 350 instructions with its allocation, a
+    // third of the Taylor route about the zero) only where MP answers
+    validate_f64(k, y)?;
     if let Some(b) = native::meijer_g_k_native_bounded(k, y, NATIVE_REL_TOL) {
         return Ok(b);
     }
+    let ye = exact(y);
     crate::special::fallback::count(crate::special::F64Route::MeijerGK);
     crate::special::bounded_from_mp("meijer_g_k", guard_bits(k, y), |wp| meijer_g_k_wp(k, &ye, wp))
 }
