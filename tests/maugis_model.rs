@@ -151,19 +151,24 @@ proptest! {
 }
 
 /// Narrow excursions of the strip residual above zero between the scan's samples:
-/// parameter sets (from `examples/strip_scan_check`, seeds 12345 and 777) where the
+/// parameter sets (from `examples/strip_scan_check`, seeds 12345 and 777, and 99 with
+/// `short`, where the excursion lies within the first step) where the
 /// scan that only sampled returned a later root (m = 1.345 for the first root 1.065
 /// in the first). The solved root is the first: `F < 0` on a grid 128 times finer
 /// than the scan's step before it.
 #[test]
 fn narrow_excursions_give_the_first_root() {
-    let cases: [(f64, f64, f64, f64); 6] = [
+    let cases: [(f64, f64, f64, f64); 9] = [
         (4.363588407919058, 0.5609992413514902, 0.3927145531829456, 0.9282460795995899),
         (3.667550995800001, 0.3774591463912429, 0.3887307937067545, 3.6353204913991095),
         (6.40209213200273, 1.3885202199549516, 0.3911052726074446, 3.67195851395496),
         (0.8488220292248414, 1.7670720559009596, 0.765072705265549, 4.174321615457957),
         (0.2782795979351793, 1.4219059021923666, 1.2157279696356502, 0.6472891560620659),
         (0.6305568529321575, 1.8478528714314952, 0.7573293254258013, 2.60352504879329),
+        // next to the edge, within the first step (`short`, seed 99)
+        (24.505952807505633, 2.9655277380733485, 0.22838798400902188, 3.0908224700462075),
+        (46.462597225026364, 1.8332828894595052, 0.0761399729323934, 1.5738550256337722),
+        (38.70639106163636, 2.151910234235084, 0.05636109485220682, 2.504408193133948),
     ];
     for (lambda, alpha, beta, abar) in cases {
         let cs = ContactSize::new(Params::new(lambda, alpha, beta).unwrap(), abar).unwrap();

@@ -80,6 +80,10 @@ pub const M_REL_TOL: f64 = BRENT_REL_TOL;
 /// residual stops at this width in `c - a` (relative to `1 + (c - a)`).
 const PEAK_REL_TOL: f64 = 1e-10;
 
+/// The strip scan starts this many octaves below its first step (`first/4096`) and
+/// doubles up to it ([`ContactSize::solve_strip`]).
+const EDGE_OCTAVES: i32 = 12;
+
 /// Relative slack of the gap test: a state interpenetrates when its strip gap is
 /// below `-GAP_REL_TOL delta` (`delta = 1/lambda`, the gap scale of the strip)
 /// minus the rounding allowance of [`ContactSize::gap_tolerance`].
@@ -405,11 +409,12 @@ impl ContactSize {
     /// crossing. This samples the residual, it does not bound it between samples:
     /// an excursion that leaves no sampled local maximum (two maxima within one
     /// step) can still be missed; `examples/strip_scan_check` counts the misses
-    /// against a scan 128 times finer. When the first
-    /// sampled point is already past the root, the crossing lies in
-    /// `(0, s_1]`, where the wave term changes little, and is bracketed by
-    /// halving `s` towards the edge (`F(0) = -1` ends the halving below
-    /// `z = 1e-300`). Brent's method then refines `z` to [`M_REL_TOL`] relative.
+    /// against a scan 128 times finer. The scan starts at `s_1/4096` (`s_1` the
+    /// first step) and doubles up to `s_1`: next to the edge the residual rises
+    /// like a square root and can cross zero and fall back within the first step.
+    /// When that first sample is already past the root, the crossing is
+    /// bracketed by halving `s` towards the edge (`F(0) = -1` ends the halving
+    /// below `z = 1e-300`). Brent's method then refines `z` to [`M_REL_TOL`] relative.
     pub fn solve_strip(&self) -> Result<StripEnd> {
         let a = self.abar;
         let f = |z: f64| self.residual_z(z);
@@ -426,12 +431,17 @@ impl ContactSize {
             let z = z?;
             StripEnd::from_m_minus_1(z).map_err(|_| Error::Internal { what: format!("strip root m - 1 = {z:?} is not > 0") })
         };
+        // The scan starts EDGE_OCTAVES octaves below the first step and doubles up to
+        // it: next to the edge F rises like a square root and can cross zero and fall
+        // back within the first step (lambda 24.5, alpha 2.97, beta 0.228, abar 3.09:
+        // F > 0 at m = 1.00072, the first step ends at m = 1.0046).
         let first = max_step;
-        let f_first = eval(first)?;
-        if f_first >= 0.0 {
+        let start = first * 0.5f64.powi(EDGE_OCTAVES);
+        let f_start = eval(start)?;
+        if f_start >= 0.0 {
             // Bracket towards the edge: F(0) = -1.
-            let (mut hi, mut f_hi) = (first, f_first);
-            let mut lo = 0.5 * first;
+            let (mut hi, mut f_hi) = (start, f_start);
+            let mut lo = 0.5 * start;
             loop {
                 let f_lo = eval(lo)?;
                 if f_lo < 0.0 {
@@ -445,15 +455,15 @@ impl ContactSize {
                 }
             }
         }
-        // never more than a sixteenth of a wave period (the step grew with s
+        // then never more than a sixteenth of a wave period (the step grew with s
         // before, 5 % of s, and skipped a positive excursion of width 0.09 in s:
         // abar 2.54, lambda 0.107, alpha 1.23, beta 0.79 gave m = 2.51 for the
         // first root 2.34); every sampled local maximum is refined (narrow
         // excursions above zero between samples: 4 of 4000 random parameter sets,
         // e.g. lambda 4.36, alpha 0.561, beta 0.393, abar 0.928 gave m = 1.345 for
         // the first root 1.065; F(0) = -1 is the first sample's left neighbour)
-        let next = |s: f64| s + max_step.max((s * 0.05).min(self.params.beta / 16.0));
-        match first_crossing(eval, Some((0.0, -1.0)), (first, f_first), next, MAX_STRIP, PEAK_REL_TOL)? {
+        let next = |s: f64| if s < first { 2.0 * s } else { s + max_step.max((s * 0.05).min(self.params.beta / 16.0)) };
+        match first_crossing(eval, Some((0.0, -1.0)), (start, f_start), next, MAX_STRIP, PEAK_REL_TOL)? {
             Some((lo, hi, f_lo, f_hi)) => done(brent(f, lo / a, hi / a, f_lo, f_hi)),
             None => Err(Error::NoStripEnd { model: "Eq. 15b, c - a", limit: MAX_STRIP }),
         }
