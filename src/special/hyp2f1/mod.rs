@@ -84,7 +84,12 @@
 //! `0.25 <= c <= 15`, `-10^6 <= z <= 1`, and the model case up to `k = 1000`.
 //! Larger parameters work but cost grows with them (`2F1(-10^6+1/2, 2; 3; 1/2)`
 //! takes 0.2 s); a series that would need more than 5 * 10^6 terms is
-//! [`Error::NoConvergence`]. When `c - a - b` is within `eps` of an integer
+//! [`Error::NoConvergence`] (at once when the ratio bound proves it). The
+//! Gamma-based formulas (connection, Gauss) are [`Error::TooExpensive`] when the
+//! planned cancellation passes [`MAX_GAMMA_LOSS`] bits (MPFR's Gamma at tens of
+//! thousands of bits takes minutes to hours), and Gamma arguments longer than
+//! the working precision needs are rounded with a proven bound
+//! (`special::gamma::gamma_of_ball`). When `c - a - b` is within `eps` of an integer
 //! without being one, the 1-z formula cancels about `log2(1/eps)` bits, which
 //! the Ziv loop supplies.
 //!
