@@ -81,7 +81,8 @@ fn decimal_text(bits: u64) -> String {
     }
 }
 
-/// 0, or `1e-30 <= |d| <= 1e4` (the magnitudes an MP fuzz run can afford).
+/// 0, or `1e-30 <= |d| <= 1e4` (the magnitudes an MP fuzz run can afford for the
+/// functions in [`MP_MODERATE_ONLY`]).
 fn moderate_decimal(d: &Decimal) -> bool {
     let v = d.as_rational().to_f64().abs();
     v == 0.0 && d.as_rational().cmp0().is_eq() || (1e-30..=1e4).contains(&v)
@@ -133,39 +134,132 @@ fn registry_f64_paths() {
     });
 }
 
+/// The MP arguments of `f` from random bits (`None` when a decimal text does not
+/// parse): orders within the domain's scale (a huge order is a quick error), and
+/// reals as the decimal generator writes them, huge integers and exponents up to
+/// +-32767 included, unless `moderate` keeps them to 0 and `1e-30 <= |x| <= 1e4`.
+/// The texts of the arguments come second (for printing).
+fn mp_args(f: &registry::Function, bits: &[u64; 5], moderate_only: bool) -> Option<(Vec<Arg<Decimal>>, Vec<String>)> {
+    let (mut args, mut texts) = (Vec::new(), Vec::new());
+    for (q, &b) in f.params.iter().zip(bits) {
+        match q.kind {
+            ParamKind::Integer => {
+                let n = integer(b) % 2000;
+                args.push(Arg::Int(n));
+                texts.push(n.to_string());
+            }
+            ParamKind::Real => {
+                let text = decimal_text(moderate(b));
+                match Decimal::parse(&text) {
+                    Ok(d) if !moderate_only || moderate_decimal(&d) => args.push(Arg::Real(d)),
+                    _ => return None,
+                }
+                texts.push(text);
+            }
+        }
+    }
+    Some((args, texts))
+}
+
 #[test]
 fn registry_mp_paths() {
     check!().with_type::<(u8, [u64; 5], u32)>().for_each(|(which, bits, p)| {
         let f = &FUNCTIONS[*which as usize % FUNCTIONS.len()];
         let prec = precision(*p);
-        let mut args = Vec::new();
-        for (q, &b) in f.params.iter().zip(bits) {
-            match q.kind {
-                // orders within the domain's scale: a huge order is a quick error
-                ParamKind::Integer => args.push(Arg::Int(integer(b) % 2000)),
-                // reals of moderate size: MP evaluations at parameters like 1e18 are
-                // certified but can take seconds (docs/fuzzing.md), which a fuzz run
-                // cannot afford; their f64 paths above see every magnitude
-                ParamKind::Real => match Decimal::parse(&decimal_text(moderate(b))) {
-                    // decimal_text also writes huge integers and exponents up to
-                    // +-32767: the MP target keeps to 0 and 1e-30 <= |x| <= 1e4 (two
-                    // clean-clone CI runs met MP hyp2f1 inputs outside it that ran for
-                    // minutes in the connection's Gamma prefactors: docs/fuzzing.md)
-                    Ok(d) if moderate_decimal(&d) => args.push(Arg::Real(d)),
-                    _ => return,
-                },
-            }
-        }
+        // the generator's full range (huge integers, exponents up to +-32767: issue
+        // 23h made MP hyp2f1 quick there), except for the wave's quadrature and
+        // series, slow at any magnitude (docs/fuzzing.md)
+        let Some((args, texts)) = mp_args(f, bits, MP_MODERATE_ONLY.contains(&f.name)) else { return };
         let started = std::time::Instant::now();
         let answer = f.eval_mp(&args, prec);
         let took = started.elapsed().as_secs_f64();
+        SLOWEST_MP_MICROS.fetch_max((took * 1e6) as u64, std::sync::atomic::Ordering::Relaxed);
         if took > 0.5 {
-            eprintln!("slow MP input: {}{args:?} at {prec} bits took {took:.1} s", f.name);
+            eprintln!("slow MP input: {}({}) at {prec} bits took {took:.1} s", f.name, texts.join(", "));
         }
         if let Ok(a) = answer {
             finite_answer(f.name, &args, &a);
         }
     });
+    eprintln!("registry_mp_paths: slowest input {:.3} s", SLOWEST_MP_MICROS.load(std::sync::atomic::Ordering::Relaxed) as f64 * 1e-6);
+}
+
+/// Functions whose MP inputs [`registry_mp_paths`] keeps to 0 and `1e-30 <= |x| <=
+/// 1e4` ([`moderate_decimal`]): the certified wave quadrature takes 2-15 s and more
+/// at many inputs of any size (`u_wave_quad(22.7, 0.5, 29.9, 28.87)` at 64 bits: over
+/// 15 s; 8.8 s at `zeta = 1.97e18`), the wave series at 10^4 terms over 15 s; a
+/// slow corner of the contact functions (docs/fuzzing.md), not of the special
+/// functions.
+const MP_MODERATE_ONLY: [&str; 2] = ["u_wave_quad", "u_wave_series"];
+
+/// The slowest MP input of [`registry_mp_paths`] (microseconds), for its report.
+static SLOWEST_MP_MICROS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+
+/// A driver, not a check: runs the MP registry evaluations of `registry_mp_paths`
+/// over the full range of the decimal generator (`SCAN_FULL=0` keeps the moderate
+/// filter) for `SCAN_N` inputs (default 2000) of a splitmix64 stream from `SCAN_SEED`,
+/// only the functions named in `SCAN_FN` (comma-separated; all when unset), from
+/// input number `SCAN_FROM` on, skipping the numbers in `SCAN_SKIP` (comma-separated),
+/// and prints every input slower than `SCAN_SLOW` seconds (default 1). A watchdog
+/// prints an input still running after 2 s, so a hang names its input (rerun with
+/// `SCAN_FROM` at it and `SCAN_SKIP` naming it to go on past it).
+#[test]
+#[ignore = "a driver for finding slow MP inputs (prints times), not a check"]
+fn registry_mp_slow_scan() {
+    use std::sync::{Arc, Mutex};
+    let var = |k: &str| std::env::var(k).ok();
+    let n: u64 = var("SCAN_N").and_then(|v| v.parse().ok()).unwrap_or(2000);
+    let mut state: u64 = var("SCAN_SEED").and_then(|v| v.parse().ok()).unwrap_or(1);
+    let slow: f64 = var("SCAN_SLOW").and_then(|v| v.parse().ok()).unwrap_or(1.0);
+    let full = var("SCAN_FULL").map_or(true, |v| v != "0");
+    let only: Option<Vec<String>> =
+        var("SCAN_FN").filter(|v| !v.is_empty()).map(|v| v.split(',').map(str::to_string).collect());
+    let from: u64 = var("SCAN_FROM").and_then(|v| v.parse().ok()).unwrap_or(0);
+    let skip: Vec<u64> = var("SCAN_SKIP").map_or(Vec::new(), |v| v.split(',').filter_map(|s| s.parse().ok()).collect());
+    let mut next = move || {
+        state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    };
+    let current: Arc<Mutex<Option<(String, std::time::Instant, bool)>>> = Arc::new(Mutex::new(None));
+    let watch = Arc::clone(&current);
+    std::thread::spawn(move || loop {
+        std::thread::sleep(std::time::Duration::from_millis(500));
+        if let Some((text, t0, told)) = watch.lock().unwrap().as_mut() {
+            if !*told && t0.elapsed().as_secs_f64() > 2.0 {
+                eprintln!("still running after 2 s: {text}");
+                *told = true;
+            }
+        }
+    });
+    let (mut worst, mut count) = (0.0f64, 0u64);
+    for i in 0..n {
+        let which = next() as usize % FUNCTIONS.len();
+        let bits = [next(), next(), next(), next(), next()];
+        let prec = precision(next() as u32);
+        let f = &FUNCTIONS[which];
+        if i < from || skip.contains(&i) || only.as_ref().is_some_and(|o| !o.iter().any(|s| s == f.name)) {
+            continue;
+        }
+        let Some((args, texts)) = mp_args(f, &bits, !full) else { continue };
+        let text = format!("#{i} {}({}) at {prec} bits", f.name, texts.join(", "));
+        *current.lock().unwrap() = Some((text.clone(), std::time::Instant::now(), false));
+        let started = std::time::Instant::now();
+        let answer = f.eval_mp(&args, prec);
+        let took = started.elapsed().as_secs_f64();
+        *current.lock().unwrap() = None;
+        count += 1;
+        worst = worst.max(took);
+        if took > slow {
+            eprintln!("slow: {text} took {took:.2} s: {:?}", answer.as_ref().map(|_| "Ok").map_err(|e| e.to_string()));
+        }
+        if let Ok(a) = answer {
+            finite_answer(f.name, &args, &a);
+        }
+    }
+    eprintln!("{count} inputs evaluated, slowest {worst:.3} s");
 }
 
 #[test]

@@ -8,6 +8,12 @@
 //!   and `sqrt(pi) (1/2)_n` (MPFR's `gamma` is slowest there), other small
 //!   arguments are shifted into `[1, 2)` by `Gamma(x) = Gamma(x+K)/(x)_K`
 //!   [DLMF 5.5.1]; all in ball arithmetic.
+//! * **Long arguments** ([`gamma_of_ball`]): an exact argument with more bits than
+//!   Gamma at `wp` needs (a sum of parameters of very different magnitudes) is
+//!   rounded to about `wp + log2(x psi(x))` bits (next to a pole, its distance
+//!   too), and the rounding is carried by `|Gamma(t) - Gamma(m)| <= |Gamma(m)|
+//!   (e^{rM} - 1)`, `M = max |psi|` over the ball (psi is increasing between
+//!   poles, DLMF 5.15.1). MPFR's Gamma at 35 000 bits takes about two minutes.
 //! * **Gamma ratios** ([`gamma_ratio`]): `prod Gamma(num_i) / prod Gamma(den_j)`.
 //!   Arguments that differ by an integer `k <= 64` are paired into Pochhammer
 //!   products `Gamma(x+k)/Gamma(x) = (x)_k` [DLMF 5.2.5], which is exact in the
@@ -174,8 +180,87 @@ pub(crate) fn gamma_ratio(num: &[&Float], den: &[&Float], wp: u32) -> Result<Bal
 /// `Gamma(x)` at an exact non-pole `x`: `(n-1)!` and `sqrt(pi) (1/2)_n` (or
 /// `sqrt(pi) / (1/2 - n)_n`) at small integers and half-integers, a shift
 /// `Gamma(x) = Gamma(x+K) / (x)_K` into `[1, 2)` for other small `x < 1` (MPFR is
-/// slowest there), otherwise MPFR's correctly rounded value.
+/// slowest there), otherwise MPFR's correctly rounded value. An `x` with more
+/// bits than [`gamma_arg_bits`] can use (a sum of parameters of very different
+/// magnitudes, exact at tens of thousands of bits, where MPFR's Gamma takes
+/// minutes computing Bernoulli numbers) is rounded to that many bits and the
+/// rounding carried by [`gamma_of_ball`].
 pub(crate) fn gamma_ball(x: &Float, wp: u32) -> Result<Ball> {
+    if is_nonpositive_integer(x) {
+        return Err(Error::Pole { function: "Gamma", at: x.to_f64() });
+    }
+    let bits = gamma_arg_bits(x, wp);
+    if x.prec() > bits {
+        let rounded = Ball::from_float(x, bits);
+        if crate::special::pfq::contains_pole(&rounded, None).is_none() {
+            return gamma_of_ball(&rounded, wp);
+        }
+    }
+    gamma_exact(x, wp)
+}
+
+/// How many bits of an exact `x` `Gamma(x)` at about `wp` bits needs: rounding
+/// `x` to `p` bits moves it by `r <= 2^(e-p-1)` (`2^(e-1) <= |x| < 2^e`), which
+/// moves `ln Gamma` by at most `r M`, `M = max |psi|` near `x`. `M` is about
+/// `ln(2 + |x|)` plus `1/d` next to a pole at distance `d` (`psi(x) = psi(1-x) -
+/// pi cot(pi x)` [DLMF 5.5.4]); `p` makes the estimate of `r M` about
+/// `2^-(wp+8)`. An estimate (choosing only): [`gamma_of_ball`] bounds the
+/// rounding rigorously whatever `p` is.
+fn gamma_arg_bits(x: &Float, wp: u32) -> u32 {
+    let Some(e) = x.get_exp() else { return wp };
+    let e = e as i64;
+    // log2 of ln(2 + |x|) + 2, from the exponent alone (|x| may overflow f64)
+    let log_term = ((e.max(1) as f64) * std::f64::consts::LN_2 + 3.0).log2().ceil() as i64;
+    let mut log2_m = log_term;
+    if *x < 0.5 {
+        // distance to the nearest non-positive integer (exact), by its exponent
+        let n = Float::with_val(x.prec(), x.round_ref());
+        let d = exact_sub(x, &n);
+        if let Some(ed) = d.get_exp() {
+            log2_m = log2_m.max(2 - ed as i64);
+        }
+    }
+    let p = e + wp as i64 + 8 + log2_m.max(0);
+    p.clamp(wp.max(64) as i64, (u32::MAX / 2) as i64) as u32
+}
+
+/// `Gamma` over a ball `[m +/- r]` without poles: `(ln |Gamma|)' = psi` is
+/// increasing between poles [DLMF 5.15.1: `psi' > 0`], so on the ball `|psi| <=
+/// M = max(|psi(lo)|, |psi(hi)|)` at any pole-free `[lo, hi]` that contains it,
+/// and `Gamma(t) in Gamma(m) [e^{-rM}, e^{rM}]` (Gamma keeps its sign there):
+/// `|Gamma(t) - Gamma(m)| <= |Gamma(m)| (e^{rM} - 1)`. `lo` and `hi` are the
+/// ball's ends rounded outward to 64 bits (to the ball's precision when that
+/// would reach a pole). `Gamma(m)` is [`gamma_ball`]'s enclosure. A ball that
+/// contains a pole is [`Error::Pole`].
+pub(crate) fn gamma_of_ball(x: &Ball, wp: u32) -> Result<Ball> {
+    if x.is_exact() {
+        return gamma_exact(x.mid(), wp);
+    }
+    if let Some(at) = crate::special::pfq::contains_pole(x, None) {
+        return Err(Error::Pole { function: "Gamma", at: at as f64 });
+    }
+    // Gamma(m) itself through gamma_ball: a long midpoint is rounded first
+    let mut g = gamma_ball(x.mid(), wp)?;
+    let (lo, hi) = (x.lower(), x.upper());
+    let mut lo_psi = Float::with_val_round(64, &lo, Round::Down).0;
+    let mut hi_psi = Float::with_val_round(64, &hi, Round::Up).0;
+    let hull = Ball::hull(&lo_psi, &hi_psi, 64);
+    if crate::special::pfq::contains_pole(&hull, None).is_some() {
+        (lo_psi, hi_psi) = (lo, hi);
+    }
+    let psi_lo = Ball::from_float(&lo_psi, lo_psi.prec()).digamma()?;
+    let psi_hi = Ball::from_float(&hi_psi, hi_psi.prec()).digamma()?;
+    let m = psi_lo.abs_upper_mag().max(psi_hi.abs_upper_mag());
+    let mut e = m.mul(x.rad_mag()).to_float();
+    e.exp_m1_round(Round::Up);
+    let grow = g.abs_upper_mag().mul(crate::ball::Mag::from_float_up(&e));
+    g.add_error_mag(grow);
+    Ok(g)
+}
+
+/// [`gamma_ball`] without the rounding of long arguments: `Gamma(x)` at
+/// `max(wp, x.prec())` bits.
+fn gamma_exact(x: &Float, wp: u32) -> Result<Ball> {
     const SMALL: f64 = 64.0;
     if is_nonpositive_integer(x) {
         return Err(Error::Pole { function: "Gamma", at: x.to_f64() });
@@ -196,10 +281,23 @@ pub(crate) fn gamma_ball(x: &Float, wp: u32) -> Result<Ball> {
     }
     if xf < 1.0 && xf > -SMALL {
         let k = (1.0 - xf).ceil() as u64;
+        // x + K exact may be long (x = 10^-300 + 1): through gamma_ball, which rounds it
         let shifted = exact_add(x, &int_float(k));
-        return xball(&shifted, wp).gamma()?.div(&pochhammer(x, k, wp));
+        return gamma_ball(&shifted, wp)?.div(&pochhammer(x, k, wp));
     }
     xball(x, wp).gamma()
+}
+
+// ----- cost ---------------------------------------------------------------
+
+/// Estimated seconds of the first MPFR Gamma at `wp` bits (for cost decisions
+/// only). MPFR's Gamma computes and caches Bernoulli numbers up to about the
+/// working precision, at a cost growing about as `wp^3`: the first Gamma at 4000 /
+/// 8000 / 12000 / 16000 / 24000 bits took 0.08 / 0.70 / 2.7 / 8.1 / 39 s (test
+/// profile, load 3; at 35 000 bits 116 s); later ones at the same precision reuse
+/// the cache. The estimate is the 8000-bit time scaled as `wp^3`.
+pub(crate) fn gamma_seconds(wp: u32) -> f64 {
+    0.7 * (f64::from(wp) / 8000.0).powi(3)
 }
 
 // ----- estimates (choosing only) ---------------------------------------------

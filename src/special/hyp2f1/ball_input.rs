@@ -43,14 +43,25 @@
 use rug::float::Round;
 use rug::Float;
 
+use super::choose::{evaluate, plan};
 use super::{hyp2f1_mp, validate};
 use crate::ball::{Ball, Mag};
 use crate::error::{check_prec, Error, Interval, Result};
-use crate::special::gamma::gamma_ball;
-use crate::special::is_nonpositive_integer;
+use crate::special::gamma::{gamma_ball, gamma_of_ball};
+use crate::special::{is_nonpositive_integer, DEFAULT_GUARD_BITS};
 
 /// Precision of the majorant evaluations (only upper bounds are needed).
 const MAJORANT_PREC: u32 = 32;
+
+/// Most bits of planned cancellation a majorant evaluation pays for (beyond, its
+/// ball is wider: still an upper bound).
+const MAJORANT_MAX_LOST: u32 = 512;
+
+/// Correct bits a majorant evaluation aims at.
+const MAJORANT_ACCURACY: u32 = 8;
+
+/// Highest working precision of a majorant evaluation.
+const MAJORANT_MAX_WP: u32 = 4096;
 
 /// Extra bits of the ball arithmetic around the midpoint evaluation.
 const BALL_GUARD: u32 = 32;
@@ -90,6 +101,10 @@ pub fn hyp2f1_ball_mp(a: &Ball, b: &Ball, c: &Ball, z: &Ball, prec: u32) -> Resu
     }
     let terminating = exact_degree(a).or(exact_degree(b));
     check_edges(a, b, c, z, terminating)?;
+    if terminating == Some(0) {
+        // 2F1(0, b; c; z) = 1 for every b, c, z (the series' one term)
+        return Ok(Ball::one(prec));
+    }
     let wp = prec + BALL_GUARD;
     if z.is_exact() && *z.mid() == 1 {
         return gauss_ball(a, b, c, terminating, wp);
@@ -100,9 +115,9 @@ pub fn hyp2f1_ball_mp(a: &Ball, b: &Ball, c: &Ball, z: &Ball, prec: u32) -> Resu
     if z.upper() < -0.5 {
         // Pfaff: (1-z)^{-a} 2F1(a, c-b; c; w), w = z/(z-1) = -z/(1-z).
         let omz = Ball::one(wp).sub(z);
-        let pre = omz.pow(&a.neg())?;
         let w = z.div(&omz)?.neg();
         let inner = direct_ball(a, &c.sub(b), c, &w, wp)?;
+        let pre = omz.pow(&a.neg())?;
         return Ok(pre.mul(&inner));
     }
     Err(too_wide("z", z, "within (-3/4, 1) or below -1/2"))
@@ -162,10 +177,32 @@ fn abs_max(x: &Ball) -> Float {
     }
 }
 
-/// Upper end of the certified `2F1(p, q; r; x)` at exact points (a majorant).
+/// Upper end of the certified `2F1(p, q; r; x)` at exact points (a majorant):
+/// the planned method at [`MAJORANT_PREC`] bits plus the planned loss (at most
+/// [`MAJORANT_MAX_LOST`]), doubled while the ball has fewer than
+/// [`MAJORANT_ACCURACY`] correct bits, up to [`MAJORANT_MAX_WP`] (a Ziv loop to 32
+/// correct bits climbed to 65 592 bits and took minutes at `2F1(1, 1.35e18; 21.3;
+/// 1 - 2^-52)`, whose pieces cancel): a wide ball's upper end is as valid a bound,
+/// it only asks more digits of the input balls.
 fn majorant(p: &Float, q: &Float, r: &Float, x: &Float) -> Result<Mag> {
-    let m = hyp2f1_mp(p, q, r, x, MAJORANT_PREC)?;
-    Ok(Mag::from_float_up(&m.upper()))
+    validate(p, q, r, x)?;
+    if x.is_zero() {
+        return Ok(Mag::pow2(0));
+    }
+    let (alg, lost) = plan(p, q, r, x, MAJORANT_PREC);
+    let mut wp = MAJORANT_PREC + DEFAULT_GUARD_BITS + lost.min(MAJORANT_MAX_LOST);
+    let mut m = evaluate(alg, p, q, r, x, wp)?;
+    // a little accuracy keeps the bound tight (a loose one asks the input balls
+    // for many more bits, and long parameters slow every later evaluation)
+    while !m.meets_rel(MAJORANT_ACCURACY) && wp < MAJORANT_MAX_WP {
+        wp = (2 * wp).min(MAJORANT_MAX_WP);
+        m = evaluate(alg, p, q, r, x, wp)?;
+    }
+    let up = m.upper();
+    if !up.is_finite() {
+        return Err(Error::Overflow { what: "a majorant of the 2F1 input-radius bound".into() });
+    }
+    Ok(Mag::from_float_up(&up))
 }
 
 /// `p + 1`, rounded up.
@@ -174,31 +211,52 @@ fn plus_one_up(p: &Float) -> Float {
 }
 
 /// The majorant bound of the module docs for `-3/4 < z < 1`, `c > 0` on its ball.
+/// With `a = -d` exact (or `b`), `M = 2F1(-d, B; C; -R)` (terms `|(-d)_n| (B)_n R^n
+/// / ((C)_n n!)`, a polynomial) and `dM/dR = (d B / C) 2F1(1-d, B+1; C+1; -R)`
+/// replace the non-terminating majorant; `a = 0` or `b = 0` exact is exactly 1.
 fn direct_ball(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32) -> Result<Ball> {
-    let mut out = hyp2f1_mp(a.mid(), b.mid(), c.mid(), z.mid(), wp)?;
     if [a, b, c, z].iter().all(|x| x.is_exact()) {
-        return Ok(out);
+        return hyp2f1_mp(a.mid(), b.mid(), c.mid(), z.mid(), wp);
     }
     let c_lo = c.lower();
     if !(c_lo > 0) {
-        // The radius bound needs c > 0 over the ball (or an exact c).
+        // The radius bound needs c > 0 over the ball (or an exact c); checked
+        // before the midpoint evaluation, which can cost far more than the check.
         return Err(ball_outside("c", c, Interval::above(0.0)));
+    }
+    let (deg_a, deg_b) = (exact_degree(a), exact_degree(b));
+    if deg_a == Some(0) || deg_b == Some(0) {
+        return Ok(Ball::one(wp));
     }
     let (aa, bb, rr) = (abs_max(a), abs_max(b), abs_max(z));
     if !(rr < 1) {
         return Err(too_wide("z", z, "|z| < 1 over the ball after the transformation"));
     }
+    let mut out = hyp2f1_mp(a.mid(), b.mid(), c.mid(), z.mid(), wp)?;
+    // The majorant's parameters: A (or -d, exact, with x = -R) and its shift by one.
+    let terminating = deg_a.is_some() || deg_b.is_some();
+    let param = |x: &Ball, big: &Float| if exact_degree(x).is_some() { x.mid().clone() } else { big.clone() };
+    let shift = |x: &Ball, big: &Float| {
+        if exact_degree(x).is_some() {
+            Float::with_val(x.mid().prec().max(64), x.mid() + 1u32)
+        } else {
+            plus_one_up(big)
+        }
+    };
+    let (pa, pb) = (param(a, &aa), param(b, &bb));
+    let (pa1, pb1) = (shift(a, &aa), shift(b, &bb));
+    let x = if terminating { Float::with_val(rr.prec(), -&rr) } else { rr.clone() };
     let mut err = Mag::ZERO;
     if !a.is_exact() {
-        err = err.add(majorant(&plus_one_up(&aa), &bb, &c_lo, &rr)?.mul(a.rad_mag()));
+        err = err.add(majorant(&pa1, &pb, &c_lo, &x)?.mul(a.rad_mag()));
     }
     if !b.is_exact() {
-        err = err.add(majorant(&aa, &plus_one_up(&bb), &c_lo, &rr)?.mul(b.rad_mag()));
+        err = err.add(majorant(&pa, &pb1, &c_lo, &x)?.mul(b.rad_mag()));
     }
     if !c.is_exact() || !z.is_exact() {
         // dM/dR = (A B / C) 2F1(A+1, B+1; C+1; R)
         let c1 = Float::with_val_round(c_lo.prec().max(64), &c_lo + 1u32, Round::Down).0;
-        let d_r = majorant(&plus_one_up(&aa), &plus_one_up(&bb), &c1, &rr)?
+        let d_r = majorant(&pa1, &pb1, &c1, &x)?
             .mul(Mag::from_float_up(&aa))
             .mul(Mag::from_float_up(&bb))
             .div(Mag::from_float_down(&c_lo));
@@ -214,12 +272,10 @@ fn direct_ball(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32) -> Result<Ball> 
     Ok(out)
 }
 
-/// `Gamma` over a ball without poles (module docs); exact balls are exact points.
+/// `Gamma` over a ball without poles ([`gamma_of_ball`]: the module docs' bound);
+/// a pole inside the ball is named as a parameter pole.
 fn gamma_over_ball(x: &Ball, wp: u32) -> Result<Ball> {
-    if x.is_exact() {
-        return gamma_ball(x.mid(), wp);
-    }
-    if contains_nonpositive_integer(x) {
+    if !x.is_exact() && contains_nonpositive_integer(x) {
         return Err(Error::ParameterPole {
             function: "2F1(a, b; c; 1) over balls",
             arg: "a Gamma argument (c, c - a - b, c - a or c - b)",
@@ -228,17 +284,10 @@ fn gamma_over_ball(x: &Ball, wp: u32) -> Result<Ball> {
             upper: x.upper().to_f64(),
         });
     }
-    let mut g = gamma_ball(x.mid(), wp)?;
-    let (lo, hi) = (x.lower(), x.upper());
-    let psi_lo = Ball::from_float(&lo, lo.prec()).digamma()?;
-    let psi_hi = Ball::from_float(&hi, hi.prec()).digamma()?;
-    let m = psi_lo.abs_upper_mag().max(psi_hi.abs_upper_mag());
-    // |Gamma(t) - Gamma(m)| <= |Gamma(m)| (e^{r M} - 1)
-    let mut e = m.mul(x.rad_mag()).to_float();
-    e.exp_m1_round(Round::Up);
-    let grow = g.abs_upper_mag().mul(Mag::from_float_up(&e));
-    g.add_error_mag(grow);
-    Ok(g)
+    if x.is_exact() {
+        return gamma_ball(x.mid(), wp);
+    }
+    gamma_of_ball(x, wp)
 }
 
 /// Gauss's sum (or Chu-Vandermonde) at `z = 1` over balls of parameters.

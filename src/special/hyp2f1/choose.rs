@@ -31,7 +31,7 @@ use super::connection::{hyp2f1_connection, hyp2f1_gauss, hyp2f1_pfaff_connection
 use super::log_case::hyp2f1_connection_log;
 use super::polynomial::hyp2f1_polynomial;
 use super::transform::{hyp2f1_direct, hyp2f1_euler, hyp2f1_pfaff};
-use super::{one, terminating_degree, DIRECT_RADIUS, EXACT_POLY_MAX_DEGREE};
+use super::{one, terminating_degree, DIRECT_RADIUS};
 use crate::ball::Ball;
 use crate::error::Result;
 use crate::special::exact_sub;
@@ -76,6 +76,20 @@ pub(crate) enum Algorithm {
     Gauss,
 }
 
+impl Algorithm {
+    /// Whether the method takes Gamma values at the working precision.
+    pub(crate) fn uses_gamma(self) -> bool {
+        matches!(
+            self,
+            Algorithm::Connection
+                | Algorithm::ConnectionLog
+                | Algorithm::PfaffConnection
+                | Algorithm::PfaffConnectionLog
+                | Algorithm::Gauss
+        )
+    }
+}
+
 /// Result of [`simulate`]: term count and log2 of `sum |t_n|` and of `|sum t_n|`.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Sim {
@@ -94,6 +108,19 @@ impl Sim {
         } else {
             l.clamp(0.0, 1e6)
         }
+    }
+}
+
+/// `x` in f64 for the cost model, a non-zero `x` below the f64 range kept
+/// non-zero (`2F1(4e-8201, 1; 1e-191; w)` is not the terminating `2F1(0, ...)`:
+/// read as 0, the simulation chose the direct series at `w = 1 - 2^-71`, which
+/// ran its 5 million terms).
+fn est(x: &Float) -> f64 {
+    let v = x.to_f64();
+    if v == 0.0 && !x.is_zero() {
+        f64::MIN_POSITIVE.copysign(if x.is_sign_negative() { -1.0 } else { 1.0 })
+    } else {
+        v
     }
 }
 
@@ -188,7 +215,7 @@ pub(super) fn series_estimate(p1: f64, p2: f64, q: f64, u: f64, bits: f64) -> (f
 /// (exact): whether the direct series is cheaper than the 1-x formula, and the
 /// estimated bits lost by the chosen one.
 pub(super) fn near_one_choice(a: &Float, b: &Float, c: &Float, s: &Float, x: f64, u: f64, bits: f64) -> (bool, f64) {
-    let (af, bf, cf) = (a.to_f64(), b.to_f64(), c.to_f64());
+    let (af, bf, cf) = (est(a), est(b), est(c));
     let lg2 = |v: f64| lgamma_est(v) / LN_2;
     let (n_conn, log2_big, fixed) = if s.is_integer() {
         let m = s.to_f64();
@@ -201,7 +228,7 @@ pub(super) fn near_one_choice(a: &Float, b: &Float, c: &Float, s: &Float, x: f64
         let t2 = lg2(cf) - lg2(pa) - lg2(pb) + mm * u.log2() + (u.ln().abs() + 2.0).log2() + sl;
         (mm + LOG_TERM_COST * nl, t1.max(t2) + shift, 2.0 * GAMMA_COST_TERMS)
     } else {
-        let sf = s.to_f64();
+        let sf = est(s);
         let (n1, l1) = series_estimate(af, bf, 1.0 - sf, u, bits);
         let (n2, l2) = series_estimate(cf - af, cf - bf, 1.0 + sf, u, bits);
         let t1 = lg2(cf) + lg2(sf) - lg2(cf - af) - lg2(cf - bf) + l1;
@@ -300,9 +327,10 @@ pub(super) fn plan(a: &Float, b: &Float, c: &Float, z: &Float, wp: u32) -> (Algo
             None => 0,
         }
     };
-    let (af, bf, cf, zf) = (a.to_f64(), b.to_f64(), c.to_f64(), z.to_f64());
+    let (af, bf, cf, zf) = (est(a), est(b), est(c), est(z));
     if let Some(d) = terminating_degree(a, b) {
-        let g = if d <= EXACT_POLY_MAX_DEGREE { 0 } else { sim_guard([af, bf], [cf, 1.0], zf) };
+        // an exact rational sum needs no guard, but long arguments go to the series engine
+        let g = if d == 0 { 0 } else { sim_guard([af, bf], [cf, 1.0], zf) };
         return (Algorithm::Polynomial, g);
     }
     if *z == 1 {
@@ -311,7 +339,7 @@ pub(super) fn plan(a: &Float, b: &Float, c: &Float, z: &Float, wp: u32) -> (Algo
     let ca = exact_sub(c, a);
     let cb = exact_sub(c, b);
     if *z >= -1 && *z <= DIRECT_RADIUS {
-        return small_z_choice(af, bf, cf, ca.to_f64(), cb.to_f64(), zf, bits);
+        return small_z_choice(af, bf, cf, est(&ca), est(&cb), zf, bits);
     }
     if *z > 0 {
         if terminating_degree(&ca, &cb).is_some() {

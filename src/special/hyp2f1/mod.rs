@@ -84,7 +84,12 @@
 //! `0.25 <= c <= 15`, `-10^6 <= z <= 1`, and the model case up to `k = 1000`.
 //! Larger parameters work but cost grows with them (`2F1(-10^6+1/2, 2; 3; 1/2)`
 //! takes 0.2 s); a series that would need more than 5 * 10^6 terms is
-//! [`Error::NoConvergence`]. When `c - a - b` is within `eps` of an integer
+//! [`Error::NoConvergence`] (at once when the ratio bound proves it). The
+//! Gamma-based formulas (connection, Gauss) are [`Error::TooExpensive`] when the
+//! planned cancellation passes [`MAX_GAMMA_LOSS`] bits (MPFR's Gamma at tens of
+//! thousands of bits takes minutes to hours), and Gamma arguments longer than
+//! the working precision needs are rounded with a proven bound
+//! (`special::gamma::gamma_of_ball`). When `c - a - b` is within `eps` of an integer
 //! without being one, the 1-z formula cancels about `log2(1/eps)` bits, which
 //! the Ziv loop supplies.
 //!
@@ -123,8 +128,10 @@ use choose::{evaluate, plan};
 use crate::ball::{Ball, Bounded};
 use crate::error::{check_prec, finite, Error, Interval, Result};
 use crate::special::{
-    check_finite, exact, exact_sub, f64_from_mp, is_nonpositive_integer, ziv, DEFAULT_GUARD_BITS, F64_FALLBACK_PREC,
+    check_finite, exact, exact_sub, f64_from_mp, is_nonpositive_integer, ziv, ziv_up_to, DEFAULT_GUARD_BITS,
+    F64_FALLBACK_PREC,
 };
+use crate::special::gamma::gamma_seconds;
 
 /// Up to `|z| = 1/2` (and down to `z = -1`) only series in `z` or `w = z/(z-1)`
 /// are used (direct, Euler, Pfaff); beyond, the 1-z formulas are candidates.
@@ -207,8 +214,33 @@ pub fn hyp2f1_mp(a: &Float, b: &Float, c: &Float, z: &Float, prec: u32) -> Resul
         return Ok(Ball::one(prec));
     }
     let (alg, lost) = plan(a, b, c, z, prec + DEFAULT_GUARD_BITS);
+    if alg.uses_gamma() {
+        // The Gamma-based formulas: refused when the planned cancellation passes
+        // MAX_GAMMA_LOSS, and their Ziv loop stops MAX_GAMMA_LOSS bits past the plan.
+        let first = prec.saturating_add(DEFAULT_GUARD_BITS + lost);
+        if lost > MAX_GAMMA_LOSS {
+            return Err(Error::TooExpensive {
+                function: "2F1 by a connection formula (Gamma values at the working precision its cancellation needs)",
+                seconds: gamma_seconds(first),
+                limit_seconds: gamma_seconds(MAX_GAMMA_LOSS),
+            });
+        }
+        let max_wp = first.saturating_add(MAX_GAMMA_LOSS);
+        return ziv_up_to("hyp2f1", prec, DEFAULT_GUARD_BITS + lost, None, max_wp, |wp| evaluate(alg, a, b, c, z, wp));
+    }
     ziv("hyp2f1", prec, DEFAULT_GUARD_BITS + lost, |wp| evaluate(alg, a, b, c, z, wp))
 }
+
+/// Most bits of planned cancellation (`plan`'s loss estimate) for which
+/// [`hyp2f1_mp`] runs a Gamma-based formula (the 1-z and 1-w connection formulas,
+/// Gauss's sum); past it [`Error::TooExpensive`]. The pieces of a connection
+/// formula can cancel by tens of thousands of bits at parameters like `4.3e18`
+/// (`2F1(4311539713351952334, 27.59; 18.875; -15.375)` planned 65 536 bits), and
+/// MPFR's first Gamma at `wp` bits takes about
+/// [`gamma_seconds`](crate::special::gamma::gamma_seconds)`(wp)`: 0.7 s at 8000
+/// bits, hours at 65 000. The loss is the cost model's estimate (the certified
+/// bound never depends on it): the refusal is a cost decision about this method.
+pub const MAX_GAMMA_LOSS: u32 = 8192;
 
 /// Relative bound under which [`hyp2f1_bounded`] accepts the native result
 /// (about 45 ulp: a looser bound is of little use in f64 work); above it the

@@ -15,7 +15,9 @@
 //!   `|t_{n+1}/t_n| <= rho = |z|^+ min over the two pairings of
 //!   max(1, (a+N0)/(c+N0)) max(1, (b+N0)/(1+N0))` (each factor is monotone in `n`,
 //!   so `rho` stays valid for every later stopping index `N`), and
-//!   `sum_{n>=N} |t_n| <= |t_N| / (1 - rho)`. `rho` is rounded upward at `wp + 16`
+//!   `sum_{n>=N} |t_n| <= |t_N| / (1 - rho)`. When `rho` at the term limit
+//!   (`MAX_SERIES_TERMS`) is still `>= 1`, no stopping index exists below it and
+//!   the series is refused before summing ([`Error::NoConvergence`]). `rho` is rounded upward at `wp + 16`
 //!   bits (not with the 53-bit radius arithmetic: `|z|` may be within `2^-40` of
 //!   1, where the direct series can still be the cheap choice when `c - a - b` is
 //!   large), and summation stops once `|t_N| / (1 - rho)` is below `2^-wp |s|`
@@ -192,6 +194,15 @@ pub(crate) fn series_2f1(a: &Float, b: &Float, c: &Float, z: &Ball, wp: u32) -> 
     let rho_prec = wp + 16;
     let z_abs_up = abs_upper_precise(z, rho_prec);
     let mut tail_factor = TailFactor::new();
+    if deg.is_none()
+        && (n_pos > MAX_SERIES_TERMS
+            || !(ratio_bound(a, b, c, &one(), &z_abs_up, MAX_SERIES_TERMS + 1, rho_prec) < 1))
+    {
+        // The loop stops only at some n >= n_pos with rho_n < 1, and rho_n is
+        // non-increasing in n: rho just past the term limit >= 1 means it would
+        // run past the limit and fail there, so fail now.
+        return Err(Error::NoConvergence { function: "hyp2f1", terms: MAX_SERIES_TERMS });
+    }
 
     let scaled = scaled_integers(a, b, c);
     let mut t = Float::with_val(wp, 1);

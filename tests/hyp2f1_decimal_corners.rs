@@ -1,0 +1,104 @@
+//! Issue 23h: MP `2F1` at decimal parameters far outside `1e-30..1e4`, the inputs
+//! that the slow-input driver (`registry_mp_slow_scan` in tests/fuzz.rs, the full
+//! range of the fuzz generator) found running for seconds to hours. Each now
+//! answers certified (enclosing the reference) or returns its typed error; the
+//! times are in docs/fuzzing.md (no timing assertion here).
+//!
+//! References: `reference/data/hyp2f1_decimal_corners.csv` (mpmath from the decimal
+//! strings at 600 and 900 bits, or the terminating series summed exactly in
+//! fractions; `reference/hyp2f1_decimal_corners.py`).
+
+mod common;
+
+use maugis::ball::{eval_at_decimals, Decimal};
+use maugis::special::hyp2f1::hyp2f1_ball_mp;
+use maugis::{Ball, Error, Result};
+use rug::Float;
+
+/// What `maugis eval` (and the registry's MP path) runs for `{"fn": "hyp2f1", ...}`.
+fn at_decimals(a: &str, b: &str, c: &str, z: &str, prec: u32) -> Result<Ball> {
+    let d: Vec<Decimal> = [a, b, c, z].iter().map(|s| Decimal::parse(s).expect("decimal parses")).collect();
+    eval_at_decimals(&d, prec, |x| hyp2f1_ball_mp(&x[0], &x[1], &x[2], &x[3], prec))
+}
+
+/// `|mid - ref| <= rad + 1e-38 |ref|` (the references carry 40 digits).
+fn contains_ref(b: &Ball, r: &Float) -> bool {
+    let p = 400;
+    let diff = Float::with_val(p, b.mid() - r).abs();
+    diff <= Float::with_val(p, b.rad() + Float::with_val(p, r.abs_ref()) * Float::with_val(p, 1e-38))
+}
+
+#[test]
+fn slow_inputs_enclose_the_reference() {
+    let rows = common::load("hyp2f1_decimal_corners");
+    assert!(rows.len() >= 4, "{} rows", rows.len());
+    for row in &rows {
+        let (a, b, c, z) = (&row["a"], &row["b"], &row["c"], &row["z"]);
+        let r = Float::with_val(400, Float::parse(&row["value"]).unwrap());
+        for prec in [53, 128] {
+            let ball = at_decimals(a, b, c, z, prec).unwrap_or_else(|e| panic!("({a}, {b}; {c}; {z}) at {prec}: {e}"));
+            assert!(contains_ref(&ball, &r), "({a}, {b}; {c}; {z}) at {prec}: {ball:?} vs {}", row["value"]);
+            assert!(ball.meets_rel(prec), "({a}, {b}; {c}; {z}) at {prec}: {ball:?}");
+        }
+    }
+}
+
+#[test]
+fn a_or_b_zero_is_exactly_one() {
+    // 2F1(0, b; c; z) = 1: the majorant 2F1(1, 1.35e18; 21.3; 1 - 2^-52) climbed
+    // to 65 592 bits before (minutes); b = 0 behind Pfaff at z = -2.3e14536.
+    let cases = [
+        ("0", "1350811334005353310", "2.134842633547496e1", "9.999999999999998e-1", 44),
+        ("0.9999999999999998", "0", "22.240148885789665", "-225.5e14534", 158),
+    ];
+    for (a, b, c, z, prec) in cases {
+        let ball = at_decimals(a, b, c, z, prec).unwrap();
+        assert!(ball.is_exact() && *ball.mid() == 1, "({a}, {b}; {c}; {z}): {ball:?}");
+    }
+}
+
+#[test]
+fn long_parameters_answer_or_refuse_with_a_typed_error() {
+    let tiny_c = format!("0.{}5", "0".repeat(323));
+    // c <= 0 over a ball: not covered by the ball bound, refused before the
+    // midpoint evaluation (minutes in Gamma at 59 904 bits before)
+    for (a, b, c, z, prec) in [
+        ("2.3241413192607027e1", "22.787377894353547e-10537", "-0.5", "-1.235e2", 32),
+        ("-231", "20.291989487169147", "-5e-1", "0.5e-30835", 3),
+    ] {
+        let e = at_decimals(a, b, c, z, prec).unwrap_err();
+        assert!(matches!(e, Error::BallOutOfRange { arg: "c", .. }), "({a}, {b}; {c}; {z}): {e:?}");
+    }
+    // a cancellation of ~65 000 bits between the connection formula's pieces:
+    // Gamma at that precision would take hours
+    for (a, b, c, z, prec) in [
+        ("4311539713351952334", "27.5945093881107", "18.875", "-15.375", 136),
+        ("798993065060461084", "204.25", "0.000001", "0.9999999999999998", 138),
+    ] {
+        let e = at_decimals(a, b, c, z, prec).unwrap_err();
+        assert!(matches!(e, Error::TooExpensive { .. }), "({a}, {b}; {c}; {z}): {e:?}");
+    }
+    // Gamma(c) overflows MPFR's exponent range (a = 2.7e29278)
+    let e = at_decimals("27.2573035996638e29277", "2.455e2", &format!("0.{}2678262550294684e-10501", "0".repeat(151)), "-2.14875e2", 111)
+        .unwrap_err();
+    assert!(matches!(e, Error::Overflow { .. }), "{e:?}");
+    // the Pfaff argument w = z/(z-1) cannot be told from 1 at 65 536 input bits
+    let e = at_decimals("27.14490718121141e-17865", "21.833457323574077", &tiny_c, "-39.75e32156", 23).unwrap_err();
+    assert!(matches!(e, Error::BallTooWide { arg: "z", .. }), "{e:?}");
+}
+
+#[test]
+fn long_parameters_that_answer_are_certified_at_the_asked_precision() {
+    // No fast independent reference (mpmath ran out of time or precision at these):
+    // the answers must meet the precision and agree across precisions.
+    let cases = [
+        ("24.997420145877157", "-7.9625e1", "29.625e-28911", "-1.1075e2"),
+        ("23.2506894828511", "0.0000000000034584752426841248", "21.21544718351974e-14493", "-0.5e8432"),
+    ];
+    for (a, b, c, z) in cases {
+        let lo = at_decimals(a, b, c, z, 64).unwrap();
+        let hi = at_decimals(a, b, c, z, 192).unwrap();
+        assert!(lo.meets_rel(64) && hi.meets_rel(192), "({a}, {b}; {c}; {z}): {lo:?} {hi:?}");
+        assert!(lo.overlaps(&hi), "({a}, {b}; {c}; {z}): {lo:?} vs {hi:?}");
+    }
+}
