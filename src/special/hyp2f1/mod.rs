@@ -236,9 +236,8 @@ pub fn hyp2f1_mp(a: &Float, b: &Float, c: &Float, z: &Float, prec: u32) -> Resul
 /// Gauss's sum); past it [`Error::TooExpensive`]. The pieces of a connection
 /// formula can cancel by tens of thousands of bits at parameters like `4.3e18`
 /// (`2F1(4311539713351952334, 27.59; 18.875; -15.375)` planned 65 536 bits), and
-/// MPFR's first Gamma at `wp` bits takes about
-/// [`gamma_seconds`](crate::special::gamma::gamma_seconds)`(wp)`: 0.7 s at 8000
-/// bits, hours at 65 000. The loss is the cost model's estimate (the certified
+/// MPFR's first Gamma at `wp` bits takes about `0.7 (wp/8000)^3` s (measured,
+/// `special::gamma`'s cost estimate): 0.7 s at 8000 bits, hours at 65 000. The loss is the cost model's estimate (the certified
 /// bound never depends on it): the refusal is a cost decision about this method.
 pub const MAX_GAMMA_LOSS: u32 = 8192;
 
