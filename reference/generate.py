@@ -1104,17 +1104,27 @@ def bessel_j_decimal_rows():
                 bs = str(bumped_int)
                 bumped = "%s.%se%d" % (bs[0], bs[1:], int(exp) + (len(bs) - d))
                 for text in (typed, bumped):
-                    vals = []
-                    for bits in BESSEL_DECIMAL_BITS:
-                        mp.prec = bits
-                        vals.append(mpmath.besselj(n, mpf(text)))
-                    mp.prec = BESSEL_DECIMAL_BITS[1]
-                    rel = abs(vals[0] - vals[1]) / abs(vals[1])
-                    if not rel < mpf(10) ** -(BESSEL_DECIMAL_OUT_DIGITS + 20):
+                    value, rel = besselj_at_decimal(n, text, BESSEL_DECIMAL_BITS, BESSEL_DECIMAL_OUT_DIGITS)
+                    if value is None:
                         log("bessel_j_decimal: reject n=%d x=%s (rel diff %s)" % (n, text, mpmath.nstr(rel, 3)))
                         continue
-                    rows.append((n, text, mpmath.nstr(vals[1], BESSEL_DECIMAL_OUT_DIGITS, min_fixed=1, max_fixed=0)))
+                    rows.append((n, text, value))
     return rows
+
+
+def besselj_at_decimal(n, text, bits, out_digits):
+    """J_n at the decimal string `text`, computed at the two precisions `bits`:
+    (the value printed to `out_digits` digits, or None where the two disagree
+    beyond `out_digits + 20` digits; their relative difference)."""
+    vals = []
+    for b in bits:
+        mp.prec = b
+        vals.append(mpmath.besselj(n, mpf(text)))
+    mp.prec = bits[1]
+    rel = abs(vals[0] - vals[1]) / abs(vals[1])
+    if not rel < mpf(10) ** -(out_digits + 20):
+        return None, rel
+    return mpmath.nstr(vals[1], out_digits, min_fixed=1, max_fixed=0), rel
 
 
 def write_decimal_table(name, description, bits, out_digits, header, rows):
@@ -1155,15 +1165,10 @@ def bessel_j_tiny_decimal_rows():
     """J_n(x) at the decimal x = 0.001 (mpmath.besselj from the decimal string)."""
     rows = []
     for n in BESSEL_TINY_ORDERS:
-        vals = []
-        for bits in BESSEL_TINY_BITS:
-            mp.prec = bits
-            vals.append(mpmath.besselj(n, mpf(BESSEL_TINY_X)))
-        mp.prec = BESSEL_TINY_BITS[1]
-        rel = abs(vals[0] - vals[1]) / abs(vals[1])
-        if not rel < mpf(10) ** -(BESSEL_TINY_OUT_DIGITS + 20):
+        value, rel = besselj_at_decimal(n, BESSEL_TINY_X, BESSEL_TINY_BITS, BESSEL_TINY_OUT_DIGITS)
+        if value is None:
             sys.exit("bessel_j_tiny_decimal: n=%d disagrees between precisions (%s)" % (n, mpmath.nstr(rel, 3)))
-        rows.append((n, BESSEL_TINY_X, mpmath.nstr(vals[1], BESSEL_TINY_OUT_DIGITS, min_fixed=1, max_fixed=0)))
+        rows.append((n, BESSEL_TINY_X, value))
     return rows
 
 
