@@ -20,7 +20,7 @@ use rug::Float;
 /// MP quadrature precision: 84 bits = 25 digits.
 const QUAD_PREC: u32 = 84;
 
-mod wave_points;
+use crate::wave_points;
 use wave_points::points;
 
 fn ball_of(v: &Float) -> Ball {

@@ -1,5 +1,5 @@
 //! The cross-check points of the wave displacement, shared by
-//! tests/wave_crosscheck.rs and tests/wave_certified.rs.
+//! tests/it/wave_crosscheck.rs and tests/it/wave_certified.rs.
 
 /// The test points `(a, zeta, x)`.
 pub fn points() -> Vec<(f64, f64, f64)> {

@@ -4,7 +4,7 @@
 //!
 //! The certified double integral costs about 0.2 s (du) to 13 s (u) a point at
 //! 64 bits in release, growing with D = 2 pi a/zeta and as x -> a. The test takes
-//! every one of the 51 cross-check points of tests/wave_crosscheck.rs (100 s on two
+//! every one of the 51 cross-check points of tests/it/wave_crosscheck.rs (100 s on two
 //! cores in release, measured 2026-11-25).
 
 use maugis::contact::displacement::{du_wave_series_mp, u_wave_series_mp};
@@ -17,7 +17,7 @@ use rug::Float;
 /// Precision of the certified double integral.
 const PREC: u32 = 64;
 
-mod wave_points;
+use crate::wave_points;
 use wave_points::points as all_points;
 
 fn ball(v: f64) -> Ball {
