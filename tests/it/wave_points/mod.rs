@@ -38,3 +38,15 @@ pub fn points() -> Vec<(f64, f64, f64)> {
     pts.push((0.375, 1.5, 1.5));
     pts
 }
+
+/// The points a cross-check runs in this tier: every point under `./dev test
+/// --long`, every fourth one in the default tier (13 of the 51: x/a = 1 + 10^-j
+/// for j = 2, 6, 10, one grid point at each of the seven a, three far points).
+pub fn tier_points() -> Vec<(f64, f64, f64)> {
+    let all = points();
+    if crate::tier::long() {
+        all
+    } else {
+        all.into_iter().step_by(4).collect()
+    }
+}
