@@ -351,7 +351,20 @@ where
 {
     check_prec(prec)?;
     finite_ball(a, "a")?;
-    let builder = singular::infinite_parts(a, weight, decay, prec)?;
+    let builder = singular::infinite_parts(a, weight, decay, None)?;
+    run(&mut f, &*builder, prec, opts)
+}
+
+/// [`integrate_to_infinity`] with a decay that holds only for `x >= from` (`from >
+/// a`): `[a, from]` is integrated as a finite range.
+pub fn integrate_to_infinity_from<F>(mut f: F, a: &Ball, weight: Option<&Weight>, decay: &Decay, from: &Ball, prec: u32, opts: &Options) -> Result<Integral>
+where
+    F: FnMut(&HoloBall) -> HoloBall,
+{
+    check_prec(prec)?;
+    finite_ball(a, "a")?;
+    finite_ball(from, "from")?;
+    let builder = singular::infinite_parts(a, weight, decay, Some(from))?;
     run(&mut f, &*builder, prec, opts)
 }
 

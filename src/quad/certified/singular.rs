@@ -308,7 +308,11 @@ where
 }
 
 /// The parts of `int_a^inf w(x) f(x) dx` under a declared decay.
-pub(crate) fn infinite_parts<'w, F>(a: &Ball, weight: Option<&Weight>, decay: &Decay, _prec: u32) -> Result<Box<PartsBuilder<'w, F>>>
+///
+/// With `from = Some(R)`, the decay holds only for `x >= R`: every cut is then at least
+/// `R`, and the map of an algebraic decay starts at `max(a, R)` with `[a, R]` a finite
+/// piece.
+pub(crate) fn infinite_parts<'w, F>(a: &Ball, weight: Option<&Weight>, decay: &Decay, from: Option<&Ball>) -> Result<Box<PartsBuilder<'w, F>>>
 where
     F: FnMut(&HoloBall) -> HoloBall + 'w,
 {
@@ -322,21 +326,27 @@ where
         }
         None => Weight::new(Ball::zero(p), Ball::zero(p), 0)?,
     };
+    // the decay holds beyond r >= a
+    let r = match from {
+        Some(r) if r.lower() > a.upper() => Some(r.clone()),
+        _ => None,
+    };
     if let Decay::Algebraic { .. } = decay {
-        if !a.is_positive() {
+        if r.is_none() && !a.is_positive() {
             return Err(Error::Integration(IntegrationError::Decay { what: "an algebraic decay x^-p needs a > 0", value: a.to_f64() }));
         }
     }
     let (a, decay) = (a.clone(), decay.clone());
+    let start = r.clone().unwrap_or_else(|| a.clone());
     Ok(Box::new(move |tol: Mag, wp: u32, g: &mut F| match &decay {
         Decay::Exponential { rate, bound } => {
-            let (t, tail) = cut_exponential(&a, rate, bound, tol.mul_2exp(-2))?;
+            let (t, tail) = cut_exponential(&start, rate, bound, tol.mul_2exp(-2))?;
             parts_on(&a, &Ball::from_float(&t, t.prec()), &w, tol.mul_2exp(-1), wp, g, tail)
         }
-        Decay::Algebraic { power, bound } => match cut_algebraic_in_x(&a, power, bound, tol.mul_2exp(-2))? {
+        Decay::Algebraic { power, bound } => match cut_algebraic_in_x(&start, power, bound, tol.mul_2exp(-2))? {
             // a moderate cut: [a, T] as a finite range (fewer evaluations at low goals)
             Some((t, tail)) => parts_on(&a, &Ball::from_float(&t, t.prec()), &w, tol.mul_2exp(-1), wp, g, tail),
-            None => algebraic_parts(&a, &w, power, bound, tol, wp, g),
+            None => algebraic_parts(&a, r.as_ref(), &w, power, bound, tol, wp, g),
         },
     }))
 }
@@ -344,11 +354,15 @@ where
 /// The parts of `int_a^inf w f` under `|w f| <= m x^{-p}`: `[a, 2a]` as a finite piece
 /// when `w` is singular at `a`, then `[c, inf)` in the variable `s` of `x = c e^s`, cut at
 /// `S` with the declared tail (module docs).
-fn algebraic_parts<'w, F>(a: &Ball, w: &Weight, power: &Ball, bound: &Ball, tol: Mag, wp: u32, g: &mut F) -> Result<Vec<Part<'w>>>
+#[allow(clippy::too_many_arguments)]
+fn algebraic_parts<'w, F>(a: &Ball, from: Option<&Ball>, w: &Weight, power: &Ball, bound: &Ball, tol: Mag, wp: u32, g: &mut F) -> Result<Vec<Part<'w>>>
 where
     F: FnMut(&HoloBall) -> HoloBall,
 {
-    let (mut parts, c, map_tol) = if w.left_singular() {
+    let (mut parts, c, map_tol) = if let Some(r) = from {
+        // the decay holds beyond R > a: [a, R] as a finite piece
+        (parts_on(a, r, w, tol.mul_2exp(-1), wp, g, Mag::ZERO)?, r.clone(), tol.mul_2exp(-1))
+    } else if w.left_singular() {
         // a > 0, so mid(a) > rad(a) and c = 2 mid(a) (exact) lies above the ball a.
         let c = Float::with_val(a.mid().prec() + 1, a.mid() * 2u32);
         let c = Ball::from_float(&c, c.prec());

@@ -68,6 +68,7 @@
 //! its Pratt [`expression`](winnow::combinator::expression) combinator for
 //! `+ - * /` and a small grammar for signs, powers and calls (see `parse.rs`).
 
+mod decay;
 mod error;
 mod eval;
 mod integrate;
@@ -81,7 +82,7 @@ use std::str::FromStr;
 
 pub use error::ExprError;
 pub use eval::ExprValue;
-pub use integrate::{integrate_expr, shortfall, significant_imaginary, DecaySpec, UpperLimit, WeightSpec};
+pub use integrate::{integrate_expr, integrate_range, shortfall, significant_imaginary, DecaySpec, End, UpperLimit, WeightSpec};
 pub use tree::{Expr, Function};
 
 /// Longest expression accepted, in characters.
