@@ -58,3 +58,25 @@ fn check(ids: &[&str], precs: &[u32]) {
 fn absolutely_integrable_tails_need_no_declaration() {
     check(&["exp_over_1px", "x2_gauss", "lorentz_half", "x_exp_sin", "gauss_left", "sech2", "rsqrt_cube", "exp_sqrt"], &[64, 333]);
 }
+
+#[test]
+fn oscillatory_tails_by_contour_rotation() {
+    check(&["cos_lorentz", "j0", "hankel_k0.5", "hankel_k1", "hankel_k5"], &[64, 333]);
+}
+
+#[test]
+fn oscillatory_with_endpoint_behaviour() {
+    check(&["sinc", "j1_rsqrt"], &[64, 333]);
+}
+
+#[test]
+fn not_absolutely_integrable_and_not_oscillatory_is_a_typed_error() {
+    use maugis::quad::certified::IntegrationError as I;
+    for text in ["1/x", "1/sqrt(x)", "x", "exp(x)/x^2"] {
+        let f = Expr::parse(text).unwrap();
+        match integrate_range(&f, &End::parse("1").unwrap(), &End::Infinity, None, None, 64, &Options::new()) {
+            Err(maugis::Error::Integration(I::NotAbsolutelyIntegrable { .. } | I::MissingDecay)) => {}
+            other => panic!("{text}: {other:?}"),
+        }
+    }
+}

@@ -3,6 +3,7 @@
 //! `maugis.integrate`.
 
 use super::decay::{tail_class, TailClass};
+use super::oscillatory::integrate_oscillatory;
 use super::Expr;
 use crate::ball::{Ball, Decimal};
 use crate::error::{Error, IntegrationError, Result};
@@ -196,7 +197,15 @@ fn end_f64(e: &End) -> f64 {
 /// `int_a^inf w f` with the tail bound derived from the expression; `side` (+1 or -1)
 /// names the infinite end in errors.
 fn to_infinity(f: &Expr, a: &crate::Ball, weight: Option<&Weight>, prec: u32, opts: &Options, side: f64) -> Result<Integral> {
-    match tail_class(f) {
+    let class = tail_class(f);
+    // An algebraic tail of an oscillatory integrand: the rotated contour converges
+    // exponentially where the real axis would need a cut at 2^(goal/(p-1)).
+    if weight.is_none() && !matches!(class, TailClass::Decays { decay: Decay::Exponential { .. }, .. }) {
+        if let Some(r) = integrate_oscillatory(f, a, prec, opts) {
+            return r;
+        }
+    }
+    match class {
         TailClass::Decays { decay, from } => {
             let g = |x: &_| f.eval(x);
             integrate_to_infinity_from(g, a, weight, &decay, &from, prec, opts)

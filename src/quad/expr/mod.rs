@@ -72,6 +72,7 @@ mod decay;
 mod error;
 mod eval;
 mod integrate;
+mod oscillatory;
 mod parse;
 mod tree;
 
