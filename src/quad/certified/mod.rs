@@ -65,7 +65,7 @@ use rug::Float;
 
 pub use holo::HoloBall;
 pub(crate) use holo::Mode;
-pub use singular::{Decay, Weight};
+pub use singular::{Decay, EndBound, Weight};
 
 use crate::ball::{Ball, CBall, Mag};
 pub use crate::error::IntegrationError;
@@ -352,6 +352,25 @@ where
     check_prec(prec)?;
     finite_ball(a, "a")?;
     let builder = singular::infinite_parts(a, weight, decay, None)?;
+    run(&mut f, &*builder, prec, opts)
+}
+
+/// `int f` over consecutive segments `points[i] .. points[i+1]` (increasing), each end
+/// regular or singular with a bound [`EndBound`] of the integrand next to it, which
+/// the caller vouches for: next to a singular end the piece is mapped exponentially
+/// and cut with the closed-form tail of the bound (`singular.rs`).
+pub fn integrate_segments<F>(mut f: F, points: Vec<Ball>, ends: Vec<(Option<EndBound>, Option<EndBound>)>, prec: u32, opts: &Options) -> Result<Integral>
+where
+    F: FnMut(&HoloBall) -> HoloBall,
+{
+    check_prec(prec)?;
+    if points.len() < 2 || ends.len() + 1 != points.len() {
+        return Err(Error::Integration(IntegrationError::Option { what: "integrate_segments needs n + 1 points and n pairs of ends" }));
+    }
+    for (i, p) in points.iter().enumerate() {
+        finite_ball(p, if i == 0 { "a" } else { "b" })?;
+    }
+    let builder = singular::segment_parts(points, ends)?;
     run(&mut f, &*builder, prec, opts)
 }
 

@@ -3,11 +3,14 @@
 //! `maugis.integrate`.
 
 use super::decay::{tail_class, TailClass};
+use super::local::{local_class, singular_candidates};
 use super::oscillatory::integrate_oscillatory;
+use rug::{Float, Rational};
+use crate::ball::CBall;
 use super::Expr;
 use crate::ball::{Ball, Decimal};
 use crate::error::{Error, IntegrationError, Result};
-use crate::quad::certified::{integrate, integrate_to_infinity, integrate_to_infinity_from, integrate_weighted, Decay, Integral, Options, Weight};
+use crate::quad::certified::{integrate, integrate_segments, integrate_to_infinity, integrate_to_infinity_from, integrate_weighted, Decay, EndBound, Integral, Options, Weight};
 
 /// Guard bits of the balls made from decimal inputs (endpoints, exponents, decay
 /// constants) over the requested precision: their radii then cost the result
@@ -141,13 +144,10 @@ pub fn integrate_range(
     }
     let g = |x: &_| f.eval(x);
     match (a, b) {
-        (End::Finite(a), End::Finite(b)) => {
-            let (a, b) = (a.to_ball(ip), b.to_ball(ip));
-            match &weight {
-                None => integrate(g, &a, &b, prec, opts),
-                Some(w) => integrate_weighted(g, &a, &b, w, prec, opts),
-            }
-        }
+        (End::Finite(a), End::Finite(b)) => match &weight {
+            None => integrate_finite(f, a.as_rational(), b.as_rational(), ip, prec, opts),
+            Some(w) => integrate_weighted(g, &a.to_ball(ip), &b.to_ball(ip), w, prec, opts),
+        },
         (End::Finite(a), End::Infinity) => {
             let a = a.to_ball(ip);
             match decay {
@@ -184,6 +184,66 @@ pub fn integrate_expr(
     opts: &Options,
 ) -> Result<Integral> {
     integrate_range(f, &End::Finite(a.clone()), b, weight, decay, prec, opts)
+}
+
+/// `int_a^b f` for rational ends, with the singular points of `f` in `[a, b]` found from
+/// the expression (`local.rs`): a candidate point (a zero of an affine subtree that is
+/// divided by, raised to a fractional or negative power, or under `log` / `sqrt`) splits
+/// the range, and each end where the integrand is singular gets its local class: an
+/// integrable one (`|f| <= C t^q`, `q > -1`) is mapped exponentially with the class as
+/// its tail bound; a pole or worse (`q <= -1`) is [`IntegrationError::NotIntegrable`]
+/// naming the point.
+pub(crate) fn integrate_finite(f: &Expr, a: &Rational, b: &Rational, ip: u32, prec: u32, opts: &Options) -> Result<Integral> {
+    let to_ball = |q: &Rational| Decimal::from_rational(q.clone()).to_ball(ip);
+    let g = |x: &_| f.eval(x);
+    if a == b {
+        return integrate(g, &to_ball(a), &to_ball(b), prec, opts);
+    }
+    let (lo, hi, flip) = if a < b { (a, b, false) } else { (b, a, true) };
+    let mut candidates = Vec::new();
+    singular_candidates(f, &mut candidates);
+    let finite_at = |p: &Rational| f.eval(&CBall::from_real(to_ball(p))).is_finite();
+    let singular = |p: &Rational| candidates.contains(p) || !finite_at(p);
+    let mut points = vec![lo.clone()];
+    let mut interior: Vec<Rational> = candidates.iter().filter(|p| *p > lo && *p < hi).cloned().collect();
+    interior.sort();
+    points.extend(interior);
+    points.push(hi.clone());
+    let mut ends = Vec::new();
+    let mut any = false;
+    for w in points.windows(2) {
+        let half = Rational::from(&w[1] - &w[0]) / 2u32;
+        // delta: a power of 2 at most min(1/2, half the segment)
+        let mut delta = Rational::from((1, 2));
+        while delta > half {
+            delta /= 2u32;
+        }
+        let mut pair = [None, None];
+        for (k, (p, sigma)) in [(&w[0], 1i64), (&w[1], -1i64)].into_iter().enumerate() {
+            if !singular(p) {
+                continue;
+            }
+            if let Some(c) = local_class(f, p, sigma, &delta) {
+                if c.power <= -1 {
+                    return Err(Error::Integration(IntegrationError::NotIntegrable { near: p.to_f64(), evaluations: 0 }));
+                }
+                let delta_f = Float::with_val(64, delta.to_f64());
+                pair[k] = Some(EndBound { power: to_ball(&c.power), bound: c.coef.abs_upper_mag(), delta: delta_f });
+                any = true;
+            }
+        }
+        let [l, r] = pair;
+        ends.push((l, r));
+    }
+    let mut result = if !any && points.len() == 2 {
+        integrate(g, &to_ball(lo), &to_ball(hi), prec, opts)?
+    } else {
+        integrate_segments(g, points.iter().map(to_ball).collect(), ends, prec, opts)?
+    };
+    if flip {
+        result.value = result.value.neg();
+    }
+    Ok(result)
 }
 
 fn end_f64(e: &End) -> f64 {

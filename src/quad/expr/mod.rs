@@ -72,6 +72,7 @@ mod decay;
 mod error;
 mod eval;
 mod integrate;
+mod local;
 mod oscillatory;
 mod parse;
 mod tree;

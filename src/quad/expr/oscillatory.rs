@@ -384,7 +384,10 @@ fn run(f: &Expr, g: &Expr, kernel: &Kernel, a: &Ball, t: &Ball, _j: u32, decay: 
     for _ in 0..4 {
         let goal = prec + extra;
         let o = opts.clone().goal_bits(goal.min(crate::MAX_PREC))?;
-        let finite = integrate(|x: &HoloBall| f.eval(x), a, t, goal, &o)?;
+        let finite = match (a.mid().to_rational(), t.mid().to_rational()) {
+            (Some(ar), Some(tr)) if a.is_exact() => super::integrate::integrate_finite(f, &ar, &tr, goal + 64, goal, &o)?,
+            _ => integrate(|x: &HoloBall| f.eval(x), a, t, goal, &o)?,
+        };
         evaluations += finite.evaluations;
         let mut total = finite.value.clone();
         let mut goal_met = finite.goal_met;
