@@ -3,8 +3,11 @@
 //! `maugis.integrate`.
 
 use super::decay::{tail_class, TailClass};
-use super::local::{local_class, singular_candidates};
-use super::oscillatory::integrate_oscillatory;
+use super::decay::const_rational;
+use super::local::{affine, local_class, singular_candidates};
+use super::oscillatory::factors;
+use super::tree::Function;
+use super::oscillatory::{integrate_inverted, integrate_oscillatory};
 use rug::{Float, Rational};
 use crate::ball::CBall;
 use super::Expr;
@@ -235,6 +238,20 @@ pub(crate) fn integrate_finite(f: &Expr, a: &Rational, b: &Rational, ip: u32, pr
         let [l, r] = pair;
         ends.push((l, r));
     }
+    if any && points.len() == 2 {
+        // fractional powers of affine factors vanishing at an end: a declared weight in
+        // all but name (faster: the rest is analytic there)
+        if let Some((g_rest, alpha, beta)) = weight_split(f, lo, hi) {
+            let w = Weight::new(to_ball(&alpha), to_ball(&beta), 0)?;
+            let r = integrate_weighted(|x: &_| g_rest.eval(x), &to_ball(lo), &to_ball(hi), &w, prec, opts);
+            if let Ok(mut r) = r {
+                if flip {
+                    r.value = r.value.neg();
+                }
+                return Ok(r);
+            }
+        }
+    }
     let mut result = if !any && points.len() == 2 {
         integrate(g, &to_ball(lo), &to_ball(hi), prec, opts)?
     } else {
@@ -244,6 +261,54 @@ pub(crate) fn integrate_finite(f: &Expr, a: &Rational, b: &Rational, ip: u32, pr
         result.value = result.value.neg();
     }
     Ok(result)
+}
+
+/// `f = (x-a)^alpha (b-x)^beta g`, from the factors of `f` that are fractional powers
+/// (`u^r`, `sqrt(u)`) of an affine `u` vanishing at `a` (`u = c (x - a)`, `c > 0`) or at
+/// `b` (`u = c (b - x)`, `c > 0`): `c^r` stays in `g`. `None` when there is no such
+/// factor or an exponent is not `> -1`.
+fn weight_split(f: &Expr, a: &Rational, b: &Rational) -> Option<(Expr, Rational, Rational)> {
+    let (mut num, mut den, mut negative) = (Vec::new(), Vec::new(), false);
+    factors(f, false, &mut num, &mut den, &mut negative);
+    let (mut alpha, mut beta) = (Rational::new(), Rational::new());
+    let number = |q: Rational| Expr::Number(Decimal::from_rational(q));
+    let mut rest: Vec<Expr> = Vec::new();
+    let mut found = false;
+    for (e, sign) in num.iter().map(|e| (e, 1i32)).chain(den.iter().map(|e| (e, -1i32))) {
+        let power = match e {
+            Expr::Pow(u, r) => const_rational(r).filter(|r| *r.denom() != 1).map(|r| (u, r)),
+            Expr::Call(Function::Sqrt, u) => Some((u, Rational::from((1, 2)))),
+            _ => None,
+        };
+        let mut taken = false;
+        if let Some((u, r)) = power {
+            if let Some((c0, c1)) = affine(u) {
+                let r = Rational::from(&r * sign);
+                let at = |p: &Rational| Rational::from(&c0 + Rational::from(&c1 * p)) == 0;
+                if c1 > 0 && at(a) {
+                    alpha += &r;
+                    rest.push(Expr::Pow(Box::new(number(c1.clone())), Box::new(number(r))));
+                    taken = true;
+                } else if c1 < 0 && at(b) {
+                    beta += &r;
+                    rest.push(Expr::Pow(Box::new(number(Rational::from(-&c1))), Box::new(number(r))));
+                    taken = true;
+                }
+            }
+        }
+        found |= taken;
+        if !taken {
+            rest.push(if sign > 0 { e.clone() } else { Expr::Div(Box::new(number(Rational::from(1))), Box::new(e.clone())) });
+        }
+    }
+    if !found || alpha <= -1 || beta <= -1 {
+        return None;
+    }
+    let mut g = rest.into_iter().fold(number(Rational::from(1)), |acc, e| Expr::Mul(Box::new(acc), Box::new(e)));
+    if negative {
+        g = Expr::Neg(Box::new(g));
+    }
+    Some((g, alpha, beta))
 }
 
 fn end_f64(e: &End) -> f64 {
@@ -262,6 +327,10 @@ fn to_infinity(f: &Expr, a: &crate::Ball, weight: Option<&Weight>, prec: u32, op
     // exponentially where the real axis would need a cut at 2^(goal/(p-1)).
     if weight.is_none() && !matches!(class, TailClass::Decays { decay: Decay::Exponential { .. }, .. }) {
         if let Some(r) = integrate_oscillatory(f, a, prec, opts) {
+            return r;
+        }
+        // an algebraic tail analytic at infinity: u = 1/x
+        if let Some(r) = integrate_inverted(f, a, prec, opts) {
             return r;
         }
     }

@@ -87,7 +87,7 @@ fn unit() -> Ball {
 }
 
 /// `c0 + c1 x` with rational `c0, c1`, if the subtree is that.
-fn affine(e: &Expr) -> Option<(Rational, Rational)> {
+pub(crate) fn affine(e: &Expr) -> Option<(Rational, Rational)> {
     Some(match e {
         Expr::X => (Rational::new(), Rational::from(1)),
         Expr::Number(d) => (d.as_rational().clone(), Rational::new()),

@@ -106,7 +106,7 @@ fn at_zero(e: &Expr) -> Expr {
     }
 }
 
-fn factors(e: &Expr, inverted: bool, num: &mut Vec<Expr>, den: &mut Vec<Expr>, negative: &mut bool) {
+pub(crate) fn factors(e: &Expr, inverted: bool, num: &mut Vec<Expr>, den: &mut Vec<Expr>, negative: &mut bool) {
     match e {
         Expr::Mul(a, b) => {
             factors(a, inverted, num, den, negative);
@@ -175,6 +175,8 @@ struct ZClass {
 
 struct ZCtx {
     t: Ball,
+    /// The class must hold on all of `|z| >= T` (every argument): no fractional powers.
+    full: bool,
 }
 
 fn rat(q: &Rational) -> Ball {
@@ -278,6 +280,9 @@ impl ZCtx {
 
     /// `g^r` on `Omega_T` (module docs).
     fn pow(&self, g: ZClass, r: &Rational) -> Option<ZClass> {
+        if self.full {
+            return None;
+        }
         let log_u = g.d.log_analytic();
         if !log_u.is_finite() {
             return None;
@@ -322,7 +327,7 @@ pub(crate) fn integrate_oscillatory(f: &Expr, a: &Ball, prec: u32, opts: &Option
     }
     let mut found = None;
     for jj in j..MAX_LOG2_T {
-        let ctx = ZCtx { t: Ball::from_float(&(Float::with_val(P, 1) << jj), P) };
+        let ctx = ZCtx { t: Ball::from_float(&(Float::with_val(P, 1) << jj), P), full: false };
         if let Some(c) = ctx.class(&g) {
             found = Some((jj, ctx, c));
             break;
@@ -443,4 +448,84 @@ fn run(f: &Expr, g: &Expr, kernel: &Kernel, a: &Ball, t: &Ball, _j: u32, decay: 
         last = Some(result);
     }
     last.ok_or(crate::Error::Internal { what: "the oscillatory integral ran no attempt".into() })
+}
+
+/// `int_a^inf f` for an `f` with a class `z^q D`, `q <= -2` an integer, on the whole
+/// neighbourhood `|z| >= T` of infinity (integer powers, sums, products, quotients and
+/// functions of bounded subexpressions only). Then `F(u) = f(1/u)/u^2 = u^{-q-2} D(1/u)`
+/// is holomorphic on `0 < |u| <= 1/T` and bounded, so (Riemann) holomorphic on the disc:
+/// `int_T^inf f = int_0^{1/T} F(u) du` is an ordinary certified integral of an analytic
+/// function, whose value on a box that contains `u = 0` (and lies in the disc) is
+/// enclosed by `box^{-q-2} D`. `int_a^T f` is integrated as a finite range. `None` when
+/// there is no such class.
+pub(crate) fn integrate_inverted(f: &Expr, a: &Ball, prec: u32, opts: &Options) -> Option<Result<Integral>> {
+    let a_up = a.upper().to_f64();
+    let mut found = None;
+    for j in 1u32..24 {
+        if ((1u64 << j) as f64) < a_up + 1.0 {
+            continue;
+        }
+        let ctx = ZCtx { t: Ball::from_float(&(Float::with_val(P, 1) << j), P), full: true };
+        if let Some(c) = ctx.class(f) {
+            found = Some((j, c));
+            break;
+        }
+        if found.is_none() && j > 12 {
+            break;
+        }
+    }
+    let (j, class) = found?;
+    if *class.q.denom() != 1 || class.q > -2 {
+        return None;
+    }
+    let k = (Rational::from(-&class.q) - 2u32).numer().to_i64()?;
+    let t = Ball::from_float(&(Float::with_val(P, 1) << j), P);
+    let u_max = Ball::from_float(&(Float::with_val(P, 1) >> j), P);
+    let d = class.d;
+    let inner = move |u: &HoloBall| -> HoloBall {
+        let ub = u.inner_ref();
+        if ub.contains_zero() {
+            if !ub.abs_upper_mag().le(&Mag::pow2(-(j as i64))) {
+                return u.map_holomorphic(|z| CBall::indeterminate(z.prec()));
+            }
+            let dd = d.clone();
+            return u.map_holomorphic(|z| z.pow_i64(k).mul(&dd.set_prec(z.prec())));
+        }
+        let x = u.recip();
+        f.eval(&x) * x.sqr()
+    };
+    let mut extra = 8u32;
+    let mut last = None;
+    for _ in 0..4 {
+        let goal = prec + extra;
+        let o = match opts.clone().goal_bits(goal.min(crate::MAX_PREC)) {
+            Ok(o) => o,
+            Err(e) => return Some(Err(e)),
+        };
+        let finite = match (a.mid().to_rational(), t.mid().to_rational()) {
+            (Some(ar), Some(tr)) if a.is_exact() => super::integrate::integrate_finite(f, &ar, &tr, goal + 64, goal, &o),
+            _ => integrate(|x: &HoloBall| f.eval(x), a, &t, goal, &o),
+        };
+        let finite = match finite {
+            Ok(r) => r,
+            Err(e) => return Some(Err(e)),
+        };
+        let tail = match integrate(&inner, &Ball::zero(P), &u_max, goal, &o) {
+            Ok(r) => r,
+            Err(e) => return Some(Err(e)),
+        };
+        let total = finite.value.add(&tail.value);
+        let rad = total.rad_mag();
+        let wanted = total.abs_lower_mag().mul_2exp(-(prec as i64));
+        let met = rad.le(&wanted);
+        let limit = finite.limit.or(tail.limit);
+        let result = Integral { value: total, goal_met: met, limit: if met { None } else { limit }, evaluations: finite.evaluations + tail.evaluations, subintervals: 0, working_prec: finite.working_prec.max(tail.working_prec) };
+        if met || limit.is_some() {
+            return Some(Ok(result));
+        }
+        let missing = if wanted.is_zero() { 32.0 } else { (rad.log2() - wanted.log2()).clamp(1.0, 1e4) };
+        extra += missing.ceil() as u32 + 4;
+        last = Some(result);
+    }
+    last.map(Ok)
 }
