@@ -363,3 +363,35 @@ pub(crate) fn singular_candidates(f: &Expr, out: &mut Vec<Rational>) {
         Expr::X | Expr::Pi | Expr::Number(_) => {}
     }
 }
+
+impl Expr {
+    /// `f(p + sigma t)` as an expression in `t` (written `x`), every maximal affine
+    /// subtree with rational coefficients folded exactly to `(c0 + c1 p) + c1 sigma t`:
+    /// next to `p` the local variable is exact, so nothing cancels however small `t` is.
+    pub(crate) fn shifted(&self, p: &Rational, sigma: i64) -> Expr {
+        let number = |q: Rational| Expr::Number(Decimal::from_rational(q));
+        if let Some((c0, c1)) = affine(self) {
+            let at = Rational::from(&c0 + Rational::from(&c1 * p));
+            let slope = Rational::from(&c1 * sigma);
+            let lin = || Expr::Mul(Box::new(number(slope.clone())), Box::new(Expr::X));
+            return match (at == 0, slope == 0) {
+                (_, true) => number(at),
+                (true, false) => lin(),
+                (false, false) => Expr::Add(Box::new(number(at.clone())), Box::new(lin())),
+            };
+        }
+        let b = |e: &Expr| Box::new(e.shifted(p, sigma));
+        match self {
+            Expr::X | Expr::Pi | Expr::Number(_) => self.clone(),
+            Expr::Neg(a) => Expr::Neg(b(a)),
+            Expr::Add(x, y) => Expr::Add(b(x), b(y)),
+            Expr::Sub(x, y) => Expr::Sub(b(x), b(y)),
+            Expr::Mul(x, y) => Expr::Mul(b(x), b(y)),
+            Expr::Div(x, y) => Expr::Div(b(x), b(y)),
+            Expr::PowInt(a, n) => Expr::PowInt(b(a), *n),
+            Expr::Pow(x, y) => Expr::Pow(b(x), b(y)),
+            Expr::Call(f, a) => Expr::Call(*f, b(a)),
+            Expr::BesselJ(n, a) => Expr::BesselJ(*n, b(a)),
+        }
+    }
+}
