@@ -7,7 +7,7 @@ use maugis::quad::certified::Options;
 use maugis::quad::expr::{integrate_range, End, Expr};
 use maugis::rug::Float;
 
-const CSV: &str = include_str!("../reference/data/integrals_infinite.csv");
+const CSV: &str = include_str!("../../reference/data/integrals_infinite.csv");
 
 struct Row {
     id: String,

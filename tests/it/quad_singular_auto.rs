@@ -8,7 +8,7 @@ use maugis::quad::certified::{IntegrationError, Options};
 use maugis::quad::expr::{integrate_range, End, Expr};
 use maugis::rug::Float;
 
-const CSV: &str = include_str!("../reference/data/integrals_singular.csv");
+const CSV: &str = include_str!("../../reference/data/integrals_singular.csv");
 
 fn fields(line: &str) -> Vec<String> {
     let mut fields = Vec::new();
