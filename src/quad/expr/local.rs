@@ -314,6 +314,31 @@ impl Ctx {
     }
 }
 
+/// The factors of a product: `e = (-1)^negative prod num / prod den`.
+pub(crate) fn factors(e: &Expr, inverted: bool, num: &mut Vec<Expr>, den: &mut Vec<Expr>, negative: &mut bool) {
+    match e {
+        Expr::Mul(a, b) => {
+            factors(a, inverted, num, den, negative);
+            factors(b, inverted, num, den, negative);
+        }
+        Expr::Div(a, b) => {
+            factors(a, inverted, num, den, negative);
+            factors(b, !inverted, num, den, negative);
+        }
+        Expr::Neg(a) => {
+            *negative = !*negative;
+            factors(a, inverted, num, den, negative);
+        }
+        other => {
+            if inverted {
+                den.push(other.clone())
+            } else {
+                num.push(other.clone())
+            }
+        }
+    }
+}
+
 /// The class of `f` next to `p` on the side `sigma` (`+1`: `x > p`), for `t <= delta`.
 pub(crate) fn local_class(f: &Expr, p: &Rational, sigma: i64, delta: &Rational) -> Option<Local> {
     let ctx = Ctx { p: p.clone(), sigma, delta: rat(delta) };

@@ -71,6 +71,7 @@
 mod decay;
 mod error;
 mod eval;
+mod finite;
 mod integrate;
 mod local;
 mod oscillatory;

@@ -52,6 +52,8 @@ use super::decay::const_rational;
 use super::tree::{Expr, Function};
 use crate::ball::{Ball, CBall, Decimal, Mag};
 use crate::error::Result;
+use super::finite::{integrate_finite, sum_to_goal};
+use super::local::factors;
 use crate::quad::certified::{integrate, integrate_to_infinity, Decay, HoloBall, Integral, Options};
 
 /// The oscillatory factor of an integrand.
@@ -103,30 +105,6 @@ fn at_zero(e: &Expr) -> Expr {
         Expr::Mul(a, b) => Expr::Mul(Box::new(at_zero(a)), Box::new(at_zero(b))),
         Expr::Div(a, b) => Expr::Div(Box::new(at_zero(a)), Box::new(at_zero(b))),
         other => other.clone(),
-    }
-}
-
-pub(crate) fn factors(e: &Expr, inverted: bool, num: &mut Vec<Expr>, den: &mut Vec<Expr>, negative: &mut bool) {
-    match e {
-        Expr::Mul(a, b) => {
-            factors(a, inverted, num, den, negative);
-            factors(b, inverted, num, den, negative);
-        }
-        Expr::Div(a, b) => {
-            factors(a, inverted, num, den, negative);
-            factors(b, !inverted, num, den, negative);
-        }
-        Expr::Neg(a) => {
-            *negative = !*negative;
-            factors(a, inverted, num, den, negative);
-        }
-        other => {
-            if inverted {
-                den.push(other.clone())
-            } else {
-                num.push(other.clone())
-            }
-        }
     }
 }
 
@@ -383,20 +361,12 @@ fn run(f: &Expr, g: &Expr, kernel: &Kernel, a: &Ball, t: &Ball, _j: u32, decay: 
             vec![Term { coef: sign.clone(), side: 1 }, Term { coef: sign, side: -1 }]
         }
     };
-    let mut extra: u32 = 8;
-    let mut evaluations = 0;
-    let mut last = None;
-    for _ in 0..4 {
-        let goal = prec + extra;
-        let o = opts.clone().goal_bits(goal.min(crate::MAX_PREC))?;
+    sum_to_goal(prec, opts, |goal, o| {
         let finite = match (a.mid().to_rational(), t.mid().to_rational()) {
-            (Some(ar), Some(tr)) if a.is_exact() => super::integrate::integrate_finite(f, &ar, &tr, goal + 64, goal, &o)?,
-            _ => integrate(|x: &HoloBall| f.eval(x), a, t, goal, &o)?,
+            (Some(ar), Some(tr)) if a.is_exact() => integrate_finite(f, &ar, &tr, goal + 64, goal, o)?,
+            _ => integrate(|x: &HoloBall| f.eval(x), a, t, goal, o)?,
         };
-        evaluations += finite.evaluations;
-        let mut total = finite.value.clone();
-        let mut goal_met = finite.goal_met;
-        let mut limit = finite.limit;
+        let mut out = vec![finite];
         for term in &terms {
             let side = term.side;
             let tt = t.clone();
@@ -426,28 +396,12 @@ fn run(f: &Expr, g: &Expr, kernel: &Kernel, a: &Ball, t: &Ball, _j: u32, decay: 
                 };
                 gz * ez * dir
             };
-            let r = integrate_to_infinity(ray, &Ball::zero(wp), None, decay, goal, &o)?;
-            if std::env::var("MAUGIS_DEBUG_OSC").is_ok() {
-                eprintln!("finite {:?} ray side {side}: {:?} met {} limit {:?} evals {}", finite.value, r.value, r.goal_met, r.limit, r.evaluations);
-            }
-            evaluations += r.evaluations;
-            goal_met &= r.goal_met;
-            limit = limit.or(r.limit);
-            total = total.add(&r.value.mul(&term.coef.set_prec(wp)));
+            let mut r = integrate_to_infinity(ray, &Ball::zero(wp), None, decay, goal, o)?;
+            r.value = r.value.mul(&term.coef.set_prec(wp));
+            out.push(r);
         }
-        let rad = total.rad_mag();
-        let wanted = total.abs_lower_mag().mul_2exp(-(prec as i64));
-        let met = rad.le(&wanted);
-        let _ = goal_met;
-        let result = Integral { value: total, goal_met: met, limit: if met { None } else { limit }, evaluations, subintervals: 0, working_prec: wp };
-        if met || limit.is_some() {
-            return Ok(result);
-        }
-        let missing = if wanted.is_zero() { 32.0 } else { (rad.log2() - wanted.log2()).clamp(1.0, 1e4) };
-        extra += missing.ceil() as u32 + 4;
-        last = Some(result);
-    }
-    last.ok_or(crate::Error::Internal { what: "the oscillatory integral ran no attempt".into() })
+        Ok(out)
+    })
 }
 
 /// `int_a^inf f` for an `f` with a class `z^q D`, `q <= -2` an integer, on the whole
@@ -494,38 +448,12 @@ pub(crate) fn integrate_inverted(f: &Expr, a: &Ball, prec: u32, opts: &Options) 
         let x = u.recip();
         f.eval(&x) * x.sqr()
     };
-    let mut extra = 8u32;
-    let mut last = None;
-    for _ in 0..4 {
-        let goal = prec + extra;
-        let o = match opts.clone().goal_bits(goal.min(crate::MAX_PREC)) {
-            Ok(o) => o,
-            Err(e) => return Some(Err(e)),
-        };
+    Some(sum_to_goal(prec, opts, |goal, o| {
         let finite = match (a.mid().to_rational(), t.mid().to_rational()) {
-            (Some(ar), Some(tr)) if a.is_exact() => super::integrate::integrate_finite(f, &ar, &tr, goal + 64, goal, &o),
-            _ => integrate(|x: &HoloBall| f.eval(x), a, &t, goal, &o),
+            (Some(ar), Some(tr)) if a.is_exact() => integrate_finite(f, &ar, &tr, goal + 64, goal, o)?,
+            _ => integrate(|x: &HoloBall| f.eval(x), a, &t, goal, o)?,
         };
-        let finite = match finite {
-            Ok(r) => r,
-            Err(e) => return Some(Err(e)),
-        };
-        let tail = match integrate(&inner, &Ball::zero(P), &u_max, goal, &o) {
-            Ok(r) => r,
-            Err(e) => return Some(Err(e)),
-        };
-        let total = finite.value.add(&tail.value);
-        let rad = total.rad_mag();
-        let wanted = total.abs_lower_mag().mul_2exp(-(prec as i64));
-        let met = rad.le(&wanted);
-        let limit = finite.limit.or(tail.limit);
-        let result = Integral { value: total, goal_met: met, limit: if met { None } else { limit }, evaluations: finite.evaluations + tail.evaluations, subintervals: 0, working_prec: finite.working_prec.max(tail.working_prec) };
-        if met || limit.is_some() {
-            return Some(Ok(result));
-        }
-        let missing = if wanted.is_zero() { 32.0 } else { (rad.log2() - wanted.log2()).clamp(1.0, 1e4) };
-        extra += missing.ceil() as u32 + 4;
-        last = Some(result);
-    }
-    last.map(Ok)
+        let tail = integrate(&inner, &Ball::zero(P), &u_max, goal, o)?;
+        Ok(vec![finite, tail])
+    }))
 }
