@@ -5,7 +5,9 @@
 //! rounding, and the radii of the endpoints as given (a decimal endpoint is the ball
 //! that contains it). [`integrate_weighted`] adds algebraic-logarithmic endpoint
 //! singularities, certified without truncation by hand, and
-//! [`integrate_to_infinity`] semi-infinite ranges with a declared decay.
+//! [`integrate_to_infinity`] semi-infinite ranges with a declared decay. For integrands
+//! written as expressions, `quad::expr::integrate_range` finds the decay, the singular
+//! ends and oscillatory tails itself and calls these with what it proved.
 //!
 //! # Method
 //!

@@ -35,6 +35,16 @@
 //! when the argument touches the cut, so the certified integrator sees that the
 //! integrand is not holomorphic there instead of integrating across the cut.
 //!
+//! # Integrals without declarations
+//!
+//! [`integrate_range`] reads the tree to find what the certified integrator would
+//! otherwise ask for: a tail bound at `+-inf` (decay classes, `decay.rs`), the
+//! oscillatory factor of an integral to infinity and a class of the rest on a sector,
+//! which licenses moving the tail onto rotated rays (`oscillatory.rs`), and the
+//! singular points of a finite range with their local classes (`local.rs`,
+//! `finite.rs`). Each rule is proven in the method block of its file; the overview and
+//! the timings are in `docs/quadrature.md`.
+//!
 //! # Errors
 //!
 //! [`Expr::parse`] returns [`crate::Error::Expression`] with an [`ExprError`]
