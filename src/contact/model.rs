@@ -65,7 +65,7 @@
 use std::f64::consts::PI;
 
 use crate::contact::displacement::{profile_depth, u_adhesive, u_hertz, WaveBessel};
-use crate::error::{finite, Error, Interval, Result};
+use crate::error::{finite, Error, Interval, Invariant, Result};
 /// Brent's method lives in [`crate::roots`]; re-exported here, its former path.
 pub use crate::roots::brent;
 use crate::roots::{first_crossing, golden_section_min, BRENT_REL_TOL};
@@ -424,12 +424,12 @@ impl ContactSize {
             if v.is_finite() {
                 Ok(v)
             } else {
-                Err(Error::Internal { what: format!("strip residual not finite at m - 1 = {}", s / a) })
+                Err(Error::Invariant(Invariant::StripResidualNotFinite { m_minus_1: s / a }))
             }
         };
         let done = |z: Result<f64>| -> Result<StripEnd> {
             let z = z?;
-            StripEnd::from_m_minus_1(z).map_err(|_| Error::Internal { what: format!("strip root m - 1 = {z:?} is not > 0") })
+            StripEnd::from_m_minus_1(z).map_err(|_| Error::Invariant(Invariant::StripRootNotPositive { m_minus_1: z }))
         };
         // The scan starts EDGE_OCTAVES octaves below the first step and doubles up to
         // it: next to the edge F rises like a square root and can cross zero and fall
