@@ -33,5 +33,35 @@ fn bench_certified(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench_certified);
+/// Integrals that need no declaration (issue 36): infinite ranges with the tail bound
+/// from the expression, oscillatory tails on rotated rays, singular ends found from the
+/// expression. Warm calls, 64 and 333 bits; docs/quadrature.md has the table.
+fn bench_undeclared(c: &mut Criterion) {
+    use maugis::quad::expr::{integrate_range, End, Expr};
+    let mut g = c.benchmark_group("certified_quad_undeclared");
+    g.sample_size(10);
+    let cases = [
+        ("exp_over_1px", "exp(-x)/(1+x)", "0", "inf"),
+        ("x2_gauss", "x^2*exp(-x^2)", "-inf", "inf"),
+        ("lorentz", "1/(1+x^2)", "0", "inf"),
+        ("sinc", "sin(x)/x", "0", "inf"),
+        ("j0", "besselj(0, x)", "0", "inf"),
+        ("cos_lorentz", "cos(x)/(1+x^2)", "0", "inf"),
+        ("rsqrt_cos", "x^(-1/2)*cos(x)", "0", "1"),
+        ("log", "log(x)", "0", "1"),
+    ];
+    for prec in [64u32, 333] {
+        for (id, text, a, b) in cases {
+            let f = Expr::parse(text).unwrap();
+            let (a, b) = (End::parse(a).unwrap(), End::parse(b).unwrap());
+            let o = Options::new();
+            g.bench_with_input(BenchmarkId::new(id, prec), &prec, |bench, &p| {
+                bench.iter(|| integrate_range(black_box(&f), &a, &b, None, None, p, &o).unwrap())
+            });
+        }
+    }
+    g.finish();
+}
+
+criterion_group!(benches, bench_certified, bench_undeclared);
 criterion_main!(benches);

@@ -695,15 +695,25 @@ pub enum IntegrationError {
     /// The upper end is `-inf`, which is not supported: integrate `f(-x)` from `-b`
     /// to `inf` instead.
     NegativeInfinity,
-    /// The upper end is neither a decimal nor `inf`.
+    /// An end is neither a decimal nor `inf` / `-inf`.
     UpperEnd {
         /// The text given.
         text: String,
     },
     /// A decay was declared for a finite upper end; it applies only to `b = inf`.
     DecayWithFiniteEnd,
-    /// `b = inf` without a declared decay of the integrand.
+    /// An infinite end without a declared decay, and no decay class follows from the
+    /// expression.
     MissingDecay,
+    /// The expression's class at an infinite end is `|f(x)| <= C |x|^power` with
+    /// `power >= -1` (or a growth), and it is not an oscillatory integral the
+    /// integrator recognises: it is not absolutely integrable there.
+    NotAbsolutelyIntegrable {
+        /// The power of `|x|` of the class (approximate).
+        power: f64,
+        /// `+1` for `+inf`, `-1` for `-inf`.
+        end: f64,
+    },
 }
 
 impl fmt::Display for IntegrationError {
@@ -730,15 +740,23 @@ impl fmt::Display for IntegrationError {
                 write!(f, "the upper end -inf is not supported: integrate f(-x) from -b to inf instead")
             }
             IntegrationError::UpperEnd { text } => {
-                write!(f, "the upper end '{text}' is not a decimal number; write a decimal, or inf for an infinite upper end")
+                write!(f, "the end '{text}' is not a decimal number; write a decimal, or inf / -inf for an infinite end")
             }
             IntegrationError::DecayWithFiniteEnd => {
                 write!(f, "a decay is declared only for an infinite upper end (b = inf)")
             }
             IntegrationError::MissingDecay => write!(
                 f,
-                "b = inf needs a declared decay of the integrand: |f(x)| <= m e^(-c x) (decay rate c and bound m) \
-                 or |f(x)| <= m x^(-p) (decay power p > 1 and bound m) for x >= a"
+                "no tail bound follows from the expression at the infinite end; declare a decay of the integrand: \
+                 |f(x)| <= m e^(-c x) (decay rate c and bound m) or |f(x)| <= m x^(-p) (decay power p > 1 and \
+                 bound m) for x >= a"
+            ),
+            IntegrationError::NotAbsolutelyIntegrable { power, end } => write!(
+                f,
+                "the integrand is not absolutely integrable at {}inf: it decays no faster than |x|^{power:.4} \
+                 (an integral to infinity needs a power below -1, an exponential decay, or a recognised \
+                 oscillatory factor sin(w x + c), cos(w x + c) or besselj(n, w x))",
+                if *end < 0.0 { "-" } else { "+" }
             ),
         }
     }

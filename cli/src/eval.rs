@@ -58,7 +58,7 @@ use std::io::{BufRead, Write};
 use maugis::ball::Decimal;
 use maugis::registry::{self, Answer, Arg, ParamKind};
 use maugis::quad::certified::Options;
-use maugis::quad::expr::{integrate_expr, shortfall, DecaySpec, Expr, UpperLimit, WeightSpec};
+use maugis::quad::expr::{integrate_range, shortfall, DecaySpec, End, Expr, WeightSpec};
 use maugis::{Ball, Error, MAX_PREC};
 use serde_json::{json, Map, Value};
 
@@ -344,8 +344,8 @@ fn evaluate_integral(obj: &Map<String, Value>, id: &Value, prec: u32) -> Req<Val
         Some(other) => return Err(BadRequest(format!("\"f\" must be the integrand as a string, got {other}"))),
         None => return Err(BadRequest("missing argument \"f\" (the integrand in x, e.g. \"exp(-x^2)\")".into())),
     };
-    let a = arg_decimal(obj, "a")?;
-    let b = UpperLimit::parse(&arg_text(obj, "b")?)?;
+    let a = End::parse(&arg_text(obj, "a")?)?;
+    let b = End::parse(&arg_text(obj, "b")?)?;
     let weight = match sub_object(obj, "weight", &["alpha", "beta", "log"])? {
         None => None,
         Some(w) => Some(WeightSpec {
@@ -365,7 +365,7 @@ fn evaluate_integral(obj: &Map<String, Value>, id: &Value, prec: u32) -> Req<Val
             })
         }
     };
-    let r = integrate_expr(&f, &a, &b, weight.as_ref(), decay.as_ref(), prec, &Options::new())?;
+    let r = integrate_range(&f, &a, &b, weight.as_ref(), decay.as_ref(), prec, &Options::new())?;
     let mut resp = json!({"id": id});
     for (key, value) in ball_fields(&r, prec) {
         resp[key] = Value::String(value);

@@ -26,7 +26,7 @@ use clap::Args;
 
 use maugis::ball::Decimal;
 use maugis::quad::certified::{Integral, Options};
-use maugis::quad::expr::{integrate_expr, shortfall, significant_imaginary, DecaySpec, Expr, UpperLimit, WeightSpec};
+use maugis::quad::expr::{integrate_range, shortfall, significant_imaginary, DecaySpec, End, Expr, WeightSpec};
 use maugis::MAX_PREC;
 
 use crate::output::print_stdout;
@@ -38,12 +38,13 @@ pub struct IntegrateArgs {
     /// besselj(n, x), pi and decimals, e.g. 'exp(-x^2)' or 'x^(-1/2)*cos(x)'.
     #[arg(value_name = "EXPR", value_parser = expression, allow_hyphen_values = true)]
     pub f: Expr,
-    /// Lower end, a decimal.
-    #[arg(value_name = "A", value_parser = decimal, allow_hyphen_values = true)]
-    pub a: Decimal,
-    /// Upper end, a decimal or inf (then a decay must be declared).
-    #[arg(value_name = "B", value_parser = upper, allow_hyphen_values = true)]
-    pub b: UpperLimit,
+    /// Lower end, a decimal or -inf.
+    #[arg(value_name = "A", value_parser = end, allow_hyphen_values = true)]
+    pub a: End,
+    /// Upper end, a decimal or inf (the tail bound is derived from the expression, or
+    /// declared with --decay-*).
+    #[arg(value_name = "B", value_parser = end, allow_hyphen_values = true)]
+    pub b: End,
     /// Precision in bits: the goal is rad <= 2^-P |mid|.
     #[arg(long, value_name = "P", default_value = "53", value_parser = prec)]
     pub prec: u32,
@@ -75,8 +76,8 @@ fn decimal(s: &str) -> Result<Decimal, String> {
     Decimal::parse(s).map_err(|e| e.to_string())
 }
 
-fn upper(s: &str) -> Result<UpperLimit, String> {
-    UpperLimit::parse(s).map_err(|e| e.to_string())
+fn end(s: &str) -> Result<End, String> {
+    End::parse(s).map_err(|e| e.to_string())
 }
 
 fn prec(s: &str) -> Result<u32, String> {
@@ -122,7 +123,7 @@ pub fn run(args: IntegrateArgs) -> Result<(), String> {
     }
     let weight = WeightSpec { alpha: args.alpha.clone(), beta: args.beta.clone(), log: args.log };
     let decay = decay(&args);
-    let r = integrate_expr(&args.f, &args.a, &args.b, Some(&weight), decay.as_ref(), args.prec, &Options::new())
+    let r = integrate_range(&args.f, &args.a, &args.b, Some(&weight), decay.as_ref(), args.prec, &Options::new())
         .map_err(|e| e.to_string())?;
     let text: String = ball_fields(&r, args.prec).iter().map(|(k, v)| format!("{k}: {v}\n")).collect();
     print_stdout(&text)?;

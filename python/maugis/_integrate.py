@@ -25,6 +25,24 @@ def _is_plus_inf(v):
     return False
 
 
+def _is_minus_inf(v):
+    if isinstance(v, str):
+        return v.strip().lower() in ("-inf", "-infinity")
+    if isinstance(v, mpmath.mpf):
+        return v == -mpmath.inf
+    if isinstance(v, (float, np.floating)):
+        return math.isinf(v) and v < 0
+    return False
+
+
+def _end(name, v):
+    if _is_plus_inf(v):
+        return "inf"
+    if _is_minus_inf(v):
+        return "-inf"
+    return _mp_arg(name, v)
+
+
 def _optional(name, v):
     return None if v is None else _mp_arg(name, v)
 
@@ -50,9 +68,11 @@ def integrate(
     atan``, ``besselj(n, x)``, ``pi`` and decimals (``"x^(-1/2)*cos(x)"``).
     ``a`` and ``b`` are numbers as for the ``prec=`` functions: floats, ints and
     ``mpmath.mpf`` exactly, decimal strings as balls that contain them; ``b`` may
-    be ``inf`` (``math.inf``, ``mpmath.inf`` or ``"inf"``) with a declared decay
-    of the whole integrand for ``x >= a``: ``|f(x)| <= decay_bound *
-    exp(-decay_rate x)`` or ``<= decay_bound * x**-decay_power``.
+    be ``inf`` and ``a`` ``-inf`` (``math.inf``, ``mpmath.inf`` or ``"inf"``). The
+    tail bound at an infinite end is derived from the expression
+    (``docs/quadrature.md``); ``decay_*`` declare one instead, for ``b = inf``:
+    ``|f(x)| <= decay_bound * exp(-decay_rate x)`` or ``<= decay_bound *
+    x**-decay_power`` for ``x >= a``.
 
     ``alpha``, ``beta``, ``log`` declare endpoint behaviour: the integrand is then
     ``(x-a)**alpha (b-x)**beta log(x-a)**log f(x)``, certified without truncation
@@ -67,7 +87,8 @@ def integrate(
     goal still encloses the integral and comes with a ``RuntimeWarning``.
 
     Bad input (an expression that does not parse, an endpoint singularity or pole
-    that was not declared, ``b = inf`` without a decay) raises ``ValueError``
+    that was not declared, an infinite range that is not absolutely integrable nor a
+    recognised oscillatory integral) raises ``ValueError``
     naming the problem.
     """
     prec = _mp_options(prec, output)
@@ -75,12 +96,12 @@ def integrate(
         raise TypeError(f"f must be the integrand as a string in x (got {type(f).__name__})")
     if isinstance(log, bool) or not isinstance(log, (int, np.integer)) or log < 0:
         raise ValueError(f"log must be a non-negative integer (got {log!r})")
-    upper = None if _is_plus_inf(b) else _mp_arg("b", b)
+    upper = _end("b", b)
     if output == "str" and digits is None:
         digits = int(prec * _LOG10_2) + 3
     r = _ext.integrate_mp(
         f,
-        _mp_arg("a", a),
+        _end("a", a),
         upper,
         prec,
         alpha=_optional("alpha", alpha),

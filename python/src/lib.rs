@@ -33,7 +33,7 @@ use maugis::contact::state_profile::{sample_state, sample_state_at, ProfileSampl
 use maugis::ball::Decimal;
 use maugis::registry::{self, Answer, Arg, Function, ParamKind};
 use maugis::quad::certified::Options;
-use maugis::quad::expr::{integrate_expr, shortfall, significant_imaginary, DecaySpec, Expr, UpperLimit, WeightSpec};
+use maugis::quad::expr::{integrate_range, shortfall, significant_imaginary, DecaySpec, End, Expr, WeightSpec};
 use maugis::rug::{Float, Integer, Rational};
 use maugis::special::hyp1f2::hyp1f2_model_family_f64;
 use maugis::special::meijer_g::meijer_g_k_family_f64;
@@ -426,8 +426,8 @@ fn eval_mp<'py>(py: Python<'py>, function: &str, columns: Vec<Vec<MpArg>>, prec:
 // ---------------------------------------------------------------- certified integrals
 
 /// `int_a^b w(x) f(x) dx` for the expression `f` in x ([`maugis::quad::expr`]),
-/// certified at `prec` bits ([`integrate_expr`]). `b = None` is `+inf` (then a
-/// decay is required); the weight is `(x-a)^alpha (b-x)^beta log^log(x-a)`.
+/// certified at `prec` bits ([`integrate_expr`]). `b = None` is `+inf`; `"inf"` and
+/// `"-inf"` are infinite ends (the tail bound derived from the expression); the weight is `(x-a)^alpha (b-x)^beta log^log(x-a)`.
 /// Returns a dict: `re` and `im` (`None` when it is a ball around 0 no wider than
 /// `re`'s radius), each `(mid, rad)` as exact pairs or decimal strings like
 /// [`eval_mp`], `evaluations`, and `warning` (`None`, or why the goal was not met).
@@ -450,10 +450,16 @@ fn integrate_mp<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     let expr = Expr::parse(f).map_err(lib_error)?;
     let opt = |v: &Option<MpArg>, what: &'static str| v.as_ref().map(|v| v.to_decimal(what)).transpose();
-    let a = a.to_decimal("a").map_err(lib_error)?;
+    let end = |v: &MpArg, what: &'static str| -> maugis::Result<End> {
+        match v {
+            MpArg::Decimal(s) if matches!(s.trim(), "inf" | "-inf") => End::parse(s),
+            _ => v.to_decimal(what).map(End::Finite),
+        }
+    };
+    let a = end(&a, "a").map_err(lib_error)?;
     let b = match &b {
-        None => UpperLimit::Infinity,
-        Some(b) => UpperLimit::Finite(b.to_decimal("b").map_err(lib_error)?),
+        None => End::Infinity,
+        Some(b) => end(b, "b").map_err(lib_error)?,
     };
     let weight = WeightSpec { alpha: opt(&alpha, "alpha").map_err(lib_error)?, beta: opt(&beta, "beta").map_err(lib_error)?, log };
     let bound = opt(&decay_bound, "decay_bound").map_err(lib_error)?;
@@ -468,7 +474,7 @@ fn integrate_mp<'py>(
         }
     };
     let r = py
-        .detach(|| integrate_expr(&expr, &a, &b, Some(&weight), decay.as_ref(), prec, &Options::new()))
+        .detach(|| integrate_range(&expr, &a, &b, Some(&weight), decay.as_ref(), prec, &Options::new()))
         .map_err(lib_error)?;
     let out = PyDict::new(py);
     out.set_item("re", ball_out(r.value.re(), digits))?;

@@ -45,3 +45,7 @@ mod wave_certified;
 mod wave_crosscheck;
 mod wave_scratch;
 mod wave_value;
+mod quad_infinite;
+mod quad_singular_auto;
+mod quad_spelling;
+mod quad_oscillatory_proptest;

@@ -21,3 +21,4 @@ mod cli_simulate;
 mod cli_simulate_profile;
 mod figures;
 mod render_check;
+mod cli_integrate_auto;

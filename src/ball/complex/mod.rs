@@ -35,6 +35,7 @@ use rug::Float;
 use super::{Ball, Mag};
 
 mod bessel;
+mod hankel;
 mod elementary;
 
 /// A complex rectangle `re + i im` of two real balls.

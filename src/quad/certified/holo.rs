@@ -122,6 +122,12 @@ impl HoloBall {
         self.with(f(&self.z))
     }
 
+    /// The ball itself, to inspect (read only: functions are applied through the
+    /// methods, so the evaluation mode cannot be bypassed).
+    pub fn inner_ref(&self) -> &CBall {
+        &self.z
+    }
+
     /// Whether the ball is finite (a non-finite ball marks a pole or a cut).
     pub fn is_finite(&self) -> bool {
         self.z.is_finite()

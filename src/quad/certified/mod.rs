@@ -5,7 +5,9 @@
 //! rounding, and the radii of the endpoints as given (a decimal endpoint is the ball
 //! that contains it). [`integrate_weighted`] adds algebraic-logarithmic endpoint
 //! singularities, certified without truncation by hand, and
-//! [`integrate_to_infinity`] semi-infinite ranges with a declared decay.
+//! [`integrate_to_infinity`] semi-infinite ranges with a declared decay. For integrands
+//! written as expressions, `quad::expr::integrate_range` finds the decay, the singular
+//! ends and oscillatory tails itself and calls these with what it proved.
 //!
 //! # Method
 //!
@@ -65,7 +67,7 @@ use rug::Float;
 
 pub use holo::HoloBall;
 pub(crate) use holo::Mode;
-pub use singular::{Decay, Weight};
+pub use singular::{Decay, EndBound, Weight};
 
 use crate::ball::{Ball, CBall, Mag};
 pub use crate::error::IntegrationError;
@@ -351,7 +353,39 @@ where
 {
     check_prec(prec)?;
     finite_ball(a, "a")?;
-    let builder = singular::infinite_parts(a, weight, decay, prec)?;
+    let builder = singular::infinite_parts(a, weight, decay, None)?;
+    run(&mut f, &*builder, prec, opts)
+}
+
+/// `int f` over consecutive segments `points[i] .. points[i+1]` (increasing), each end
+/// regular or singular with a bound [`EndBound`] of the integrand next to it, which
+/// the caller vouches for: next to a singular end the piece is mapped exponentially
+/// and cut with the closed-form tail of the bound (`singular.rs`).
+pub fn integrate_segments<F>(mut f: F, points: Vec<Ball>, ends: Vec<(Option<EndBound>, Option<EndBound>)>, prec: u32, opts: &Options) -> Result<Integral>
+where
+    F: FnMut(&HoloBall) -> HoloBall,
+{
+    check_prec(prec)?;
+    if points.len() < 2 || ends.len() + 1 != points.len() {
+        return Err(Error::Integration(IntegrationError::Option { what: "integrate_segments needs n + 1 points and n pairs of ends" }));
+    }
+    for (i, p) in points.iter().enumerate() {
+        finite_ball(p, if i == 0 { "a" } else { "b" })?;
+    }
+    let builder = singular::segment_parts(points, ends)?;
+    run(&mut f, &*builder, prec, opts)
+}
+
+/// [`integrate_to_infinity`] with a decay that holds only for `x >= from` (`from >
+/// a`): `[a, from]` is integrated as a finite range.
+pub fn integrate_to_infinity_from<F>(mut f: F, a: &Ball, weight: Option<&Weight>, decay: &Decay, from: &Ball, prec: u32, opts: &Options) -> Result<Integral>
+where
+    F: FnMut(&HoloBall) -> HoloBall,
+{
+    check_prec(prec)?;
+    finite_ball(a, "a")?;
+    finite_ball(from, "from")?;
+    let builder = singular::infinite_parts(a, weight, decay, Some(from))?;
     run(&mut f, &*builder, prec, opts)
 }
 

@@ -308,7 +308,11 @@ where
 }
 
 /// The parts of `int_a^inf w(x) f(x) dx` under a declared decay.
-pub(crate) fn infinite_parts<'w, F>(a: &Ball, weight: Option<&Weight>, decay: &Decay, _prec: u32) -> Result<Box<PartsBuilder<'w, F>>>
+///
+/// With `from = Some(R)`, the decay holds only for `x >= R`: every cut is then at least
+/// `R`, and the map of an algebraic decay starts at `max(a, R)` with `[a, R]` a finite
+/// piece.
+pub(crate) fn infinite_parts<'w, F>(a: &Ball, weight: Option<&Weight>, decay: &Decay, from: Option<&Ball>) -> Result<Box<PartsBuilder<'w, F>>>
 where
     F: FnMut(&HoloBall) -> HoloBall + 'w,
 {
@@ -322,21 +326,27 @@ where
         }
         None => Weight::new(Ball::zero(p), Ball::zero(p), 0)?,
     };
+    // the decay holds beyond r >= a
+    let r = match from {
+        Some(r) if r.lower() > a.upper() => Some(r.clone()),
+        _ => None,
+    };
     if let Decay::Algebraic { .. } = decay {
-        if !a.is_positive() {
+        if r.is_none() && !a.is_positive() {
             return Err(Error::Integration(IntegrationError::Decay { what: "an algebraic decay x^-p needs a > 0", value: a.to_f64() }));
         }
     }
     let (a, decay) = (a.clone(), decay.clone());
+    let start = r.clone().unwrap_or_else(|| a.clone());
     Ok(Box::new(move |tol: Mag, wp: u32, g: &mut F| match &decay {
         Decay::Exponential { rate, bound } => {
-            let (t, tail) = cut_exponential(&a, rate, bound, tol.mul_2exp(-2))?;
+            let (t, tail) = cut_exponential(&start, rate, bound, tol.mul_2exp(-2))?;
             parts_on(&a, &Ball::from_float(&t, t.prec()), &w, tol.mul_2exp(-1), wp, g, tail)
         }
-        Decay::Algebraic { power, bound } => match cut_algebraic_in_x(&a, power, bound, tol.mul_2exp(-2))? {
+        Decay::Algebraic { power, bound } => match cut_algebraic_in_x(&start, power, bound, tol.mul_2exp(-2))? {
             // a moderate cut: [a, T] as a finite range (fewer evaluations at low goals)
             Some((t, tail)) => parts_on(&a, &Ball::from_float(&t, t.prec()), &w, tol.mul_2exp(-1), wp, g, tail),
-            None => algebraic_parts(&a, &w, power, bound, tol, wp, g),
+            None => algebraic_parts(&a, r.as_ref(), &w, power, bound, tol, wp, g),
         },
     }))
 }
@@ -344,11 +354,15 @@ where
 /// The parts of `int_a^inf w f` under `|w f| <= m x^{-p}`: `[a, 2a]` as a finite piece
 /// when `w` is singular at `a`, then `[c, inf)` in the variable `s` of `x = c e^s`, cut at
 /// `S` with the declared tail (module docs).
-fn algebraic_parts<'w, F>(a: &Ball, w: &Weight, power: &Ball, bound: &Ball, tol: Mag, wp: u32, g: &mut F) -> Result<Vec<Part<'w>>>
+#[allow(clippy::too_many_arguments)]
+fn algebraic_parts<'w, F>(a: &Ball, from: Option<&Ball>, w: &Weight, power: &Ball, bound: &Ball, tol: Mag, wp: u32, g: &mut F) -> Result<Vec<Part<'w>>>
 where
     F: FnMut(&HoloBall) -> HoloBall,
 {
-    let (mut parts, c, map_tol) = if w.left_singular() {
+    let (mut parts, c, map_tol) = if let Some(r) = from {
+        // the decay holds beyond R > a: [a, R] as a finite piece
+        (parts_on(a, r, w, tol.mul_2exp(-1), wp, g, Mag::ZERO)?, r.clone(), tol.mul_2exp(-1))
+    } else if w.left_singular() {
         // a > 0, so mid(a) > rad(a) and c = 2 mid(a) (exact) lies above the ball a.
         let c = Float::with_val(a.mid().prec() + 1, a.mid() * 2u32);
         let c = Ball::from_float(&c, c.prec());
@@ -489,4 +503,96 @@ where
     }
     let v = h(&HoloBall::new(CBall::from_real(e.set_prec(p)), Mode::Point), g);
     v.inner().abs_upper_mag().mul(e.rad_mag())
+}
+
+/// A singular end found from the integrand's expression: `|f(e + sigma t)| <= bound
+/// t^power` for `0 < t <= delta` (`power > -1`, `delta` an exact power of 2).
+#[derive(Clone, Debug)]
+pub struct EndBound {
+    /// `q > -1` (a ball that contains it).
+    pub power: Ball,
+    /// `|C|`.
+    pub bound: Mag,
+    /// `delta`, an exact power of 2.
+    pub delta: Float,
+}
+
+/// The parts of `int_{points[0]}^{points[last]} f` over consecutive segments, each
+/// end of a segment regular (`None`) or singular with an [`EndBound`]. Next to a
+/// singular end `e` the piece `[e, e +- delta/2]` is mapped by `x = e +- d e^{-s}` (`d`
+/// the piece's length, `mu = 1`: the integrand `d e^{-s} f(x)`), and cut at `S` with the
+/// tail `int_0^{d e^{-S}} bound t^q dt = bound (d e^{-S})^{q+1}/(q+1)` (`d e^{-S} <=
+/// delta`).
+pub(crate) fn segment_parts<'w, F>(points: Vec<Ball>, ends: Vec<(Option<EndBound>, Option<EndBound>)>) -> Result<Box<PartsBuilder<'w, F>>>
+where
+    F: FnMut(&HoloBall) -> HoloBall + 'w,
+{
+    for w in points.windows(2) {
+        if !(w[0].upper() < w[1].lower()) {
+            return Err(Error::Integration(IntegrationError::Endpoints { a: w[0].to_f64(), b: w[1].to_f64() }));
+        }
+    }
+    Ok(Box::new(move |tol: Mag, wp: u32, g: &mut F| {
+        let n_seg = (points.len() - 1).max(1) as f64;
+        let target = tol.mul_2exp(-3).div(Mag::from_f64(2.0 * n_seg));
+        let mut parts = Vec::new();
+        let mut endpoint_error = Mag::ZERO;
+        let id = |s: &HoloBall, g: &mut dyn FnMut(&HoloBall) -> HoloBall| g(s);
+        for (i, w) in points.windows(2).enumerate() {
+            let (a, b) = (&w[0], &w[1]);
+            let (left, right) = &ends[i];
+            let prec = a.mid().prec().max(b.mid().prec()) + 64;
+            let lo = match left {
+                Some(eb) => {
+                    let c = Float::with_val(prec, a.mid() + Float::with_val(prec, &eb.delta >> 1u32));
+                    parts.push(mapped_piece(a, &c, 1, eb, target, wp)?);
+                    c
+                }
+                None => {
+                    endpoint_error = endpoint_error.add(end_error(a, &id, wp, g));
+                    a.mid().clone()
+                }
+            };
+            let hi = match right {
+                Some(eb) => {
+                    let c = Float::with_val(prec, b.mid() - Float::with_val(prec, &eb.delta >> 1u32));
+                    parts.push(mapped_piece(b, &c, -1, eb, target, wp)?);
+                    c
+                }
+                None => {
+                    endpoint_error = endpoint_error.add(end_error(b, &id, wp, g));
+                    b.mid().clone()
+                }
+            };
+            if lo < hi {
+                parts.push(Part { lo, hi, tail: Mag::ZERO, periodic: false, map: XMap::Identity, wrap: Box::new(id) });
+            }
+        }
+        if !endpoint_error.is_zero() {
+            parts.push(Part { lo: Float::new(wp), hi: Float::new(wp), tail: endpoint_error, periodic: false, map: XMap::Identity, wrap: Box::new(id) });
+        }
+        Ok(parts)
+    }))
+}
+
+/// The mapped piece between the singular end `e` and `c` (module docs of
+/// [`segment_parts`]).
+fn mapped_piece<'w>(e: &Ball, c: &Float, sign: i64, eb: &EndBound, target: Mag, wp: u32) -> Result<Part<'w>> {
+    let mapped = Mapped::new(e, c, sign, &Ball::zero(wp), 0, wp)?;
+    let p = 64;
+    let q1 = eb.power.set_prec(p).add_i64(1);
+    if !q1.is_positive() {
+        return Err(Error::Integration(IntegrationError::NotIntegrable { near: e.to_f64(), evaluations: 0 }));
+    }
+    let d_up = Ball::from_float(&mapped.d.abs_upper(), p);
+    let bound = Ball::from_float(&eb.bound.to_float(), p);
+    let tail_at = |s: &Ball| -> Result<Ball> {
+        let small = d_up.mul(&s.neg().exp()?);
+        bound.mul(&small.pow(&q1)?).div(&q1)
+    };
+    let q1_f = q1.lower().to_f64().max(1e-6);
+    let est = ((bound.to_f64().max(1e-300) * d_up.to_f64().powf(q1_f) / q1_f).ln() - ln_mag(target)) / q1_f;
+    let (s, tail) = search_cut(est.max(1.0), target, tail_at)?;
+    let map = mapped.map();
+    Ok(Part { lo: Float::with_val(wp, 0), hi: s, tail, periodic: false, map, wrap: mapped.wrap(|x: &HoloBall, g: &mut dyn FnMut(&HoloBall) -> HoloBall| g(x)) })
 }

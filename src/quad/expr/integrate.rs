@@ -2,38 +2,60 @@
 //! `maugis integrate`, the `integrate` request of `maugis eval` and Python's
 //! `maugis.integrate`.
 
+use super::decay::{tail_class, TailClass};
+use super::finite::integrate_finite;
+use super::oscillatory::{integrate_inverted, integrate_oscillatory};
 use super::Expr;
 use crate::ball::{Ball, Decimal};
 use crate::error::{Error, IntegrationError, Result};
-use crate::quad::certified::{integrate, integrate_to_infinity, integrate_weighted, Decay, Integral, Options, Weight};
+use crate::quad::certified::{integrate_to_infinity, integrate_to_infinity_from, integrate_weighted, Decay, Integral, Options, Weight};
 
 /// Guard bits of the balls made from decimal inputs (endpoints, exponents, decay
 /// constants) over the requested precision: their radii then cost the result
 /// about `2^-64` of its tolerance.
 const INPUT_GUARD_BITS: u32 = 64;
 
-/// The upper end of an integral.
+/// An end of an integral: a decimal, `+inf` or `-inf`.
 #[derive(Clone, Debug, PartialEq)]
-pub enum UpperLimit {
+pub enum End {
     /// A finite end, a decimal (the ball that contains it).
     Finite(Decimal),
-    /// `+inf`: a semi-infinite range, which needs a declared [`DecaySpec`].
+    /// `+inf`.
     Infinity,
+    /// `-inf`.
+    MinusInfinity,
 }
 
-impl UpperLimit {
-    /// A decimal, or `inf` / `+inf` / `infinity` (any case).
-    pub fn parse(text: &str) -> Result<UpperLimit> {
+/// The former name of [`End`] (an upper end may now be any end).
+pub type UpperLimit = End;
+
+impl End {
+    /// A decimal, or `inf` / `+inf` / `infinity` / `-inf` / `-infinity` (any case).
+    pub fn parse(text: &str) -> Result<End> {
         let t = text.trim();
         let lower = t.to_ascii_lowercase();
         match lower.as_str() {
-            "inf" | "+inf" | "infinity" | "+infinity" => Ok(UpperLimit::Infinity),
-            "-inf" | "-infinity" => Err(Error::Integration(IntegrationError::NegativeInfinity)),
-            _ => Decimal::parse(t).map(UpperLimit::Finite).map_err(|e| match e {
+            "inf" | "+inf" | "infinity" | "+infinity" => Ok(End::Infinity),
+            "-inf" | "-infinity" => Ok(End::MinusInfinity),
+            _ => Decimal::parse(t).map(End::Finite).map_err(|e| match e {
                 Error::NotADecimal { text } => Error::Integration(IntegrationError::UpperEnd { text }),
                 other => other,
             }),
         }
+    }
+
+    fn rank(&self) -> i8 {
+        match self {
+            End::MinusInfinity => -1,
+            End::Finite(_) => 0,
+            End::Infinity => 1,
+        }
+    }
+}
+
+impl From<Decimal> for End {
+    fn from(d: Decimal) -> End {
+        End::Finite(d)
     }
 }
 
@@ -82,42 +104,118 @@ pub enum DecaySpec {
 }
 
 /// `int_a^b w(x) f(x) dx` as a certified [`Integral`], `f` the expression,
-/// `w` the optional endpoint weight; `b = inf` needs `decay`.
+/// `w` the optional endpoint weight (at a finite `a`).
+///
+/// An infinite end needs no declaration: the tail bound is derived from the expression
+/// (decay classes, `docs/quadrature.md`); a declared `decay` (for `b = inf`)
+/// is used instead when given. `-inf` ends are reflected (`int_{-inf}^b f(x) dx =
+/// int_{-b}^inf f(-x) dx`, and `int_{-inf}^inf f = int_0^inf (f(x) + f(-x)) dx`).
 ///
 /// Decimal inputs become balls that contain them, so the result contains the
-/// integral for the numbers as typed. Without a (non-trivial) weight and with a
-/// finite `b`, `a > b` is allowed; otherwise `a < b`.
-pub fn integrate_expr(
+/// integral for the numbers as typed. Reversed ranges change the sign, except with a
+/// (non-trivial) weight, which needs `a < b`.
+pub fn integrate_range(
     f: &Expr,
-    a: &Decimal,
-    b: &UpperLimit,
+    a: &End,
+    b: &End,
     weight: Option<&WeightSpec>,
     decay: Option<&DecaySpec>,
     prec: u32,
     opts: &Options,
 ) -> Result<Integral> {
     crate::error::check_prec(prec)?;
+    let canonical = f.canonical();
+    let f = &canonical;
     let ip = prec.saturating_add(INPUT_GUARD_BITS);
-    let a = a.to_ball(ip);
     let weight = weight.filter(|w| !w.is_trivial()).map(|w| w.to_weight(ip)).transpose()?;
+    if decay.is_some() && !matches!(b, End::Infinity) {
+        return Err(Error::Integration(IntegrationError::DecayWithFiniteEnd));
+    }
+    if a.rank() > b.rank() || (a.rank() != 0 && a == b) {
+        if weight.is_some() || a == b {
+            return Err(Error::Integration(IntegrationError::Endpoints { a: end_f64(a), b: end_f64(b) }));
+        }
+        let mut r = integrate_range(f, b, a, None, None, prec, opts)?;
+        r.value = r.value.neg();
+        return Ok(r);
+    }
+    if weight.is_some() && matches!(a, End::MinusInfinity) {
+        return Err(Error::Integration(IntegrationError::Endpoints { a: f64::NEG_INFINITY, b: end_f64(b) }));
+    }
     let g = |x: &_| f.eval(x);
-    match (b, decay) {
-        (UpperLimit::Finite(_), Some(_)) => Err(Error::Integration(IntegrationError::DecayWithFiniteEnd)),
-        (UpperLimit::Finite(b), None) => {
-            let b = b.to_ball(ip);
-            match &weight {
-                None => integrate(g, &a, &b, prec, opts),
-                Some(w) => integrate_weighted(g, &a, &b, w, prec, opts),
+    match (a, b) {
+        (End::Finite(a), End::Finite(b)) => match &weight {
+            None => integrate_finite(f, a.as_rational(), b.as_rational(), ip, prec, opts),
+            Some(w) => integrate_weighted(g, &a.to_ball(ip), &b.to_ball(ip), w, prec, opts),
+        },
+        (End::Finite(a), End::Infinity) => {
+            let a = a.to_ball(ip);
+            match decay {
+                Some(d) => {
+                    let decay = match d {
+                        DecaySpec::Exponential { rate, bound } => Decay::exponential(rate.to_ball(ip), bound.to_ball(ip))?,
+                        DecaySpec::Algebraic { power, bound } => Decay::algebraic(power.to_ball(ip), bound.to_ball(ip))?,
+                    };
+                    integrate_to_infinity(g, &a, weight.as_ref(), &decay, prec, opts)
+                }
+                None => to_infinity(f, &a, weight.as_ref(), prec, opts, 1.0),
             }
         }
-        (UpperLimit::Infinity, None) => Err(Error::Integration(IntegrationError::MissingDecay)),
-        (UpperLimit::Infinity, Some(d)) => {
-            let decay = match d {
-                DecaySpec::Exponential { rate, bound } => Decay::exponential(rate.to_ball(ip), bound.to_ball(ip))?,
-                DecaySpec::Algebraic { power, bound } => Decay::algebraic(power.to_ball(ip), bound.to_ball(ip))?,
-            };
-            integrate_to_infinity(g, &a, weight.as_ref(), &decay, prec, opts)
+        (End::MinusInfinity, End::Finite(b)) => {
+            let minus_b = Decimal::from_rational(rug::Rational::from(-b.as_rational()));
+            to_infinity(&f.reflected(), &minus_b.to_ball(ip), None, prec, opts, -1.0)
         }
+        (End::MinusInfinity, End::Infinity) => {
+            let both = Expr::Add(Box::new(f.clone()), Box::new(f.reflected()));
+            to_infinity(&both, &crate::Ball::zero(ip), None, prec, opts, 1.0)
+        }
+        _ => Err(Error::Integration(IntegrationError::Endpoints { a: end_f64(a), b: end_f64(b) })),
+    }
+}
+
+/// [`integrate_range`] from a finite `a`.
+pub fn integrate_expr(
+    f: &Expr,
+    a: &Decimal,
+    b: &End,
+    weight: Option<&WeightSpec>,
+    decay: Option<&DecaySpec>,
+    prec: u32,
+    opts: &Options,
+) -> Result<Integral> {
+    integrate_range(f, &End::Finite(a.clone()), b, weight, decay, prec, opts)
+}
+
+fn end_f64(e: &End) -> f64 {
+    match e {
+        End::Finite(d) => d.to_f64(),
+        End::Infinity => f64::INFINITY,
+        End::MinusInfinity => f64::NEG_INFINITY,
+    }
+}
+
+/// `int_a^inf w f` with the tail bound derived from the expression; `side` (+1 or -1)
+/// names the infinite end in errors.
+fn to_infinity(f: &Expr, a: &crate::Ball, weight: Option<&Weight>, prec: u32, opts: &Options, side: f64) -> Result<Integral> {
+    let class = tail_class(f);
+    // An algebraic tail of an oscillatory integrand: the rotated contour converges
+    // exponentially where the real axis would need a cut at 2^(goal/(p-1)).
+    if weight.is_none() && !matches!(class, TailClass::Decays { decay: Decay::Exponential { .. }, .. }) {
+        if let Some(r) = integrate_oscillatory(f, a, prec, opts) {
+            return r;
+        }
+        // an algebraic tail analytic at infinity: u = 1/x
+        if let Some(r) = integrate_inverted(f, a, prec, opts) {
+            return r;
+        }
+    }
+    match class {
+        TailClass::Decays { decay, from } => {
+            let g = |x: &_| f.eval(x);
+            integrate_to_infinity_from(g, a, weight, &decay, &from, prec, opts)
+        }
+        TailClass::Slow { power } => Err(Error::Integration(IntegrationError::NotAbsolutelyIntegrable { power, end: side })),
+        TailClass::Unknown => Err(Error::Integration(IntegrationError::MissingDecay)),
     }
 }
 

@@ -35,6 +35,16 @@
 //! when the argument touches the cut, so the certified integrator sees that the
 //! integrand is not holomorphic there instead of integrating across the cut.
 //!
+//! # Integrals without declarations
+//!
+//! [`integrate_range`] reads the tree to find what the certified integrator would
+//! otherwise ask for: a tail bound at `+-inf` (decay classes, `decay.rs`), the
+//! oscillatory factor of an integral to infinity and a class of the rest on a sector,
+//! which licenses moving the tail onto rotated rays (`oscillatory.rs`), and the
+//! singular points of a finite range with their local classes (`local.rs`,
+//! `finite.rs`). Each rule is proven in the method block of its file; the overview and
+//! the timings are in `docs/quadrature.md`.
+//!
 //! # Errors
 //!
 //! [`Expr::parse`] returns [`crate::Error::Expression`] with an [`ExprError`]
@@ -68,13 +78,17 @@
 //! its Pratt [`expression`](winnow::combinator::expression) combinator for
 //! `+ - * /` and a small grammar for signs, powers and calls (see `parse.rs`).
 
+mod decay;
 // `pub(crate)`: `crate::Error::Expression` names the parser's error by its own
 // file, a leaf of the parser (no import cycle through `crate::Error`).
 pub(crate) mod error;
 mod eval;
+mod finite;
 mod function;
 mod integrate;
 mod limits;
+mod local;
+mod oscillatory;
 mod parse;
 mod tree;
 
@@ -85,8 +99,8 @@ use std::str::FromStr;
 
 pub use error::ExprError;
 pub use eval::ExprValue;
-pub use integrate::{integrate_expr, shortfall, significant_imaginary, DecaySpec, UpperLimit, WeightSpec};
 pub use function::Function;
+pub use integrate::{integrate_expr, integrate_range, shortfall, significant_imaginary, DecaySpec, End, UpperLimit, WeightSpec};
 pub use limits::{MAX_BESSEL_ORDER, MAX_DEPTH, MAX_LEN};
 pub use tree::Expr;
 

@@ -390,7 +390,7 @@ mod integrals {
 
     fn run(f: &str, a: &str, b: &str, w: Option<&WeightSpec>, decay: Option<&DecaySpec>, prec: u32) -> crate::quad::certified::Integral {
         let b = UpperLimit::parse(b).unwrap();
-        match integrate_expr(&p(f), &d(a), &b, w, decay, prec, &Options::new()) {
+        match integrate_range(&p(f), &End::parse(a).unwrap(), &b, w, decay, prec, &Options::new()) {
             Ok(r) => r,
             Err(e) => panic!("{f} over [{a}, {b:?}]: {e}"),
         }
@@ -432,21 +432,22 @@ mod integrals {
 
     #[test]
     fn bad_requests_are_errors() {
-        let e = |b: &str, decay: Option<&DecaySpec>| {
-            integrate_expr(&p("exp(-x)"), &d("0"), &UpperLimit::parse(b).unwrap(), None, decay, 64, &Options::new())
+        let e = |f: &str, b: &str, decay: Option<&DecaySpec>| {
+            integrate_range(&p(f), &End::parse("1").unwrap(), &End::parse(b).unwrap(), None, decay, 64, &Options::new())
         };
         use crate::error::IntegrationError as I;
-        assert!(matches!(e("inf", None), Err(crate::Error::Integration(I::MissingDecay))));
+        assert!(matches!(e("exp(exp(x))", "inf", None), Err(crate::Error::Integration(I::MissingDecay))));
+        assert!(matches!(e("1/x", "inf", None), Err(crate::Error::Integration(I::NotAbsolutelyIntegrable { .. }))));
         let decay = DecaySpec::Exponential { rate: d("1"), bound: d("1") };
-        assert!(matches!(e("1", Some(&decay)), Err(crate::Error::Integration(I::DecayWithFiniteEnd))));
-        assert!(matches!(UpperLimit::parse("-inf"), Err(crate::Error::Integration(I::NegativeInfinity))));
+        assert!(matches!(e("exp(-x)", "2", Some(&decay)), Err(crate::Error::Integration(I::DecayWithFiniteEnd))));
+        assert_eq!(UpperLimit::parse("-inf").unwrap(), End::MinusInfinity);
         match UpperLimit::parse("x") {
             Err(crate::Error::Integration(I::UpperEnd { text })) => assert_eq!(text, "x"),
             other => panic!("{other:?}"),
         }
         assert_eq!(UpperLimit::parse(" +Infinity ").unwrap(), UpperLimit::Infinity);
         let w = WeightSpec { alpha: Some(d("-1")), ..WeightSpec::default() };
-        let r = integrate_expr(&p("1"), &d("0"), &UpperLimit::parse("1").unwrap(), Some(&w), None, 64, &Options::new());
+        let r = integrate_range(&p("1"), &End::parse("0").unwrap(), &UpperLimit::parse("1").unwrap(), Some(&w), None, 64, &Options::new());
         assert!(matches!(r, Err(crate::Error::Integration(_))));
     }
 }

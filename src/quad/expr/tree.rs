@@ -168,3 +168,47 @@ fn write_decimal(f: &mut fmt::Formatter<'_>, q: &Rational) -> fmt::Result {
     }
     Ok(())
 }
+
+impl Expr {
+    /// The same function in a spelling that costs the certified integrator no more
+    /// than any other (issue 36, item 5), bottom-up: `1/cosh(u)^k` and `cosh(u)^-k` are
+    /// `sech(u)^k` (`sech` is enclosed tightly on wide boxes, `1/cosh` is not),
+    /// `exp(a) exp(b)` is `exp(a + b)` (one enclosure instead of a product of two), and
+    /// `a*a` is `a^2` (a square, not a product of two independent balls). Each rewrite
+    /// is an identity wherever either side is defined, so the integral is the same.
+    pub fn canonical(&self) -> Expr {
+        let b = |e: &Expr| Box::new(e.canonical());
+        let e = match self {
+            Expr::X | Expr::Pi | Expr::Number(_) => return self.clone(),
+            Expr::Neg(a) => Expr::Neg(b(a)),
+            Expr::Add(x, y) => Expr::Add(b(x), b(y)),
+            Expr::Sub(x, y) => Expr::Sub(b(x), b(y)),
+            Expr::Mul(x, y) => Expr::Mul(b(x), b(y)),
+            Expr::Div(x, y) => Expr::Div(b(x), b(y)),
+            Expr::PowInt(a, n) => Expr::PowInt(b(a), *n),
+            Expr::Pow(x, y) => Expr::Pow(b(x), b(y)),
+            Expr::Call(f, a) => Expr::Call(*f, b(a)),
+            Expr::BesselJ(n, a) => Expr::BesselJ(*n, b(a)),
+        };
+        match e {
+            Expr::Div(num, den) => match *den {
+                Expr::Call(Function::Cosh, u) => Expr::Mul(num, Box::new(Expr::Call(Function::Sech, u))),
+                Expr::PowInt(base, k) if k > 0 => match *base {
+                    Expr::Call(Function::Cosh, u) => Expr::Mul(num, Box::new(Expr::PowInt(Box::new(Expr::Call(Function::Sech, u)), k))),
+                    other => Expr::Div(num, Box::new(Expr::PowInt(Box::new(other), k))),
+                },
+                other => Expr::Div(num, Box::new(other)),
+            },
+            Expr::PowInt(base, k) if k < 0 => match *base {
+                Expr::Call(Function::Cosh, u) => Expr::PowInt(Box::new(Expr::Call(Function::Sech, u)), -k),
+                other => Expr::PowInt(Box::new(other), k),
+            },
+            Expr::Mul(x, y) => match (*x, *y) {
+                (Expr::Call(Function::Exp, p), Expr::Call(Function::Exp, q)) => Expr::Call(Function::Exp, Box::new(Expr::Add(p, q))),
+                (x, y) if x == y => Expr::PowInt(Box::new(x), 2),
+                (x, y) => Expr::Mul(Box::new(x), Box::new(y)),
+            },
+            other => other,
+        }
+    }
+}

@@ -1,0 +1,84 @@
+#!/usr/bin/env python3
+"""Golden values for finite integrals with singular points found from the expression
+(issue 40): removable singularities, algebraic and logarithmic endpoint singularities,
+with no declared weight.
+
+Usage:  python3 reference/generate_finite_singular.py
+
+Writes reference/data/integrals_singular.csv: id, description, expression, a, b,
+value.  Each value is its closed form (or a fast convergent series) at mp.dps =
+OUT_DIGITS + 20 and OUT_DIGITS + 60, kept only when the two agree to OUT_DIGITS + 5
+digits, then cross-checked against mpmath.quad (tanh-sinh) at CHECK_DPS digits, an
+estimate that only guards against a mistyped closed form.  Byte-identical between
+runs (mpmath pinned in requirements.txt).
+"""
+
+import csv
+import os
+import sys
+
+import mpmath
+from mpmath import mp, mpf
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+OUT = os.path.join(HERE, "data", "integrals_singular.csv")
+OUT_DIGITS = 400
+CHECK_DPS = 30
+
+INTEGRALS = [
+    ("sinc_sym", "int_-1^1 sin(x)/x dx = 2 Si(1)", "sin(x)/x", "-1", "1",
+     lambda: 2 * mpmath.si(1), lambda: mpmath.quad(lambda x: mpmath.sinc(x), [-1, 0, 1])),
+    ("expm1_over_x", "int_0^1 (exp(x)-1)/x dx = Ei(1) - gamma", "(exp(x)-1)/x", "0", "1",
+     lambda: mpmath.ei(1) - mp.euler, lambda: mpmath.quad(lambda x: mpmath.expm1(x) / x, [0, 1])),
+    ("log", "int_0^1 log(x) dx = -1", "log(x)", "0", "1",
+     lambda: mpf(-1), lambda: mpmath.quad(mpmath.log, [0, 1])),
+    ("x_pow_x", "int_0^1 x^x dx = sum_n (-1)^(n+1) n^-n", "x^x", "0", "1",
+     lambda: mpmath.nsum(lambda n: (-1) ** (n + 1) * n ** (-n), [1, mpmath.inf]),
+     lambda: mpmath.quad(lambda x: x ** x, [0, 1])),
+    ("rsqrt", "int_0^1 x^(-1/2) dx = 2", "x^(-1/2)", "0", "1",
+     lambda: mpf(2), lambda: mpmath.quad(lambda x: 1 / mpmath.sqrt(x), [0, 1])),
+    ("sqrt", "int_0^1 sqrt(x) dx = 2/3", "sqrt(x)", "0", "1",
+     lambda: mpf(2) / 3, lambda: mpmath.quad(mpmath.sqrt, [0, 1])),
+    ("log_log1m", "int_0^1 log(x) log(1-x) dx = 2 - pi^2/6", "log(x)*log(1-x)", "0", "1",
+     lambda: 2 - mp.pi ** 2 / 6, lambda: mpmath.quad(lambda x: mpmath.log(x) * mpmath.log(1 - x), [0, 1])),
+    ("rsqrt_cos", "int_0^1 x^(-1/2) cos(x) dx = sqrt(2 pi) C(sqrt(2/pi))", "x^(-1/2)*cos(x)", "0", "1",
+     lambda: mpmath.sqrt(2 * mp.pi) * mpmath.fresnelc(mpmath.sqrt(2 / mp.pi)),
+     lambda: mpmath.quad(lambda x: mpmath.cos(x) / mpmath.sqrt(x), [0, 1])),
+    ("atan_recip", "int_0^1 atan(1/x) dx = pi/4 + log(2)/2", "atan(1/x)", "0", "1",
+     lambda: mp.pi / 4 + mpmath.log(2) / 2, lambda: mpmath.quad(lambda x: mpmath.atan(1 / x), [0, 1])),
+    ("rsqrt_both", "int_0^1 x^(-1/2) (1-x)^(-1/2) dx = pi", "x^(-1/2)*(1-x)^(-1/2)", "0", "1",
+     lambda: +mp.pi, lambda: mpmath.quad(lambda x: 1 / mpmath.sqrt(x * (1 - x)), [0, 0.5, 1])),
+    ("sinc_mid", "int_0^1 sin(x-1/2)/(x-1/2) dx = 2 Si(1/2) (removable point inside)", "sin(x-0.5)/(x-0.5)", "0", "1",
+     lambda: 2 * mpmath.si(mpf(1) / 2), lambda: mpmath.quad(lambda x: mpmath.sinc(x - mpf(1) / 2), [0, 0.5, 1])),
+]
+
+
+def closed(form):
+    with mp.workdps(OUT_DIGITS + 20):
+        v1 = form()
+    with mp.workdps(OUT_DIGITS + 60):
+        v2 = form()
+        if abs(v1 - v2) > abs(v2) * mpf(10) ** -(OUT_DIGITS + 5):
+            raise SystemExit("closed form unstable")
+    with mp.workdps(OUT_DIGITS + 20):
+        return mpmath.nstr(v2, OUT_DIGITS, strip_zeros=False)
+
+
+def main():
+    rows = []
+    for ident, desc, expr, a, b, form, check in INTEGRALS:
+        value = closed(form)
+        with mp.workdps(CHECK_DPS):
+            est = check()
+            if abs(est - mpf(value)) > abs(mpf(value)) * mpf(10) ** -10:
+                sys.exit(f"{ident}: closed form {value[:30]} disagrees with the estimate {est}")
+        rows.append((ident, desc, expr, a, b, value))
+    with open(OUT, "w", newline="") as fh:
+        w = csv.writer(fh, lineterminator="\n")
+        w.writerow(["id", "description", "expression", "a", "b", "value"])
+        w.writerows(rows)
+    print(f"wrote {len(rows)} rows to {OUT}")
+
+
+if __name__ == "__main__":
+    main()
