@@ -360,7 +360,7 @@ mod tests {
         assert!(WavyProfile::weierstrass(0.4, 2.0, 0, 2.0, 0.5).is_err());
         assert!(WavyProfile::weierstrass(0.4, 2.0, 3, 2.0, f64::NAN).is_err());
         // the finest wave leaves the wavelength range: named
-        let e = WavyProfile::weierstrass(0.4, 1e-5, 5, 10.0, 0.5).unwrap_err();
+        let e = WavyProfile::weierstrass(0.4, 1e-5, 5, 100.0, 0.5).unwrap_err();
         assert!(matches!(e, Error::Profile(ProfileError::Wave { wave: 2, field: WaveField::Wavelength, .. })), "{e:?}");
     }
 
