@@ -80,7 +80,7 @@ pub use params::{Params, ABAR_MAX, ABAR_RANGE, ALPHA_MAX, ALPHA_RANGE, BETA_RANG
 pub use solve::{MAX_STRIP, M_REL_TOL};
 pub use state::ContactSize;
 pub use strip::{adhesive_approach_fn, adhesive_gap_fn, hertz_gap_fn, StripEnd};
-pub use validity::{Validity, GAP_REL_TOL, TRACTION_TOL};
+pub use validity::{Validity, GAP_REL_TOL, RESCAN_MARGIN, SAMPLES_PER_WAVELENGTH, TRACTION_TOL};
 /// Brent's method lives in [`crate::roots`]; re-exported here, its former path.
 pub use crate::roots::brent;
 
