@@ -136,8 +136,8 @@ pub fn mdmt_strip_end(params: Params) -> Result<f64> {
         lo = if lo > 1e-300 { lo * 0.5 } else { 0.0 };
         flo = f(lo);
     }
-    let beta_min = waves.iter().map(|w| w.beta()).fold(f64::INFINITY, f64::min);
-    let beta_max = waves.iter().map(|w| w.beta()).fold(0.0, f64::max);
+    let beta_min = params.profile.scan_wavelength();
+    let beta_max = params.profile.coarsest_wavelength().unwrap_or(if beta_min.is_finite() { beta_min } else { 0.0 });
     let cylinder_root = (2.0 / lambda).sqrt();
     let step = if beta_min.is_finite() { beta_min / 16.0 } else { cylinder_root / 16.0 };
     // one wave: the crest after c_lo plus a step, f >= 0 there, up to rounding; any

@@ -218,6 +218,12 @@ impl WavyProfile {
         self.active_waves().map(|w| w.beta).reduce(f64::min)
     }
 
+    /// The wavelength the model's scans resolve: the finest of the waves with an
+    /// amplitude, or without one the finest of all the waves (infinite without a wave).
+    pub fn scan_wavelength(&self) -> f64 {
+        self.finest_wavelength().unwrap_or_else(|| self.waves().iter().map(|w| w.beta).fold(f64::INFINITY, f64::min))
+    }
+
     /// The longest wavelength of a wave with a nonzero amplitude (`None` when smooth).
     pub fn coarsest_wavelength(&self) -> Option<f64> {
         self.active_waves().map(|w| w.beta).reduce(f64::max)

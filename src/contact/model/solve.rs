@@ -49,9 +49,10 @@ impl ContactSize {
     pub fn solve_strip(&self) -> Result<StripEnd> {
         let a = self.abar;
         let f = |z: f64| self.residual_z(z);
-        // the shortest wavelength of all the waves (amplitude 0 included, as the
-        // one-wave model did): the scan resolves the finest wave
-        let beta = self.params.profile.waves().iter().map(|w| w.beta()).fold(f64::INFINITY, f64::min);
+        // the shortest wavelength of the waves with an amplitude (a wave of amplitude 0
+        // changes nothing); a profile without one keeps its waves' shortest wavelength
+        // (the one-wave smooth case Params::new(lambda, 0, beta) scans as before)
+        let beta = self.params.profile.scan_wavelength();
         let max_step = (beta / 16.0).min(0.25).max(1e-6);
         let eval = |s: f64| -> Result<f64> {
             let v = f(s / a);
