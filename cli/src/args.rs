@@ -171,7 +171,7 @@ pub struct Roughness {
     /// One wave of the profile, `AMPLITUDE,WAVELENGTH` (normalised alpha_j, beta_j, or
     /// metres with --units si); repeat for a profile of many waves
     /// (`--wave 0.35,9/8 --wave 0.18,3/8`). Replaces --alpha/--beta.
-    #[arg(long = "wave", value_name = "A,B", value_parser = wave_pair, allow_negative_numbers = true)]
+    #[arg(long = "wave", value_name = "A,B", value_parser = wave_pair, allow_hyphen_values = true)]
     pub wave: Vec<(f64, f64)>,
     /// A table of harmonics: CSV lines `amplitude,wavelength` (normalised, or metres
     /// with --units si; `#` comments and a header line allowed). Replaces --alpha/--beta.
