@@ -27,6 +27,10 @@ pub const SAMPLES_PER_WAVELENGTH: f64 = 16.0;
 /// of the samples' spread of the best sample.
 pub const RESCAN_MARGIN: f64 = 0.1;
 
+/// The rescan refines this many sampled local extrema, those whose parabolic vertex
+/// (through the sample and its neighbours) is the most extreme.
+const RESCAN_REFINE: usize = 3;
+
 /// Most samples of one rescan (a contact of `1e4` finest wavelengths is sampled at
 /// this many points instead).
 const RESCAN_MAX_SAMPLES: usize = 1 << 16;
@@ -78,8 +82,7 @@ impl ContactSize {
     ///
     /// Both searches then scan again at [`SAMPLES_PER_WAVELENGTH`] samples per finest
     /// wavelength `beta_min` wherever that is finer than the first sampling, and
-    /// refine every sampled local extremum that comes within [`RESCAN_MARGIN`] of the
-    /// best sample: the traction's and the gap's features are as narrow as the
+    /// refine the sampled local extrema near the best (`rescan_extremum`): the traction's and the gap's features are as narrow as the
     /// finest wave (two waves `(0.354, 1.125) + (0.177, 0.375)` at lambda = 3,
     /// abar = 2.2112: an interior traction peak of 1.0035 at x = 1.691 lay between
     /// the first search's 48 samples, which reported 0.9998 at the edge; the solver
@@ -121,10 +124,11 @@ impl ContactSize {
 }
 
 /// The rescan of [`ContactSize::validity_at`]: `f` on `[lo, hi]` at spacing `h` (when
-/// that is finer than [`refine_extremum`]'s), every sampled local extremum within
-/// [`RESCAN_MARGIN`] of the samples' spread of the best refined by golden-section
-/// search between its neighbours; the most extreme, or `None` when the first
-/// search's sampling was as fine.
+/// that is finer than [`refine_extremum`]'s); of the sampled local extrema within
+/// [`RESCAN_MARGIN`] of the samples' spread of the best, the [`RESCAN_REFINE`] whose
+/// parabolic vertex is the most extreme are refined by golden-section search between
+/// their neighbours; the most extreme result, or `None` when the first search's
+/// sampling was as fine.
 fn rescan_extremum<F: Fn(f64) -> f64>(f: F, lo: f64, hi: f64, h: f64, minimize: bool) -> Option<(f64, f64)> {
     let width = hi - lo;
     if !(width > 0.0) || !(h > 0.0) || width / h <= VALIDITY_SAMPLES as f64 {
@@ -140,14 +144,31 @@ fn rescan_extremum<F: Fn(f64) -> f64>(f: F, lo: f64, hi: f64, h: f64, minimize: 
         return None;
     }
     let cutoff = vmin + RESCAN_MARGIN * (vmax - vmin);
+    // the sampled local extrema near the best, ranked by the vertex of the parabola
+    // through each and its neighbours; the RESCAN_REFINE best are refined
+    let mut candidates: Vec<(f64, usize)> = (0..=n)
+        .filter(|&i| {
+            let v = values[i];
+            let left = if i > 0 { values[i - 1] } else { f64::INFINITY };
+            let right = if i < n { values[i + 1] } else { f64::INFINITY };
+            v <= cutoff && v <= left && v <= right
+        })
+        .map(|i| {
+            let v = values[i];
+            let vertex = if i > 0 && i < n {
+                let (l, r) = (values[i - 1], values[i + 1]);
+                let curv = l - 2.0 * v + r;
+                if curv > 0.0 { v - (r - l) * (r - l) / (8.0 * curv) } else { v }
+            } else {
+                v
+            };
+            (vertex, i)
+        })
+        .collect();
+    candidates.sort_by(|a, b| a.0.total_cmp(&b.0));
     let mut best: Option<(f64, f64)> = None;
-    for i in 0..=n {
+    for &(_, i) in candidates.iter().take(RESCAN_REFINE) {
         let v = values[i];
-        let left = if i > 0 { values[i - 1] } else { f64::INFINITY };
-        let right = if i < n { values[i + 1] } else { f64::INFINITY };
-        if v > cutoff || v > left || v > right {
-            continue;
-        }
         let x = lo + step * i as f64;
         let (a, b) = ((x - step).max(lo), (x + step).min(hi));
         let (xr, vr) = match golden_section_min(|x| Ok::<f64, ()>(g(x)), a, b, 1e-12, 60) {
