@@ -96,13 +96,14 @@ impl ContactSize {
         let gap = |t: f64| self.strip_gap(strip, t);
         let (gt, gv) = refine_extremum(gap, 1e-6, 1.0, true);
         // the strip in t: a width a z in x
-        let (gt, gv) = match spacing.and_then(|h| rescan_extremum(gap, 1e-6, 1.0, h / (a * z), true)) {
+        let (gt, gv) = match spacing.and_then(|h| rescan_extremum(gap, gap, 1e-6, 1.0, h / (a * z), true)) {
             Some((t, v)) if v < gv => (t, v),
             _ => (gt, gv),
         };
         let trac = |x: f64| self.traction_at(strip, x);
         let (tx, tv) = refine_extremum(trac, 0.0, a * (1.0 - 1e-9), false);
-        let (tx, tv) = match spacing.and_then(|h| rescan_extremum(trac, 0.0, a * (1.0 - 1e-9), h, false)) {
+        let trac_fast = |x: f64| self.traction_fast_at(strip, x);
+        let (tx, tv) = match spacing.and_then(|h| rescan_extremum(trac_fast, trac, 0.0, a * (1.0 - 1e-9), h, false)) {
             Some((x, v)) if v > tv => (x, v),
             _ => (tx, tv),
         };
@@ -123,13 +124,14 @@ impl ContactSize {
     }
 }
 
-/// The rescan of [`ContactSize::validity_at`]: `f` on `[lo, hi]` at spacing `h` (when
+/// The rescan of [`ContactSize::validity_at`]: `sample` (a cheaper approximation of `f`
+/// that only ranks the candidates) on `[lo, hi]` at spacing `h` (when
 /// that is finer than [`refine_extremum`]'s); of the sampled local extrema within
 /// [`RESCAN_MARGIN`] of the samples' spread of the best, the [`RESCAN_REFINE`] whose
 /// parabolic vertex is the most extreme are refined by golden-section search between
-/// their neighbours; the most extreme result, or `None` when the first search's
+/// their neighbours in `f`; the most extreme result (values of `f`), or `None` when the first search's
 /// sampling was as fine.
-fn rescan_extremum<F: Fn(f64) -> f64>(f: F, lo: f64, hi: f64, h: f64, minimize: bool) -> Option<(f64, f64)> {
+fn rescan_extremum<S: Fn(f64) -> f64, F: Fn(f64) -> f64>(sample: S, f: F, lo: f64, hi: f64, h: f64, minimize: bool) -> Option<(f64, f64)> {
     let width = hi - lo;
     if !(width > 0.0) || !(h > 0.0) || width / h <= VALIDITY_SAMPLES as f64 {
         return None;
@@ -138,7 +140,7 @@ fn rescan_extremum<F: Fn(f64) -> f64>(f: F, lo: f64, hi: f64, h: f64, minimize: 
     let step = width / n as f64;
     let sign = if minimize { 1.0 } else { -1.0 };
     let g = |x: f64| sign * f(x);
-    let values: Vec<f64> = (0..=n).map(|i| g(lo + step * i as f64)).collect();
+    let values: Vec<f64> = (0..=n).map(|i| sign * sample(lo + step * i as f64)).collect();
     let (vmin, vmax) = values.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
     if !(vmin.is_finite() && vmax.is_finite()) {
         return None;
@@ -168,8 +170,8 @@ fn rescan_extremum<F: Fn(f64) -> f64>(f: F, lo: f64, hi: f64, h: f64, minimize: 
     candidates.sort_by(|a, b| a.0.total_cmp(&b.0));
     let mut best: Option<(f64, f64)> = None;
     for &(_, i) in candidates.iter().take(RESCAN_REFINE) {
-        let v = values[i];
         let x = lo + step * i as f64;
+        let v = g(x);
         let (a, b) = ((x - step).max(lo), (x + step).min(hi));
         let (xr, vr) = match golden_section_min(|x| Ok::<f64, ()>(g(x)), a, b, 1e-12, 60) {
             Ok((xr, vr)) if vr < v => (xr, vr),

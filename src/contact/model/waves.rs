@@ -91,6 +91,15 @@ impl WaveTerms {
             .fold(0.0, |s, w| s + 2.0 * PI * w.wave.alpha() / (w.wave.beta() * a) * w.bessel.traction_integral(c))
     }
 
+    /// [`Self::traction`] from the waves' f64 traction sums
+    /// ([`WaveBessel::traction_integral_fast`]), for candidate scans.
+    pub(crate) fn traction_fast(&self, c: f64) -> f64 {
+        let a = self.abar;
+        self.waves
+            .iter()
+            .fold(0.0, |s, w| s + 2.0 * PI * w.wave.alpha() / (w.wave.beta() * a) * w.bessel.traction_integral_fast(c))
+    }
+
     /// Rounding allowance of [`Self::gap`]: `sum_j 1e-13 alpha_j (1 + D_j)`, about 100
     /// times each wave's measured error.
     pub(crate) fn gap_allowance(&self) -> f64 {
