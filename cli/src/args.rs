@@ -344,17 +344,28 @@ pub fn check_profile_params(lambdas: &[f64], profile: &WavyProfile) -> Result<()
 }
 
 /// The profile for titles and reports: `α = 0.353553, β = 1.125` for one wave,
-/// `2 waves (α, β) = (0.35, 1.125) + (0.18, 0.375)` otherwise (at most eight listed).
+/// `2 waves (α, β) = (0.3536, 1.125) + (0.1768, 0.375)` otherwise (four significant
+/// digits, at most six waves listed, so that a title fits its picture).
 pub fn profile_title(profile: &WavyProfile) -> String {
     match profile.waves() {
         [] => "smooth cylinder".into(),
         [w] => format!("α = {}, β = {}", short(w.alpha()), short(w.beta())),
         ws => {
-            let shown: Vec<String> = ws.iter().take(8).map(|w| format!("({}, {})", short(w.alpha()), short(w.beta()))).collect();
-            let more = if ws.len() > 8 { format!(" + {} more", ws.len() - 8) } else { String::new() };
+            let shown: Vec<String> = ws.iter().take(6).map(|w| format!("({}, {})", sig4(w.alpha()), sig4(w.beta()))).collect();
+            let more = if ws.len() > 6 { format!(" + {} more", ws.len() - 6) } else { String::new() };
             format!("{} waves (α, β) = {}{more}", ws.len(), shown.join(" + "))
         }
     }
+}
+
+/// `x` to four significant digits, trimmed (`0.3536`, `1.125`, `0.25`).
+pub fn sig4(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return short(x);
+    }
+    let digits = (3 - x.abs().log10().floor() as i32).max(0) as usize;
+    let s = format!("{x:.digits$}");
+    if s.contains('.') { s.trim_end_matches('0').trim_end_matches('.').to_string() } else { s }
 }
 
 /// The profile in ASCII for the terminal report: `alpha = 0.353553, beta = 1.125` for

@@ -436,12 +436,13 @@ fn load_area_title(profile: &WavyProfile) -> String {
             chi(w.alpha(), w.beta())
         ),
         ws => {
-            let chis: Vec<String> = ws.iter().take(8).map(|w| chi(w.alpha(), w.beta())).collect();
-            format!(
-                "Rough Maugis line contact: load-area response, {} (√(β_j/α_j²) = {})",
-                args::profile_title(profile),
-                chis.join(", ")
-            )
+            let chis: Vec<String> = ws.iter().take(6).map(|w| chi(w.alpha(), w.beta())).collect();
+            let johnson = if chis.windows(2).all(|p| p[0] == p[1]) {
+                format!("√(β/α²) = {} for each wave", chis[0])
+            } else {
+                format!("√(β_j/α_j²) = {}", chis.join(", "))
+            };
+            format!("Load-area response, {} ({johnson})", args::profile_title(profile))
         }
     }
 }
@@ -627,7 +628,11 @@ pub fn load_approach_svg(runs: &[Run], profile: &WavyProfile, window: Window) ->
     {
         let root = SVGBackend::with_string(&mut svg, (1400 + crate::plot::LEGEND_WIDTH, 950)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_err)?;
-        let title = format!("Load-approach response, {} (approach from a datum at infinity, log term removed)", args::profile_title(profile));
+        let title = if profile.len() == 1 {
+            format!("Load-approach response, {} (approach from a datum at infinity, log term removed)", args::profile_title(profile))
+        } else {
+            format!("Load-approach response, {} (datum at infinity)", args::profile_title(profile))
+        };
         let mut chart = xy_chart(&root, title, (x0 - dx, x1 + dx), (ymin, ymax), ("approach Δ̄", "load Lbar"))?;
         let mut legend = Legend::new(LEGEND_FONT);
         for (i, r) in runs.iter().enumerate() {

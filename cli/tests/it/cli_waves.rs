@@ -9,6 +9,8 @@ use std::process::{Command, Output};
 
 use serde_json::Value;
 
+use crate::render;
+
 fn maugis(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_maugis")).args(args).output().expect("spawn maugis")
 }
@@ -185,4 +187,26 @@ fn simulate_runs_the_profile_of_many_waves_and_a_table_without_a_model() {
     let o = maugis(&[&sim[..], &["--wave", "0.35,1.125", "--wave", "0.18,0.375", "--periodic"]].concat());
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("periodic domain takes one sinusoid"));
+}
+
+/// The load-area plots of a two-wave and a 4-scale Weierstrass profile (the figures
+/// of docs/model.md at 150 points): rendered, every legend readable and every
+/// coloured line explained, the title naming the waves.
+#[test]
+fn the_plots_of_many_waves_read() {
+    for (tag, waves) in [
+        ("two", &["--wave", "2*sqrt(2)/8,9/8", "--wave", "sqrt(2)/8,3/8"][..]),
+        ("weierstrass", &["--alpha", "2*sqrt(2)/8", "--beta", "9/8", "--weierstrass", "4,2,0.5"]),
+    ] {
+        let out = Scratch::new(&format!("plot-{tag}"));
+        let o = maugis(&[&["curve", "--lambda", "1/2", "--lambda", "3", "--lambda", "6", "--points", "150", "--out", out.s()][..], waves].concat());
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let report = render::check_svg(&out.0.join("load-area.svg"));
+        for label in ["λ = 0.5", "λ = 3", "λ = 6"] {
+            assert!(report.entries().any(|e| e.label.starts_with(label)), "{tag}: no legend entry {label}");
+        }
+        let svg = std::fs::read_to_string(out.0.join("load-area.svg")).unwrap();
+        assert!(svg.contains(if tag == "two" { "2 waves (α, β)" } else { "4 waves (α, β)" }), "{tag}: title");
+        render::check_svg(&out.0.join("load-approach.svg"));
+    }
 }
