@@ -51,7 +51,7 @@ pub enum Error {
         what: String,
     },
     /// An integrand expression that does not parse ([`crate::quad::expr`]).
-    Expression(crate::quad::expr::ExprError),
+    Expression(crate::quad::expr::error::ExprError),
     /// A certified integral that cannot be done as asked ([`crate::quad::certified`]).
     Integration(IntegrationError),
     /// A real argument outside its allowed interval (NaN included).
@@ -181,6 +181,9 @@ pub enum Error {
         /// What failed.
         what: String,
     },
+    /// An internal invariant failed, with the numbers that show how ([`Invariant`]).
+    /// This is a bug; please report it.
+    Invariant(Invariant),
     /// A lower (denominator) parameter of a hypergeometric function at a
     /// non-positive integer that the series reaches (a pole), or a parameter ball
     /// that contains one.
@@ -368,6 +371,7 @@ impl fmt::Display for Error {
                 write!(f, "{function} has no f64 path with a proven bound; use the certified (MP) path")
             }
             Error::Internal { what } => write!(f, "internal error (please report): {what}"),
+            Error::Invariant(i) => write!(f, "internal error (please report): {i}"),
             Error::ParameterPole { function, arg, pole, lower, upper } => {
                 if lower == upper {
                     write!(
@@ -443,7 +447,7 @@ impl Error {
     /// An internal routine called outside the arguments it covers: the chooser
     /// guarantees them, so reaching this is a bug ([`Error::Internal`]).
     pub(crate) fn precondition(what: &'static str) -> Error {
-        Error::Internal { what: format!("precondition violated: {what}") }
+        Error::Invariant(Invariant::Precondition { what })
     }
 
     /// Whether the error says that an argument lies outside the function's domain
@@ -876,5 +880,106 @@ pub fn check_working_prec(wp: u32) -> Result<()> {
         Err(Error::Precision { requested: wp as u64 })
     } else {
         Ok(())
+    }
+}
+
+/// The expression parser's own error, taken into the crate's at the edge
+/// ([`Expr::parse`](crate::quad::expr::Expr::parse), the registry). It is
+/// defined in `quad/expr/error.rs`, which depends on nothing that depends on this
+/// file, so the dependency points one way.
+impl From<crate::quad::expr::error::ExprError> for Error {
+    fn from(e: crate::quad::expr::error::ExprError) -> Error {
+        Error::Expression(e)
+    }
+}
+
+/// An internal invariant that failed ([`Error::Invariant`]): each variant names
+/// the routine's own quantities, so a report carries what is needed to reproduce
+/// it. None of these is reachable from a valid call; all are bugs.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum Invariant {
+    /// An internal routine was called outside the arguments it covers.
+    Precondition {
+        /// The violated condition.
+        what: &'static str,
+    },
+    /// A ball routine that needs an exact (zero-radius) argument got a wide one.
+    InexactArgument {
+        /// The routine.
+        function: &'static str,
+    },
+    /// The f64 Newton iteration for a Gauss-Legendre node did not converge.
+    GaussLegendreNewton {
+        /// Degree of the rule.
+        degree: usize,
+        /// Index of the node.
+        node: usize,
+    },
+    /// A certified Gauss-Legendre node does not lie inside `(0, 1)`.
+    GaussLegendreNodeOutside {
+        /// Degree of the rule.
+        degree: usize,
+        /// Index of the node.
+        node: usize,
+    },
+    /// Two certified Gauss-Legendre nodes overlap (`node` and `node - 1`).
+    GaussLegendreNodesOverlap {
+        /// Degree of the rule.
+        degree: usize,
+        /// Index of the second node.
+        node: usize,
+    },
+    /// No sign change of `P_n` could enclose a root to the target accuracy.
+    LegendreRootNotCertified {
+        /// Degree of the polynomial.
+        degree: usize,
+        /// Target radius, as bits (`2^-target_bits`).
+        target_bits: u32,
+    },
+    /// The model's strip residual is not finite at a point of the root scan.
+    StripResidualNotFinite {
+        /// `m - 1` at that point.
+        m_minus_1: f64,
+    },
+    /// The root of the strip equation came out at `m - 1 <= 0`.
+    StripRootNotPositive {
+        /// The root found.
+        m_minus_1: f64,
+    },
+    /// A jump target's bracket holds a contact size whose state cannot be computed.
+    JumpTargetNotComputable {
+        /// Lower end of the bracket (abar).
+        lo: f64,
+        /// Upper end of the bracket (abar).
+        hi: f64,
+    },
+}
+
+impl fmt::Display for Invariant {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Invariant::Precondition { what } => write!(f, "precondition violated: {what}"),
+            Invariant::InexactArgument { function } => write!(f, "{function} needs an exact argument"),
+            Invariant::GaussLegendreNewton { degree, node } => {
+                write!(f, "Gauss-Legendre Newton iteration failed (n = {degree}, i = {node})")
+            }
+            Invariant::GaussLegendreNodeOutside { degree, node } => {
+                write!(f, "Gauss-Legendre node {node} of degree {degree} left (0, 1)")
+            }
+            Invariant::GaussLegendreNodesOverlap { degree, node } => {
+                write!(f, "Gauss-Legendre nodes {node} and {} of degree {degree} overlap", node - 1)
+            }
+            Invariant::LegendreRootNotCertified { degree, target_bits } => {
+                write!(f, "could not certify a root of P_{degree} to {target_bits} bits")
+            }
+            Invariant::StripResidualNotFinite { m_minus_1 } => {
+                write!(f, "strip residual not finite at m - 1 = {m_minus_1}")
+            }
+            Invariant::StripRootNotPositive { m_minus_1 } => write!(f, "strip root m - 1 = {m_minus_1:?} is not > 0"),
+            Invariant::JumpTargetNotComputable { lo, hi } => {
+                write!(f, "jump target: state not computable in [{lo}, {hi}]")
+            }
+        }
     }
 }

@@ -23,7 +23,7 @@ use rug::Float;
 use std::cmp::Ordering;
 
 use super::{binary_power, elementary, fixed, is_nonpositive_integer, rounded, rounding_error, Ball, Mag};
-use crate::error::{Error, Result};
+use crate::error::{Error, Invariant, Result};
 
 impl Ball {
     /// `sqrt(self)`; an error if the ball reaches below zero.
@@ -156,7 +156,7 @@ impl Ball {
     /// Requires an exact point, or returns an error naming the function.
     fn exact_point(&self, what: &'static str) -> Result<()> {
         if !self.is_exact() {
-            return Err(Error::Internal { what: format!("{what} needs an exact argument") });
+            return Err(Error::Invariant(Invariant::InexactArgument { function: what }));
         }
         Ok(())
     }

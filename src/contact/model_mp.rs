@@ -550,7 +550,7 @@ pub fn load_mp(params: Params, abar: f64, m: &Ball, prec: u32) -> Result<Ball> {
 fn model_balls(b: &[Ball]) -> Result<ModelBalls> {
     match b {
         [lambda, alpha, beta, abar] => ModelBalls::new(lambda.clone(), alpha.clone(), beta.clone(), abar.clone()),
-        _ => Err(Error::Internal { what: format!("the model takes 4 inputs, got {}", b.len()) }),
+        _ => Err(Error::Arity { function: "the model", expected: 4, got: b.len() }),
     }
 }
 

@@ -70,7 +70,7 @@
 use crate::contact::curve_state::CurvePoint;
 use crate::contact::model::{ContactSize, Params};
 use crate::roots::{brent, golden_section_min};
-use crate::error::{Error, Interval, Result};
+use crate::error::{Error, Interval, Invariant, Result};
 
 /// Which variable the machine controls.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -283,7 +283,7 @@ fn refine_crossing(pts: &[CurvePoint], params: Params, control: Driver, lo: f64,
     let f = |a: f64| load_and_approach(params, a).map(|la| control.value(la) - level).unwrap_or(f64::NAN);
     let (flo, fhi) = (f(lo), f(hi));
     if !(flo.is_finite() && fhi.is_finite()) {
-        return Err(Error::Internal { what: format!("jump target: state not computable in [{lo}, {hi}]") });
+        return Err(Error::Invariant(Invariant::JumpTargetNotComputable { lo, hi }));
     }
     let a = if flo <= 0.0 && fhi >= 0.0 {
         brent(f, lo, hi, flo, fhi)?

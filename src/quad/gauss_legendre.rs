@@ -40,7 +40,7 @@ use std::collections::HashMap;
 use std::f64::consts::PI;
 use std::sync::{Arc, Mutex, OnceLock};
 
-use crate::error::{finite, Error, Result};
+use crate::error::{finite, Error, Invariant, Result};
 
 /// Largest order accepted. Rule generation is `O(n^2)` (about 10 ms at the cap).
 pub const MAX_ORDER: usize = 2000;
@@ -168,7 +168,7 @@ fn positive_node(n: usize, i: usize, rec: &BonnetCoefficients) -> Result<(f64, f
         }
     }
     if !converged || !theta.is_finite() {
-        return Err(Error::Internal { what: format!("Gauss-Legendre Newton iteration failed (n = {n}, i = {i})") });
+        return Err(Error::Invariant(Invariant::GaussLegendreNewton { degree: n, node: i }));
     }
     let (s, x) = theta.sin_cos();
     let (p, pm1) = rec.eval(x);

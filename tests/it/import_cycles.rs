@@ -11,8 +11,11 @@
 //!
 //! A path resolves to the file of the longest module prefix that exists as a
 //! file: a reference to an item of a module (`crate::ball::Ball`) is a reference
-//! to that module's file (`src/ball.rs`), also when the item is re-exported
-//! there from elsewhere. Inline modules (`mod tests { .. }`) belong to their
+//! to that module's file (`src/ball.rs`). An item a module re-exports (`pub use`,
+//! `pub(crate) use`) resolves to where it comes from, through any chain of
+//! re-exports: `crate::Error` is a reference to `src/error.rs`, not to `lib.rs`
+//! (without this the cycle `src/error.rs -> src/quad/expr/error.rs -> .. ->
+//! src/error.rs` of issue 38 went unseen). Inline modules (`mod tests { .. }`) belong to their
 //! file, and `super::` inside them steps out of them first. References from a
 //! module to its own descendants (a `mod.rs` declaring its children, re-exporting
 //! or dispatching to them) are not edges; references from a child to its parent
@@ -246,21 +249,44 @@ fn file_graph(files: &[(String, Vec<String>, String)]) -> Graph {
             .map(|(f, m, _)| (m.clone(), f.clone()))
             .collect(),
     };
+    // `pub use` re-exports: (module, name) -> the path it names
+    let mut reexports: BTreeMap<(Vec<String>, String), Vec<String>> = BTreeMap::new();
+    for (_, module, text) in files {
+        for path in pub_uses(&tokens(text)) {
+            if let (Some(abs), Some(name)) = (krate.absolute(&path, module), path.last()) {
+                reexports.insert((module.clone(), name.clone()), abs);
+            }
+        }
+    }
+    // the longest prefix that is a file module (the root always is)
+    let file_module = |abs: &[String]| {
+        (0..=abs.len())
+            .rev()
+            .map(|k| abs[..k].to_vec())
+            .find(|m| krate.modules.contains_key(m))
+    };
     let mut graph = Graph::new();
     for (file, module, text) in files {
         let edges = graph.entry(file.clone()).or_default();
         for (path, cur, line) in references(&tokens(text), module) {
-            let Some(abs) = krate.absolute(&path, &cur) else {
+            let Some(mut abs) = krate.absolute(&path, &cur) else {
                 continue;
             };
-            // the longest prefix that is a file module (the root always is)
-            let target_mod = (0..=abs.len())
-                .rev()
-                .map(|k| abs[..k].to_vec())
-                .find(|m| krate.modules.contains_key(m));
-            let Some(target_mod) = target_mod else {
+            let Some(mut target_mod) = file_module(&abs) else {
                 continue;
             };
+            // an item re-exported by its module is a reference to where it is
+            // defined (a chain of re-exports followed to its end)
+            for _ in 0..8 {
+                let Some(to) = abs.get(target_mod.len()).and_then(|name| reexports.get(&(target_mod.clone(), name.clone()))) else {
+                    break;
+                };
+                abs = to.iter().chain(&abs[target_mod.len() + 1..]).cloned().collect();
+                match file_module(&abs) {
+                    Some(m) => target_mod = m,
+                    None => break,
+                }
+            }
             // a module referring to itself or to its own descendants is not an edge
             if target_mod.starts_with(module) {
                 continue;
@@ -406,6 +432,36 @@ fn references(toks: &[Tok], file_module: &[String]) -> Vec<(Vec<String>, Vec<Str
                 continue;
             }
             _ => {}
+        }
+        i += 1;
+    }
+    out
+}
+
+/// The paths of a file's `pub use` and `pub(..) use` items (outside inline modules'
+/// own scopes: those are rare and would only add edges to their parents).
+fn pub_uses(toks: &[Tok]) -> Vec<Vec<String>> {
+    let t = |k: usize| toks.get(k).map(|t| t.text.as_str()).unwrap_or("");
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < toks.len() {
+        if t(i) == "pub" {
+            let mut j = i + 1;
+            if t(j) == "(" {
+                while j < toks.len() && t(j) != ")" {
+                    j += 1;
+                }
+                j += 1;
+            }
+            if t(j) == "use" {
+                j += 1;
+                if t(j) == "::" {
+                    j += 1;
+                }
+                use_tree(toks, &mut j, Vec::new(), &mut out);
+            }
+            i = j.max(i + 1);
+            continue;
         }
         i += 1;
     }
@@ -618,4 +674,19 @@ fn checker_finds_a_cycle_and_ignores_parent_to_child() {
     files[2].2 += "\nfn k() { crate::b::g() }";
     let graph = file_graph(&files);
     assert_eq!(cycles(&graph), [["a/c.rs".to_string(), "b.rs".to_string()]]);
+}
+
+/// Re-exports are followed: `crate::B`, re-exported by the root from `b`, is a
+/// reference to `b.rs`, so `a -> b -> a` is a cycle although `a` names only the root.
+#[test]
+fn checker_follows_reexports() {
+    let files = vec![
+        ("lib.rs".to_string(), vec![], "pub mod a; pub mod b; pub use b::B;".to_string()),
+        ("a.rs".to_string(), vec!["a".to_string()], "pub struct A(pub crate::B);".to_string()),
+        ("b.rs".to_string(), vec!["b".to_string()], "pub struct B; pub fn f(_: crate::a::A) {}".to_string()),
+    ];
+    let graph = file_graph(&files);
+    assert_eq!(graph["a.rs"].keys().cloned().collect::<Vec<_>>(), ["b.rs"]);
+    assert!(graph["lib.rs"].is_empty());
+    assert_eq!(cycles(&graph), [["a.rs".to_string(), "b.rs".to_string()]]);
 }

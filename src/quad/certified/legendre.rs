@@ -34,7 +34,7 @@ use rug::ops::AssignRound;
 use rug::{Assign, Float};
 
 use crate::ball::{Ball, Mag};
-use crate::error::{Error, Result};
+use crate::error::{Error, Invariant, Result};
 
 /// A Gauss-Legendre rule on `[-1, 1]`: the non-negative nodes (in decreasing
 /// order) and their weights; the negative nodes mirror them.
@@ -194,11 +194,11 @@ fn compute_rule(n: usize, prec: u32) -> Result<Rule> {
         // Disjoint and ordered (largest first), all inside (0, 1).
         let (lo, hi) = (node.lower(), node.upper());
         if hi >= 1 || (!exact_zero && lo <= 0) {
-            return Err(Error::Internal { what: format!("Gauss-Legendre node {k} of degree {n} left (0, 1)") });
+            return Err(Error::Invariant(Invariant::GaussLegendreNodeOutside { degree: n, node: k }));
         }
         if let Some(pl) = &prev_low {
             if hi >= *pl {
-                return Err(Error::Internal { what: format!("Gauss-Legendre nodes {k} and {} of degree {n} overlap", k - 1) });
+                return Err(Error::Invariant(Invariant::GaussLegendreNodesOverlap { degree: n, node: k }));
             }
         }
         prev_low = Some(lo);
@@ -233,7 +233,7 @@ fn certify_root(n: usize, x: &Float, ext: u32, target: u32) -> Result<Ball> {
         }
         delta_exp += 8;
     }
-    Err(Error::Internal { what: format!("could not certify a root of P_{n} to {target} bits") })
+    Err(Error::Invariant(Invariant::LegendreRootNotCertified { degree: n, target_bits: target }))
 }
 
 #[cfg(test)]

@@ -2,8 +2,10 @@
 
 use std::fmt;
 
-use super::tree::Function;
-use super::{MAX_BESSEL_ORDER, MAX_DEPTH, MAX_LEN};
+// Only the two leaf files of the parser: the crate's `Error` holds an `ExprError`,
+// so nothing this file uses may depend on `Error` (no import cycle).
+use super::function::Function;
+use super::limits::{MAX_BESSEL_ORDER, MAX_DEPTH, MAX_LEN};
 
 /// Why an expression was rejected ([`crate::Error::Expression`]).
 ///
@@ -137,9 +139,3 @@ impl fmt::Display for ExprError {
 }
 
 impl std::error::Error for ExprError {}
-
-impl From<ExprError> for crate::Error {
-    fn from(e: ExprError) -> crate::Error {
-        crate::Error::Expression(e)
-    }
-}

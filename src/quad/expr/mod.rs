@@ -68,9 +68,13 @@
 //! its Pratt [`expression`](winnow::combinator::expression) combinator for
 //! `+ - * /` and a small grammar for signs, powers and calls (see `parse.rs`).
 
-mod error;
+// `pub(crate)`: `crate::Error::Expression` names the parser's error by its own
+// file, a leaf of the parser (no import cycle through `crate::Error`).
+pub(crate) mod error;
 mod eval;
+mod function;
 mod integrate;
+mod limits;
 mod parse;
 mod tree;
 
@@ -82,16 +86,9 @@ use std::str::FromStr;
 pub use error::ExprError;
 pub use eval::ExprValue;
 pub use integrate::{integrate_expr, shortfall, significant_imaginary, DecaySpec, UpperLimit, WeightSpec};
-pub use tree::{Expr, Function};
-
-/// Longest expression accepted, in characters.
-pub const MAX_LEN: usize = 4096;
-
-/// Deepest nesting of parentheses, calls and exponents accepted.
-pub const MAX_DEPTH: usize = 100;
-
-/// Largest `|n|` accepted in `besselj(n, x)`.
-pub const MAX_BESSEL_ORDER: u64 = 10_000;
+pub use function::Function;
+pub use limits::{MAX_BESSEL_ORDER, MAX_DEPTH, MAX_LEN};
+pub use tree::Expr;
 
 impl Expr {
     /// Parses an integrand in `x` (see the module docs for the language).
