@@ -5,7 +5,7 @@
 
 use super::state::ContactSize;
 use super::strip::StripEnd;
-use crate::error::{Error, Result};
+use crate::error::{Error, Invariant, Result};
 use crate::roots::{brent, first_crossing, BRENT_REL_TOL};
 
 /// Largest strip width `c - a` (in `l_h`) the root scan explores.
@@ -59,12 +59,12 @@ impl ContactSize {
             if v.is_finite() {
                 Ok(v)
             } else {
-                Err(Error::Internal { what: format!("strip residual not finite at m - 1 = {}", s / a) })
+                Err(Error::Invariant(Invariant::StripResidualNotFinite { m_minus_1: s / a }))
             }
         };
         let done = |z: Result<f64>| -> Result<StripEnd> {
             let z = z?;
-            StripEnd::from_m_minus_1(z).map_err(|_| Error::Internal { what: format!("strip root m - 1 = {z:?} is not > 0") })
+            StripEnd::from_m_minus_1(z).map_err(|_| Error::Invariant(Invariant::StripRootNotPositive { m_minus_1: z }))
         };
         // The scan starts EDGE_OCTAVES octaves below the first step and doubles up to
         // it: next to the edge F rises like a square root and can cross zero and fall

@@ -31,9 +31,10 @@ pub const RESCAN_MARGIN: f64 = 0.1;
 /// (through the sample and its neighbours) is the most extreme.
 const RESCAN_REFINE: usize = 3;
 
-/// Most samples of one rescan (a contact of `1e4` finest wavelengths is sampled at
-/// this many points instead).
-const RESCAN_MAX_SAMPLES: usize = 1 << 16;
+/// Most samples of one rescan: 256 finest wavelengths at 16 samples each (a contact
+/// of more wavelengths is sampled more coarsely; each sample costs a sum over the waves'
+/// Bessel terms, so the rescan's work stays bounded however small `beta_min` is).
+const RESCAN_MAX_SAMPLES: usize = 4096;
 
 /// Validity diagnostics of a state.
 #[derive(Debug, Clone, Copy, PartialEq)]
