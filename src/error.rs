@@ -118,6 +118,9 @@ pub enum Error {
     },
     /// A regime-map grid or shard that cannot be run or merged ([`crate::contact::sweep`]).
     Sweep(SweepError),
+    /// A profile that cannot be built: a bad wave, too many waves, a bad harmonics
+    /// table ([`crate::contact::profile`]).
+    Profile(ProfileError),
     /// A ball argument that reaches outside its allowed interval: the function is
     /// not defined (or not supported) over the whole ball. A decimal input whose
     /// ball straddles an edge is retried tighter by
@@ -322,6 +325,7 @@ impl fmt::Display for Error {
             Error::Expression(e) => write!(f, "{e}"),
             Error::Integration(e) => write!(f, "{e}"),
             Error::Sweep(e) => write!(f, "{e}"),
+            Error::Profile(e) => write!(f, "{e}"),
             Error::NotADecimal { text } => {
                 write!(f, "{text:?} is not a decimal number (expected e.g. 2.5, -0.125, 3.8317e-2)")
             }
@@ -464,6 +468,107 @@ impl Error {
                 | Error::ContactEdgeInBall { .. }
                 | Error::RootNotCertified { input_balls: true, .. }
         )
+    }
+}
+
+/// Which field of a wave ([`ProfileError::Wave`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum WaveField {
+    /// The amplitude `alpha_j`.
+    Amplitude,
+    /// The wavelength `beta_j`.
+    Wavelength,
+}
+
+impl fmt::Display for WaveField {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            WaveField::Amplitude => "amplitude",
+            WaveField::Wavelength => "wavelength",
+        })
+    }
+}
+
+/// What can be wrong with a profile of many waves ([`crate::contact::profile`]).
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum ProfileError {
+    /// Wave `wave` (1-based) has a `field` outside `allowed` (NaN and infinities included).
+    Wave {
+        /// Which wave, counting from 1 in the order given.
+        wave: usize,
+        /// Which field.
+        field: WaveField,
+        /// The value given.
+        value: f64,
+        /// The values allowed.
+        allowed: Interval,
+    },
+    /// More waves than a profile carries.
+    TooManyWaves {
+        /// How many were given (0 for a Weierstrass profile of no scale).
+        count: usize,
+        /// The most allowed.
+        max: usize,
+    },
+    /// A Weierstrass parameter (`gamma` or `H`) outside its range.
+    Weierstrass {
+        /// `"gamma"` or `"H"`.
+        arg: &'static str,
+        /// The value given.
+        value: f64,
+        /// The values allowed.
+        allowed: Interval,
+    },
+    /// A line of a harmonics table that is not `amplitude,wavelength`.
+    HarmonicsLine {
+        /// The line, counting from 1.
+        line: usize,
+        /// How many comma-separated columns it has.
+        columns: usize,
+        /// The column (1 or 2) that is not a number, when there are two.
+        bad_column: Option<usize>,
+    },
+    /// A harmonics table without a single wave.
+    NoHarmonics,
+    /// Serialized parameters with neither `alpha` and `beta` (one wave) nor `waves`, or both.
+    ParamsFields,
+}
+
+impl fmt::Display for ProfileError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ProfileError::Wave { wave, field, value, allowed } => {
+                if value.is_finite() {
+                    write!(f, "wave {wave}: {field} = {value} is out of range: allowed {allowed}")
+                } else {
+                    write!(f, "wave {wave}: {field} must be a finite number (got {value}); allowed {allowed}")
+                }
+            }
+            ProfileError::TooManyWaves { count, max } => {
+                write!(f, "{count} waves: a profile carries 1 to {max} waves")
+            }
+            ProfileError::Weierstrass { arg, value, allowed } => {
+                write!(f, "Weierstrass profile: {arg} = {value} is out of range: allowed {allowed}")
+            }
+            ProfileError::HarmonicsLine { line, columns, bad_column } => match bad_column {
+                Some(c) => write!(
+                    f,
+                    "harmonics table, line {line}: column {c} is not a number (expected `amplitude,wavelength`)"
+                ),
+                None => write!(
+                    f,
+                    "harmonics table, line {line}: {columns} columns, expected 2 (`amplitude,wavelength`)"
+                ),
+            },
+            ProfileError::ParamsFields => write!(
+                f,
+                "the parameters need `lambda` with either `alpha` and `beta` (one wave) or `waves` (a list of {{alpha, beta}}), not both"
+            ),
+            ProfileError::NoHarmonics => {
+                write!(f, "the harmonics table has no wave (expected lines `amplitude,wavelength`)")
+            }
+        }
     }
 }
 

@@ -29,7 +29,8 @@ use plotters::prelude::*;
 
 use maugis::contact::curve::{Curve, CurveOptions, CurvePoint, JumpDirection, TurningKind};
 use maugis::contact::located::At;
-use maugis::contact::summary::{load_area_curves, RunSummary};
+use maugis::contact::profile::WavyProfile;
+use maugis::contact::summary::{load_area_curves_profile, RunSummary};
 use maugis::contact::limits::{appendix_e_rows, AppendixE};
 use maugis::contact::model::Params;
 
@@ -116,8 +117,8 @@ pub struct Run {
 
 /// The run's summary: the library's schema ([`RunSummary::new`]), the same
 /// object for `summary.json` and `--format json`; files name the curves' CSVs.
-fn summary(runs: &[Run], alpha: f64, beta: f64, opts: CurveOptions, with_csv: bool) -> RunSummary {
-    RunSummary::new(alpha, beta, opts, runs.iter().map(|r| &r.curve), |c| with_csv.then(|| csv_name(c.params.lambda())))
+fn summary(runs: &[Run], profile: &WavyProfile, opts: CurveOptions, with_csv: bool) -> RunSummary {
+    RunSummary::for_profile(profile, opts, runs.iter().map(|r| &r.curve), |c| with_csv.then(|| csv_name(c.params.lambda())))
 }
 
 /// The run as JSON; with `--units si` an `si` object ([`SiSummary`]) joins the
@@ -154,20 +155,23 @@ pub fn csv_name(lambda: f64) -> String {
 fn curve_csv(c: &Curve, scales: Option<&Scales>) -> Result<String, String> {
     let mut w = csv::Writer::from_writer(Vec::new());
     let err = |e: csv::Error| format!("could not format CSV: {e}");
-    let mut header = vec!["lambda", "alpha", "beta", "abar", "m", "m_minus_1", "load", "approach", "valid", "min_strip_gap", "max_traction"];
+    let (wave_names, wave_values) = args::profile_columns(c.params.profile());
+    let mut header: Vec<&str> = vec!["lambda"];
+    header.extend(wave_names.iter().map(String::as_str));
+    header.extend(["abar", "m", "m_minus_1", "load", "approach", "valid", "min_strip_gap", "max_traction"]);
     if scales.is_some() {
         header.extend(["a_m", "load_n_per_m", "approach_m"]);
     }
     w.write_record(&header).map_err(err)?;
-    let (lambda, alpha, beta) = (c.params.lambda(), c.params.alpha(), c.params.beta());
+    let lambda = c.params.lambda();
     for p in &c.points {
         let si: Vec<String> = scales
             .map(|s| vec![s.to_horizontal(p.abar).to_string(), s.to_load(p.load).to_string(), s.to_vertical(p.approach).to_string()])
             .unwrap_or_default();
-        w.write_record([
-            lambda.to_string(),
-            alpha.to_string(),
-            beta.to_string(),
+        w.write_record(
+            std::iter::once(lambda.to_string())
+                .chain(wave_values.iter().cloned())
+                .chain([
             p.abar.to_string(),
             p.m.to_string(),
             p.m_minus_1.to_string(),
@@ -176,9 +180,9 @@ fn curve_csv(c: &Curve, scales: Option<&Scales>) -> Result<String, String> {
             p.validity.valid.to_string(),
             p.validity.min_strip_gap.to_string(),
             p.validity.max_traction.to_string(),
-        ]
-        .into_iter()
-        .chain(si))
+        ])
+                .chain(si),
+        )
         .map_err(err)?;
     }
     let bytes = w.into_inner().map_err(|e| format!("could not format CSV: {e}"))?;
@@ -202,9 +206,9 @@ pub fn progress(len: u64, what: &str) -> ProgressBar {
 }
 
 /// Computes the curves (the library's [`load_area_curves`], in parallel over lambda).
-pub fn compute(lambdas: &[f64], alpha: f64, beta: f64, opts: CurveOptions) -> Result<Vec<Run>, String> {
+pub fn compute(lambdas: &[f64], profile: &WavyProfile, opts: CurveOptions) -> Result<Vec<Run>, String> {
     let pb = progress(lambdas.len() as u64, "load-area curves");
-    let curves = load_area_curves(lambdas, alpha, beta, opts, || pb.inc(1));
+    let curves = load_area_curves_profile(lambdas, profile, opts, || pb.inc(1));
     pb.finish_and_clear();
     let curves = curves.map_err(|e| match e.at {
         At::Curve { lambda } => format!("lambda = {}: {}", num(lambda), e.error),
@@ -215,10 +219,12 @@ pub fn compute(lambdas: &[f64], alpha: f64, beta: f64, opts: CurveOptions) -> Re
 
 /// Runs `maugis curve`.
 pub fn run(a: CurveArgs) -> Result<(), String> {
-    let si = a.si.resolve(&[("--lambda", !a.lambda.is_empty()), ("--alpha", a.roughness.alpha.is_some()), ("--beta", a.roughness.beta.is_some())])?;
-    let (alpha, beta) = match &si {
-        Some(r) => (r.alpha, r.beta),
-        None => a.roughness.values(),
+    let mut normalised = vec![("--lambda", !a.lambda.is_empty())];
+    normalised.extend(a.roughness.given().into_iter().filter(|(f, _)| matches!(*f, "--alpha" | "--beta")));
+    let si = a.si.resolve_with_waves(&normalised, a.roughness.wave_pairs()?.as_deref())?;
+    let profile = match &si {
+        Some(r) => r.profile,
+        None => a.roughness.profile()?,
     };
     let mut lambdas = match &si {
         Some(r) => r.lambdas.clone(),
@@ -229,8 +235,8 @@ pub fn run(a: CurveArgs) -> Result<(), String> {
     lambdas.dedup();
     // Everything is validated before any work: the parsers checked the ranges,
     // the library checks the combination, and the output directory is usable.
-    args::check_params(&lambdas, alpha, beta)?;
-    args::check_size("--amax", a.amax, alpha, beta)?;
+    args::check_profile_params(&lambdas, &profile)?;
+    args::check_profile_size("--amax", a.amax, &profile)?;
     let window = Window { amin: a.amin.unwrap_or(0.0), ymin: a.ymin, ymax: a.ymax };
     if window.amin >= a.amax {
         return Err(format!("--amin ({}) must be below --amax ({})", num(window.amin), num(a.amax)));
@@ -246,12 +252,12 @@ pub fn run(a: CurveArgs) -> Result<(), String> {
     let opts = CurveOptions { amax: a.amax, points: a.points, datum: a.datum };
 
     let t0 = Instant::now();
-    let runs = compute(&lambdas, alpha, beta, opts)?;
+    let runs = compute(&lambdas, &profile, opts)?;
     let elapsed = t0.elapsed();
     let mdmt_lambda = lambdas.first().copied().unwrap_or(0.1);
 
     if a.format == CurveFormat::Json {
-        let out = summary(&runs, alpha, beta, opts, false);
+        let out = summary(&runs, &profile, opts, false);
         let text = with_si(&out, si.as_ref(), false)?;
         return print_stdout(&format!("{text}\n"));
     }
@@ -261,20 +267,19 @@ pub fn run(a: CurveArgs) -> Result<(), String> {
     for r in &runs {
         files.push(OutFile::text(csv_name(r.lambda), curve_csv(&r.curve, si.as_ref().map(|s| &s.scales))?));
     }
-    let summary = summary(&runs, alpha, beta, opts, true);
+    let summary = summary(&runs, &profile, opts, true);
     let mut text = with_si(&summary, si.as_ref(), true)?;
     text.push('\n');
     files.push(OutFile::text("summary.json", text));
-    files.push(OutFile::text("load-area.svg", load_area_svg(&runs, alpha, beta, a.amax, mdmt_lambda, window)?));
-    files.push(OutFile::text("load-approach.svg", load_approach_svg(&runs, alpha, beta, window)?));
+    files.push(OutFile::text("load-area.svg", load_area_svg(&runs, &profile, a.amax, mdmt_lambda, window)?));
+    files.push(OutFile::text("load-approach.svg", load_approach_svg(&runs, &profile, window)?));
     let written = write_atomically(&a.out, &files)?;
 
     let mut report = String::new();
     let _ = writeln!(
         report,
-        "maugis curve: alpha = {}, beta = {}, abar in (0, {}], {} points per curve, {} curve(s) in {:.1} s",
-        short(alpha),
-        short(beta),
+        "maugis curve: {}, abar in (0, {}], {} points per curve, {} curve(s) in {:.1} s",
+        args::profile_report(&profile),
         short(a.amax),
         a.points,
         runs.len(),
@@ -418,11 +423,35 @@ pub(crate) fn invalid_entry(legend: &mut Legend, label: &str) {
 /// A limit line: points, style, dash, gap, legend label.
 type LimitLine<'a> = (&'a [(f64, f64)], ShapeStyle, u32, u32, Option<String>);
 
+/// The load-area plot's title: the profile and its Johnson parameter(s)
+/// `chi_j = sqrt(beta_j/alpha_j^2)` (the paper's `sqrt(2 beta/(pi alpha)^2)` up to
+/// `sqrt(2)/pi`).
+fn load_area_title(profile: &WavyProfile) -> String {
+    let chi = |alpha: f64, beta: f64| if alpha > 0.0 { short((beta / (alpha * alpha)).sqrt()) } else { "∞".into() };
+    match profile.waves() {
+        [w] => format!(
+            "Wavy Maugis line contact: load-area response, α = {}, β = {} (Johnson parameter √(β/α²) = {})",
+            short(w.alpha()),
+            short(w.beta()),
+            chi(w.alpha(), w.beta())
+        ),
+        ws => {
+            let chis: Vec<String> = ws.iter().take(6).map(|w| chi(w.alpha(), w.beta())).collect();
+            let johnson = if chis.windows(2).all(|p| p[0] == p[1]) {
+                format!("√(β/α²) = {} for each wave", chis[0])
+            } else {
+                format!("√(β_j/α_j²) = {}", chis.join(", "))
+            };
+            format!("Load-area response, {} ({johnson})", args::profile_title(profile))
+        }
+    }
+}
+
 /// The load-area plot (SVG text).
-pub fn load_area_svg(runs: &[Run], alpha: f64, beta: f64, amax: f64, mdmt_lambda: f64, window: Window) -> Result<String, String> {
+pub fn load_area_svg(runs: &[Run], profile: &WavyProfile, amax: f64, mdmt_lambda: f64, window: Window) -> Result<String, String> {
     // Limit curves on a fine grid.
     let n = 800usize;
-    let mdmt_params = Params::new(mdmt_lambda, alpha, beta).map_err(|e| e.to_string())?;
+    let mdmt_params = Params::with_profile(mdmt_lambda, *profile).map_err(|e| e.to_string())?;
     let limits = appendix_e_rows(mdmt_params, amax, n).map_err(|e| crate::limits::limits_error(&e))?;
     let line = |f: fn(&AppendixE) -> f64| limits.iter().map(|(x, l)| (*x, f(l))).collect::<Vec<_>>();
     let (jkr, jkr_lo, jkr_hi) = (line(|l| l.jkr), line(|l| l.jkr_envelope.0), line(|l| l.jkr_envelope.1));
@@ -449,12 +478,7 @@ pub fn load_area_svg(runs: &[Run], alpha: f64, beta: f64, amax: f64, mdmt_lambda
     {
         let root = SVGBackend::with_string(&mut svg, (1400 + crate::plot::LEGEND_WIDTH, 950)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_err)?;
-        let title = format!(
-            "Wavy Maugis line contact: load-area response, α = {}, β = {} (Johnson parameter √(β/α²) = {})",
-            short(alpha),
-            short(beta),
-            if alpha > 0.0 { short((beta / (alpha * alpha)).sqrt()) } else { "∞".into() }
-        );
+        let title = load_area_title(profile);
         let mut chart = xy_chart(&root, title, (window.amin, amax), (ymin, ymax), ("contact half-width abar", "load Lbar"))?;
         let mut legend = Legend::new(LEGEND_FONT);
 
@@ -585,7 +609,7 @@ pub fn load_area_svg(runs: &[Run], alpha: f64, beta: f64, amax: f64, mdmt_lambda
 
 /// The load-approach plot `Lbar(Delta-bar)` (datum at infinity): each curve,
 /// valid stretches solid, invalid ones dashed, and its pull-off.
-pub fn load_approach_svg(runs: &[Run], alpha: f64, beta: f64, window: Window) -> Result<String, String> {
+pub fn load_approach_svg(runs: &[Run], profile: &WavyProfile, window: Window) -> Result<String, String> {
     let (mut x0, mut x1, mut y0, mut y1) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
     for r in runs {
         for p in r.curve.points.iter().filter(|p| p.abar >= window.amin) {
@@ -604,7 +628,11 @@ pub fn load_approach_svg(runs: &[Run], alpha: f64, beta: f64, window: Window) ->
     {
         let root = SVGBackend::with_string(&mut svg, (1400 + crate::plot::LEGEND_WIDTH, 950)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_err)?;
-        let title = format!("Load-approach response, α = {}, β = {} (approach from a datum at infinity, log term removed)", short(alpha), short(beta));
+        let title = if profile.len() == 1 {
+            format!("Load-approach response, {} (approach from a datum at infinity, log term removed)", args::profile_title(profile))
+        } else {
+            format!("Load-approach response, {} (datum at infinity)", args::profile_title(profile))
+        };
         let mut chart = xy_chart(&root, title, (x0 - dx, x1 + dx), (ymin, ymax), ("approach Δ̄", "load Lbar"))?;
         let mut legend = Legend::new(LEGEND_FONT);
         for (i, r) in runs.iter().enumerate() {

@@ -70,6 +70,9 @@ struct LimitsJson {
 struct LimitsParams {
     alpha: f64,
     beta: f64,
+    /// Every wave, when the profile has other than exactly one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    waves: Option<maugis::contact::profile::WavyProfile>,
     lambda: f64,
     amax: f64,
     points: usize,
@@ -98,9 +101,11 @@ pub(crate) fn limits_error(e: &LocatedError) -> String {
 
 /// Runs `maugis limits`.
 pub fn run(a: LimitsArgs) -> Result<(), String> {
-    let (alpha, beta) = a.roughness.values();
-    let params = Params::new(a.lambda, alpha, beta).map_err(|e| e.to_string())?;
-    args::check_size("--amax", a.amax, alpha, beta)?;
+    let profile = a.roughness.profile()?;
+    args::check_profile_params(&[a.lambda], &profile)?;
+    let params = Params::with_profile(a.lambda, profile).map_err(|e| e.to_string())?;
+    args::check_profile_size("--amax", a.amax, &profile)?;
+    let (alpha, beta) = (params.alpha(), params.beta());
     if a.format == LimitsFormat::Files {
         check_out_dir(&a.out)?;
     }
@@ -113,7 +118,7 @@ pub fn run(a: LimitsArgs) -> Result<(), String> {
         }
         LimitsFormat::Json => {
             let out = LimitsJson {
-                params: LimitsParams { alpha, beta, lambda: a.lambda, amax: a.amax, points: n, mdmt_pull_off: pull_off },
+                params: LimitsParams { alpha, beta, waves: (profile.len() != 1).then_some(profile), lambda: a.lambda, amax: a.amax, points: n, mdmt_pull_off: pull_off },
                 rows,
             };
             let text = serde_json::to_string(&out).map_err(|e| format!("could not format JSON: {e}"))?;
@@ -122,15 +127,14 @@ pub fn run(a: LimitsArgs) -> Result<(), String> {
         LimitsFormat::Files => {
             let files = [
                 OutFile::text("limits.csv", table_csv(&rows)?),
-                OutFile::text("limits.svg", limits_svg(&rows, alpha, beta, a.lambda, a.amax)?),
+                OutFile::text("limits.svg", limits_svg(&rows, &profile, a.lambda, a.amax)?),
             ];
             let written = write_atomically(&a.out, &files)?;
             let mut report = String::new();
             let _ = writeln!(
                 report,
-                "maugis limits: alpha = {}, beta = {}, lambda = {}, abar in (0, {}], {} points; M-DMT pull-off L'_p = {:.6}",
-                short(alpha),
-                short(beta),
+                "maugis limits: {}, lambda = {}, abar in (0, {}], {} points; M-DMT pull-off L'_p = {:.6}",
+                args::profile_report(&profile),
                 short(a.lambda),
                 short(a.amax),
                 n,
@@ -149,7 +153,7 @@ pub fn run(a: LimitsArgs) -> Result<(), String> {
 type Series = (Option<String>, Vec<(f64, f64)>, ShapeStyle, u32, u32);
 
 /// The limits plot (SVG text).
-fn limits_svg(rows: &[LimitRow], alpha: f64, beta: f64, lambda: f64, amax: f64) -> Result<String, String> {
+fn limits_svg(rows: &[LimitRow], profile: &maugis::contact::profile::WavyProfile, lambda: f64, amax: f64) -> Result<String, String> {
     let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
     for r in rows {
         for v in [r.jkr, r.mdmt, r.smooth_mdmt, r.local_env_lower, r.local_env_upper] {
@@ -183,7 +187,7 @@ fn limits_svg(rows: &[LimitRow], alpha: f64, beta: f64, lambda: f64, amax: f64) 
     {
         let root = SVGBackend::with_string(&mut svg, (1300 + crate::plot::LEGEND_WIDTH, 900)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_err)?;
-        let title = format!("Appendix E limits and Eq. 17 envelope, α = {}, β = {}, λ = {l}", short(alpha), short(beta));
+        let title = format!("Appendix E limits and Eq. 17 envelope, {}, λ = {l}", args::profile_title(profile));
         let mut chart = load_area_chart(&root, title, amax, ymin, ymax)?;
         let mut legend = Legend::new(LEGEND_FONT);
         for (label, pts, st, dash, gap) in series {

@@ -91,6 +91,9 @@ struct ProfileJson {
     lambda: f64,
     alpha: f64,
     beta: f64,
+    /// Every wave, when the profile has other than exactly one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    waves: Option<maugis::contact::profile::WavyProfile>,
     abar: f64,
     m: f64,
     load: f64,
@@ -150,31 +153,34 @@ fn profile_error(e: LocatedError) -> String {
 
 /// Runs `maugis profile`.
 pub fn run(a: ProfileArgs) -> Result<(), String> {
-    let si = a.si.resolve(&[
-        ("--lambda", a.lambda.is_some()),
-        ("--alpha", a.roughness.alpha.is_some()),
-        ("--beta", a.roughness.beta.is_some()),
-        ("--abar", a.abar.is_some()),
-    ])?;
-    let (lambda, alpha, beta, abar) = match &si {
+    let si = a.si.resolve_with_waves(
+        &[
+            ("--lambda", a.lambda.is_some()),
+            ("--alpha", a.roughness.alpha.is_some()),
+            ("--beta", a.roughness.beta.is_some()),
+            ("--abar", a.abar.is_some()),
+        ],
+        a.roughness.wave_pairs()?.as_deref(),
+    )?;
+    let (lambda, profile, abar) = match &si {
         Some(r) => {
             if r.lambdas.len() != 1 {
                 return Err("profile takes one --sigma or --delta-c".into());
             }
             let hw = a.half_width.ok_or("--units si needs --half-width (the contact half-width in m)")?;
-            (r.lambdas[0], r.alpha, r.beta, r.scales.from_horizontal(hw))
+            (r.lambdas[0], r.profile, r.scales.from_horizontal(hw))
         }
         None => {
             if a.half_width.is_some() {
                 return Err("--half-width needs --units si (or give --abar)".into());
             }
-            let (alpha, beta) = a.roughness.values();
-            (a.lambda.unwrap_or(1.0), alpha, beta, a.abar.ok_or("--abar is required (the contact half-width, normalised)")?)
+            (a.lambda.unwrap_or(1.0), a.roughness.profile()?, a.abar.ok_or("--abar is required (the contact half-width, normalised)")?)
         }
     };
     let flag = if si.is_some() { "--half-width" } else { "--abar" };
-    let params = Params::new(lambda, alpha, beta).map_err(|e| e.to_string())?;
-    args::check_size(flag, abar, alpha, beta)?;
+    let params = Params::with_profile(lambda, profile).map_err(|e| e.to_string())?;
+    args::check_profile_size(flag, abar, &profile)?;
+    let (alpha, beta) = (params.alpha(), params.beta());
     if a.format == ProfileFormat::Files {
         check_out_dir(&a.out)?;
     }
@@ -201,6 +207,7 @@ pub fn run(a: ProfileArgs) -> Result<(), String> {
             lambda: lambda,
             alpha,
             beta,
+            waves: (profile.len() != 1).then_some(profile),
             abar: abar,
             m,
             load,
@@ -252,10 +259,9 @@ pub fn run(a: ProfileArgs) -> Result<(), String> {
     let mut report = String::new();
     let _ = writeln!(
         report,
-        "maugis profile: lambda = {}, alpha = {}, beta = {}, abar = {}: m = {:.6}, strip end c = {:.6}, load = {:.6}",
+        "maugis profile: lambda = {}, {}, abar = {}: m = {:.6}, strip end c = {:.6}, load = {:.6}",
         short(lambda),
-        short(alpha),
-        short(beta),
+        args::profile_report(&profile),
         short(abar),
         m,
         c,
@@ -365,7 +371,7 @@ fn panel(
 
 /// The three-panel profile plot (SVG text) of the state.
 fn profile_svg(s: &[Sample], state: &StateProfile) -> Result<String, String> {
-    let (lambda, alpha, beta) = (state.params.lambda(), state.params.alpha(), state.params.beta());
+    let lambda = state.params.lambda();
     let (abar, m, load, v) = (state.abar, state.m, state.load, &state.validity);
     let c = state.strip_end();
     let xmax = s.last().map(|p| p.xbar).unwrap_or(1.5 * c).max(1e-9);
@@ -375,11 +381,10 @@ fn profile_svg(s: &[Sample], state: &StateProfile) -> Result<String, String> {
         let root = SVGBackend::with_string(&mut svg, (1200, 1250)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_err)?;
         let title = format!(
-            "State at ā = {}, λ = {}, α = {}, β = {}: strip ratio m = {:.4}, load = {:.4}",
+            "State at ā = {}, λ = {}, {}: strip ratio m = {:.4}, load = {:.4}",
             short(abar),
             short(lambda),
-            short(alpha),
-            short(beta),
+            args::profile_title(state.params.profile()),
             m,
             load
         );

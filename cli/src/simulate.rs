@@ -37,7 +37,8 @@ use maugis_solver::profile::AdhesionLaw;
 use maugis_solver::profile_file::ProfileTable;
 use maugis_solver::run::{simulate_with, Domain, SimulationOptions, SimulationSpec, StateRecord};
 
-use crate::args::{self, short};
+use crate::args::{self, short, Roughness};
+use maugis::contact::profile::WavyProfile;
 use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
 use crate::plot::{colour, finish_load_area_chart, load_area_chart, plot_err, Legend, Mark, LEGEND_FONT, LIGHT_GREY};
 
@@ -75,12 +76,11 @@ pub struct SimulateArgs {
     /// Maugis parameter lambda > 0.
     #[arg(long, value_name = "L", value_parser = args::positive, allow_negative_numbers = true)]
     pub lambda: f64,
-    /// Normalised wave amplitude alpha >= 0.
-    #[arg(long, value_name = "A", value_parser = args::non_negative, allow_negative_numbers = true)]
-    pub alpha: f64,
-    /// Normalised wavelength beta > 0.
-    #[arg(long, value_name = "B", value_parser = args::positive, allow_negative_numbers = true)]
-    pub beta: f64,
+    /// The profile: --alpha/--beta (one wave), or --wave/--waves/--weierstrass (many
+    /// waves, the cylinder carrying them is simulated and compared with the model of
+    /// the same profile).
+    #[command(flatten)]
+    pub roughness: Roughness,
     /// Loading stops at this contact half-width.
     #[arg(long, value_name = "X", default_value = "4", value_parser = args::positive, allow_negative_numbers = true)]
     pub amax: f64,
@@ -98,8 +98,9 @@ pub struct SimulateArgs {
     pub format: SimFormat,
     /// A profile table in place of the built-in profile: CSV with the header
     /// `x,h`, in the normalised units of the built-in profile, x strictly
-    /// increasing, covering the domain. --alpha and --beta then name the model
-    /// the states are compared with (and that sizes the domain).
+    /// increasing, covering the domain. --alpha/--beta (or --wave ...) then name the
+    /// model the states are compared with (and that sizes the domain); without them
+    /// no model is drawn or compared.
     #[arg(long, value_name = "FILE.csv")]
     pub profile: Option<PathBuf>,
     /// The domain half-width X (default: sized by the model for the free
@@ -118,7 +119,7 @@ pub struct SimulateArgs {
 
 /// The solver's options from the flags: the profile table read and checked
 /// (a bad line is an error naming the file and the line).
-fn options(a: &SimulateArgs) -> Result<SimulationOptions, String> {
+fn options(a: &SimulateArgs, waves: Option<WavyProfile>, without_model: bool) -> Result<SimulationOptions, String> {
     let profile = match &a.profile {
         None => None,
         Some(path) => {
@@ -127,7 +128,7 @@ fn options(a: &SimulateArgs) -> Result<SimulationOptions, String> {
         }
     };
     let domain = if a.periodic { Domain::Periodic } else { Domain::Free };
-    Ok(SimulationOptions { profile, half_width: a.half_width, domain, law: a.law.into() })
+    Ok(SimulationOptions { profile, half_width: a.half_width, domain, law: a.law.into(), waves, without_model })
 }
 
 /// Runs the subcommand.
@@ -138,10 +139,20 @@ pub fn run(a: SimulateArgs) -> Result<(), String> {
     if !(2..=100_000).contains(&a.steps) {
         return Err(format!("--steps must lie in [2, 100000] (got {})", a.steps));
     }
-    let params = Params::new(a.lambda, a.alpha, a.beta).map_err(|e| e.to_string())?;
-    let opts = options(&a)?;
+    // A profile table without --alpha/--beta/--wave names no model: none is
+    // compared or drawn, and the smooth cylinder sizes the domain.
+    let model_given = a.roughness.alpha.is_some() || a.roughness.beta.is_some() || a.roughness.many_waves_given();
+    let without_model = a.profile.is_some() && !model_given;
+    let profile = if without_model { WavyProfile::one_wave(0.0, 1.0).map_err(|e| e.to_string())? } else { a.roughness.profile()? };
+    args::check_profile_params(&[a.lambda], &profile)?;
+    let params = Params::with_profile(a.lambda, profile).map_err(|e| e.to_string())?;
+    let (alpha, beta, waves) = match profile.waves() {
+        [w] => (w.alpha(), w.beta(), None),
+        ws => (ws.first().map_or(0.0, |w| w.alpha()), ws.first().map_or(1.0, |w| w.beta()), Some(profile)),
+    };
+    let opts = options(&a, waves, without_model)?;
     let profile_path = a.profile.clone();
-    let spec = SimulationSpec { lambda: a.lambda, alpha: a.alpha, beta: a.beta, amax: a.amax, cells: a.grid, steps_per_leg: a.steps };
+    let spec = SimulationSpec { lambda: a.lambda, alpha, beta, amax: a.amax, cells: a.grid, steps_per_leg: a.steps };
     let pb = crate::curve::progress(2 * a.steps as u64, "simulating");
     let sim = simulate_with(spec, opts, &mut |k, total| {
         pb.set_length(total as u64);
@@ -176,15 +187,14 @@ pub fn run(a: SimulateArgs) -> Result<(), String> {
             r.zone_ends_placed
         );
     }
-    let svg = overlay_svg(params, a.amax, all, a.periodic)?;
+    let svg = overlay_svg(params, a.amax, all, a.periodic, without_model)?;
     let files = [OutFile::text("simulate.csv", csv), OutFile::text("simulate.svg", svg)];
     let written = write_atomically(&a.out, &files)?;
     let mut text = format!(
-        "maugis simulate: lambda {}, alpha {}, beta {}, {} cells on [-{}, {}], {} states, dissipation W {} (load control), \
+        "maugis simulate: lambda {}, {}, {} cells on [-{}, {}], {} states, dissipation W {} (load control), \
          W_d {} (displacement control, datum {}), stiff-cycle work {}, load-controlled pull-off {}\n",
         short(a.lambda),
-        short(a.alpha),
-        short(a.beta),
+        sim_profile_report(&profile, without_model),
         a.grid,
         short(x),
         short(x),
@@ -195,17 +205,31 @@ pub fn run(a: SimulateArgs) -> Result<(), String> {
         short(c.stiff_work),
         report.pull_off.map(short).unwrap_or_else(|| "none".into())
     );
+    if without_model {
+        let _ = writeln!(text, "  no model curve: the profile table is none of the model's profiles (give --alpha/--beta or --wave to compare with one)");
+    }
     for p in written {
         let _ = writeln!(text, "  {}", p.display());
     }
     print_stdout(&text)
 }
 
+/// The profile in the report line: `alpha A, beta B` for one wave (the old wording),
+/// the waves otherwise, `profile table` without a model.
+fn sim_profile_report(profile: &WavyProfile, without_model: bool) -> String {
+    match profile.waves() {
+        _ if without_model => "profile table".into(),
+        [w] => format!("alpha {}, beta {}", short(w.alpha()), short(w.beta())),
+        _ => args::profile_report(profile),
+    }
+}
+
 /// Simulated states (loading and unloading markers) over the model curve.
-/// On the periodic domain the model (a cylinder) is not drawn.
-fn overlay_svg(params: Params, amax: f64, rows: &[StateRecord], periodic: bool) -> Result<String, String> {
+/// On the periodic domain the model (a cylinder) is not drawn, nor for a profile
+/// table that names no model (`no_model`).
+fn overlay_svg(params: Params, amax: f64, rows: &[StateRecord], periodic: bool, no_model: bool) -> Result<String, String> {
     let mut curve = load_area_curve(params, CurveOptions { amax, points: 400, ..CurveOptions::default() }).map_err(|e| e.to_string())?;
-    if periodic {
+    if periodic || no_model {
         curve.points.clear();
     }
     let loads = curve.points.iter().map(|p| p.load).chain(rows.iter().map(|r| r.load));
@@ -215,7 +239,11 @@ fn overlay_svg(params: Params, amax: f64, rows: &[StateRecord], periodic: bool) 
     {
         let root = SVGBackend::with_string(&mut svg, (1000 + crate::plot::LEGEND_WIDTH, 850)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_err)?;
-        let title = format!("simulation vs model: λ = {}, α = {}, β = {}", short(params.lambda()), short(params.alpha()), short(params.beta()));
+        let title = if no_model && !periodic {
+            format!("simulation: λ = {}, profile table (no model profile given)", short(params.lambda()))
+        } else {
+            format!("simulation vs model: λ = {}, {}", short(params.lambda()), args::profile_title(params.profile()))
+        };
         let mut chart = load_area_chart(&root, title, amax, lo - pad, hi + pad)?;
         let mut legend = Legend::new(LEGEND_FONT);
         let mut first = [true, true];

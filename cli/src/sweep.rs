@@ -316,6 +316,10 @@ fn report(s: &Sweep, written: &[PathBuf], out: &std::path::Path, secs: Option<f6
 
 /// Runs `maugis sweep`.
 pub fn run(a: SweepArgs) -> Result<(), String> {
+    if a.roughness.many_waves_given() {
+        // the grid's axes are one wave's alpha, beta or Johnson parameter
+        return Err("sweep maps one wave over (lambda, alpha | beta | chi): --wave, --waves and --weierstrass are not supported by sweep (use curve or limits for a profile of many waves)".into());
+    }
     let (axis, fixed) = match a.axis {
         Axis::Alpha => (SweepAxis::Alpha, a.roughness.values().1),
         Axis::Beta => (SweepAxis::Beta, a.roughness.values().0),

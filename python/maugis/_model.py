@@ -125,26 +125,59 @@ def _count(name, v, least=2):
     return int(v)
 
 
-def _summary(lams, alpha, beta, amax, points, datum):
-    alpha, beta, amax, datum = (
-        _real_scalar(n, v) for n, v in (("alpha", alpha), ("beta", beta), ("amax", amax), ("datum", datum))
-    )
-    text = _ext.curve_summary_json([float(v) for v in lams], alpha, beta, amax, _count("points", points), datum)
+def _roughness(alpha, beta, waves, default=True):
+    """``(alpha, beta, waves)`` for the extension: the one wave ``(alpha, beta)``
+    (the Fig. 4c wave where ``None`` and ``default``), or the list of
+    ``(amplitude, wavelength)`` pairs ``waves`` (then ``alpha`` and ``beta`` must be
+    ``None``; they become the first wave's, for the records' ``alpha``/``beta``)."""
+    if waves is None:
+        if alpha is None and default:
+            alpha = FIG4C_ALPHA
+        if beta is None and default:
+            beta = FIG4C_BETA
+        if alpha is None or beta is None:
+            raise TypeError("give alpha and beta (one wave) or waves=[(amplitude, wavelength), ...]")
+        return _real_scalar("alpha", alpha), _real_scalar("beta", beta), None
+    if alpha is not None or beta is not None:
+        raise ValueError("give waves=[(amplitude, wavelength), ...] or alpha and beta, not both")
+    if isinstance(waves, (str, bytes)):
+        raise TypeError("waves must be a sequence of (amplitude, wavelength) pairs")
+    pairs = []
+    for j, w in enumerate(waves):
+        try:
+            a, b = w
+        except (TypeError, ValueError):
+            raise TypeError(f"waves[{j}] must be a pair (amplitude, wavelength) (got {w!r})") from None
+        pairs.append((_real_scalar(f"waves[{j}] amplitude", a), _real_scalar(f"waves[{j}] wavelength", b)))
+    first = pairs[0] if pairs else (0.0, 1.0)
+    return first[0], first[1], pairs
+
+
+def _summary(lams, alpha, beta, amax, points, datum, waves=None):
+    alpha, beta, waves = _roughness(alpha, beta, waves)
+    amax, datum = (_real_scalar(n, v) for n, v in (("amax", amax), ("datum", datum)))
+    text = _ext.curve_summary_json([float(v) for v in lams], alpha, beta, amax, _count("points", points), datum, waves)
     return json.loads(text)
 
 
-def run_summary(lam, alpha=FIG4C_ALPHA, beta=FIG4C_BETA, *, amax=6.0, points=600, datum=DEFAULT_DATUM):
+def run_summary(lam, alpha=None, beta=None, *, waves=None, amax=6.0, points=600, datum=DEFAULT_DATUM):
     """The JSON object ``maugis curve --format json`` prints, as plain Python values.
 
     ``lam`` is one Maugis parameter or several (sorted and deduplicated, as the
-    command does; the smallest is ``mdmt_limit_lambda``).
+    command does; the smallest is ``mdmt_limit_lambda``). The profile is the one
+    wave ``alpha``, ``beta`` (default: the paper's Fig. 4c wave) or, with ``waves``,
+    the cylinder carrying every ``(amplitude, wavelength)`` pair of the list
+    (normalised; ``maugis curve --wave A,B --wave ...``); the summary's ``params``
+    then list them under ``waves``.
     """
     lams = sorted(set(_as_real("lam", lam).reshape(-1).tolist()))
-    return _summary(lams, alpha, beta, amax, points, datum)
+    return _summary(lams, alpha, beta, amax, points, datum, waves)
 
 
-def curve(lam, alpha=FIG4C_ALPHA, beta=FIG4C_BETA, *, amax=6.0, points=600, datum=DEFAULT_DATUM):
-    """Load-area response on ``abar_i = amax i / points``, ``i = 1..points``.
+def curve(lam, alpha=None, beta=None, *, waves=None, amax=6.0, points=600, datum=DEFAULT_DATUM):
+    """Load-area response on ``abar_i = amax i / points``, ``i = 1..points``, of the
+    one wave ``alpha``, ``beta`` (default: Fig. 4c) or of the profile ``waves`` (a list
+    of ``(amplitude, wavelength)`` pairs, as :func:`run_summary`).
 
     Returns one entry of the JSON ``curves`` list as a :class:`Record`: the grid
     ``points``, ``turning_points``, the ``jumps`` and ``loops`` met under load
@@ -153,7 +186,7 @@ def curve(lam, alpha=FIG4C_ALPHA, beta=FIG4C_BETA, *, amax=6.0, points=600, datu
     sequence: then a list of records, in the given order.
     """
     lams = _as_real("lam", lam)
-    out = [_convert(c) for c in _summary(lams.reshape(-1).tolist(), alpha, beta, amax, points, datum)["curves"]]
+    out = [_convert(c) for c in _summary(lams.reshape(-1).tolist(), alpha, beta, amax, points, datum, waves)["curves"]]
     return out[0] if lams.ndim == 0 else out
 
 
@@ -181,23 +214,26 @@ def _reshape(table, shape):
     return out
 
 
-def profile(lam, alpha, beta, abar, *, x=None, points=600):
+def profile(lam, alpha, beta, abar, *, waves=None, x=None, points=600):
     """Traction ``pbar``, displacement ``ubar``, gap ``gbar`` and surface depth ``hbar`` at one state.
+
+    The profile is the one wave ``alpha``, ``beta``, or with ``alpha = beta = None``
+    the cylinder carrying ``waves``, a list of ``(amplitude, wavelength)`` pairs
+    (``maugis profile --wave A,B --wave ...``; the record then has ``waves``).
 
     Returns the fields of ``maugis profile --format json`` as a :class:`Record`,
     with ``samples`` as a :class:`Table` of columns. ``x`` (``xbar`` positions)
     defaults to the command's grid: ``points`` values over ``[0, 1.5 m abar]``
     plus the contact edge and the strip end.
     """
-    lam, alpha, beta, abar = (
-        _real_scalar(n, v) for n, v in (("lam", lam), ("alpha", alpha), ("beta", beta), ("abar", abar))
-    )
+    alpha, beta, waves = _roughness(alpha, beta, waves, default=False)
+    lam, abar = (_real_scalar(n, v) for n, v in (("lam", lam), ("abar", abar)))
     if x is None:
         points = _count("points", points)
     else:
         x = np.ascontiguousarray(_as_real("x", x).reshape(-1))
         points = 0
-    d = _ext.profile_dict(lam, alpha, beta, abar, x, points)
+    d = _ext.profile_dict(lam, alpha, beta, abar, x, points, waves)
     samples = d.pop("samples")
     out = Record(d)
     out["samples"] = Table(samples, nrows=len(samples["xbar"]))

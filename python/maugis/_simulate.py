@@ -10,14 +10,15 @@ import os
 import numpy as np
 
 from . import _maugis as _ext
-from ._model import FIG4C_ALPHA, FIG4C_BETA, _convert, _count, _real_scalar
+from ._model import _convert, _count, _real_scalar, _roughness
 
 
 def simulate(
     lam,
-    alpha=FIG4C_ALPHA,
-    beta=FIG4C_BETA,
+    alpha=None,
+    beta=None,
     *,
+    waves=None,
     amax=4.0,
     cells=4096,
     steps=100,
@@ -40,8 +41,14 @@ def simulate(
       either the path of a CSV file (header ``x,h``, ``x`` strictly
       increasing; ``--profile``) or a pair of arrays ``(x, h)``, in the
       normalised units of the built-in profile and covering the domain.
-      ``alpha`` and ``beta`` then name the model the states are compared with
-      and that sizes the domain;
+      ``alpha`` and ``beta`` (or ``waves``) then name the model the states are
+      compared with and that sizes the domain; without them no model is
+      compared (``model_load`` stays ``None``);
+    * ``waves``: a list of ``(amplitude, wavelength)`` pairs in place of
+      ``alpha``, ``beta``: the cylinder carrying all of them is simulated and
+      compared with the model of the same profile (``--wave A,B --wave ...``;
+      free domain only); the record's ``profile`` is ``"rough_cylinder"`` and
+      ``waves`` lists them;
     * ``half_width``: the domain half-width ``X`` (``--half-width``);
     * ``periodic``: a periodic half-plane of period ``2X`` (``--periodic``);
       the built-in profile is then the wave ``alpha (1 - cos(2 pi x/beta))``
@@ -66,9 +73,12 @@ def simulate(
 
     Bad input raises ``ValueError``; a bad profile table names its line.
     """
-    lam, alpha, beta, amax = (
-        _real_scalar(n, v) for n, v in (("lam", lam), ("alpha", alpha), ("beta", beta), ("amax", amax))
-    )
+    without_model = profile is not None and alpha is None and beta is None and waves is None
+    if without_model:
+        alpha, beta = 0.0, 1.0  # the smooth cylinder sizes the domain
+    else:
+        alpha, beta, waves = _roughness(alpha, beta, waves)
+    lam, amax = (_real_scalar(n, v) for n, v in (("lam", lam), ("amax", amax)))
     path = columns = None
     if profile is not None:
         if isinstance(profile, (str, os.PathLike)):
@@ -88,6 +98,6 @@ def simulate(
         raise TypeError(f"law must be 'dugdale' or 'exp' (got {law!r})")
     text = _ext.simulate_json(
         lam, alpha, beta, amax, _count("cells", cells), _count("steps", steps),
-        path, columns, half_width, bool(periodic), law,
+        path, columns, half_width, bool(periodic), law, waves, without_model,
     )
     return _convert(json.loads(text))

@@ -26,7 +26,8 @@ use rayon::prelude::*;
 
 use maugis::contact::curve::{self, CurveOptions};
 use maugis::contact::located::At;
-use maugis::contact::summary::{load_area_curves, RunSummary};
+use maugis::contact::profile::WavyProfile;
+use maugis::contact::summary::{load_area_curves, load_area_curves_profile, RunSummary};
 use maugis::contact::sweep::{run_sweep, SweepGrid};
 use maugis::contact::model::Params;
 use maugis::contact::state_profile::{sample_state, sample_state_at, ProfileSample};
@@ -495,21 +496,50 @@ fn params(lam: f64, alpha: f64, beta: f64) -> PyResult<Params> {
     Params::new(lam, alpha, beta).map_err(lib_error)
 }
 
+/// The profile of `waves` (`(amplitude, wavelength)` pairs, normalised), checked by the
+/// library (an error names the wave and the field); `None`: the one wave `(alpha, beta)`.
+fn profile_of(alpha: f64, beta: f64, waves: Option<Vec<(f64, f64)>>) -> PyResult<WavyProfile> {
+    match waves {
+        None => {
+            // the one-wave checks and messages of Params::new
+            Params::new(1.0, alpha, beta).map_err(lib_error)?;
+            WavyProfile::one_wave(alpha, beta).map_err(lib_error)
+        }
+        Some(w) => WavyProfile::from_pairs(&w).map_err(|e| PyValueError::new_err(format!("waves: {e}"))),
+    }
+}
+
 fn to_json<T: serde::Serialize>(value: &T) -> PyResult<String> {
     serde_json::to_string(value).map_err(|e| PyValueError::new_err(format!("internal: could not format JSON: {e}")))
 }
 
 /// The run summary of `maugis curve --format json` for the given Maugis
 /// parameters (in this order; the first is the M-DMT limit's lambda), as JSON text.
+/// `waves` (`(amplitude, wavelength)` pairs) replaces `(alpha, beta)` by a profile of
+/// many waves.
 #[pyfunction]
+#[pyo3(signature = (lams, alpha, beta, amax, points, datum, waves=None))]
 #[allow(clippy::too_many_arguments)]
-fn curve_summary_json(py: Python<'_>, lams: Vec<f64>, alpha: f64, beta: f64, amax: f64, points: usize, datum: f64) -> PyResult<String> {
+fn curve_summary_json(
+    py: Python<'_>,
+    lams: Vec<f64>,
+    alpha: f64,
+    beta: f64,
+    amax: f64,
+    points: usize,
+    datum: f64,
+    waves: Option<Vec<(f64, f64)>>,
+) -> PyResult<String> {
     let opts = CurveOptions { amax, points, datum };
-    let curves = py.detach(|| load_area_curves(&lams, alpha, beta, opts, || ())).map_err(|e| match e.at {
-        At::Curve { lambda } => PyValueError::new_err(format!("lambda = {lambda:?}: {}", e.error)),
-        _ => lib_error(e.error),
-    })?;
-    let summary = RunSummary::new(alpha, beta, opts, &curves, |_| None);
+    let one_wave = waves.is_none();
+    let profile = profile_of(alpha, beta, waves)?;
+    let curves = py
+        .detach(|| if one_wave { load_area_curves(&lams, alpha, beta, opts, || ()) } else { load_area_curves_profile(&lams, &profile, opts, || ()) })
+        .map_err(|e| match e.at {
+            At::Curve { lambda } => PyValueError::new_err(format!("lambda = {lambda:?}: {}", e.error)),
+            _ => lib_error(e.error),
+        })?;
+    let summary = RunSummary::for_profile(&profile, opts, &curves, |_| None);
     to_json(&summary)
 }
 
@@ -550,7 +580,8 @@ fn states_json(
 /// (`x` None) on the library's default grid of `points` positions
 /// ([`sample_state`]): the fields of `maugis profile --format json`, samples as columns.
 #[pyfunction]
-#[pyo3(signature = (lam, alpha, beta, abar, x, points))]
+#[pyo3(signature = (lam, alpha, beta, abar, x, points, waves=None))]
+#[allow(clippy::too_many_arguments)]
 fn profile_dict<'py>(
     py: Python<'py>,
     lam: f64,
@@ -559,8 +590,10 @@ fn profile_dict<'py>(
     abar: f64,
     x: Option<PyReadonlyArray1<'py, f64>>,
     points: usize,
+    waves: Option<Vec<(f64, f64)>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let p = params(lam, alpha, beta)?;
+    let many = waves.is_some();
+    let p = if many { Params::with_profile(lam, profile_of(alpha, beta, waves)?).map_err(lib_error)? } else { params(lam, alpha, beta)? };
     let xs = x.as_ref().map(|x| slice(x, "x")).transpose()?;
     let state = py
         .detach(|| match xs {
@@ -575,8 +608,12 @@ fn profile_dict<'py>(
     let column = |f: fn(&ProfileSample) -> f64| state.samples.iter().map(f).collect::<Vec<f64>>();
     let [pbar, ubar, gbar, hbar] = [column(|s| s.pbar), column(|s| s.ubar), column(|s| s.gbar), column(|s| s.hbar)];
     let out = PyDict::new(py);
-    for (key, value) in [("lambda", lam), ("alpha", alpha), ("beta", beta), ("abar", abar), ("m", m), ("load", load)] {
+    for (key, value) in [("lambda", lam), ("alpha", p.alpha()), ("beta", p.beta()), ("abar", abar), ("m", m), ("load", load)] {
         out.set_item(key, value)?;
+    }
+    if many {
+        let pairs: Vec<(f64, f64)> = p.profile().waves().iter().map(|w| (w.alpha(), w.beta())).collect();
+        out.set_item("waves", pairs)?;
     }
     out.set_item("valid", v.valid)?;
     out.set_item("min_strip_gap", v.min_strip_gap)?;

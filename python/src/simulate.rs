@@ -41,7 +41,7 @@ fn table(path: Option<String>, columns: Option<(Vec<f64>, Vec<f64>)>) -> PyResul
 /// One loading-unloading(-reloading) cycle of the numerical solver: JSON text
 /// of the solver's `SimulationReport`.
 #[pyfunction]
-#[pyo3(signature = (lam, alpha, beta, amax, cells, steps, profile_path=None, profile_columns=None, half_width=None, periodic=false, law="dugdale"))]
+#[pyo3(signature = (lam, alpha, beta, amax, cells, steps, profile_path=None, profile_columns=None, half_width=None, periodic=false, law="dugdale", waves=None, without_model=false))]
 #[allow(clippy::too_many_arguments)]
 fn simulate_json(
     py: Python<'_>,
@@ -56,11 +56,18 @@ fn simulate_json(
     half_width: Option<f64>,
     periodic: bool,
     law: &str,
+    waves: Option<Vec<(f64, f64)>>,
+    without_model: bool,
 ) -> PyResult<String> {
     let law = AdhesionLaw::from_name(law).map_err(|e| PyValueError::new_err(format!("law: {e}")))?;
     let spec = SimulationSpec { lambda: lam, alpha, beta, amax, cells, steps_per_leg: steps };
     let profile = table(profile_path, profile_columns)?;
-    let options = SimulationOptions { profile, half_width, domain: if periodic { Domain::Periodic } else { Domain::Free }, law };
+    let waves = waves
+        .map(|w| maugis::contact::profile::WavyProfile::from_pairs(&w))
+        .transpose()
+        .map_err(|e| PyValueError::new_err(format!("waves: {e}")))?;
+    let options =
+        SimulationOptions { profile, half_width, domain: if periodic { Domain::Periodic } else { Domain::Free }, law, waves, without_model };
     let sim = py.detach(|| simulate_with(spec, options, &mut |_, _| ())).map_err(|e| PyValueError::new_err(e.to_string()))?;
     serde_json::to_string(&sim.report()).map_err(|e| PyValueError::new_err(format!("internal: could not format JSON: {e}")))
 }

@@ -19,6 +19,12 @@ pub enum SolverError {
         /// What is wrong and what to change.
         what: String,
     },
+    /// A profile of many waves on the periodic domain: its waves need not share a
+    /// period, so the periodic half-plane takes one sinusoid only.
+    PeriodicManyWaves {
+        /// How many waves the profile has.
+        waves: usize,
+    },
     /// A number is NaN or infinite.
     NonFinite {
         /// Which argument.
@@ -246,6 +252,10 @@ impl fmt::Display for SolverError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             SolverError::Domain { what } => write!(f, "{what}"),
+            SolverError::PeriodicManyWaves { waves } => write!(
+                f,
+                "the periodic domain takes one sinusoid; a profile of {waves} waves runs on the free half-plane (drop the periodic option)"
+            ),
             SolverError::NonFinite { arg, value } => write!(f, "{arg} must be a finite number (got {value})"),
             SolverError::OutOfRange { arg, value, allowed } => write!(f, "{arg} must lie in {allowed} (got {value})"),
             SolverError::CountOutOfRange { arg, value, min, max } if *max == usize::MAX => {

@@ -4,6 +4,7 @@
 use std::f64::consts::PI;
 
 use maugis::contact::model::{ALPHA_RANGE, BETA_RANGE};
+use maugis::contact::profile::WavyProfile;
 
 use crate::error::{finite, in_range, Interval, Result, SolverError};
 use crate::grid::Grid;
@@ -29,6 +30,9 @@ pub enum Profile {
         /// Wavelength `beta > 0`.
         beta: f64,
     },
+    /// The cylinder with any number of cosine waves (the library's profile,
+    /// checked there): `h(x) = x^2/2 + sum_j alpha_j (1 - cos(2 pi x/beta_j))`.
+    RoughCylinder(WavyProfile),
     /// Any profile, sampled at the cell centres of the grid it is used with.
     Sampled(Vec<f64>),
     /// A profile table (`x,h` rows, [`crate::profile_file`]), interpolated by
@@ -64,6 +68,9 @@ impl Profile {
         match self {
             Profile::WavyCylinder { alpha, beta } => 0.5 * x * x + alpha * (1.0 - (2.0 * PI * x / beta).cos()),
             Profile::Sinusoid { alpha, beta } => alpha * (1.0 - (2.0 * PI * x / beta).cos()),
+            Profile::RoughCylinder(p) => {
+                0.5 * x * x + p.waves().iter().map(|w| w.alpha() * (1.0 - (2.0 * PI * x / w.beta()).cos())).sum::<f64>()
+            }
             Profile::Table(t) => t.depth_at(x),
             Profile::Sampled(_) => {
                 let n = samples.len();
@@ -94,7 +101,9 @@ impl Profile {
                 }
                 Ok(h.clone())
             }
-            Profile::Sinusoid { .. } => Ok(grid.centres().into_iter().map(|x| self.depth_at(x, grid, &[])).collect()),
+            Profile::Sinusoid { .. } | Profile::RoughCylinder(_) => {
+                Ok(grid.centres().into_iter().map(|x| self.depth_at(x, grid, &[])).collect())
+            }
             Profile::Table(t) => {
                 t.check_covers(grid.half_width())?;
                 Ok(grid.centres().into_iter().map(|x| t.depth_at(x)).collect())

@@ -20,6 +20,8 @@ use crate::path::{
 };
 use crate::profile::{AdhesionLaw, Profile};
 use crate::profile_file::ProfileTable;
+use crate::error::SolverError;
+use maugis::contact::profile::WavyProfile;
 
 /// What to simulate.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -80,6 +82,15 @@ pub struct SimulationOptions {
     pub domain: Domain,
     /// The adhesion law at the spec's `lambda` (default Dugdale).
     pub law: AdhesionLaw,
+    /// A profile of many waves in place of the spec's one wave `(alpha, beta)`: the
+    /// built-in profile is then the cylinder carrying these waves
+    /// ([`Profile::RoughCylinder`]), and the model it is compared with is the same
+    /// profile's. Free domain only ([`SolverError::PeriodicManyWaves`]).
+    pub waves: Option<WavyProfile>,
+    /// Compare no state with the model (a profile table that is none of the model's
+    /// profiles): the `model_*` lists stay empty. The spec's `alpha`, `beta` (or
+    /// `waves`) then only size the free domain.
+    pub without_model: bool,
 }
 
 /// A simulated cycle with its setup and the model at the same half-widths.
@@ -167,11 +178,13 @@ impl Simulation {
         SimulationReport {
             law: self.options.law.name(),
             domain: self.options.domain.name(),
-            profile: match (&self.options.profile, self.options.domain) {
-                (Some(_), _) => "table",
-                (None, Domain::Free) => "wavy_cylinder",
-                (None, Domain::Periodic) => "sinusoid",
+            profile: match (&self.options.profile, self.options.domain, &self.options.waves) {
+                (Some(_), _, _) => "table",
+                (None, Domain::Free, Some(_)) => "rough_cylinder",
+                (None, Domain::Free, None) => "wavy_cylinder",
+                (None, Domain::Periodic, _) => "sinusoid",
             },
+            waves: self.options.waves,
             lambda: self.spec.lambda,
             alpha: self.spec.alpha,
             beta: self.spec.beta,
@@ -262,6 +275,10 @@ pub struct SimulationReport {
     pub alpha: f64,
     /// Wavelength.
     pub beta: f64,
+    /// Every wave, for the profile `"rough_cylinder"` (the spec's `alpha`, `beta`
+    /// then do not describe it).
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub waves: Option<WavyProfile>,
     /// Grid cells.
     pub cells: usize,
     /// Half-width of the domain.
@@ -290,7 +307,13 @@ pub fn simulate(spec: SimulationSpec, progress: &mut dyn FnMut(usize, usize)) ->
 /// Runs the simulation with `options` (a profile table, the domain).
 pub fn simulate_with(spec: SimulationSpec, options: SimulationOptions, progress: &mut dyn FnMut(usize, usize)) -> Result<Simulation> {
     crate::error::count_in_range(spec.steps_per_leg, "steps per leg", 2, 100_000)?;
-    let params = Params::new(spec.lambda, spec.alpha, spec.beta)?;
+    let params = match &options.waves {
+        None => Params::new(spec.lambda, spec.alpha, spec.beta)?,
+        Some(_) if options.domain == Domain::Periodic => {
+            return Err(SolverError::PeriodicManyWaves { waves: options.waves.map_or(0, |w| w.len()) })
+        }
+        Some(w) => Params::with_profile(spec.lambda, *w)?,
+    };
     let half_width = match (options.half_width, options.domain, &options.profile) {
         (Some(x), _, _) => crate::error::finite(x, "the domain half-width")?,
         (None, Domain::Free, _) => suggested_half_width(params, spec.amax)?,
@@ -300,7 +323,10 @@ pub fn simulate_with(spec: SimulationSpec, options: SimulationOptions, progress:
     let grid = Grid::new(spec.cells, half_width)?;
     let profile = match (&options.profile, options.domain) {
         (Some(t), _) => Profile::Table(t.clone()),
-        (None, Domain::Free) => Profile::wavy_cylinder(spec.alpha, spec.beta)?,
+        (None, Domain::Free) => match options.waves {
+            Some(w) => Profile::RoughCylinder(w),
+            None => Profile::wavy_cylinder(spec.alpha, spec.beta)?,
+        },
         (None, Domain::Periodic) => Profile::sinusoid(spec.alpha, spec.beta)?,
     };
     let adhesion = options.law.at(spec.lambda)?;
@@ -311,8 +337,8 @@ pub fn simulate_with(spec: SimulationSpec, options: SimulationOptions, progress:
     let cycle = cycle(&mut solver, CycleOptions { amax: spec.amax, steps_per_leg: spec.steps_per_leg }, progress)?;
     // The model is the wavy cylinder on a free half-plane.
     let compare = |states: &[State]| match options.domain {
-        Domain::Free => compare_with_model(params, solver.datum(), states),
-        Domain::Periodic => Vec::new(),
+        Domain::Free if !options.without_model => compare_with_model(params, solver.datum(), states),
+        _ => Vec::new(),
     };
     Ok(Simulation {
         spec,

@@ -11,6 +11,20 @@
 //! * Local envelope, Eq. 17: the smooth Maugis load at the same `lambda`
 //!   `+/- pi sqrt(alpha^2/beta) sqrt(a)`.
 //!
+//! For a profile of many waves (docs/model.md, "Many waves") each wave term becomes a
+//! sum over the waves, the same way as in the model:
+//!
+//! * the adhesionless load `pi a^2/4 + sum_j (pi^2 alpha_j a/beta_j) J1(2 pi a/beta_j)`
+//!   ([`adhesionless_load_profile`]);
+//! * the envelope half-width `sum_j pi alpha_j sqrt(a/beta_j)` ([`envelope_halfwidth_profile`]):
+//!   each wave's term is bounded by its large-argument amplitude
+//!   `(pi^2 alpha_j a/beta_j) sqrt(2/(pi D_j)) = pi alpha_j sqrt(a/beta_j)`, and the
+//!   amplitudes add (the triangle inequality; sharp only where the waves' phases align);
+//! * E.43b `1 = lambda cbar^2/2 + 2 lambda sum_j alpha_j sin^2(pi cbar/beta_j)`, whose
+//!   first root lies in `[c_lo, sqrt(2/lambda)]`, `c_lo = sqrt(2 (1 - 2 lambda sum_j alpha_j)/lambda)`
+//!   (below `c_lo` every `sin^2 <= 1` keeps `f < 0`; at `sqrt(2/lambda)` the cylinder alone
+//!   gives `f >= 0`).
+//!
 //! Tabulated: [`appendix_e`] gives E.42a/b and E.43a/d at one contact size and
 //! [`appendix_e_rows`] on the grid `abar_i = amax i/points` (what the load-area
 //! plot draws); [`LimitRow`] adds E.44 and Eq. 17, and [`limit_rows`] is the
@@ -24,6 +38,7 @@ use rayon::prelude::*;
 use crate::contact::curve::load_at;
 use crate::contact::located::{At, LocatedError};
 use crate::contact::model::Params;
+use crate::contact::profile::WavyProfile;
 use crate::roots::{brent, first_crossing};
 use crate::error::{finite, Error, Interval, Result};
 use crate::special::bessel_j::bessel_j_sequence;
@@ -34,16 +49,34 @@ fn check_abar(abar: f64) -> Result<()> {
     Ok(())
 }
 
-/// The adhesionless wavy load `pi a^2/4 + (pi^2 alpha a/beta) J1(2 pi a/beta)`.
-pub fn adhesionless_load(alpha: f64, beta: f64, abar: f64) -> f64 {
+/// One wave's adhesionless load term `(pi^2 alpha a/beta) J1(2 pi a/beta)`.
+fn wave_load_term(alpha: f64, beta: f64, abar: f64) -> f64 {
     let d = 2.0 * PI * abar / beta;
     let j1 = bessel_j_sequence(1, d).get(1).copied().unwrap_or(0.0);
-    PI * abar * abar / 4.0 + PI * PI * alpha * abar / beta * j1
+    PI * PI * alpha * abar / beta * j1
+}
+
+/// The adhesionless wavy load `pi a^2/4 + (pi^2 alpha a/beta) J1(2 pi a/beta)`.
+pub fn adhesionless_load(alpha: f64, beta: f64, abar: f64) -> f64 {
+    PI * abar * abar / 4.0 + wave_load_term(alpha, beta, abar)
+}
+
+/// The adhesionless load of a profile of many waves,
+/// `pi a^2/4 + sum_j (pi^2 alpha_j a/beta_j) J1(2 pi a/beta_j)` (one wave: [`adhesionless_load`]).
+pub fn adhesionless_load_profile(profile: &WavyProfile, abar: f64) -> f64 {
+    let waves = profile.waves().iter().fold(0.0, |s, w| s + wave_load_term(w.alpha(), w.beta(), abar));
+    PI * abar * abar / 4.0 + waves
 }
 
 /// The envelope half-width `pi sqrt(alpha^2/beta) sqrt(a)`.
 pub fn envelope_halfwidth(alpha: f64, beta: f64, abar: f64) -> f64 {
     PI * (alpha * alpha / beta).sqrt() * abar.sqrt()
+}
+
+/// The envelope half-width of a profile of many waves, `sum_j pi sqrt(alpha_j^2/beta_j) sqrt(a)`
+/// (one wave: [`envelope_halfwidth`]).
+pub fn envelope_halfwidth_profile(profile: &WavyProfile, abar: f64) -> f64 {
+    profile.waves().iter().fold(0.0, |s, w| s + envelope_halfwidth(w.alpha(), w.beta(), abar))
 }
 
 /// E.42a.
@@ -55,25 +88,47 @@ pub fn jkr_load(alpha: f64, beta: f64, abar: f64) -> Result<f64> {
 /// E.42b: `(lower, upper)`.
 pub fn jkr_envelope(alpha: f64, beta: f64, abar: f64) -> Result<(f64, f64)> {
     check_abar(abar)?;
+    Ok(jkr_envelope_of(envelope_halfwidth(alpha, beta, abar), abar))
+}
+
+/// E.42b around the smooth JKR load with half-width `h`.
+fn jkr_envelope_of(h: f64, abar: f64) -> (f64, f64) {
     let base = PI * abar * abar / 4.0 - (2.0 * PI * abar).sqrt();
-    let h = envelope_halfwidth(alpha, beta, abar);
-    Ok((base - h, base + h))
+    (base - h, base + h)
+}
+
+/// E.42a for a profile of many waves.
+pub fn jkr_load_profile(profile: &WavyProfile, abar: f64) -> Result<f64> {
+    check_abar(abar)?;
+    Ok(adhesionless_load_profile(profile, abar) - (2.0 * PI * abar).sqrt())
+}
+
+/// E.42b for a profile of many waves: `(lower, upper)`.
+pub fn jkr_envelope_profile(profile: &WavyProfile, abar: f64) -> Result<(f64, f64)> {
+    check_abar(abar)?;
+    Ok(jkr_envelope_of(envelope_halfwidth_profile(profile, abar), abar))
 }
 
 /// The M-DMT strip end `cbar`: the first root of E.43b,
-/// `f(c) = lambda c^2/2 + 2 alpha lambda sin^2(pi c/beta) - 1`. Below
-/// `c_lo = sqrt(2 (1 - 2 alpha lambda)/lambda)` (0 when `2 alpha lambda >= 1`)
-/// `f < 0` (`sin^2 <= 1`), and at the first crest `beta (k + 1/2) >= c_lo`
-/// `f >= 0`: the root lies within one wave period after `c_lo`. Scanned from
-/// there in steps of `beta/16`, every sampled local maximum refined
-/// (`roots::first_crossing`), then Brent.
+/// `f(c) = lambda c^2/2 + 2 lambda sum_j alpha_j sin^2(pi c/beta_j) - 1`. Below
+/// `c_lo = sqrt(2 (1 - 2 lambda sum_j alpha_j)/lambda)` (0 when `2 lambda sum_j alpha_j >= 1`)
+/// `f < 0` (`sin^2 <= 1`). For one wave, at the first crest `beta (k + 1/2) >= c_lo`
+/// `f >= 0`: the root lies within one wave period after `c_lo`; for any profile it lies
+/// below `sqrt(2/lambda)`, where the cylinder alone gives `f >= 0`. Scanned from `c_lo`
+/// in steps of `beta_min/16` (the finest wavelength), every sampled local maximum
+/// refined (`roots::first_crossing`), then Brent.
 pub fn mdmt_strip_end(params: Params) -> Result<f64> {
-    let Params { lambda, alpha, beta } = params;
+    let lambda = params.lambda;
+    let waves = params.profile.waves();
     let f = |c: f64| {
-        let s = (PI * c / beta).sin();
-        lambda * c * c / 2.0 + 2.0 * alpha * lambda * s * s - 1.0
+        let w = waves.iter().fold(0.0, |acc, w| {
+            let s = (PI * c / w.beta()).sin();
+            acc + 2.0 * w.alpha() * lambda * s * s
+        });
+        lambda * c * c / 2.0 + w - 1.0
     };
-    let rest = 1.0 - 2.0 * alpha * lambda;
+    let total_alpha: f64 = waves.iter().map(|w| w.alpha()).sum();
+    let rest = 1.0 - 2.0 * total_alpha * lambda;
     // a little below c_lo, where f < 0 with room for the rounding of f and of c_lo
     let mut lo = if rest > 0.0 { (2.0 * rest / lambda).sqrt() * (1.0 - 1e-9) } else { 0.0 };
     let mut flo = f(lo);
@@ -81,9 +136,13 @@ pub fn mdmt_strip_end(params: Params) -> Result<f64> {
         lo = if lo > 1e-300 { lo * 0.5 } else { 0.0 };
         flo = f(lo);
     }
-    let step = beta / 16.0;
-    // the crest after c_lo plus a step: f >= 0 there, up to rounding
-    let limit = lo + 2.0 * beta;
+    let beta_min = params.profile.scan_wavelength();
+    let beta_max = params.profile.coarsest_wavelength().unwrap_or(if beta_min.is_finite() { beta_min } else { 0.0 });
+    let cylinder_root = (2.0 / lambda).sqrt();
+    let step = if beta_min.is_finite() { beta_min / 16.0 } else { cylinder_root / 16.0 };
+    // one wave: the crest after c_lo plus a step, f >= 0 there, up to rounding; any
+    // profile: the cylinder's root sqrt(2/lambda) plus a step
+    let limit = (lo + 2.0 * beta_max).max(cylinder_root) + step;
     let never = |c: f64| Ok::<f64, std::convert::Infallible>(f(c));
     match first_crossing(never, None, (lo, flo), |c| c + step, limit, 1e-12) {
         Ok(Some((a, b, fa, fb))) => brent(f, a, b, fa, fb),
@@ -99,14 +158,14 @@ pub fn mdmt_pull_off(params: Params) -> Result<f64> {
 /// E.43a.
 pub fn mdmt_load(params: Params, abar: f64) -> Result<f64> {
     check_abar(abar)?;
-    Ok(adhesionless_load(params.alpha, params.beta, abar) - mdmt_pull_off(params)?)
+    Ok(adhesionless_load_profile(&params.profile, abar) - mdmt_pull_off(params)?)
 }
 
 /// E.43d: `(lower, upper)`.
 pub fn mdmt_envelope(params: Params, abar: f64) -> Result<(f64, f64)> {
     check_abar(abar)?;
     let base = PI * abar * abar / 4.0 - mdmt_pull_off(params)?;
-    let h = envelope_halfwidth(params.alpha, params.beta, abar);
+    let h = envelope_halfwidth_profile(&params.profile, abar);
     Ok((base - h, base + h))
 }
 
@@ -122,9 +181,8 @@ pub fn smooth_mdmt_load(lambda: f64, abar: f64) -> Result<f64> {
 /// half-width: `(lower, upper)`.
 pub fn local_envelope(params: Params, abar: f64) -> Result<(f64, f64)> {
     check_abar(abar)?;
-    let smooth = Params::new(params.lambda, 0.0, params.beta)?;
-    let l = load_at(smooth, abar)?;
-    let h = envelope_halfwidth(params.alpha, params.beta, abar);
+    let l = load_at(params.smooth(), abar)?;
+    let h = envelope_halfwidth_profile(&params.profile, abar);
     Ok((l - h, l + h))
 }
 
@@ -145,10 +203,9 @@ pub struct AppendixE {
 
 /// [`AppendixE`] at `abar > 0`.
 pub fn appendix_e(params: Params, abar: f64) -> Result<AppendixE> {
-    let Params { alpha, beta, .. } = params;
     Ok(AppendixE {
-        jkr: jkr_load(alpha, beta, abar)?,
-        jkr_envelope: jkr_envelope(alpha, beta, abar)?,
+        jkr: jkr_load_profile(&params.profile, abar)?,
+        jkr_envelope: jkr_envelope_profile(&params.profile, abar)?,
         mdmt: mdmt_load(params, abar)?,
         mdmt_envelope: mdmt_envelope(params, abar)?,
     })
@@ -327,7 +384,7 @@ mod tests {
         assert_eq!(rows.len(), 7);
         for (r, (abar, a)) in rows.iter().zip(&e) {
             assert_eq!(r.abar, *abar);
-            assert_eq!(r.jkr, jkr_load(p.alpha, p.beta, r.abar).unwrap());
+            assert_eq!(r.jkr, jkr_load(p.alpha(), p.beta(), r.abar).unwrap());
             assert_eq!((r.mdmt_env_lower, r.mdmt_env_upper), mdmt_envelope(p, r.abar).unwrap());
             assert_eq!((r.local_env_lower, r.local_env_upper), local_envelope(p, r.abar).unwrap());
             assert_eq!((a.jkr, a.jkr_envelope, a.mdmt, a.mdmt_envelope), (r.jkr, (r.jkr_env_lower, r.jkr_env_upper), r.mdmt, (r.mdmt_env_lower, r.mdmt_env_upper)));

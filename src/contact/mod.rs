@@ -43,6 +43,7 @@ pub use displacement::quadrature as wave_quadrature;
 pub use displacement::quadrature_ball as wave_certified;
 pub mod traction_mp;
 pub mod model;
+pub mod profile;
 pub mod paper;
 pub mod curve;
 pub mod curve_state;

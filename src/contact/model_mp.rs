@@ -3,7 +3,8 @@
 //! strip end `m`, and the load (Eq. 14).
 //!
 //! **Two entry points per quantity.** The `*_ball_mp` functions take the model's
-//! inputs `lambda, alpha, beta, abar` as balls ([`ModelBalls`], Arb's
+//! inputs `lambda, (alpha_j, beta_j)_j, abar` as balls (any number of waves; the
+//! wave terms are summed over them, docs/model.md "Many waves") ([`ModelBalls`], Arb's
 //! convention): the result encloses the quantity at *every* point of the input
 //! balls, which is how a decimal typed by a user is certified
 //! (`maugis eval`'s `strip_ratio` and `load`). The f64 entry points
@@ -48,23 +49,39 @@ use rug::Float;
 use crate::ball::{eval_at_decimals, eval_at_decimals_with_floor, Ball, Decimal};
 use crate::contact::displacement::u_wave_at_ratio_balls;
 use crate::contact::model::{ContactSize, Params, ABAR_RANGE, ALPHA_RANGE, BETA_RANGE, LAMBDA_RANGE};
-use crate::error::{check_prec, Error, Interval, Result};
+use crate::contact::profile::{WavyProfile, MAX_WAVES};
+use crate::error::{check_prec, Error, Interval, ProfileError, Result, WaveField};
 use crate::special::bessel_j::bessel_j_mp;
 use crate::special::exact_sub;
 use crate::MAX_WORKING_PREC;
 
-/// The model's inputs as balls: the Maugis parameter `lambda`, the wave
-/// amplitude `alpha` and wavelength `beta` (normalised, `docs/model.md`) and the
-/// contact half-width `abar`. Every result computed from them encloses its
-/// value at every point of the balls.
+/// One wave of the profile as balls: amplitude `alpha` and wavelength `beta`
+/// (normalised, `docs/model.md`).
 #[derive(Debug, Clone)]
-pub struct ModelBalls {
-    /// Maugis parameter, within [`LAMBDA_RANGE`] over the whole ball.
-    pub lambda: Ball,
+pub struct WaveBalls {
     /// Wave amplitude, within `[0, ALPHA_MAX]` over the whole ball.
     pub alpha: Ball,
     /// Wavelength, within [`BETA_RANGE`] over the whole ball.
     pub beta: Ball,
+}
+
+impl WaveBalls {
+    /// An amplitude known to be exactly 0: the wave adds nothing.
+    fn is_absent(&self) -> bool {
+        self.alpha.is_exact() && self.alpha.mid().is_zero()
+    }
+}
+
+/// The model's inputs as balls: the Maugis parameter `lambda`, the profile's waves
+/// (each an amplitude `alpha_j` and a wavelength `beta_j`) and the contact
+/// half-width `abar`. Every result computed from them encloses its value at every
+/// point of the balls.
+#[derive(Debug, Clone)]
+pub struct ModelBalls {
+    /// Maugis parameter, within [`LAMBDA_RANGE`] over the whole ball.
+    pub lambda: Ball,
+    /// The waves, at most [`MAX_WAVES`], in the profile's order.
+    pub waves: Vec<WaveBalls>,
     /// Contact half-width, within `(0, ABAR_MAX]` over the whole ball.
     pub abar: Ball,
 }
@@ -85,40 +102,75 @@ impl ModelBalls {
     /// domain over its whole width (an edge inside a ball is a typed error that
     /// names it).
     pub fn new(lambda: Ball, alpha: Ball, beta: Ball, abar: Ball) -> Result<ModelBalls> {
-        for (v, what) in [(&lambda, "lambda"), (&alpha, "alpha"), (&beta, "beta"), (&abar, "abar")] {
+        for (v, what) in [(&alpha, "alpha"), (&beta, "beta")] {
+            if !v.is_finite() {
+                return Err(Error::NonFinite { what });
+            }
+        }
+        alpha.check_within("alpha", ALPHA_RANGE)?;
+        beta.check_within("beta", BETA_RANGE)?;
+        ModelBalls::with_waves(lambda, vec![WaveBalls { alpha, beta }], abar)
+    }
+
+    /// Checked inputs for any number of waves (`0..=`[`MAX_WAVES`]): a wave whose ball
+    /// reaches outside its range is [`ProfileError::Wave`] naming the wave (1-based)
+    /// and the field.
+    pub fn with_waves(lambda: Ball, waves: Vec<WaveBalls>, abar: Ball) -> Result<ModelBalls> {
+        for (v, what) in [(&lambda, "lambda"), (&abar, "abar")] {
             if !v.is_finite() {
                 return Err(Error::NonFinite { what });
             }
         }
         lambda.check_within("lambda", LAMBDA_RANGE)?;
-        alpha.check_within("alpha", ALPHA_RANGE)?;
-        beta.check_within("beta", BETA_RANGE)?;
         abar.check_within("abar", ABAR_RANGE)?;
-        Ok(ModelBalls { lambda, alpha, beta, abar })
+        if waves.len() > MAX_WAVES {
+            return Err(Error::Profile(ProfileError::TooManyWaves { count: waves.len(), max: MAX_WAVES }));
+        }
+        for (i, w) in waves.iter().enumerate() {
+            for (v, field, allowed) in [(&w.alpha, WaveField::Amplitude, ALPHA_RANGE), (&w.beta, WaveField::Wavelength, BETA_RANGE)] {
+                if !v.is_finite() || v.check_within("wave", allowed).is_err() {
+                    let value = if v.is_finite() { v.mid().to_f64() } else { f64::NAN };
+                    return Err(Error::Profile(ProfileError::Wave { wave: i + 1, field, value, allowed }));
+                }
+            }
+        }
+        Ok(ModelBalls { lambda, waves, abar })
     }
 
     /// Exact balls of validated f64 parameters and `abar`.
     pub fn exact(params: Params, abar: f64) -> Result<ModelBalls> {
         let b = |v: f64| Ball::from_f64(v, 53);
-        ModelBalls::new(b(params.lambda)?, b(params.alpha)?, b(params.beta)?, b(abar)?)
+        let waves = params
+            .profile
+            .waves()
+            .iter()
+            .map(|w| Ok(WaveBalls { alpha: b(w.alpha())?, beta: b(w.beta())? }))
+            .collect::<Result<Vec<_>>>()?;
+        ModelBalls::with_waves(b(params.lambda)?, waves, b(abar)?)
     }
 
     /// Whether every input is an exact number.
     pub fn is_exact(&self) -> bool {
-        [&self.lambda, &self.alpha, &self.beta, &self.abar].iter().all(|v| v.is_exact())
+        self.lambda.is_exact() && self.abar.is_exact() && self.waves.iter().all(|w| w.alpha.is_exact() && w.beta.is_exact())
     }
 
     /// The midpoints, as exact balls.
     fn midpoints(&self) -> ModelBalls {
         let m = |v: &Ball| Ball::from_float(v.mid(), v.prec());
-        ModelBalls { lambda: m(&self.lambda), alpha: m(&self.alpha), beta: m(&self.beta), abar: m(&self.abar) }
+        let waves = self.waves.iter().map(|w| WaveBalls { alpha: m(&w.alpha), beta: m(&w.beta) }).collect();
+        ModelBalls { lambda: m(&self.lambda), waves, abar: m(&self.abar) }
     }
 
     /// The midpoints rounded to f64, for the f64 root scan that starts
     /// [`solve_m_ball_mp`].
     fn f64_start(&self) -> Result<ContactSize> {
         let f = |v: &Ball| v.mid().to_f64();
-        ContactSize::new(Params::new(f(&self.lambda), f(&self.alpha), f(&self.beta))?, f(&self.abar))
+        let pairs: Vec<(f64, f64)> = self.waves.iter().map(|w| (f(&w.alpha), f(&w.beta))).collect();
+        let params = match pairs.as_slice() {
+            [(alpha, beta)] => Params::new(f(&self.lambda), *alpha, *beta)?,
+            _ => Params::with_profile(f(&self.lambda), WavyProfile::from_pairs(&pairs)?)?,
+        };
+        ContactSize::new(params, f(&self.abar))
     }
 }
 
@@ -131,23 +183,27 @@ pub fn strip_residual_ball_mp(inputs: &ModelBalls, m_minus_1: &Ball, wp: u32) ->
     }
     // m - 1 >= 0 by definition: clip a ball that reaches below zero.
     let e = if m_minus_1.lower() < 0 { Ball::hull(&Float::new(wp), &m_minus_1.upper(), wp) } else { at_least(m_minus_1, wp) };
-    let [lam, alpha, beta, a] = [&inputs.lambda, &inputs.alpha, &inputs.beta, &inputs.abar].map(|v| at_least(v, wp));
+    let [lam, a] = [&inputs.lambda, &inputs.abar].map(|v| at_least(v, wp));
     let mb = e.add_i64(1);
     let s = e.mul(&e.add_i64(2)).sqrt()?; // sqrt(m^2 - 1)
     let acosh_m = e.add(&s).ln_1p()?;
     let ln_m = e.ln_1p()?;
     let hertz = a.sqr().mul(&mb.mul(&s).sub(&acosh_m)).mul_pow2(-1);
     let adhesive = Ball::pi(wp).recip()?.mul_pow2(2).mul(&lam).mul(&a).mul(&s.mul(&acosh_m).sub(&mb.mul(&ln_m)));
-    let wave = if alpha.is_exact() && alpha.mid().is_zero() {
-        Ball::zero(wp)
-    } else {
-        // 2 alpha sin^2(pi c / beta) - u_w(c), c = m abar
+    // sum_j [2 alpha_j sin^2(pi c / beta_j) - u_w,j(c)], c = m abar
+    let mut wave: Option<Ball> = None;
+    for w in inputs.waves.iter().filter(|w| !w.is_absent()) {
+        let [alpha, beta] = [&w.alpha, &w.beta].map(|v| at_least(v, wp));
         let uw = u_wave_at_ratio_balls(&a, &beta, &alpha, &e, wp)?;
         let arg = Ball::pi(wp).mul(&a).mul(&mb).div(&beta)?;
         let sn = arg.sin_cos().0;
-        sn.sqr().mul(&alpha).mul_pow2(1).sub(&uw)
-    };
-    Ok(lam.mul(&hertz.add(&adhesive).add(&wave)).add_i64(-1))
+        let term = sn.sqr().mul(&alpha).mul_pow2(1).sub(&uw);
+        wave = Some(match wave {
+            None => term,
+            Some(sum) => sum.add(&term),
+        });
+    }
+    Ok(lam.mul(&hertz.add(&adhesive).add(&wave.unwrap_or_else(|| Ball::zero(wp)))).add_i64(-1))
 }
 
 /// `F(m) = lambda gbar(m abar) - 1` in ball arithmetic at working precision `wp`
@@ -431,21 +487,25 @@ fn load_from_m_minus_1(inputs: &ModelBalls, e: &Ball, prec: u32) -> Result<Ball>
     }
     // m - 1 >= 0 by definition: clip a ball that reaches below zero.
     let e = if e.lower() < 0 { Ball::hull(&Float::new(wp), &e.upper(), wp) } else { at_least(e, wp) };
-    let [lam, alpha, beta, a] = [&inputs.lambda, &inputs.alpha, &inputs.beta, &inputs.abar].map(|v| at_least(v, wp));
+    let [lam, a] = [&inputs.lambda, &inputs.abar].map(|v| at_least(v, wp));
     let pi = Ball::pi(wp);
     let s = e.mul(&e.add_i64(2)).sqrt()?;
     let hertz = pi.mul(&a.sqr()).mul_pow2(-2);
     let adhesive = lam.mul(&a).mul(&s).mul_pow2(1);
-    let wave = if alpha.is_exact() && alpha.mid().is_zero() {
-        Ball::zero(wp)
-    } else {
+    let mut wave: Option<Ball> = None;
+    for w in inputs.waves.iter().filter(|w| !w.is_absent()) {
+        let [alpha, beta] = [&w.alpha, &w.beta].map(|v| at_least(v, wp));
         // J1 at D = 2 pi abar/beta (a ball): |J1'| <= 1, evaluate at the midpoint and widen
         let d = pi.mul(&a).mul_pow2(1).div(&beta)?;
         let mut j1 = bessel_j_mp(1, d.mid(), wp)?;
         j1.add_error_mag(d.rad_mag());
-        pi.sqr().mul(&alpha).mul(&a).div(&beta)?.mul(&j1)
-    };
-    Ok(hertz.sub(&adhesive).add(&wave))
+        let term = pi.sqr().mul(&alpha).mul(&a).div(&beta)?.mul(&j1);
+        wave = Some(match wave {
+            None => term,
+            Some(sum) => sum.add(&term),
+        });
+    }
+    Ok(hertz.sub(&adhesive).add(&wave.unwrap_or_else(|| Ball::zero(wp))))
 }
 
 /// Guard bits of [`load_from_m_minus_1`] beyond its wave term.
@@ -461,16 +521,23 @@ const LOAD_GUARD_BITS: u32 = 16;
 /// ball arithmetic carries the proof). At beta = 0.001 that is 28 bits; before,
 /// the load at 53 bits never met its tolerance and `eval_at_decimals` raised
 /// the input precision to its cap (over 60 s).
+///
+/// For many waves, the largest of the waves' guards plus `log2` of the number of waves.
 fn wave_load_guard(inputs: &ModelBalls) -> u32 {
-    let [alpha, beta, a] = [&inputs.alpha, &inputs.beta, &inputs.abar].map(|v| v.mid().to_f64().abs());
+    let a = inputs.abar.mid().to_f64().abs();
     let pi = std::f64::consts::PI;
-    let d = 2.0 * pi * a / beta;
-    let ratio = pi * pi * alpha * a / beta * (d + (d / 2.0).min(1.0)) / (pi * a * a / 4.0);
-    if ratio.is_finite() && ratio > 1.0 {
-        ratio.log2().ceil().min(4096.0) as u32
-    } else {
-        0
-    }
+    let per_wave = inputs.waves.iter().map(|w| {
+        let [alpha, beta] = [&w.alpha, &w.beta].map(|v| v.mid().to_f64().abs());
+        let d = 2.0 * pi * a / beta;
+        let ratio = pi * pi * alpha * a / beta * (d + (d / 2.0).min(1.0)) / (pi * a * a / 4.0);
+        if ratio.is_finite() && ratio > 1.0 {
+            ratio.log2().ceil().min(4096.0) as u32
+        } else {
+            0
+        }
+    });
+    let count_bits = usize::BITS - inputs.waves.len().saturating_sub(1).leading_zeros();
+    per_wave.max().unwrap_or(0) + if inputs.waves.len() > 1 { count_bits } else { 0 }
 }
 
 /// Eq. 14 in ball arithmetic for a strip ratio known as a ball; the parameters

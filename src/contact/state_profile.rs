@@ -17,7 +17,6 @@
 //! that a front end words the context its own way.
 
 use crate::ball::Ball;
-use crate::contact::displacement::profile_depth;
 use crate::contact::model::{ContactSize, Params, StripEnd, Validity};
 use crate::contact::model_mp::solve_m_mp;
 use crate::contact::traction_mp::traction_mp;
@@ -124,7 +123,7 @@ impl Solved {
             pbar: cs.traction_at(strip, x),
             ubar: cs.displacement_at(strip, x).map_err(at)?,
             gbar: cs.gap_at(strip, x).map_err(at)?,
-            hbar: profile_depth(1.0, p.alpha, p.beta, x).map_err(at)?,
+            hbar: p.profile().depth(crate::error::finite(x, "x").map_err(at)?),
         })
     }
 

@@ -16,6 +16,7 @@ use rayon::prelude::*;
 use crate::contact::located::{At, LocatedError};
 use crate::contact::curve::{load_area_curve, Curve, CurveOptions, CurvePoint, PullOff, TurningPoint};
 use crate::contact::model::Params;
+use crate::contact::profile::WavyProfile;
 use crate::contact::paths::{ControlPaths, HysteresisLoop, Jump, PathNode};
 use crate::contact::units::{Material, Scales};
 
@@ -57,10 +58,14 @@ pub struct Stretch {
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RunParams {
-    /// Wave amplitude.
+    /// Wave amplitude (the first wave's, for a profile of many waves: see `waves`).
     pub alpha: f64,
-    /// Wavelength.
+    /// Wavelength (the first wave's, for a profile of many waves: see `waves`).
     pub beta: f64,
+    /// Every wave of the profile, when it has other than exactly one (absent from the
+    /// JSON for the seed paper's one-wave profile).
+    #[cfg_attr(feature = "serde", serde(default, skip_serializing_if = "Option::is_none"))]
+    pub waves: Option<WavyProfile>,
     /// Largest contact.
     pub amax: f64,
     /// Grid points per curve.
@@ -75,10 +80,13 @@ pub struct RunParams {
 pub struct CurveSummary {
     /// Maugis parameter.
     pub lambda: f64,
-    /// Wave amplitude.
+    /// Wave amplitude (the first wave's, for a profile of many waves: see `waves`).
     pub alpha: f64,
-    /// Wavelength.
+    /// Wavelength (the first wave's, for a profile of many waves: see `waves`).
     pub beta: f64,
+    /// Every wave of the profile, when it has other than exactly one.
+    #[cfg_attr(feature = "serde", serde(default, skip_serializing_if = "Option::is_none"))]
+    pub waves: Option<WavyProfile>,
     /// The CSV file of the grid states, when files are written.
     pub csv: Option<String>,
     /// Number of invalid grid states.
@@ -166,8 +174,9 @@ impl CurveSummary {
     pub fn new(curve: &Curve, csv: Option<String>) -> CurveSummary {
         CurveSummary {
             lambda: curve.params.lambda,
-            alpha: curve.params.alpha,
-            beta: curve.params.beta,
+            alpha: curve.params.alpha(),
+            beta: curve.params.beta(),
+            waves: many_waves(curve.params.profile()),
             csv,
             invalid_points: curve.points.iter().filter(|p| !p.validity.valid).count(),
             invalid_stretches: invalid_stretches(&curve.points),
@@ -184,6 +193,11 @@ impl CurveSummary {
     }
 }
 
+/// The profile when it has other than exactly one wave (the summaries' `waves`).
+fn many_waves(profile: &WavyProfile) -> Option<WavyProfile> {
+    (profile.len() != 1).then_some(*profile)
+}
+
 /// Solves the load-area curve ([`load_area_curve`]) of each `lambda` at the
 /// shared roughness, in the given order (in parallel over `lambda` with the
 /// `parallel` feature). `on_curve` is called once as each curve is done (a
@@ -198,6 +212,26 @@ pub fn load_area_curves(
     on_curve: impl Fn() + Sync + Send,
 ) -> Result<Vec<Curve>, LocatedError> {
     let params = lambdas.iter().map(|&l| Params::new(l, alpha, beta)).collect::<crate::error::Result<Vec<_>>>().map_err(|e| At::Input.wrap(e))?;
+    curves_of(&params, opts, on_curve)
+}
+
+/// [`load_area_curves`] for a profile of any number of waves.
+pub fn load_area_curves_profile(
+    lambdas: &[f64],
+    profile: &WavyProfile,
+    opts: CurveOptions,
+    on_curve: impl Fn() + Sync + Send,
+) -> Result<Vec<Curve>, LocatedError> {
+    let params = lambdas
+        .iter()
+        .map(|&l| Params::with_profile(l, *profile))
+        .collect::<crate::error::Result<Vec<_>>>()
+        .map_err(|e| At::Input.wrap(e))?;
+    curves_of(&params, opts, on_curve)
+}
+
+/// The curves of `params`, in their order.
+fn curves_of(params: &[Params], opts: CurveOptions, on_curve: impl Fn() + Sync + Send) -> Result<Vec<Curve>, LocatedError> {
     let one = |p: &Params| {
         let c = load_area_curve(*p, opts).map_err(|e| At::Curve { lambda: p.lambda }.wrap(e))?;
         on_curve();
@@ -222,9 +256,27 @@ impl RunSummary {
         curves: impl IntoIterator<Item = &'c Curve>,
         csv: impl Fn(&Curve) -> Option<String>,
     ) -> RunSummary {
+        RunSummary::with_run_params(RunParams::new(alpha, beta, opts), curves, csv)
+    }
+
+    /// [`RunSummary::new`] for a profile of any number of waves.
+    pub fn for_profile<'c>(
+        profile: &WavyProfile,
+        opts: CurveOptions,
+        curves: impl IntoIterator<Item = &'c Curve>,
+        csv: impl Fn(&Curve) -> Option<String>,
+    ) -> RunSummary {
+        RunSummary::with_run_params(RunParams::for_profile(profile, opts), curves, csv)
+    }
+
+    fn with_run_params<'c>(
+        params: RunParams,
+        curves: impl IntoIterator<Item = &'c Curve>,
+        csv: impl Fn(&Curve) -> Option<String>,
+    ) -> RunSummary {
         let curves: Vec<CurveSummary> = curves.into_iter().map(|c| CurveSummary::new(c, csv(c))).collect();
         RunSummary {
-            params: RunParams::new(alpha, beta, opts),
+            params,
             mdmt_limit_lambda: curves.first().map_or(f64::NAN, |c| c.lambda),
             curves,
         }
@@ -234,7 +286,20 @@ impl RunSummary {
 impl RunParams {
     /// From the shared roughness and the grid options.
     pub fn new(alpha: f64, beta: f64, opts: CurveOptions) -> RunParams {
-        RunParams { alpha, beta, amax: opts.amax, points: opts.points, datum: opts.datum }
+        RunParams { alpha, beta, waves: None, amax: opts.amax, points: opts.points, datum: opts.datum }
+    }
+
+    /// From a profile of any number of waves and the grid options.
+    pub fn for_profile(profile: &WavyProfile, opts: CurveOptions) -> RunParams {
+        let first = profile.waves().first();
+        RunParams {
+            alpha: first.map_or(0.0, |w| w.alpha()),
+            beta: first.map_or(f64::INFINITY, |w| w.beta()),
+            waves: many_waves(profile),
+            amax: opts.amax,
+            points: opts.points,
+            datum: opts.datum,
+        }
     }
 }
 
@@ -269,6 +334,9 @@ pub struct SiSummary {
     pub amplitude_m: f64,
     /// Wavelength `zeta` (m).
     pub wavelength_m: f64,
+    /// Every wave `(A_j, zeta_j)` in metres, when the profile has other than exactly one.
+    #[cfg_attr(feature = "serde", serde(default, skip_serializing_if = "Option::is_none"))]
+    pub waves_m: Option<Vec<(f64, f64)>>,
     /// The scales: `l_h`, `l_v` (m), load (N/m), stress (Pa), energy (J/m).
     pub scales: Scales,
     /// Datum of displacement control (m).
@@ -285,6 +353,7 @@ impl SiSummary {
             material,
             amplitude_m: s.to_vertical(run.params.alpha),
             wavelength_m: s.to_horizontal(run.params.beta),
+            waves_m: run.params.waves.as_ref().map(|p| s.profile_to_si(p)),
             scales: s,
             datum_m: s.to_horizontal(run.params.datum),
             curves: run
@@ -321,7 +390,7 @@ mod tests {
         assert_eq!(done.load(Ordering::Relaxed), 2);
         let run = RunSummary::new(alpha, beta, opts, &curves, |c| Some(format!("{}.csv", c.params.lambda)));
         assert_eq!(run.mdmt_limit_lambda, 3.0);
-        assert_eq!(run.params, RunParams { alpha, beta, amax: 3.0, points: 40, datum: 100.0 });
+        assert_eq!(run.params, RunParams { alpha, beta, waves: None, amax: 3.0, points: 40, datum: 100.0 });
         assert_eq!(run.curves.iter().map(|c| c.lambda).collect::<Vec<_>>(), [3.0, 0.5]);
         assert_eq!(run.curves[1].csv.as_deref(), Some("0.5.csv"));
         assert_eq!(run.curves[0], CurveSummary::new(&curves[0], Some("3.csv".into())));

@@ -34,7 +34,7 @@ pub fn traction_ball_mp(inputs: &ModelBalls, m: &Ball, x: &Ball, prec: u32) -> R
     }
     m.check_within("the strip ratio m", crate::error::Interval::at_least(1.0))?;
     let wp = prec + 20;
-    let [lam, alpha, beta, a] = [&inputs.lambda, &inputs.alpha, &inputs.beta, &inputs.abar].map(|v| v.set_prec(wp.max(v.prec())));
+    let [lam, a] = [&inputs.lambda, &inputs.abar].map(|v| v.set_prec(wp.max(v.prec())));
     let (m, x) = (m.set_prec(wp.max(m.prec())), x.set_prec(wp.max(x.prec())));
     // |x| (the traction is even)
     let ax = if x.lower() >= 0 {
@@ -71,14 +71,22 @@ pub fn traction_ball_mp(inputs: &ModelBalls, m: &Ball, x: &Ball, prec: u32) -> R
     let s = e.mul(&e.add_i64(2)).sqrt()?;
     let pi = Ball::pi(wp);
     let adhesive = a.mul(&s).div(&w)?.atan().mul_pow2(1).div(&pi)?;
-    let wave = if alpha.is_exact() && alpha.mid().is_zero() {
-        Ball::zero(wp)
-    } else {
+    // sum_j (2 pi alpha_j/(beta_j abar)) K_j(x/abar)
+    let mut wave: Option<Ball> = None;
+    for w in &inputs.waves {
+        let [alpha, beta] = [&w.alpha, &w.beta].map(|v| v.set_prec(wp.max(v.prec())));
+        if alpha.is_exact() && alpha.mid().is_zero() {
+            continue;
+        }
         let d = pi.mul(&a).mul_pow2(1).div(&beta)?;
         let k = traction_integral_ball(&d, &ax.div(&a)?, wp)?;
-        pi.mul(&alpha).mul_pow2(1).div(&beta.mul(&a))?.mul(&k)
-    };
-    let elastic = w.div(&lam.mul_pow2(1))?.mul(&wave.add_i64(1));
+        let term = pi.mul(&alpha).mul_pow2(1).div(&beta.mul(&a))?.mul(&k);
+        wave = Some(match wave {
+            None => term,
+            Some(sum) => sum.add(&term),
+        });
+    }
+    let elastic = w.div(&lam.mul_pow2(1))?.mul(&wave.unwrap_or_else(|| Ball::zero(wp)).add_i64(1));
     Ok(adhesive.sub(&elastic))
 }
 

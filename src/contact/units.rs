@@ -25,6 +25,7 @@
 //! [`Error`] naming the quantity.
 
 use crate::contact::model::Params;
+use crate::contact::profile::WavyProfile;
 use crate::error::{finite, Error, Interval, Result};
 
 /// Material and geometry of the contact.
@@ -185,14 +186,30 @@ impl Physical {
     }
 }
 
-/// The SI contact of normalised parameters: `sigma_0` (Pa), `A` (m) and `zeta` (m).
+impl Scales {
+    /// A profile of many waves given in metres: `(A_j, zeta_j)` pairs, each turned into
+    /// `(alpha_j, beta_j) = (A_j/l_v, zeta_j/l_h)` and checked by
+    /// [`WavyProfile::from_pairs`] (the error names the wave and the field).
+    pub fn profile_from_si(&self, waves_m: &[(f64, f64)]) -> Result<WavyProfile> {
+        let pairs: Vec<(f64, f64)> = waves_m.iter().map(|&(a, z)| (a / self.vertical, z / self.horizontal)).collect();
+        WavyProfile::from_pairs(&pairs)
+    }
+
+    /// The waves of a profile in metres, `(A_j, zeta_j)`.
+    pub fn profile_to_si(&self, profile: &WavyProfile) -> Vec<(f64, f64)> {
+        profile.waves().iter().map(|w| (self.to_vertical(w.alpha()), self.to_horizontal(w.beta()))).collect()
+    }
+}
+
+/// The SI contact of normalised parameters: `sigma_0` (Pa), `A` (m) and `zeta` (m)
+/// (the first wave's, for a profile of many waves: see [`Scales::profile_to_si`]).
 pub fn physical_of(params: Params, material: Material) -> Result<Physical> {
     let s = Scales::new(material)?;
     Ok(Physical {
         material,
         cohesion: Cohesion::Stress(s.sigma(params.lambda)),
-        amplitude: s.to_vertical(params.alpha),
-        wavelength: s.to_horizontal(params.beta),
+        amplitude: s.to_vertical(params.alpha()),
+        wavelength: s.to_horizontal(params.beta()),
     })
 }
 
@@ -238,7 +255,7 @@ mod tests {
         let p = Physical { material: PDMS, cohesion: Cohesion::Stress(1e5), amplitude: 2e-6, wavelength: 5e-5 };
         let q = p.params().unwrap();
         let lhs = (2.0 * PDMS.dgamma * p.wavelength / (std::f64::consts::PI.powi(2) * p.amplitude.powi(2) * PDMS.e_star)).sqrt();
-        let rhs = (2.0 * q.beta / (std::f64::consts::PI.powi(2) * q.alpha.powi(2))).sqrt();
+        let rhs = (2.0 * q.beta() / (std::f64::consts::PI.powi(2) * q.alpha().powi(2))).sqrt();
         assert!((lhs / rhs - 1.0).abs() < 1e-13, "{lhs} vs {rhs}");
     }
 
@@ -247,7 +264,7 @@ mod tests {
         let params = Params::new(1.5, 2f64.sqrt() / 4.0, 1.125).unwrap();
         let p = physical_of(params, PDMS).unwrap();
         let back = p.params().unwrap();
-        for (a, b) in [(back.lambda, 1.5), (back.alpha, 2f64.sqrt() / 4.0), (back.beta, 1.125)] {
+        for (a, b) in [(back.lambda, 1.5), (back.alpha(), 2f64.sqrt() / 4.0), (back.beta(), 1.125)] {
             assert!((a / b - 1.0).abs() < 1e-14, "{a} vs {b}");
         }
         let s = p.scales().unwrap();

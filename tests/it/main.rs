@@ -36,6 +36,7 @@ mod maugis_model;
 mod meijer_g_f64_routes;
 mod model_decimal;
 mod model_rough;
+mod model_waves;
 mod no_panic;
 mod paths_dissipation;
 mod precision_edges;

@@ -23,5 +23,6 @@ mod maugis_smooth;
 mod no_contact;
 mod periodic_jkr;
 mod profile_table;
+mod rough_profiles;
 mod tamaas_reference;
 mod transition;

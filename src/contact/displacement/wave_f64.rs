@@ -68,6 +68,8 @@ pub struct WaveBessel {
     conv: Vec<Dd>,
     /// `J_{2n}(D)` rounded to f64, for [`WaveBessel::u_fast`].
     j_even_f64: Vec<f64>,
+    /// `S_n` rounded to f64, for [`WaveBessel::traction_integral_fast`].
+    conv_f64: Vec<f64>,
     /// Horner coefficients in `q^2` of the two sums (`horner_coefficients`).
     u_coef: Vec<Dd>,
     du_coef: Vec<Dd>,
@@ -122,8 +124,9 @@ impl WaveBessel {
             k -= 2;
         }
         let j_even_f64 = (0..=n_terms).map(|n| j[2 * n].to_f64()).collect();
+        let conv_f64 = conv.iter().map(|c| c.to_f64()).collect();
         let (u_coef, du_coef) = horner_coefficients(&j, n_terms);
-        Ok(WaveBessel { a, zeta, amp, cert: OnceLock::new(), native: OnceLock::new(), d, n_terms, j, conv, j_even_f64, u_coef, du_coef })
+        Ok(WaveBessel { a, zeta, amp, cert: OnceLock::new(), native: OnceLock::new(), d, n_terms, j, conv, j_even_f64, conv_f64, u_coef, du_coef })
     }
 
     /// `D = 2 pi a / zeta`.
@@ -302,6 +305,25 @@ impl WaveBessel {
             t_cur = t_next;
         }
         sum.to_f64()
+    }
+
+    /// [`WaveBessel::traction_integral`] in plain f64 arithmetic (from the rounded
+    /// `S_n`): about four times faster, with an error of a few ulps of the largest term
+    /// instead of one rounding. For scans that only locate candidates (the model's
+    /// validity rescan), which then evaluate [`WaveBessel::traction_integral`].
+    pub fn traction_integral_fast(&self, c: f64) -> f64 {
+        let c = c.clamp(-1.0, 1.0);
+        let x2 = 2.0 * c * c - 1.0;
+        let (mut t_prev, mut t_cur) = (1.0f64, x2);
+        let mut sum = self.conv_f64[0];
+        for n in 1..=self.n_terms {
+            let coeff = self.conv_f64[n] * (2.0 * t_cur);
+            sum = if n % 2 == 1 { sum - coeff } else { sum + coeff };
+            let t_next = 2.0 * x2 * t_cur - t_prev;
+            t_prev = t_cur;
+            t_cur = t_next;
+        }
+        sum
     }
 }
 

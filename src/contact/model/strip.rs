@@ -1,0 +1,99 @@
+//! The end of the adhesive strip, `m = c/a`, held as `m - 1` ([`StripEnd`]), and the
+//! strip functions of the corrected Eq. 15b that take `z = m - 1` and keep full
+//! relative accuracy as the strip closes ([`hertz_gap_fn`], [`adhesive_gap_fn`],
+//! [`adhesive_approach_fn`]: closed forms, and six-term Taylor series below `z = 1e-3`,
+//! truncation below `z^6 < 1e-18` relative). None of them depends on the profile.
+
+use crate::error::{finite, Interval, Result};
+
+/// Below this `z = m - 1` the strip functions use their Taylor series
+/// (six terms: truncation below `z^6 < 1e-18` relative).
+pub(crate) const SERIES_Z: f64 = 1e-3;
+
+/// The end of the adhesive strip, `m = c/a > 1`, stored as `m - 1`.
+///
+/// As `lambda -> inf` the strip closes like `m - 1 ~ pi/(4 lambda^2 abar)`
+/// (docs/model.md, the `smooth_jkr_limit` erratum row): at `lambda = 1e6` that is `1e-12`, and `m` itself would carry
+/// only four significant digits of it. The solver works in `m - 1`, and every
+/// quantity of a state (load, traction, gap, approach) is computed from it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StripEnd {
+    m_minus_1: f64,
+}
+
+impl StripEnd {
+    /// From `m - 1 > 0` (finite).
+    pub fn from_m_minus_1(m_minus_1: f64) -> Result<StripEnd> {
+        finite(m_minus_1, "m - 1")?;
+        Interval::above(0.0).check("m - 1", m_minus_1)?;
+        Ok(StripEnd { m_minus_1 })
+    }
+
+    /// From `m > 1` (finite). Loses the relative accuracy of `m - 1` when `m`
+    /// is close to 1; prefer [`StripEnd::from_m_minus_1`].
+    pub fn from_m(m: f64) -> Result<StripEnd> {
+        finite(m, "m")?;
+        Interval::above(1.0).check("the strip ratio m = c/a", m)?;
+        Ok(StripEnd { m_minus_1: m - 1.0 })
+    }
+
+    /// `m = c/a` (rounded).
+    pub fn m(self) -> f64 {
+        1.0 + self.m_minus_1
+    }
+
+    /// `m - 1`, to full relative accuracy.
+    pub fn m_minus_1(self) -> f64 {
+        self.m_minus_1
+    }
+
+    /// `sqrt(m^2 - 1)`.
+    pub fn sqrt_m2_minus_1(self) -> f64 {
+        sqrt_z2z(self.m_minus_1)
+    }
+}
+
+
+/// `sqrt(z (2 + z)) = sqrt((1+z)^2 - 1)`.
+pub(crate) fn sqrt_z2z(z: f64) -> f64 {
+    (z * (2.0 + z)).sqrt()
+}
+
+/// `acosh(1 + z)` for `z >= 0`, accurate for small `z`.
+pub(crate) fn acosh_1p(z: f64) -> f64 {
+    (z + sqrt_z2z(z)).ln_1p()
+}
+
+
+/// The Hertz gap function `(1+z) sqrt(z(2+z)) - acosh(1+z)`, `z >= 0`
+/// (`= 2 int_1^{1+z} sqrt(t^2-1) dt`; the Hertz gap at `x = (1+z) a` is
+/// `a^2/2` times it). Series below `SERIES_Z`:
+/// `sqrt(2z) z (4/3 + z/5 - z^2/56 + z^3/288 - 5 z^4/5632 + 7 z^5/26624)`.
+pub fn hertz_gap_fn(z: f64) -> f64 {
+    if z < SERIES_Z {
+        let p = 4.0 / 3.0 + z * (1.0 / 5.0 + z * (-1.0 / 56.0 + z * (1.0 / 288.0 + z * (-5.0 / 5632.0 + z * 7.0 / 26624.0))));
+        (2.0 * z).sqrt() * z * p
+    } else {
+        (1.0 + z) * sqrt_z2z(z) - acosh_1p(z)
+    }
+}
+
+/// The adhesive strip-gap function `sqrt(z(2+z)) acosh(1+z) - (1+z) ln(1+z)`,
+/// `z >= 0` (leading term `z`; the two products differ by a factor 2, so the
+/// direct form loses at most one bit).
+pub fn adhesive_gap_fn(z: f64) -> f64 {
+    sqrt_z2z(z) * acosh_1p(z) - (1.0 + z) * z.ln_1p()
+}
+
+/// The adhesive approach function `(1+z) acosh(1+z) - sqrt(z(2+z))`, `z >= 0`.
+/// Series below `SERIES_Z`:
+/// `sqrt(2z) z (2/3 - z/30 + 3 z^2/560 - 5 z^3/4032 + 35 z^4/101376 - 63 z^5/585728)`.
+pub fn adhesive_approach_fn(z: f64) -> f64 {
+    if z < SERIES_Z {
+        let p = 2.0 / 3.0 + z * (-1.0 / 30.0 + z * (3.0 / 560.0 + z * (-5.0 / 4032.0 + z * (35.0 / 101376.0 - z * 63.0 / 585728.0))));
+        (2.0 * z).sqrt() * z * p
+    } else {
+        (1.0 + z) * acosh_1p(z) - sqrt_z2z(z)
+    }
+}
+
