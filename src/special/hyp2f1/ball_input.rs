@@ -44,11 +44,12 @@ use rug::float::Round;
 use rug::Float;
 
 use super::choose::{evaluate, plan};
+use super::large_param::{hyp2f1_large_param, large_param_loss, large_param_terms};
 use super::{hyp2f1_mp, validate};
 use crate::ball::{Ball, Mag};
 use crate::error::{check_prec, Error, Interval, Result};
 use crate::special::gamma::{gamma_ball, gamma_of_ball};
-use crate::special::{is_nonpositive_integer, DEFAULT_GUARD_BITS};
+use crate::special::{is_nonpositive_integer, ziv_ball_inputs, DEFAULT_GUARD_BITS};
 
 /// Precision of the majorant evaluations (only upper bounds are needed).
 const MAJORANT_PREC: u32 = 32;
@@ -109,6 +110,9 @@ pub fn hyp2f1_ball_mp(a: &Ball, b: &Ball, c: &Ball, z: &Ball, prec: u32) -> Resu
     if z.is_exact() && *z.mid() == 1 {
         return gauss_ball(a, b, c, terminating, wp);
     }
+    if let Some(r) = large_param_ball(a, b, c, z, prec) {
+        return r;
+    }
     if z.lower() > -0.75 && z.upper() < 1 {
         return direct_ball(a, b, c, z, wp);
     }
@@ -121,6 +125,24 @@ pub fn hyp2f1_ball_mp(a: &Ball, b: &Ball, c: &Ball, z: &Ball, prec: u32) -> Resu
         return Ok(pre.mul(&inner));
     }
     Err(too_wide("z", z, "within (-3/4, 1) or below -1/2"))
+}
+
+/// One large parameter (`large_param.rs`), when the chooser's estimate at the
+/// midpoints takes it: its formula runs in ball arithmetic over the input balls,
+/// so no majorant is needed (the majorant `2F1(A, B; C; |z|)` at `B = 10^6`,
+/// `|z| = 1/2` is about `2^(10^6)` times the value). `None` when it does not
+/// apply or fails (an integer inside `b - a` or `c - a - b`, a Gamma argument
+/// ball holding a pole): the majorant route then.
+fn large_param_ball(a: &Ball, b: &Ball, c: &Ball, z: &Ball, prec: u32) -> Option<Result<Ball>> {
+    let (af, bf, cf, zf) = (a.mid().to_f64(), b.mid().to_f64(), c.mid().to_f64(), z.mid().to_f64());
+    large_param_terms(af, bf, cf, zf, f64::from(prec))?;
+    if z.contains_zero() || !(z.upper() < 1) {
+        return None;
+    }
+    let loss = if af.abs() >= bf.abs() { large_param_loss(bf, af, cf, zf) } else { large_param_loss(af, bf, cf, zf) };
+    let guard = DEFAULT_GUARD_BITS + loss;
+    let r = ziv_ball_inputs(prec, guard, None, |wp| hyp2f1_large_param(a, b, c, z, wp));
+    r.ok().map(Ok)
 }
 
 /// The edges of the module docs; `terminating` is the degree when `a` or `b` is

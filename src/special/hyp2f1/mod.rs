@@ -105,6 +105,7 @@
 mod ball_input;
 mod choose;
 mod connection;
+mod large_param;
 mod log_case;
 mod native;
 mod native_connection;
@@ -123,7 +124,7 @@ mod tests;
 use rug::Float;
 
 pub use ball_input::hyp2f1_ball_mp;
-use choose::{evaluate, plan};
+use choose::{evaluate, plan, plan_regions, Algorithm};
 
 use crate::ball::{Ball, Bounded};
 use crate::error::{check_prec, finite, Error, Interval, Result};
@@ -213,7 +214,16 @@ pub fn hyp2f1_mp(a: &Float, b: &Float, c: &Float, z: &Float, prec: u32) -> Resul
     if z.is_zero() {
         return Ok(Ball::one(prec));
     }
-    let (alg, lost) = plan(a, b, c, z, prec + DEFAULT_GUARD_BITS);
+    let (mut alg, mut lost) = plan(a, b, c, z, prec + DEFAULT_GUARD_BITS);
+    if alg == Algorithm::LargeParam {
+        let max_wp = prec.saturating_add(DEFAULT_GUARD_BITS + lost).saturating_add(MAX_GAMMA_LOSS);
+        match ziv_up_to("hyp2f1", prec, DEFAULT_GUARD_BITS + lost, None, max_wp, |wp| evaluate(alg, a, b, c, z, wp)) {
+            Ok(r) => return Ok(r),
+            // a Gamma argument or series denominator too close to a pole at the
+            // working precision: the region's own methods
+            Err(_) => (alg, lost) = plan_regions(a, b, c, z, prec + DEFAULT_GUARD_BITS),
+        }
+    }
     if alg.uses_gamma() {
         // The Gamma-based formulas: refused when the planned cancellation passes
         // MAX_GAMMA_LOSS, and their Ziv loop stops MAX_GAMMA_LOSS bits past the plan.
