@@ -1153,7 +1153,7 @@ def write_bessel_j_decimal():
 
 
 # J_n at the decimal "0.001" itself (bessel_j_grid holds the binary64 nearest it),
-# for the issue-23 request J_10000("0.001") and tests/ball_input_relative.rs: at
+# for the issue-23 request J_10000("0.001") and tests/it/ball_input_relative.rs: at
 # 512 bits the tests need more digits than bessel_j_decimal prints.
 BESSEL_TINY_X = "0.001"
 BESSEL_TINY_ORDERS = (0, 1, 7, 60, 500, 2000, 10000)

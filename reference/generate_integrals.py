@@ -12,7 +12,7 @@ Columns: id, description, value.  `id` is I<n> for Arb's integral number n and
 X<name> for the extras; `value` is the exact integral to OUT_DIGITS significant
 digits (3500 digits, about 11600 bits: enough for the 3333-bit golden test with a
 wide margin).  The integrands themselves live next to their ids in
-tests/certified_golden.rs.
+tests/it/certified_golden.rs.
 
 Every value is computed from its closed form twice, at mp.dps = OUT_DIGITS + 20 and
 OUT_DIGITS + 60, and kept only when the two agree to OUT_DIGITS + 5 digits; it is

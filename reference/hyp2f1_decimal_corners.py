@@ -1,5 +1,5 @@
-"""References for tests/hyp2f1_decimal_corners.rs: MP 2F1 at the decimal inputs
-that issue 23h's driver (tests/fuzz.rs `registry_mp_slow_scan`) found slow
+"""References for tests/it/hyp2f1_decimal_corners.rs: MP 2F1 at the decimal inputs
+that issue 23h's driver (tests/it/fuzz.rs `registry_mp_slow_scan`) found slow
 (parameters like 2.9625e-28910, 2.6e18829, 4.3e18 next to moderate ones).
 
 Usage:  python3 reference/hyp2f1_decimal_corners.py

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Smooth Maugis pull-off (alpha = 0) at large lambda, for tests/large_lambda.rs.
+"""Smooth Maugis pull-off (alpha = 0) at large lambda, for tests/it/large_lambda.rs.
 
 Usage:  python3 reference/pull_off_smooth.py   (writes reference/data/pull_off_smooth.csv)
 

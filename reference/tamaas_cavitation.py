@@ -9,7 +9,7 @@ Anciaux, Rey and Molinari; PyPI `tamaas`, version printed into the CSV).
                                                       # (approach within 2.8e-5 of Hertz's at loads 0.014-0.29)
 
 It writes reference/data/tamaas_cavitation.csv, which
-solver/tests/tamaas_reference.rs compares with maugis-solver state by state.
+solver/tests/it/tamaas_reference.rs compares with maugis-solver state by state.
 
 Method
 ------

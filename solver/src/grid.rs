@@ -12,7 +12,7 @@ pub const MAX_CELLS: usize = 1 << 24;
 
 /// Smallest domain half-width accepted (`l_h`): far below any contact the
 /// model describes, and it keeps the cell width `2X/n` a normal f64 at every
-/// grid size (a subnormal half-width made `dx = 0`; found by `tests/fuzz.rs`).
+/// grid size (a subnormal half-width made `dx = 0`; found by `tests/it/fuzz.rs`).
 pub const MIN_HALF_WIDTH: f64 = 1e-6;
 /// Largest domain half-width accepted (`l_h`).
 pub const MAX_HALF_WIDTH: f64 = 1e6;

@@ -57,7 +57,7 @@ use crate::run::{simulate_with, Simulation, SimulationOptions, SimulationSpec};
 
 /// The default label margin over the smooth cylinder's W: 0.02 `dgamma l_h`,
 /// the tolerance of W near 0 of the solver's dissipation test
-/// (`solver/tests/dissipation.rs`).
+/// (`solver/tests/it/dissipation.rs`).
 pub const DEFAULT_MARGIN: f64 = 0.02;
 
 /// Grid cells and approach steps of one cycle.

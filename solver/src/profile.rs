@@ -42,7 +42,7 @@ impl Profile {
         finite(alpha, "alpha")?;
         finite(beta, "beta")?;
         // The model's ranges: a subnormal beta made 2 pi x/beta overflow and the
-        // sampled profile NaN (found by tests/fuzz.rs).
+        // sampled profile NaN (found by tests/it/fuzz.rs).
         in_range(alpha, "alpha", ALPHA_RANGE)?;
         in_range(beta, "beta", BETA_RANGE)?;
         Ok(Profile::WavyCylinder { alpha, beta })

@@ -7,7 +7,7 @@
 //! strings at 1000 and 1300 bits, 100 digits; `hyp2f1_decimal_rows` in
 //! reference/generate.py).
 
-mod common;
+use crate::common;
 
 use maugis::ball::{eval_at_decimals, Decimal};
 use maugis::special::hyp2f1::hyp2f1_ball_mp;

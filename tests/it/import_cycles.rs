@@ -570,7 +570,7 @@ fn no_new_import_cycles_between_files() {
         msg += &format!("\nnew import cycle between files (break it; do not add it to KNOWN_CYCLES unless agreed):{}", describe(&graph, c));
     }
     for c in &gone {
-        msg += &format!("\nKNOWN_CYCLES entry is no longer a cycle, delete it from tests/import_cycles.rs: {c:?}");
+        msg += &format!("\nKNOWN_CYCLES entry is no longer a cycle, delete it from tests/it/import_cycles.rs: {c:?}");
     }
     assert!(msg.is_empty(), "{msg}\n(cycles found now: {found:#?})");
 }

@@ -5,7 +5,7 @@
 //! string at 1100 and 1400 bits, 100 digits), Bessel zeros typed to 17..60
 //! digits and the same decimals with the last digit raised by one.
 
-mod common;
+use crate::common;
 
 use maugis::ball::{eval_at_decimals, Decimal};
 use maugis::special::bessel_j::{bessel_j_ball_mp, bessel_j_mp};

@@ -20,7 +20,7 @@ use maugis::ball::Ball;
 use maugis::quad::certified::{integrate, integrate_to_infinity, integrate_weighted, Decay, HoloBall, Integral, Options, Weight};
 use maugis::rug::Float;
 
-const CSV: &str = include_str!("../reference/data/integrals.csv");
+const CSV: &str = include_str!("../../reference/data/integrals.csv");
 
 fn reference() -> HashMap<String, String> {
     let mut rdr = csv::Reader::from_reader(CSV.as_bytes());

@@ -3,7 +3,7 @@
 //! code 2, nothing written). Small grids keep it fast. Every SVG written is
 //! rendered and its legend checked (`render`).
 
-mod render;
+use crate::render;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};

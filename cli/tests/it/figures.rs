@@ -7,7 +7,7 @@
 //! The solver figures are not regenerated here (about a minute of solver
 //! runs); their pictures are checked as committed.
 
-mod render;
+use crate::render;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};

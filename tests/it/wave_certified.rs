@@ -4,8 +4,9 @@
 //!
 //! The certified double integral costs about 0.2 s (du) to 13 s (u) a point at
 //! 64 bits in release, growing with D = 2 pi a/zeta and as x -> a. The test takes
-//! every one of the 51 cross-check points of tests/wave_crosscheck.rs (100 s on two
-//! cores in release, measured 2026-11-25).
+//! the cross-check points of tests/it/wave_crosscheck.rs: every fourth in the
+//! default test tier, all 51 under `./dev test --long` (100 s on two cores in
+//! release, measured 2026-11-25).
 
 use maugis::contact::displacement::{du_wave_series_mp, u_wave_series_mp};
 use maugis::contact::displacement::quadrature_ball::{du_wave_quad_ball, traction_integral_ball, u_wave_quad_ball};
@@ -17,8 +18,8 @@ use rug::Float;
 /// Precision of the certified double integral.
 const PREC: u32 = 64;
 
-mod wave_points;
-use wave_points::points as all_points;
+use crate::wave_points;
+use wave_points::tier_points;
 
 fn ball(v: f64) -> Ball {
     Ball::from_f64(v, 53).unwrap()
@@ -49,7 +50,7 @@ fn check_point(a: f64, zeta: f64, x: f64) {
 
 #[test]
 fn eq11a_certified_overlaps_series_every_point() {
-    all_points().par_iter().for_each(|&(a, zeta, x)| check_point(a, zeta, x));
+    tier_points().par_iter().for_each(|&(a, zeta, x)| check_point(a, zeta, x));
 }
 
 /// The edge: `u_w(a) = A (1 - cos D)` exactly, and `du_w/dx` at `x = a` (the

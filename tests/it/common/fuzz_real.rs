@@ -1,5 +1,5 @@
-//! The f64 generator shared by the fuzz targets of the library (tests/fuzz.rs)
-//! and of the solver (solver/tests/fuzz.rs, which includes this file by path):
+//! The f64 generator shared by the fuzz targets of the library (tests/it/fuzz.rs)
+//! and of the solver (solver/tests/it/fuzz.rs, which includes this file by path):
 //! an f64 from 64 random bits.
 
 /// A raw bit pattern, one of `edges` (values at and next to the domain edges of

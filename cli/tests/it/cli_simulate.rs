@@ -1,7 +1,7 @@
 //! `maugis simulate`: a small run writes CSV and SVG (rendered and its legend
 //! checked, `render`); bad input exits 2 and writes nothing.
 
-mod render;
+use crate::render;
 
 use std::process::Command;
 

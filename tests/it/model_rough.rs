@@ -6,7 +6,7 @@
 //! over 60 s and the strip ratio 3.5 to 5.3 s before the midpoint recurrence
 //! for the J_n; the times are in docs/bessel.md (no time assertion here).
 
-mod common;
+use crate::common;
 
 use maugis::ball::Decimal;
 use maugis::contact::model_mp::{load_at_decimals, strip_ratio_at_decimals};

@@ -1,6 +1,6 @@
 //! No public entry point of the solver panics, on any input: fuzzing on the
 //! stable toolchain with bolero's random engine (issue 26, item 5; the
-//! library's targets are in the workspace's `tests/fuzz.rs`, this file follows
+//! library's targets are in the workspace's `tests/it/fuzz.rs`, this file follows
 //! their style).
 //!
 //! Each target draws structured inputs (f64 bit patterns mixed with values at
@@ -16,7 +16,7 @@
 //! per target (or `BOLERO_RANDOM_ITERATIONS` for a count):
 //!
 //! ```text
-//! BOLERO_RANDOM_TEST_TIME_MS=600000 cargo test --features maugis/gmp-no-check -p maugis-solver --test fuzz -- --nocapture
+//! BOLERO_RANDOM_TEST_TIME_MS=600000 cargo test --features maugis/gmp-no-check -p maugis-solver --test it fuzz:: -- --nocapture
 //! ```
 //!
 //! Campaign of 2026-11-26 (test profile, 240 s a target, one thread, at
@@ -29,7 +29,7 @@
 //! subnormal `beta` (a NaN profile), table rows too close for their rise (a NaN
 //! slope), and `ProfileTable::depth_at(NaN)` (an index underflow: a panic).
 
-#[path = "../../tests/common/fuzz_real.rs"]
+#[path = "../../../tests/it/common/fuzz_real.rs"]
 mod fuzz_real;
 
 use bolero::check;

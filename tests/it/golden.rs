@@ -9,7 +9,7 @@
 //! The per-region table is printed (run with `--nocapture` to see it) and saved
 //! under `target/accuracy/` for `docs/special-functions.md`.
 
-mod common;
+use crate::common;
 
 use std::collections::BTreeMap;
 

@@ -15,7 +15,7 @@
 //! at 1000 and 1300 bits, 180 digits). The other grid points are binary fractions,
 //! checked against `reference/data/bessel_j_grid.csv`.
 
-mod common;
+use crate::common;
 
 use maugis::ball::{eval_at_decimals, CBall, Decimal};
 use maugis::contact::displacement::wave_at_decimals;

@@ -9,7 +9,7 @@
 //! strings at 700 and 900 bits, 100 digits; `model_decimal_rows` in
 //! reference/generate.py).
 
-mod common;
+use crate::common;
 
 use maugis::ball::Decimal;
 use maugis::contact::model::Params;

@@ -1,5 +1,5 @@
 //! The cross-check points of the wave displacement, shared by
-//! tests/wave_crosscheck.rs and tests/wave_certified.rs.
+//! tests/it/wave_crosscheck.rs and tests/it/wave_certified.rs.
 
 /// The test points `(a, zeta, x)`.
 pub fn points() -> Vec<(f64, f64, f64)> {
@@ -37,4 +37,16 @@ pub fn points() -> Vec<(f64, f64, f64)> {
     pts.push((1.75, 0.625, 1.75 * 1.001));
     pts.push((0.375, 1.5, 1.5));
     pts
+}
+
+/// The points a cross-check runs in this tier: every point under `./dev test
+/// --long`, every fourth one in the default tier (13 of the 51: x/a = 1 + 10^-j
+/// for j = 2, 6, 10, one grid point at each of the seven a, three far points).
+pub fn tier_points() -> Vec<(f64, f64, f64)> {
+    let all = points();
+    if crate::tier::long() {
+        all
+    } else {
+        all.into_iter().step_by(4).collect()
+    }
 }

@@ -5,7 +5,7 @@
 //! their regions meet (two algorithms, two precisions, balls must overlap);
 //! and no refusal over |n| <= 1e5, |x| <= 1e7, prec <= 4096.
 
-mod common;
+use crate::common;
 
 use maugis::special::bessel_j::{
     bessel_j_hankel, bessel_j_mp, bessel_j_series, bessel_j_three_term, choose_algorithm, Algorithm,

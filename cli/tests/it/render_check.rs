@@ -2,7 +2,7 @@
 //! plotters legend was (marker over the label, a coloured line without an
 //! entry, a label wider than its box) fails them, a sound one passes.
 
-mod render;
+use crate::render;
 
 use std::path::PathBuf;
 

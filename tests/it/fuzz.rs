@@ -11,7 +11,7 @@
 //! inputs on every machine). A campaign:
 //!
 //! ```text
-//! BOLERO_RANDOM_ITERATIONS=1000000 cargo test --release --features maugis/gmp-no-check --test fuzz
+//! BOLERO_RANDOM_ITERATIONS=1000000 cargo test --release --features maugis/gmp-no-check --test it fuzz::
 //! ```
 //!
 //! (docs/fuzzing.md records the campaigns run and their counts).

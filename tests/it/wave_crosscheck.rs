@@ -5,7 +5,8 @@
 //! * the Bessel form (certified balls; f64 double-double),
 //! * the Eq. 11a double quadrature (tanh-sinh in MP, Gauss–Legendre in f64).
 //!
-//! At 56 points spanning a in (0, 6], zeta in [1/2, 5], A = 1 (D = 2 pi a/zeta up
+//! At 51 points (every fourth, 13, in the default test tier, all under `./dev test
+//! --long`: `wave_points::tier_points`) spanning a in (0, 6], zeta in [1/2, 5], A = 1 (D = 2 pi a/zeta up
 //! to 75) and x/a in (1, 5], including x/a = 1 + 10^-j for j = 2..10. Also the
 //! truncation bounds at several kmax, the edge identity, and one test per
 //! erratum of the printed paper (docs/displacement.md, "Errata pinned by tests").
@@ -20,8 +21,8 @@ use rug::Float;
 /// MP quadrature precision: 84 bits = 25 digits.
 const QUAD_PREC: u32 = 84;
 
-mod wave_points;
-use wave_points::points;
+use crate::wave_points;
+use wave_points::{points, tier_points};
 
 fn ball_of(v: &Float) -> Ball {
     Ball::from_float(v, v.prec())
@@ -40,7 +41,7 @@ fn enough_points() {
 /// certified balls of the same number: they must overlap, and both are tight.
 #[test]
 fn series_and_bessel_form_agree_mp() {
-    points().par_iter().for_each(|&(a, zeta, x)| {
+    tier_points().par_iter().for_each(|&(a, zeta, x)| {
         let (ae, ze, me, xe) = (exact(a), exact(zeta), exact(1.0), exact(x));
         let bessel = u_wave_mp(&ae, &ze, &me, &xe, 100).expect("bessel u");
         let series = u_wave_series_mp(&ae, &ze, &me, &xe, 1000, 100).expect("series u");
@@ -58,7 +59,7 @@ fn series_and_bessel_form_agree_mp() {
 /// to 25 digits relative to max(|u_w|, A) (and max(|u_w'|, 2 pi A/zeta)).
 #[test]
 fn quadrature_agrees_mp() {
-    points().par_iter().for_each(|&(a, zeta, x)| {
+    tier_points().par_iter().for_each(|&(a, zeta, x)| {
         let (ae, ze, me, xe) = (exact(a), exact(zeta), exact(1.0), exact(x));
         let bessel = u_wave_mp(&ae, &ze, &me, &xe, 100).unwrap();
         let quad = u_wave_quad_mp(&ae, &ze, &me, &xe, QUAD_PREC).expect("quad u");
@@ -78,7 +79,7 @@ fn quadrature_agrees_mp() {
 fn f64_routes_agree() {
     let mut worst_bessel = 0.0f64;
     let mut worst_quad = 0.0f64;
-    for (a, zeta, x) in points() {
+    for (a, zeta, x) in tier_points() {
         let (ae, ze, me, xe) = (exact(a), exact(zeta), exact(1.0), exact(x));
         let u = u_wave_mp(&ae, &ze, &me, &xe, 80).unwrap().to_f64();
         let du = du_wave_mp(&ae, &ze, &me, &xe, 80).unwrap().to_f64();
@@ -101,7 +102,7 @@ fn f64_routes_agree() {
 #[test]
 fn truncation_bounds_hold() {
     let kmaxes = [0u64, 3, 10, 25, 60, 1000];
-    points().par_iter().for_each(|&(a, zeta, x)| {
+    tier_points().par_iter().for_each(|&(a, zeta, x)| {
         let (ae, ze, me, xe) = (exact(a), exact(zeta), exact(1.0), exact(x));
         let exact_u = u_wave_mp(&ae, &ze, &me, &xe, 100).unwrap();
         let exact_du = du_wave_mp(&ae, &ze, &me, &xe, 100).unwrap();

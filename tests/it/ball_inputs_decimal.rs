@@ -8,7 +8,7 @@
 //! decimal strings at 1000 and 1300 bits, 100 digits; `ball_decimal_rows` in
 //! reference/generate.py).
 
-mod common;
+use crate::common;
 
 use maugis::ball::{eval_at_decimals, Decimal};
 use maugis::contact::displacement::{

@@ -6,7 +6,7 @@
 //! reported: how tight the bounds are (max and median of `err / ulp(value)`),
 //! since a bound that always holds but is huge is of no use to a solver.
 
-mod common;
+use crate::common;
 
 use common::*;
 use maugis::special::{bessel_j, hyp1f2, hyp2f1, meijer_g};

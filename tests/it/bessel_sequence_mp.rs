@@ -16,7 +16,7 @@
 //! | `2 <= n < x` | absolute | `2 log2 X + 2` | `(n - 1)` local errors times the energy-norm growth, `~x^2` next to the turning point |
 //! | `n > x` | relative | `(7/3) log2 X + log2(A) + 2` | `J_{m+1}` (`x^2` against `|J_{m+1}| ~ x^{-1/3}`) and the ratio walk's `28 A 2^-wp`, `A = (nmax - x) + (x/2) ln(nmax - x + 2) + 1` |
 
-mod common;
+use crate::common;
 
 use maugis::special::bessel_j::{bessel_j_sequence_mp, bessel_j_sequence_three_term, MAX_SEQUENCE_ARGUMENT, MAX_SEQUENCE_ORDER};
 use maugis::{Ball, Error};
