@@ -10,25 +10,9 @@
 //! connection formulas at 700 and 1100 bits, cross-checked by direct sums;
 //! `reference/hyp2f1_large_param.py`).
 
-mod common;
+use crate::common;
 
-use maugis::ball::{eval_at_decimals, Decimal};
-use maugis::special::hyp2f1::hyp2f1_ball_mp;
-use maugis::{Ball, Result};
 use rug::Float;
-
-/// What `maugis eval` (and the registry's MP path) runs for `{"fn": "hyp2f1", ...}`.
-fn at_decimals(a: &str, b: &str, c: &str, z: &str, prec: u32) -> Result<Ball> {
-    let d: Vec<Decimal> = [a, b, c, z].iter().map(|s| Decimal::parse(s).expect("decimal parses")).collect();
-    eval_at_decimals(&d, prec, |x| hyp2f1_ball_mp(&x[0], &x[1], &x[2], &x[3], prec))
-}
-
-/// `|mid - ref| <= rad + 1e-38 |ref|` (the references carry 40 digits).
-fn contains_ref(b: &Ball, r: &Float) -> bool {
-    let p = 400;
-    let diff = Float::with_val(p, b.mid() - r).abs();
-    diff <= Float::with_val(p, b.rad() + Float::with_val(p, r.abs_ref()) * Float::with_val(p, 1e-38))
-}
 
 #[test]
 fn one_large_parameter_answers_certified_at_2_64_and_256_bits() {
@@ -39,8 +23,8 @@ fn one_large_parameter_answers_certified_at_2_64_and_256_bits() {
         let (a, b, c, z) = (&row["a"], &row["b"], &row["c"], &row["z"]);
         let want = Float::with_val(400, Float::parse(&row["value"]).expect("reference parses"));
         for prec in [2u32, 64, 256] {
-            let got = at_decimals(a, b, c, z, prec).unwrap_or_else(|e| panic!("2F1({a}, {b}; {c}; {z}) at {prec}: {e}"));
-            assert!(contains_ref(&got, &want), "2F1({a}, {b}; {c}; {z}) at {prec}: {got:?} misses {want}");
+            let got = common::hyp2f1_at_decimals(a, b, c, z, prec).unwrap_or_else(|e| panic!("2F1({a}, {b}; {c}; {z}) at {prec}: {e}"));
+            assert!(common::contains_40_digit_ref(&got, &want), "2F1({a}, {b}; {c}; {z}) at {prec}: {got:?} misses {want}");
             assert!(got.meets_rel(prec), "2F1({a}, {b}; {c}; {z}) at {prec}: {got:?} has fewer than {prec} bits");
             checked += 1;
         }
