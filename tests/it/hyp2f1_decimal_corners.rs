@@ -49,6 +49,10 @@ fn long_parameters_answer_or_refuse_with_a_typed_error() {
     // issue 37 (minutes in Gamma at 59 904 bits before that), now the series in
     // ball arithmetic when |z| < 1 after the transformation. 2F1(-231, b; -1/2;
     // 5e-30836) = 1 + 9374 z + ..., within 2^-64 of 1.
+    // At |w| > 1/2 after Pfaff it is still refused (the ball series there is not bounded in time):
+    let (a, b, c, z) = ("2.3241413192607027e1", "22.787377894353547e-10537", "-0.5", "-1.235e2");
+    let e = common::hyp2f1_at_decimals(a, b, c, z, 32).unwrap_err();
+    assert!(matches!(e, Error::BallOutOfRange { arg: "c", .. }), "({a}, {b}; {c}; {z}): {e:?}");
     let ball = common::hyp2f1_at_decimals("-231", "20.291989487169147", "-5e-1", "0.5e-30835", 3).unwrap();
     assert!(ball.contains(&Float::with_val(64, 1)) && ball.meets_rel(3), "{ball:?}");
     // a cancellation of ~65 000 bits between the connection formula's pieces:

@@ -35,11 +35,12 @@
 //!   ball and `Gamma(x) in Gamma(m) [e^{-rM}, e^{rM}]`; a terminating series
 //!   (`a = -n` exact) uses Chu-Vandermonde `(c-b)_n / (c)_n` [DLMF 15.4.24].
 //!
-//! * **`c <= 0` somewhere on a non-exact `c` ball, `|z| < 1`**: the series in
+//! * **`c <= 0` somewhere on a non-exact `c` ball, `|z| <= 1/2`**: the series in
 //!   ball arithmetic (`pfq::hyp_pfq_ball_mp`), a pole inside the `c` ball an error.
 //!
 //! Not covered (a typed error says so): non-exact balls with `c <= 0` somewhere
-//! on the ball and `|z| >= 1` after the transformation, `z` balls that straddle `-3/4 .. -1/2` and beyond, `z` balls
+//! on the ball and `|z| > 1/2` after the transformation (at `w = 0.992` the ball
+//! series ran for minutes), `z` balls that straddle `-3/4 .. -1/2` and beyond, `z` balls
 //! reaching 1 that are not exactly 1, and at `z = 1` a `c - a` or `c - b` ball
 //! containing a non-positive integer.
 
@@ -246,11 +247,11 @@ fn direct_ball(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32) -> Result<Ball> 
     let c_lo = c.lower();
     if !(c_lo > 0) {
         // The majorant needs c > 0 over the ball. Otherwise (c < 0 between
-        // poles, |z| < 1) the series itself in ball arithmetic (pFq's ball path:
+        // poles, |z| <= 1/2: a bounded term count) the series itself in ball arithmetic (pFq's ball path:
         // ball terms, a tail bound valid over the balls, a cost check before
         // summing); a pole inside the c ball stays an error. Checked before the
         // midpoint evaluation, which can cost far more than the check.
-        if z.abs_upper() < 1 {
+        if z.abs_upper() <= 0.5 {
             let inputs = [a, b, c, z].map(|x| crate::special::input_ball(x, wp));
             return crate::special::pfq::hyp_pfq_ball_mp(&inputs[..2], &inputs[2..3], &inputs[3], wp);
         }
