@@ -76,6 +76,10 @@ use crate::special::pfq::contains_pole;
 /// Smallest `max(|a|, |b|)` for which the chooser considers this route.
 pub(crate) const LARGE_PARAM: f64 = 1000.0;
 
+/// Largest `max(|a|, |b|)` for this route (tested to `10^6`; at `4.3e18` the
+/// ball path's Ziv loop ran for minutes: the other methods refuse those at once).
+pub(crate) const LARGE_PARAM_MAX: f64 = 1.0e7;
+
 /// The large parameter must be at least this many times `max(other, |c|) + 1`.
 pub(crate) const RATIO_OTHERS: f64 = 16.0;
 
@@ -90,7 +94,7 @@ const BOUND_PREC: u32 = 64;
 pub(crate) fn large_param_terms(a: f64, b: f64, c: f64, z: f64, bits: f64) -> Option<f64> {
     let (big, small) = if a.abs() >= b.abs() { (a.abs(), b.abs()) } else { (b.abs(), a.abs()) };
     let others = small.max(c.abs());
-    if !(big >= LARGE_PARAM && big >= RATIO_OTHERS * (others + 1.0)) || !(z < 1.0) || z == 0.0 {
+    if !(big >= LARGE_PARAM && big <= LARGE_PARAM_MAX && big >= RATIO_OTHERS * (others + 1.0)) || !(z < 1.0) || z == 0.0 {
         return None;
     }
     let u = if z < 0.0 { 1.0 / (1.0 - z) } else { 1.0 - z };
