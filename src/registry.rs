@@ -397,7 +397,7 @@ pub static FUNCTIONS: &[Function] = &[
         bounded: None,
         mp: |a, p| {
             let [x0, z, m, x] = rounded_reals::<4>(a, p)?;
-            let q = wave_quadrature::u_wave_quad_mp(&x0, &z, &m, &x, p)?;
+            let q = wave_quadrature::u_wave_quad_mp_with_budget(&x0, &z, &m, &x, p, wave_quadrature::MAX_QUAD_MP_SECONDS)?;
             Ok(Answer::EstimateMp { value: q.value, error_estimate: q.error_estimate })
         },
     },

@@ -258,6 +258,29 @@ pub fn exact(x: f64) -> Float {
 }
 
 /// Checks a Float argument for finiteness.
+/// An input ball for work at `wp` bits, never rounded below its own precision:
+/// rounding a ball typed next to an edge (`y = 0.999999999999999` next to
+/// `y = 1`, a denominator next to a pole) to a coarse working precision can
+/// put the edge inside it, a refusal that more precision would fix. The inputs
+/// of `eval_at_decimals` carry `prec + 64` bits at least, and more only when
+/// the answer or an edge check needs them.
+/// Not kept either: bits the ball does not need. An exact ball is rounded to the
+/// bits its value holds (exact: `10^5` at 40 960 bits is a 17-bit number, and
+/// Gamma at 40 960 bits takes minutes), an inexact one to the bits that keep the
+/// rounding below its radius.
+pub(crate) fn input_ball(x: &Ball, wp: u32) -> Ball {
+    let needed = if x.is_exact() {
+        // SAFETY: mpfr_min_prec reads an initialized MPFR value.
+        unsafe { gmp_mpfr_sys::mpfr::min_prec(x.mid().as_raw()) }.max(2) as u32
+    } else {
+        match (x.mid().get_exp(), x.rad().get_exp()) {
+            (Some(em), Some(er)) => (i64::from(em) - i64::from(er) + 2).clamp(2, i64::from(u32::MAX)) as u32,
+            _ => wp,
+        }
+    };
+    x.set_prec(wp.max(needed.min(x.prec())))
+}
+
 pub(crate) fn check_finite(x: &Float, what: &'static str) -> Result<()> {
     if x.is_finite() {
         Ok(())

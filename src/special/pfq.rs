@@ -634,8 +634,8 @@ pub fn hyp_pfq_ball_mp(a: &[Ball], b: &[Ball], z: &Ball, prec: u32) -> Result<Ba
     }
     check_series_cost(a, b, z, prec + guard)?;
     crate::special::ziv_ball_inputs(prec, guard, None, |wp| {
-        let at = |xs: &[Ball]| xs.iter().map(|x| x.set_prec(wp)).collect::<Vec<Ball>>();
-        Ok(pfq_series(&at(a), &at(b), &z.set_prec(wp), wp)?.sum)
+        let at = |xs: &[Ball]| xs.iter().map(|x| crate::special::input_ball(x, wp)).collect::<Vec<Ball>>();
+        Ok(pfq_series(&at(a), &at(b), &crate::special::input_ball(z, wp), wp)?.sum)
     })
 }
 

@@ -82,6 +82,18 @@ fn check(a: f64, zeta: f64, amp: f64, x: f64) -> Result<()> {
     Ok(())
 }
 
+/// The default time budget of the MP quadrature through the registry (`maugis
+/// eval`, Python): [`u_wave_quad_mp_with_budget`] stops with
+/// [`Error::TooExpensive`] past it (checked at every outer node; the error's
+/// `seconds` is the time spent, a lower bound of the whole). The nested
+/// tanh-sinh evaluates the kernel (a `sin_cos`, a `cos`, an `ln1p` at
+/// `prec + 24` bits and more) at every inner node of every outer node: 0.6 s at
+/// 24 bits, 2 s at 64 and 5-11 s at 100-146 bits at moderate inputs such as
+/// `(a, zeta, A, x) = (1, 0.7, 0.1, 1.5)` or `(29.2, 23.6, 24.5, 212.75)`
+/// (release build, load about 5). The certified wave values are `u_wave`'s
+/// Bessel route; this estimate is the independent cross-check.
+pub const MAX_QUAD_MP_SECONDS: f64 = 30.0;
+
 /// Largest `D = 2 pi a/zeta` the quadrature route accepts.
 pub const MAX_QUAD_D: f64 = 1.0e3;
 
@@ -165,7 +177,7 @@ fn mp_inner(kind: Quantity, g: &MpGeometry, t: &Float, split: f64, opts: &TanhSi
     Ok(total * 2u32)
 }
 
-fn mp_quadrature(kind: Quantity, a: &Float, zeta: &Float, amp: &Float, x: &Float, prec: u32) -> Result<QuadEstimateMp> {
+fn mp_quadrature(kind: Quantity, a: &Float, zeta: &Float, amp: &Float, x: &Float, prec: u32, budget: Option<f64>) -> Result<QuadEstimateMp> {
     for (v, n) in [(a, "a"), (zeta, "zeta"), (amp, "amp"), (x, "x")] {
         check_finite(v, n)?;
     }
@@ -194,8 +206,21 @@ fn mp_quadrature(kind: Quantity, a: &Float, zeta: &Float, amp: &Float, x: &Float
     // natural scale (|A| for u, 2 pi |A|/zeta for du).
     outer_opts.abs_tol = Float::with_val(53, amp.abs_ref()) >> (prec as i32);
     let zero = Float::new(wp);
+    let start = std::time::Instant::now();
     let outer = tanh_sinh::integrate(
         |t: &Float| {
+            // the nested quadrature's length is not known in advance: a time
+            // budget checked at every outer node bounds the call
+            if let Some(limit) = budget {
+                let spent = start.elapsed().as_secs_f64();
+                if spent > limit {
+                    return Err(Error::TooExpensive {
+                        function: "the Eq. 11a quadrature estimate in MP (nested tanh-sinh at the requested precision)",
+                        seconds: spent,
+                        limit_seconds: limit,
+                    });
+                }
+            }
             let j0 = bessel_j_mp(0, t, t.prec())?;
             let inner = mp_inner(kind, &g, t, split, &inner_opts)?;
             Ok(Float::with_val(t.prec(), j0.mid() * &inner))
@@ -219,14 +244,26 @@ fn mp_quadrature(kind: Quantity, a: &Float, zeta: &Float, amp: &Float, x: &Float
     Ok(QuadEstimateMp { value, error_estimate: err, evaluations: outer.evaluations })
 }
 
-/// `u_w(x)` from the Eq. 11a quadrature (tanh-sinh), to about `prec` bits (estimate).
+/// `u_w(x)` from the Eq. 11a quadrature (tanh-sinh), to about `prec` bits
+/// (estimate), without a time budget: seconds to minutes (see
+/// [`MAX_QUAD_MP_SECONDS`]); for cross-checks. [`u_wave_quad_mp_with_budget`]
+/// bounds the time.
 pub fn u_wave_quad_mp(a: &Float, zeta: &Float, amp: &Float, x: &Float, prec: u32) -> Result<QuadEstimateMp> {
-    mp_quadrature(Quantity::Increment, a, zeta, amp, x, prec)
+    mp_quadrature(Quantity::Increment, a, zeta, amp, x, prec, None)
 }
 
-/// `du_w/dx` from the Eq. 11a double integral (tanh-sinh), to about `prec` bits (estimate).
+/// [`u_wave_quad_mp`] that stops with [`Error::TooExpensive`] once
+/// `budget_seconds` have passed (checked at every outer node, so the call ends
+/// within about one outer node's time past the budget). The registry (`maugis
+/// eval`, Python) uses [`MAX_QUAD_MP_SECONDS`].
+pub fn u_wave_quad_mp_with_budget(a: &Float, zeta: &Float, amp: &Float, x: &Float, prec: u32, budget_seconds: f64) -> Result<QuadEstimateMp> {
+    mp_quadrature(Quantity::Increment, a, zeta, amp, x, prec, Some(budget_seconds))
+}
+
+/// `du_w/dx` from the Eq. 11a double integral (tanh-sinh), to about `prec` bits
+/// (estimate), without a time budget (as [`u_wave_quad_mp`]).
 pub fn du_wave_quad_mp(a: &Float, zeta: &Float, amp: &Float, x: &Float, prec: u32) -> Result<QuadEstimateMp> {
-    mp_quadrature(Quantity::Gradient, a, zeta, amp, x, prec)
+    mp_quadrature(Quantity::Gradient, a, zeta, amp, x, prec, None)
 }
 
 // ---------------------------------------------------------------- f64

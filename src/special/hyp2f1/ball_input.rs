@@ -35,8 +35,12 @@
 //!   ball and `Gamma(x) in Gamma(m) [e^{-rM}, e^{rM}]`; a terminating series
 //!   (`a = -n` exact) uses Chu-Vandermonde `(c-b)_n / (c)_n` [DLMF 15.4.24].
 //!
+//! * **`c <= 0` somewhere on a non-exact `c` ball, `|z| <= 1/2`**: the series in
+//!   ball arithmetic (`pfq::hyp_pfq_ball_mp`), a pole inside the `c` ball an error.
+//!
 //! Not covered (a typed error says so): non-exact balls with `c <= 0` somewhere
-//! on the ball, `z` balls that straddle `-3/4 .. -1/2` and beyond, `z` balls
+//! on the ball and `|z| > 1/2` after the transformation (at `w = 0.992` the ball
+//! series ran for minutes), `z` balls that straddle `-3/4 .. -1/2` and beyond, `z` balls
 //! reaching 1 that are not exactly 1, and at `z = 1` a `c - a` or `c - b` ball
 //! containing a non-positive integer.
 
@@ -44,11 +48,12 @@ use rug::float::Round;
 use rug::Float;
 
 use super::choose::{evaluate, plan};
+use super::large_param::{hyp2f1_large_param, large_param_loss, large_param_terms};
 use super::{hyp2f1_mp, validate};
 use crate::ball::{Ball, Mag};
 use crate::error::{check_prec, Error, Interval, Result};
 use crate::special::gamma::{gamma_ball, gamma_of_ball};
-use crate::special::{is_nonpositive_integer, DEFAULT_GUARD_BITS};
+use crate::special::{is_nonpositive_integer, ziv_ball_inputs, DEFAULT_GUARD_BITS};
 
 /// Precision of the majorant evaluations (only upper bounds are needed).
 const MAJORANT_PREC: u32 = 32;
@@ -109,6 +114,9 @@ pub fn hyp2f1_ball_mp(a: &Ball, b: &Ball, c: &Ball, z: &Ball, prec: u32) -> Resu
     if z.is_exact() && *z.mid() == 1 {
         return gauss_ball(a, b, c, terminating, wp);
     }
+    if let Some(r) = large_param_ball(a, b, c, z, prec) {
+        return r;
+    }
     if z.lower() > -0.75 && z.upper() < 1 {
         return direct_ball(a, b, c, z, wp);
     }
@@ -121,6 +129,24 @@ pub fn hyp2f1_ball_mp(a: &Ball, b: &Ball, c: &Ball, z: &Ball, prec: u32) -> Resu
         return Ok(pre.mul(&inner));
     }
     Err(too_wide("z", z, "within (-3/4, 1) or below -1/2"))
+}
+
+/// One large parameter (`large_param.rs`), when the chooser's estimate at the
+/// midpoints takes it: its formula runs in ball arithmetic over the input balls,
+/// so no majorant is needed (the majorant `2F1(A, B; C; |z|)` at `B = 10^6`,
+/// `|z| = 1/2` is about `2^(10^6)` times the value). `None` when it does not
+/// apply or fails (an integer inside `b - a` or `c - a - b`, a Gamma argument
+/// ball holding a pole): the majorant route then.
+fn large_param_ball(a: &Ball, b: &Ball, c: &Ball, z: &Ball, prec: u32) -> Option<Result<Ball>> {
+    let (af, bf, cf, zf) = (a.mid().to_f64(), b.mid().to_f64(), c.mid().to_f64(), z.mid().to_f64());
+    large_param_terms(af, bf, cf, zf, f64::from(prec))?;
+    if z.contains_zero() || !(z.upper() < 1) {
+        return None;
+    }
+    let loss = if af.abs() >= bf.abs() { large_param_loss(bf, af, cf, zf) } else { large_param_loss(af, bf, cf, zf) };
+    let guard = DEFAULT_GUARD_BITS + loss;
+    let r = ziv_ball_inputs(prec, guard, None, |wp| hyp2f1_large_param(a, b, c, z, wp));
+    r.ok().map(Ok)
 }
 
 /// The edges of the module docs; `terminating` is the degree when `a` or `b` is
@@ -220,8 +246,15 @@ fn direct_ball(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32) -> Result<Ball> 
     }
     let c_lo = c.lower();
     if !(c_lo > 0) {
-        // The radius bound needs c > 0 over the ball (or an exact c); checked
-        // before the midpoint evaluation, which can cost far more than the check.
+        // The majorant needs c > 0 over the ball. Otherwise (c < 0 between
+        // poles, |z| <= 1/2: a bounded term count) the series itself in ball arithmetic (pFq's ball path:
+        // ball terms, a tail bound valid over the balls, a cost check before
+        // summing); a pole inside the c ball stays an error. Checked before the
+        // midpoint evaluation, which can cost far more than the check.
+        if z.abs_upper() <= 0.5 {
+            let inputs = [a, b, c, z].map(|x| crate::special::input_ball(x, wp));
+            return crate::special::pfq::hyp_pfq_ball_mp(&inputs[..2], &inputs[2..3], &inputs[3], wp);
+        }
         return Err(ball_outside("c", c, Interval::above(0.0)));
     }
     let (deg_a, deg_b) = (exact_degree(a), exact_degree(b));

@@ -28,14 +28,15 @@ use std::f64::consts::LN_2;
 use rug::Float;
 
 use super::connection::{hyp2f1_connection, hyp2f1_gauss, hyp2f1_pfaff_connection};
+use super::large_param::{hyp2f1_large_param, large_param_cheaper, large_param_loss, large_param_terms};
 use super::log_case::hyp2f1_connection_log;
 use super::polynomial::hyp2f1_polynomial;
 use super::transform::{hyp2f1_direct, hyp2f1_euler, hyp2f1_pfaff};
 use super::{one, terminating_degree, DIRECT_RADIUS};
 use crate::ball::Ball;
 use crate::error::Result;
-use crate::special::exact_sub;
-use crate::special::gamma::lgamma_est;
+use crate::special::gamma::{lgamma_est, xball};
+use crate::special::{exact_sub, is_nonpositive_integer};
 
 /// Cap on the f64 cost simulations (iterations).
 const SIM_CAP: u64 = 200_000;
@@ -74,6 +75,10 @@ pub(crate) enum Algorithm {
     PfaffConnectionLog,
     /// Gauss's sum at `z = 1`, `c - a - b > 0`.
     Gauss,
+    /// One large parameter (`large_param.rs`): the connection formula in
+    /// `1/(1-z)` (`z < 0`) or `1-z` (`0 < z < 1`), series whose length does not
+    /// grow with the parameter.
+    LargeParam,
 }
 
 impl Algorithm {
@@ -86,6 +91,7 @@ impl Algorithm {
                 | Algorithm::PfaffConnection
                 | Algorithm::PfaffConnectionLog
                 | Algorithm::Gauss
+                | Algorithm::LargeParam
         )
     }
 }
@@ -317,8 +323,35 @@ pub(super) fn small_z_choice(af: f64, bf: f64, cf: f64, caf: f64, cbf: f64, zf: 
     (best.0, best.2)
 }
 
+/// Whether the large-parameter route (`large_param.rs`) applies at exact
+/// arguments and is estimated cheaper than the series in `z`: no Gamma argument
+/// of its formula at a pole, `b - a` (for `z < 0`) or `c - a - b` (for
+/// `0 < z < 1`) not an integer. The planned loss is `log2` of the largest parameter.
+pub(super) fn large_param_plan(a: &Float, b: &Float, c: &Float, z: &Float, wp: u32) -> Option<(Algorithm, u32)> {
+    let (af, bf, cf, zf) = (est(a), est(b), est(c), est(z));
+    let terms = large_param_terms(af, bf, cf, zf, wp as f64)?;
+    if !large_param_cheaper(af, bf, zf, terms) {
+        return None;
+    }
+    let (ca, cb) = (exact_sub(c, a), exact_sub(c, b));
+    let pole = [a, b, c, &ca, &cb].iter().any(|x| is_nonpositive_integer(x));
+    let integer = if *z < 0 { exact_sub(b, a).is_integer() } else { exact_sub(&ca, b).is_integer() };
+    let lost = if af.abs() >= bf.abs() { large_param_loss(bf, af, cf, zf) } else { large_param_loss(af, bf, cf, zf) };
+    (!pole && !integer).then_some((Algorithm::LargeParam, lost))
+}
+
 /// The algorithm and an estimate of the bits it loses (first Ziv guard).
 pub(super) fn plan(a: &Float, b: &Float, c: &Float, z: &Float, wp: u32) -> (Algorithm, u32) {
+    if terminating_degree(a, b).is_none() && *z != 1 {
+        if let Some(p) = large_param_plan(a, b, c, z, wp) {
+            return p;
+        }
+    }
+    plan_regions(a, b, c, z, wp)
+}
+
+/// [`plan`] without the large-parameter route: the region's series and connection formulas.
+pub(super) fn plan_regions(a: &Float, b: &Float, c: &Float, z: &Float, wp: u32) -> (Algorithm, u32) {
     let bits = wp as f64;
     let guard = |lost: f64, terms: f64| -> u32 { (lost + terms.max(1.0).log2()).clamp(0.0, 65536.0) as u32 };
     let sim_guard = |p: [f64; 2], q: [f64; 2], x: f64| -> u32 {
@@ -389,5 +422,6 @@ pub(crate) fn evaluate(alg: Algorithm, a: &Float, b: &Float, c: &Float, z: &Floa
         Algorithm::ConnectionLog => hyp2f1_connection_log(a, b, c, z, wp),
         Algorithm::PfaffConnection | Algorithm::PfaffConnectionLog => hyp2f1_pfaff_connection(a, b, c, z, wp),
         Algorithm::Gauss => hyp2f1_gauss(a, b, c, wp),
+        Algorithm::LargeParam => hyp2f1_large_param(&xball(a, wp), &xball(b, wp), &xball(c, wp), &xball(z, wp), wp),
     }
 }

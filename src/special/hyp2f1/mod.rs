@@ -35,6 +35,13 @@
 //! | `1/2 < z < 1` | `Algorithm::Connection` / `Algorithm::ConnectionLog` (1-z formula) | `1 - z in (0, 1/2)` |
 //! | `z < -1` | `Algorithm::PfaffConnection` / `Algorithm::PfaffConnectionLog`: Pfaff to `w = z/(z-1) in (1/2, 1)`, then the 1-w formula with `1 - w = 1/(1-z)` | `1/(1-z) in (0, 1/2)` |
 //!
+//! **One large parameter** (`Algorithm::LargeParam`, `large_param.rs`):
+//! `max(|a|, |b|) >= 1000` and 16 times the others, `z < 0` or `0 < z < 1`: the
+//! connection formula in `1/(1-z)` or `1-z`, whose series length does not grow
+//! with the parameter (about 1 ms for `2F1(1.5, 1000001; 24.74; -0.5)`, where every
+//! series in `z` runs to `10^6` terms); taken before the regions below when its
+//! estimated terms are fewer than `2 max(|a|, |b|) |z|`.
+//!
 //! Within `-1 <= z <= 1/2` the same function is also
 //! `(1-z)^{c-a-b} 2F1(c-a, c-b; c; z)` (`Algorithm::Euler`, DLMF 15.8.1) and
 //! `(1-z)^{-b} 2F1(c-a, b; c; w)` (`Algorithm::PfaffSwapped`); for `z < 0`
@@ -99,12 +106,14 @@
 //! formula and error bound: `series` (the power-series engine), `polynomial`
 //! (terminating series, exact rationals), `transform` (direct, Euler, Pfaff),
 //! `connection` (1-z formula, Pfaff + 1-w, Gauss's sum), `log_case` (the
-//! degenerate 1-z formula), `choose` (the cost model and dispatcher).
+//! degenerate 1-z formula), `large_param` (one large parameter, over balls),
+//! `choose` (the cost model and dispatcher).
 //! Gamma, Pochhammer and the magnitude helpers live in `special/gamma.rs`.
 
 mod ball_input;
 mod choose;
 mod connection;
+mod large_param;
 mod log_case;
 mod native;
 mod native_connection;
@@ -123,7 +132,7 @@ mod tests;
 use rug::Float;
 
 pub use ball_input::hyp2f1_ball_mp;
-use choose::{evaluate, plan};
+use choose::{evaluate, plan, plan_regions, Algorithm};
 
 use crate::ball::{Ball, Bounded};
 use crate::error::{check_prec, finite, Error, Interval, Result};
@@ -213,7 +222,16 @@ pub fn hyp2f1_mp(a: &Float, b: &Float, c: &Float, z: &Float, prec: u32) -> Resul
     if z.is_zero() {
         return Ok(Ball::one(prec));
     }
-    let (alg, lost) = plan(a, b, c, z, prec + DEFAULT_GUARD_BITS);
+    let (mut alg, mut lost) = plan(a, b, c, z, prec + DEFAULT_GUARD_BITS);
+    if alg == Algorithm::LargeParam {
+        let max_wp = prec.saturating_add(DEFAULT_GUARD_BITS + lost).saturating_add(MAX_GAMMA_LOSS);
+        match ziv_up_to("hyp2f1", prec, DEFAULT_GUARD_BITS + lost, None, max_wp, |wp| evaluate(alg, a, b, c, z, wp)) {
+            Ok(r) => return Ok(r),
+            // a Gamma argument or series denominator too close to a pole at the
+            // working precision: the region's own methods
+            Err(_) => (alg, lost) = plan_regions(a, b, c, z, prec + DEFAULT_GUARD_BITS),
+        }
+    }
     if alg.uses_gamma() {
         // The Gamma-based formulas: refused when the planned cancellation passes
         // MAX_GAMMA_LOSS, and their Ziv loop stops MAX_GAMMA_LOSS bits past the plan.

@@ -229,7 +229,7 @@ pub fn meijer_g_k_ball_mp(k: u32, y: &Ball, prec: u32) -> Result<Ball> {
     let near_one = matches!(choose_algorithm(k, yf), Algorithm::NearOne | Algorithm::AtOne);
     crate::special::ziv_ball_inputs(prec, guard_bits(k, yf.min(1.0 - f64::EPSILON)), None, |wp| {
         let consts = MeijerConstants::new(k, wp)?;
-        let yb = y.set_prec(wp);
+        let yb = crate::special::input_ball(y, wp);
         if near_one {
             meijer_g_k_near_one_ball(&consts, &Ball::one(wp).sub(&yb), wp)
         } else {

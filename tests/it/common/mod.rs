@@ -142,3 +142,19 @@ pub fn contains_decimal_ref(b: &Ball, r: &Float, scale: Option<&Float>) -> bool 
     let slack = size * Float::with_val(p, 1e-99);
     diff <= Float::with_val(p, b.rad() + slack)
 }
+
+/// `|mid - ref| <= rad + 1e-38 |ref|`: the ball contains a 40-digit reference
+/// (`hyp2f1_decimal_corners.csv`, `hyp2f1_large_param.csv`) within its last digit.
+pub fn contains_40_digit_ref(b: &Ball, r: &Float) -> bool {
+    let p = DECIMAL_REF_BITS;
+    let diff = Float::with_val(p, b.mid() - r).abs();
+    diff <= Float::with_val(p, b.rad() + Float::with_val(p, r.abs_ref()) * Float::with_val(p, 1e-38))
+}
+
+/// MP `2F1` at decimal strings, as `maugis eval` (and the registry's MP path) runs
+/// `{"fn": "hyp2f1", ...}`.
+pub fn hyp2f1_at_decimals(a: &str, b: &str, c: &str, z: &str, prec: u32) -> maugis::Result<Ball> {
+    use maugis::ball::{eval_at_decimals, Decimal};
+    let d: Vec<Decimal> = [a, b, c, z].iter().map(|s| Decimal::parse(s).expect("decimal parses")).collect();
+    eval_at_decimals(&d, prec, |x| maugis::special::hyp2f1::hyp2f1_ball_mp(&x[0], &x[1], &x[2], &x[3], prec))
+}
