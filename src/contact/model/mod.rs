@@ -41,7 +41,7 @@
 //! and switch to their Taylor series below `1e-3`, so the JKR limit is reached
 //! with full relative accuracy. A root where `F` touches zero without changing sign is not
 //! detected (it is not a crossing). No root below `c - a = `[`MAX_STRIP`] is an
-//! [`Error::NoConvergence`].
+//! [`crate::Error::NoStripEnd`].
 //!
 //! # Load (Eq. 14) and traction (Eq. 16)
 //!

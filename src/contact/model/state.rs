@@ -1,7 +1,7 @@
 //! The model at one contact size `abar` ([`ContactSize`]): the strip residual of the
 //! corrected Eq. 15b, the load (Eq. 14), the approach, the traction (Eq. 16), the
 //! displacement and the gap, for a profile of any number of waves (the waves' sums in
-//! [`super::waves`]). The formulas are in the module docs of [`crate::contact::model`];
+//! `model/waves.rs`). The formulas are in the module docs of [`crate::contact::model`];
 //! the first root of the strip equation is in [`super::solve`], the validity checks in
 //! [`super::validity`].
 
