@@ -308,7 +308,9 @@ impl WaveBessel {
     }
 
     /// [`WaveBessel::traction_integral`] in plain f64 arithmetic (from the rounded
-    /// `S_n`): about four times faster, with an error of a few ulps of the largest term
+    /// `S_n`): one f64 multiply-add a term instead of a double-double one (not timed on
+    /// its own; its effect on whole curves is in docs/performance.md), with an error of a
+    /// few ulps of the largest term
     /// instead of one rounding. For scans that only locate candidates (the model's
     /// validity rescan), which then evaluate [`WaveBessel::traction_integral`].
     pub fn traction_integral_fast(&self, c: f64) -> f64 {
