@@ -2,7 +2,7 @@
 //! carrying any number of cosine waves, [`WavyProfile`]), with their supported ranges.
 //!
 //! [`Params::new`]`(lambda, alpha, beta)` is the seed paper's one-wave case and keeps its
-//! errors ([`Error::NonFinite`], [`Error::OutOfRange`] naming `alpha` or `beta`);
+//! errors ([`crate::Error::NonFinite`], [`crate::Error::OutOfRange`] naming `alpha` or `beta`);
 //! [`Params::with_profile`] takes any profile, checked by [`WavyProfile`]'s constructors.
 
 use crate::contact::profile::{WavyProfile, AMPLITUDE_RANGE, WAVELENGTH_RANGE};
@@ -43,7 +43,7 @@ pub struct Params {
 
 impl Params {
     /// Validated one-wave parameters (the seed paper's profile): each finite and inside
-    /// its range, else [`Error::NonFinite`] or [`Error::OutOfRange`] naming it.
+    /// its range, else [`crate::Error::NonFinite`] or [`crate::Error::OutOfRange`] naming it.
     pub fn new(lambda: f64, alpha: f64, beta: f64) -> Result<Params> {
         finite(lambda, "lambda")?;
         finite(alpha, "alpha")?;
