@@ -55,3 +55,4 @@ pub mod sweep;
 pub mod units;
 pub mod state_profile;
 pub mod located;
+pub mod multiscale;
