@@ -55,4 +55,5 @@ pub mod sweep;
 pub mod units;
 pub mod state_profile;
 pub mod located;
+pub mod jkr_line;
 pub mod multiscale;

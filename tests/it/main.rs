@@ -33,6 +33,7 @@ mod hyp2f1_f64;
 mod hyp2f1_large_param;
 mod identities;
 mod import_cycles;
+mod jkr_limit;
 mod large_lambda;
 mod maugis_model;
 mod meijer_g_f64_routes;
