@@ -111,7 +111,7 @@ fn cell(x: f64) -> String {
 }
 
 /// The columns of envelope.csv.
-const COLUMNS: [&str; 21] = [
+const COLUMNS: [&str; 23] = [
     "scales",
     "gamma",
     "hurst",
@@ -133,6 +133,8 @@ const COLUMNS: [&str; 21] = [
     "valid_global_down",
     "local_up_ratio",
     "local_down_ratio",
+    "jkr_up",
+    "jkr_down",
 ];
 
 fn envelope_csv(rows: &[EnvelopeRow]) -> Result<String, String> {
@@ -163,6 +165,8 @@ fn envelope_csv(rows: &[EnvelopeRow]) -> Result<String, String> {
             cell(valid.global_down),
             cell(all.local_up / c.upper),
             cell(all.local_down / c.lower),
+            cell(r.jkr.0),
+            cell(r.jkr.1),
         ];
         w.write_record(record).map_err(err)?;
     }
@@ -189,9 +193,9 @@ fn envelope_md(study: &EnvelopeStudy, rows: &[EnvelopeRow]) -> String {
     let mut md = String::new();
     let _ = writeln!(
         md,
-        "| N | gamma | H | T | M+ | M- | local up / M+ | local down / M- | global up / M+ | global down / M- | valid: local up / M+ | valid: local down / M- |"
+        "| N | gamma | H | T | M+ | M- | JKR up / M+ | JKR down / M- | local up / M+ | local down / M- | global up / M+ | global down / M- | valid: local up / M+ | valid: local down / M- |"
     );
-    let _ = writeln!(md, "|---|---|---|---|---|---|---|---|---|---|---|---|");
+    let _ = writeln!(md, "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
     for &n in &study.scales {
         for &gamma in &study.gammas {
             for &hurst in &study.hursts {
@@ -200,12 +204,14 @@ fn envelope_md(study: &EnvelopeStudy, rows: &[EnvelopeRow]) -> String {
                 let c = first.constants;
                 let _ = writeln!(
                     md,
-                    "| {n} | {} | {} | {:.3} | {:.3} | {:.3} | {} | {} | {} | {} | {} | {} |",
+                    "| {n} | {} | {} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} | {} | {} | {} | {} | {} | {} |",
                     short(gamma),
                     short(hurst),
                     c.triangle,
                     c.upper,
                     c.lower,
+                    first.jkr.0 / c.upper,
+                    first.jkr.1 / c.lower,
                     ratio_cell(worst(&group, |r| r.excursion.all.local_up / r.constants.upper)),
                     ratio_cell(worst(&group, |r| r.excursion.all.local_down / r.constants.lower)),
                     ratio_cell(worst(&group, |r| r.excursion.all.global_up / r.constants.upper)),

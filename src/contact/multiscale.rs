@@ -55,6 +55,7 @@
 use std::f64::consts::PI;
 
 use crate::contact::curve::{load_area_curve, Curve, CurveOptions};
+use crate::contact::limits::jkr_load_profile;
 use crate::contact::model::Params;
 use crate::contact::curve_state::load_at;
 use crate::contact::profile::WavyProfile;
@@ -248,6 +249,27 @@ pub struct EnvelopeRow {
     pub constants: EnvelopeConstants,
     /// The model curve's excursions.
     pub excursion: EnvelopeExcursion,
+    /// The JKR limit's (E.42a) on the same grid: `max (L_JKR - L_JKR,smooth)/sqrt(a)`
+    /// and `max (L_JKR,smooth - L_JKR)/sqrt(a)` over `a >= beta_1`, what the
+    /// asymptotic envelope leaves out at finite `D` (lambda-independent).
+    pub jkr: (f64, f64),
+}
+
+/// The JKR limit's excursions `(up, down)` on the grid of `options`, over `a >= beta_1`
+/// (see [`EnvelopeRow::jkr`]).
+pub fn jkr_excursion(profile: &WavyProfile, options: CurveOptions) -> Result<(f64, f64)> {
+    let abar_min = profile.coarsest_wavelength().unwrap_or(0.0);
+    let (mut up, mut down) = (f64::NEG_INFINITY, f64::NEG_INFINITY);
+    for i in 1..=options.points {
+        let abar = options.amax * i as f64 / options.points as f64;
+        if abar < abar_min {
+            continue;
+        }
+        let w = (jkr_load_profile(profile, abar)? - jkr_load_profile(&WavyProfile::smooth(), abar)?) / abar.sqrt();
+        up = up.max(w);
+        down = down.max(-w);
+    }
+    Ok((up, down))
 }
 
 /// The curve options of a profile's envelope check: `amax`, and at least
@@ -273,6 +295,7 @@ pub fn envelope_row(alpha_1: f64, beta_1: f64, scales: usize, gamma: f64, hurst:
         points: options.points,
         constants: envelope_constants(&profile),
         excursion: envelope_excursion(&curve)?,
+        jkr: jkr_excursion(&profile, options)?,
     })
 }
 
