@@ -151,6 +151,21 @@ pub enum Error {
         /// How many were given.
         got: usize,
     },
+    /// A call through [`crate::registry`] of a function that takes a group of
+    /// parameters any number of times (the waves of a profile, `alpha_j, beta_j`)
+    /// whose last group is incomplete.
+    IncompleteGroup {
+        /// The function.
+        function: &'static str,
+        /// What one group is, e.g. `"wave"`.
+        group: &'static str,
+        /// The names in one group, e.g. `["alpha", "beta"]`.
+        names: &'static [&'static str],
+        /// How many arguments come before the groups.
+        fixed: usize,
+        /// How many were given.
+        got: usize,
+    },
     /// An integer given where a real is wanted, or the reverse.
     ArgumentKind {
         /// The function.
@@ -356,6 +371,15 @@ impl fmt::Display for Error {
             Error::UnknownFunction { name, known } => write!(f, "unknown function {name:?}; known: {}", known.join(", ")),
             Error::Arity { function, expected, got } => {
                 write!(f, "{function} takes {expected} arguments, got {got}")
+            }
+            Error::IncompleteGroup { function, group, names, fixed, got } => {
+                let size = names.len().max(1);
+                let index = got.saturating_sub(*fixed) / size + 1;
+                write!(
+                    f,
+                    "{function} takes {fixed} arguments and then ({}) for each {group}: {got} arguments leave {group} {index} incomplete",
+                    names.join(", ")
+                )
             }
             Error::ArgumentKind { function, arg, expected } => {
                 write!(f, "{function}: {arg} must be {}", expected.describe())
