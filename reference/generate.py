@@ -1477,19 +1477,29 @@ MODEL_DECIMAL_OUT_DIGITS = 100
 FIG4C_ALPHA = "0.3535533905932737622004221810524245196424"
 
 
-def model_residual(lam, alpha, beta, abar, e):
-    """F(m) = lambda gbar(m abar) - 1 of Eq. 15b (corrected, docs/model.md),
-    m = 1 + e, at mpmath's current precision; u_w by the Bessel form."""
+def model_cylinder_gap(lam, abar, e):
+    """The Hertz and adhesive terms of the strip gap at m = 1 + e (Eq. 15b)."""
     m = 1 + e
     s = mpmath.sqrt(e * (e + 2))
     acosh_m = mpmath.acosh(m)
     hertz = abar ** 2 / 2 * (m * s - acosh_m)
     adhesive = 4 / mpmath.pi * lam * abar * (s * acosh_m - m * mpmath.log(m))
-    wave = 0
-    if alpha != 0:
-        u = wave_bessel_ref(abar, beta, alpha, m * abar)[0]
-        wave = 2 * alpha * mpmath.sin(mpmath.pi * m * abar / beta) ** 2 - u
-    return lam * (hertz + adhesive + wave) - 1
+    return hertz + adhesive
+
+
+def model_wave_gap(alpha, beta, abar, e):
+    """One wave's term of the strip gap at m = 1 + e; u_w by the Bessel form."""
+    if alpha == 0:
+        return 0
+    m = 1 + e
+    u = wave_bessel_ref(abar, beta, alpha, m * abar)[0]
+    return 2 * alpha * mpmath.sin(mpmath.pi * m * abar / beta) ** 2 - u
+
+
+def model_residual(lam, alpha, beta, abar, e):
+    """F(m) = lambda gbar(m abar) - 1 of Eq. 15b (corrected, docs/model.md),
+    m = 1 + e, at mpmath's current precision; u_w by the Bessel form."""
+    return lam * (model_cylinder_gap(lam, abar, e) + model_wave_gap(alpha, beta, abar, e)) - 1
 
 
 def model_first_root(args, residual=None):
@@ -1595,18 +1605,8 @@ def model_waves_decimal_inputs():
 def model_waves_residual(waves):
     """F(m) of Eq. 15b for the profile `waves` (decimal strings), m = 1 + e."""
     def residual(lam, _alpha, _beta, abar, e):
-        m = 1 + e
-        s = mpmath.sqrt(e * (e + 2))
-        acosh_m = mpmath.acosh(m)
-        hertz = abar ** 2 / 2 * (m * s - acosh_m)
-        adhesive = 4 / mpmath.pi * lam * abar * (s * acosh_m - m * mpmath.log(m))
-        wave = 0
-        for a, b in waves:
-            alpha, beta = mpf(a), mpf(b)
-            if alpha != 0:
-                u = wave_bessel_ref(abar, beta, alpha, m * abar)[0]
-                wave += 2 * alpha * mpmath.sin(mpmath.pi * m * abar / beta) ** 2 - u
-        return lam * (hertz + adhesive + wave) - 1
+        wave = sum(model_wave_gap(mpf(a), mpf(b), abar, e) for a, b in waves)
+        return lam * (model_cylinder_gap(lam, abar, e) + wave) - 1
     return residual
 
 

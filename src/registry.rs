@@ -371,11 +371,13 @@ fn state_f64(params: Params, abar: f64, load: bool) -> Result<Answer> {
     Ok(Answer::F64(if load { solve_load(params, abar)? } else { ContactSize::new(params, abar)?.solve_m()? }))
 }
 
-/// The decimal inputs of a profile of many waves: `(lambda, abar, [(alpha_j, beta_j)])`.
-fn wave_decimals(a: &Args<'_, Decimal>) -> Result<(Decimal, Decimal, Vec<(Decimal, Decimal)>)> {
+/// The certified `m` or load of a profile of many waves at decimals
+/// (`lambda, abar, alpha_1, beta_1, ...`), each a ball that contains it.
+fn model_waves_mp(a: &Args<'_, Decimal>, prec: u32, load: bool) -> Result<Answer> {
     let [lambda, abar] = decimals::<2>(a, 0)?;
-    let waves = a.groups::<2>()?.into_iter().map(|[alpha, beta]| (alpha.clone(), beta.clone())).collect();
-    Ok((lambda, abar, waves))
+    let waves: Vec<(Decimal, Decimal)> = a.groups::<2>()?.into_iter().map(|[alpha, beta]| (alpha.clone(), beta.clone())).collect();
+    let at_decimals = if load { model_mp::load_waves_at_decimals } else { model_mp::strip_ratio_waves_at_decimals };
+    Ok(Answer::Ball(at_decimals(&lambda, &abar, &waves, prec)?))
 }
 
 /// Every function the front ends can call, in the order `maugis eval` lists them.
@@ -560,10 +562,7 @@ pub static FUNCTIONS: &[Function] = &[
         repeated: Some(WAVES),
         f64: |a| model_waves_f64(a, false),
         bounded: None,
-        mp: |a, p| {
-            let (lambda, abar, waves) = wave_decimals(a)?;
-            Ok(Answer::Ball(model_mp::strip_ratio_waves_at_decimals(&lambda, &abar, &waves, p)?))
-        },
+        mp: |a, p| model_waves_mp(a, p, false),
     },
     Function {
         name: "load_waves",
@@ -572,10 +571,7 @@ pub static FUNCTIONS: &[Function] = &[
         repeated: Some(WAVES),
         f64: |a| model_waves_f64(a, true),
         bounded: None,
-        mp: |a, p| {
-            let (lambda, abar, waves) = wave_decimals(a)?;
-            Ok(Answer::Ball(model_mp::load_waves_at_decimals(&lambda, &abar, &waves, p)?))
-        },
+        mp: |a, p| model_waves_mp(a, p, true),
     },
 ];
 
