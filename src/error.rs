@@ -555,6 +555,19 @@ pub enum ProfileError {
     },
     /// A harmonics table without a single wave.
     NoHarmonics,
+    /// Wave `wave` (1-based) is too fine for the contact: its Bessel length
+    /// `D = 2 pi abar/beta` exceeds `max` (the wave terms' cost and cancellation grow
+    /// with `D`; a refusal at once, at any precision).
+    WaveTooFine {
+        /// Which wave, counting from 1 in the order given.
+        wave: usize,
+        /// Its wavelength `beta`.
+        beta: f64,
+        /// The contact half-width `abar`.
+        abar: f64,
+        /// The most `D` allowed.
+        max: f64,
+    },
     /// Serialized parameters with neither `alpha` and `beta` (one wave) nor `waves`, or both.
     ParamsFields,
 }
@@ -588,6 +601,11 @@ impl fmt::Display for ProfileError {
             ProfileError::ParamsFields => write!(
                 f,
                 "the parameters need `lambda` with either `alpha` and `beta` (one wave) or `waves` (a list of {{alpha, beta}}), not both"
+            ),
+            ProfileError::WaveTooFine { wave, beta, abar, max } => write!(
+                f,
+                "wave {wave}: wavelength = {beta} is too fine for the contact abar = {abar}: 2 pi abar/beta = {:.6e} exceeds {max:e} (use a smaller abar or drop the wave)",
+                2.0 * std::f64::consts::PI * abar / beta
             ),
             ProfileError::NoHarmonics => {
                 write!(f, "the harmonics table has no wave (expected lines `amplitude,wavelength`)")

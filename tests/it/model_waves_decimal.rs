@@ -173,6 +173,19 @@ fn bad_waves_are_typed_errors() {
         strip_ratio_waves_at_decimals(&lambda, &abar, &many, 64),
         Err(Error::Profile(ProfileError::TooManyWaves { count, max: MAX_WAVES })) if count == MAX_WAVES + 1
     ));
+    // a wave too fine for the contact (D = 2 pi abar/beta over 1e5) is named, on the f64
+    // and the certified paths, and refused before any wave's terms are computed
+    let fine: Vec<(Decimal, Decimal)> = (0..16).map(|j| (d(&format!("{:e}", 0.35 * 2f64.powf(-0.5 * j as f64))), d(&format!("{:e}", 1.125 * 2f64.powi(-j))))).collect();
+    for prec in [12, 64] {
+        for e in [strip_ratio_waves_at_decimals(&lambda, &abar, &fine, prec).unwrap_err(), load_waves_at_decimals(&lambda, &abar, &fine, prec).unwrap_err()] {
+            assert!(matches!(e, Error::Profile(ProfileError::WaveTooFine { wave: 14, .. })), "{e:?}");
+            assert!(e.to_string().contains("wave 14"), "{e}");
+        }
+    }
+    let pairs: Vec<(f64, f64)> = (0..16).map(|j| (0.35 * 2f64.powf(-0.5 * j as f64), 1.125 * 2f64.powi(-j))).collect();
+    let p = Params::with_profile(3.0, WavyProfile::from_pairs(&pairs).unwrap()).unwrap();
+    assert!(matches!(ContactSize::new(p, 2.2), Err(Error::Profile(ProfileError::WaveTooFine { wave: 14, .. }))));
+    assert!(ContactSize::new(p, 0.5).is_ok(), "the same waves fit a smaller contact");
     // lambda and abar keep their own names
     let w = waves("0.35 1.125");
     assert!(matches!(strip_ratio_waves_at_decimals(&d("-1"), &abar, &w, 64), Err(Error::BallOutOfRange { arg: "lambda", .. })));
