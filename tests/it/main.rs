@@ -40,6 +40,7 @@ mod meijer_g_f64_routes;
 mod model_decimal;
 mod model_rough;
 mod model_waves;
+mod model_waves_decimal;
 mod multiscale_envelope;
 mod no_panic;
 mod paths_dissipation;
