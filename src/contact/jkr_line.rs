@@ -44,6 +44,7 @@
 
 use std::f64::consts::PI;
 
+use crate::contact::model::check_bessel_lengths;
 use crate::contact::profile::WavyProfile;
 use crate::error::{finite, Interval, Result};
 use crate::quad::gauss_legendre;
@@ -66,7 +67,23 @@ pub struct JkrState {
 /// largest Bessel length `2 pi abar/beta_j` (the cylinder alone: 48).
 pub fn quadrature_order(profile: &WavyProfile, abar: f64) -> usize {
     let d_max = profile.active_waves().map(|w| w.bessel_length(abar)).fold(0.0, f64::max);
-    d_max.ceil() as usize + 48
+    // finite and at most MAX_WAVE_D (1e5) once check_bessel_lengths has passed
+    d_max.min(1e9).ceil() as usize + 48
+}
+
+/// Nodes of one Gauss-Legendre panel beyond which the range is split: `n` nodes
+/// become `ceil(n/PANEL_ORDER)` panels of `PANEL_ORDER + 48` nodes each (a panel
+/// then holds at most `PANEL_ORDER` radians of the finest wave's phase, resolved
+/// as in one rule).
+const PANEL_ORDER: usize = 512;
+
+/// `int_0^{pi/2} f` with `n` nodes: one rule, or panels when `n > 2 PANEL_ORDER`.
+fn quarter_period(f: impl FnMut(f64) -> f64, n: usize) -> Result<f64> {
+    if n <= 2 * PANEL_ORDER {
+        gauss_legendre::integrate(f, 0.0, PI / 2.0, n)
+    } else {
+        gauss_legendre::integrate_composite(f, 0.0, PI / 2.0, PANEL_ORDER + 48, n.div_ceil(PANEL_ORDER))
+    }
 }
 
 /// The profile's slope `h'(x) = x + sum_j (2 pi alpha_j/beta_j) sin(2 pi x/beta_j)`.
@@ -77,12 +94,15 @@ fn slope(profile: &WavyProfile, x: f64) -> f64 {
     })
 }
 
-/// The JKR state at `abar > 0` with `n` quadrature nodes.
+/// The JKR state at `abar > 0` with `n >= 1` quadrature nodes (split into panels of
+/// 560 nodes above 1024). A wave too fine for the contact (`D_j` over 1e5) is
+/// [`crate::error::ProfileError::WaveTooFine`], as in the model.
 pub fn jkr_state_with_order(profile: &WavyProfile, abar: f64, n: usize) -> Result<JkrState> {
     finite(abar, "abar")?;
     Interval::above(0.0).check("abar", abar)?;
-    let load_1 = gauss_legendre::integrate(|t| abar * t.sin() * slope(profile, abar * t.sin()), 0.0, PI / 2.0, n)?;
-    let i = gauss_legendre::integrate(|t| (PI / 2.0 - t) * abar * t.cos() * slope(profile, abar * t.sin()), 0.0, PI / 2.0, n)? * 2.0 / PI;
+    check_bessel_lengths(profile, abar)?;
+    let load_1 = quarter_period(|t| abar * t.sin() * slope(profile, abar * t.sin()), n)?;
+    let i = quarter_period(|t| (PI / 2.0 - t) * abar * t.cos() * slope(profile, abar * t.sin()), n)? * 2.0 / PI;
     let load = load_1 - (2.0 * PI * abar).sqrt();
     Ok(JkrState { abar, adhesionless_load: load_1, load, approach: 2.0 * load / PI * (2.0 / abar).ln() + i })
 }

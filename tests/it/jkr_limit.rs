@@ -229,3 +229,25 @@ fn two_wave_pull_off_and_dissipation_match_jkr() {
     // the extrapolation did its work: the finer grids' values are already close
     assert!((m2 - model_w).abs() <= 1e-4 * model_w && (j2 - jkr_w).abs() <= 1e-6 * jkr_w, "W grids: model {m2} JKR {j2} vs {model_w}");
 }
+
+/// Fine waves on a large contact: the quadrature splits into panels past 1024 nodes
+/// and still meets E.42a; a wave beyond the model's resolution limit is the model's
+/// typed refusal, at once.
+#[test]
+fn fine_waves_use_panels_and_too_fine_ones_are_refused() {
+    let profile = WavyProfile::from_pairs(&[(0.01, 1e-3), (0.3, 1.0)]).unwrap();
+    let abar = 0.5; // D = 3142 for the fine wave: 3190 nodes, 7 panels
+    assert!(quadrature_order(&profile, abar) > 2048);
+    let s = jkr_state(&profile, abar).unwrap();
+    let closed = jkr_load_profile(&profile, abar).unwrap();
+    let scale = PI * abar * abar / 4.0 + (2.0 * PI * abar).sqrt() + PI * PI * 0.01 * abar / 1e-3;
+    assert!((s.load - closed).abs() <= 1e-12 * scale, "{} vs {closed}", s.load);
+    let too_fine = WavyProfile::from_pairs(&[(0.3, 1.0), (0.01, 1e-6)]).unwrap();
+    match jkr_state(&too_fine, 100.0) {
+        Err(maugis::Error::Profile(maugis::error::ProfileError::WaveTooFine { wave, .. })) => assert_eq!(wave, 2),
+        other => panic!("expected WaveTooFine for wave 2, got {other:?}"),
+    }
+    for bad in [f64::NAN, 0.0, -1.0, f64::INFINITY] {
+        assert!(jkr_state(&profile, bad).is_err(), "abar {bad}");
+    }
+}
