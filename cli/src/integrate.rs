@@ -26,7 +26,7 @@ use clap::Args;
 
 use maugis::ball::Decimal;
 use maugis::quad::certified::{Integral, Options};
-use maugis::quad::expr::{integrate_range, shortfall, significant_imaginary, DecaySpec, End, Expr, WeightSpec};
+use maugis::quad::expr::{abs_tol_text, integrate_range, shortfall, significant_imaginary, DecaySpec, End, Expr, WeightSpec};
 use maugis::MAX_PREC;
 
 use crate::output::print_stdout;
@@ -94,7 +94,8 @@ pub fn digits_for(prec: u32) -> usize {
 
 /// The printed fields of an integral at `prec` bits: `mid` and `rad` of the real
 /// part, then `im_mid` and `im_rad` when the imaginary part may exceed `rad`
-/// ([`significant_imaginary`]).
+/// ([`significant_imaginary`]), then `abs_tol` when the ball contains 0 and met the
+/// goal by the absolute tolerance ([`abs_tol_text`]).
 pub fn ball_fields(r: &Integral, prec: u32) -> Vec<(&'static str, String)> {
     let digits = digits_for(prec);
     let (mid, rad) = r.value.re().to_decimal(digits);
@@ -102,6 +103,9 @@ pub fn ball_fields(r: &Integral, prec: u32) -> Vec<(&'static str, String)> {
     if let Some(im) = significant_imaginary(r) {
         let (im_mid, im_rad) = im.to_decimal(digits);
         fields.extend([("im_mid", im_mid), ("im_rad", im_rad)]);
+    }
+    if let Some(t) = abs_tol_text(r) {
+        fields.push(("abs_tol", t));
     }
     fields
 }
