@@ -147,7 +147,8 @@ impl Options {
     /// **The default absolute tolerance.** Without this option, a result whose ball
     /// contains 0 also meets the goal when `rad <= 2^-goal L`, where `L` is a certified
     /// upper bound of `int |f|` along the path integrated (the sum over the final pieces
-    /// of `|(hi - lo) f([lo, hi])|`, plus the bounds of the tails cut). A relative goal
+    /// of `|(hi - lo) f([lo, hi])|`, plus the bounds of the tails cut), or four times an
+    /// estimate of `int |f|` where that is smaller ([`Integral::abs_scale`]). A relative goal
     /// cannot be met by an integral that is 0 (`int_{-1}^1 sin x`), and one below
     /// `2^-goal int |f|` is, at this goal, indistinguishable from 0: this is Arb's
     /// `abs_tol`, scaled to the integrand. A ball that keeps off 0 always meets the
@@ -244,13 +245,16 @@ pub struct Integral {
     pub subintervals: u64,
     /// The working precision of the final attempt (bits).
     pub working_prec: u32,
-    /// A certified upper bound of `int |f|` along the path integrated (the real range,
-    /// the mapped pieces, the rays of an oscillatory tail), with the tails cut: the
-    /// scale of the default absolute tolerance ([`Options::abs_tol`]).
-    pub l1_bound: Mag,
+    /// The scale `L` of the default absolute tolerance `2^-goal L` ([`Options::abs_tol`]):
+    /// the smaller of a certified upper bound of `int |f|` along the path integrated
+    /// (the real range, the mapped pieces, the rays of an oscillatory tail, with the
+    /// tails cut) and four times an 8-point estimate of it (the certified bound comes
+    /// from crude enclosures `|(hi - lo) f([lo, hi])|` and can be loose on wide pieces;
+    /// the estimate only ever makes the tolerance smaller).
+    pub abs_scale: Mag,
     /// The absolute tolerance the result met, when the goal was met by it and not by
     /// the relative goal (the ball then contains 0): the caller's [`Options::abs_tol`],
-    /// or the default `2^-goal l1_bound`. `None` when the relative goal was met or not
+    /// or the default `2^-goal abs_scale`. `None` when the relative goal was met or not
     /// met at all.
     pub abs_tol: Option<Mag>,
 }
@@ -524,8 +528,8 @@ fn tolerance(opts: &Options, goal: u32, mag: Mag, l1: Mag) -> Mag {
 
 /// Whether a ball meets the goal, and the absolute tolerance that decided (if one
 /// did): relative, the caller's absolute tolerance, or (when the ball contains 0) the
-/// default `2^-goal l1` ([`Options::abs_tol`]).
-pub(crate) fn meets(v: &CBall, goal: u32, opts: &Options, l1: Mag) -> (bool, Option<Mag>) {
+/// default `2^-goal scale` ([`Options::abs_tol`], [`Integral::abs_scale`]).
+pub(crate) fn meets(v: &CBall, goal: u32, opts: &Options, scale: Mag) -> (bool, Option<Mag>) {
     let rad = v.rad_mag();
     if rad.le(&v.abs_lower_mag().mul_2exp(-(goal as i64))) {
         return (true, None);
@@ -533,8 +537,8 @@ pub(crate) fn meets(v: &CBall, goal: u32, opts: &Options, l1: Mag) -> (bool, Opt
     match (opts.abs_tol, opts.relative_only) {
         (Some(t), _) => (rad.le(&t), rad.le(&t).then_some(t)),
         (None, false) => {
-            let t = l1.mul_2exp(-(goal as i64));
-            let met = v.contains_zero() && l1.is_finite() && rad.le(&t);
+            let t = scale.mul_2exp(-(goal as i64));
+            let met = v.contains_zero() && scale.is_finite() && rad.le(&t);
             (met, met.then_some(t))
         }
         (None, true) => (false, None),
@@ -562,6 +566,7 @@ where
     let provisional = builder(Mag::pow2(-(goal as i64)), wp, f)?;
     let mut crudes = Vec::new();
     let (mut mag, mut l1) = rough_magnitude(f, &provisional, wp, &mut evaluations, &mut crudes);
+    let l1_estimate = l1;
     let mut reusable: Vec<Option<CBall>> =
         provisional.iter().zip(crudes.into_iter().chain(std::iter::repeat(None))).map(|(p, c)| c.filter(|_| p.lo != p.hi)).collect();
     let spans: Vec<(Float, Float)> = provisional.iter().map(|p| (p.lo.clone(), p.hi.clone())).collect();
@@ -609,8 +614,14 @@ where
             l1_bound = l1_bound.add(part.tail);
         }
         evaluations += stats.evaluations;
-        let (goal_met, abs_tol) = meets(&total, goal, opts, l1_bound);
-        let result = Integral { value: total, goal_met, limit, evaluations, subintervals: stats.subintervals, working_prec: wp, l1_bound, abs_tol };
+        let abs_scale = if l1_estimate.is_zero() || !l1_estimate.is_finite() {
+            l1_bound
+        } else {
+            let four = l1_estimate.mul_2exp(2);
+            if l1_bound.le(&four) { l1_bound } else { four }
+        };
+        let (goal_met, abs_tol) = meets(&total, goal, opts, abs_scale);
+        let result = Integral { value: total, goal_met, limit, evaluations, subintervals: stats.subintervals, working_prec: wp, abs_scale, abs_tol };
         if goal_met {
             return Ok(result);
         }

@@ -147,12 +147,12 @@ where
             limit = limit.or(r.limit);
             wp = wp.max(r.working_prec);
             total = total.add(&r.value);
-            l1 = l1.add(r.l1_bound);
+            l1 = l1.add(r.abs_scale);
         }
         let rad = total.rad_mag();
         let wanted = total.abs_lower_mag().mul_2exp(-(prec as i64));
         let (met, abs_tol) = crate::quad::certified::meets(&total, prec, opts, l1);
-        let result = Integral { value: total, goal_met: met, limit: if met { None } else { limit }, evaluations, subintervals: 0, working_prec: wp, l1_bound: l1, abs_tol };
+        let result = Integral { value: total, goal_met: met, limit: if met { None } else { limit }, evaluations, subintervals: 0, working_prec: wp, abs_scale: l1, abs_tol };
         if met || limit.is_some() {
             return Ok(result);
         }
