@@ -54,3 +54,4 @@ mod quad_spelling;
 mod quad_oscillatory_proptest;
 mod hankel_bound;
 mod quad_zero;
+mod quad_precision_sweep;

@@ -126,8 +126,10 @@ impl Default for Options {
 
 impl Options {
     /// The defaults: relative goal = the requested precision, the default absolute
-    /// tolerance for balls that contain 0 (below), Arb's limits (`1000 prec + prec^2` evaluations, depth `2 prec`, degree
-    /// `prec/2 + 60` but at most 362), working precision up to `8 prec + 256` bits.
+    /// tolerance for balls that contain 0 ([`Options::abs_tol`]), Arb's limits with
+    /// evaluations and depth sized by the first working precision `w = prec + 20`
+    /// (`1000 w + w^2` evaluations, depth `2 w`, degree `prec/2 + 60` but at most 362), working precision up to `8 prec +
+    /// 256` bits.
     pub fn new() -> Options {
         Options { goal_bits: None, abs_tol: None, relative_only: false, max_evaluations: None, max_depth: None, max_degree: None, max_working_prec: 0 }
     }
@@ -212,11 +214,16 @@ impl Options {
         self.goal_bits.unwrap_or(prec)
     }
 
+    /// The limits. Evaluations and depth are sized by the first working precision `w =
+    /// prec + 20`, not the requested one: at 2 bits a depth of `2 prec = 4` turned a
+    /// long range into a "not bounded" error (`1/((x-5)^2 + 0.01)` on `[1, 10^4]`),
+    /// which 16 bits answered.
     fn limits(&self, prec: u32) -> RunLimits {
-        let p = prec as u64;
+        let w = prec.saturating_add(20);
+        let p = w as u64;
         RunLimits {
             max_evaluations: self.max_evaluations.unwrap_or(1000 * p + p * p),
-            max_depth: self.max_depth.unwrap_or(2 * prec).max(1),
+            max_depth: self.max_depth.unwrap_or(2 * w).max(1),
             max_degree: self.max_degree.unwrap_or((prec as usize / 2 + 60).min(DEFAULT_MAX_DEGREE_CAP)),
         }
     }
