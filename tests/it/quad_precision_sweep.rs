@@ -24,18 +24,7 @@ const INFINITE: &str = include_str!("../../reference/data/integrals_infinite.csv
 const GOLDEN: &str = include_str!("../../reference/data/integrals.csv");
 
 fn fields(line: &str) -> Vec<String> {
-    let mut fields = Vec::new();
-    let mut cur = String::new();
-    let mut quoted = false;
-    for ch in line.chars() {
-        match ch {
-            '"' => quoted = !quoted,
-            ',' if !quoted => fields.push(std::mem::take(&mut cur)),
-            c => cur.push(c),
-        }
-    }
-    fields.push(cur);
-    fields
+    crate::common::csv_fields(line)
 }
 
 struct Case {
