@@ -10,7 +10,9 @@
 //! the certified integrator ([`maugis::quad::certified`]) on the expression
 //! parsed by [`maugis::quad::expr`]; `im_mid` and `im_rad` follow when the
 //! imaginary part may be larger than `rad` (an integrand that is complex
-//! somewhere, such as `sqrt(x)` for `x < 0`). The endpoints and the exponents are decimals
+//! somewhere, such as `sqrt(x)` for `x < 0`), and `abs_tol` when the ball contains 0
+//! and met the goal by the default absolute tolerance, `2^-P` times a bound of `int |f|`
+//! (a zero integral, `sin(x)` on `[-1, 1]`; docs/quadrature.md). The endpoints and the exponents are decimals
 //! taken as balls that contain them; `B` may be `inf` with a declared decay.
 //! `--alpha AL --beta BE --log K` multiply the integrand by
 //! `(x-A)^AL (B-x)^BE log^K(x-A)`, certified without truncation.
