@@ -139,19 +139,57 @@ fn legendre_fourier(m: usize, x: &Ball, cc: &[Ball]) -> Result<Ball> {
     let w = Disc::from_balls(x, &s);
     let step = w.conj().mul(&w.conj());
     let mut z = w.pow(m as u64);
-    let mut sum = Ball::zero(p);
     // k and m - k give the same cosine: the terms k < m/2 twice (cc holds 2 c_k c_{m-k}),
     // k = m/2 (m even) once
+    let mut sum = FourierSum::new(p);
     let mut tmp = Disc::zero(p);
     for term in cc.iter().take(m.div_ceil(2)) {
-        sum = sum.add(&term.mul(&z.re()));
+        sum.add(term, &z);
         tmp.assign_mul(&z, &step);
         std::mem::swap(&mut z, &mut tmp);
     }
     if m % 2 == 0 {
-        sum = sum.add(&cc[m / 2].mul(&z.re()));
+        sum.add(&cc[m / 2], &z);
     }
-    Ok(sum)
+    Ok(sum.ball())
+}
+
+/// `sum_k t_k Re(z_k)` accumulated in a float with a radius. Every `z_k` is a disc that
+/// encloses a number of modulus 1, so `|Re z_k| <= 1` and `|Re mid(z_k)| <= 1 + r_k`:
+/// a term adds `rad(t) (1 + r) + |mid(t)| r` (the ball and disc radii), `2^-p |mid(t)| (1
+/// + r)` (the product rounded to nearest, `u = 2^-p`) and `2^-p` times a bound of the
+/// new sum (the addition rounded); the sum is at most `bound`, the running `sum |t| (1 +
+/// r)`, up to the roundings, and `2 bound` covers those.
+struct FourierSum {
+    mid: Float,
+    prod: Float,
+    rad: Mag,
+    bound: Mag,
+}
+
+impl FourierSum {
+    fn new(p: u32) -> FourierSum {
+        FourierSum { mid: Float::new(p), prod: Float::new(p), rad: Mag::ZERO, bound: Mag::ZERO }
+    }
+
+    fn add(&mut self, t: &Ball, z: &Disc) {
+        let p = self.mid.prec() as i64;
+        let one_r = Mag::from_f64(1.0).add(z.rad);
+        let t_mag = t.abs_upper_mag();
+        self.prod.assign(t.mid() * &z.re);
+        self.mid += &self.prod;
+        let term_up = t_mag.mul(one_r);
+        self.bound = self.bound.add(term_up);
+        let propagated = t.rad_mag().mul(one_r).add(t_mag.mul(z.rad));
+        let rounding = term_up.add(self.bound.mul_2exp(1)).mul_2exp(-p);
+        self.rad = self.rad.add(propagated).add(rounding);
+    }
+
+    fn ball(&self) -> Ball {
+        let mut b = Ball::from_float(&self.mid, self.mid.prec());
+        b.add_error_mag(self.rad);
+        b
+    }
 }
 
 /// `2 c_k c_{m-k}` for `k < m/2` and `c_{m/2}^2` (even `m`): the weights of
@@ -164,20 +202,15 @@ fn fourier_weights(m: usize, c: &[Ball]) -> Vec<Ball> {
     out
 }
 
-/// A complex disc: the point `re + i im` (floats) and the radius `rad`. A product of
-/// discs of modulus about 1 has a radius about the sum of theirs (a rectangle's radii
-/// would grow by up to `sqrt 2` a product). Products are formed in place.
+/// A complex disc: the point `re + i im` (floats) and the radius `rad`. Every disc here
+/// encloses a number of modulus 1 (`w = e^{i theta}`, its conjugate, their powers and
+/// products), so its point has modulus at most `1 + rad`. A product of such discs has a
+/// radius about the sum of theirs (a rectangle's radii would grow by up to `sqrt 2` a
+/// product). Products are formed in place.
 struct Disc {
     re: Float,
     im: Float,
     rad: Mag,
-}
-
-/// An upper bound of `|re + i im|` (f64 values stepped one ulp outward cover their
-/// rounding; [`Mag::hypot`] rounds up).
-fn modulus_up(re: &Float, im: &Float) -> Mag {
-    let up = |x: &Float| Mag::from_f64(x.to_f64().abs().next_up());
-    up(re).hypot(up(im), true)
 }
 
 impl Disc {
@@ -202,10 +235,11 @@ impl Disc {
     /// `self = a b`: `|a b - a_m b_m| <= r_a (|b_m| + r_b) + |a_m| r_b`, and the point
     /// `a_m b_m` rounded to nearest, each part from two products and a sum, so that each
     /// part errs by at most `3 u |a_m| |b_m|` (`u = 2^-prec`): `2^(3 - prec) |a_m| |b_m|`
-    /// covers both.
+    /// covers both. `|a_m| <= 1 + r_a`, `|b_m| <= 1 + r_b` (the discs enclose numbers of
+    /// modulus 1).
     fn assign_mul(&mut self, a: &Disc, b: &Disc) {
         let p = self.re.prec();
-        let (ma, mb) = (modulus_up(&a.re, &a.im), modulus_up(&b.re, &b.im));
+        let (ma, mb) = (Mag::from_f64(1.0).add(a.rad), Mag::from_f64(1.0).add(b.rad));
         self.re.assign(&a.re * &b.re);
         let t = Float::with_val(p, &a.im * &b.im);
         self.re -= &t;
@@ -230,13 +264,6 @@ impl Disc {
             }
         }
         result
-    }
-
-    /// The real part as a ball (the disc's radius bounds it).
-    fn re(&self) -> Ball {
-        let mut r = Ball::from_float(&self.re, self.re.prec());
-        r.add_error_mag(self.rad);
-        r
     }
 }
 
