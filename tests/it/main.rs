@@ -39,6 +39,7 @@ mod meijer_g_f64_routes;
 mod model_decimal;
 mod model_rough;
 mod model_waves;
+mod model_waves_decimal;
 mod no_panic;
 mod paths_dissipation;
 mod precision_edges;

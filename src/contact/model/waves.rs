@@ -22,9 +22,9 @@
 
 use std::f64::consts::PI;
 
-use crate::contact::displacement::WaveBessel;
+use crate::contact::displacement::{WaveBessel, MAX_WAVE_D};
 use crate::contact::profile::{CosineWave, WavyProfile};
-use crate::error::Result;
+use crate::error::{Error, ProfileError, Result};
 use crate::special::bessel_j::bessel_j_sequence;
 
 /// One wave with a nonzero amplitude at one contact size: its Bessel data.
@@ -44,8 +44,15 @@ pub(crate) struct WaveTerms {
 }
 
 impl WaveTerms {
-    /// Builds each nonzero wave's Bessel data at `abar`.
+    /// Builds each nonzero wave's Bessel data at `abar`. A wave whose Bessel length
+    /// exceeds [`MAX_WAVE_D`] is [`ProfileError::WaveTooFine`] naming it, before any
+    /// wave's data is built.
     pub(crate) fn new(profile: &WavyProfile, abar: f64) -> Result<WaveTerms> {
+        for (i, wave) in profile.waves().iter().enumerate().filter(|(_, w)| w.alpha() > 0.0) {
+            if !(wave.bessel_length(abar) <= MAX_WAVE_D) {
+                return Err(Error::Profile(ProfileError::WaveTooFine { wave: i + 1, beta: wave.beta(), abar, max: MAX_WAVE_D }));
+            }
+        }
         let waves = profile
             .active_waves()
             .map(|&wave| {
