@@ -53,3 +53,4 @@ mod quad_infinite;
 mod quad_singular_auto;
 mod quad_spelling;
 mod quad_oscillatory_proptest;
+mod sweep_waves;

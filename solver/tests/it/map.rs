@@ -10,7 +10,7 @@ use maugis_solver::map::{
 use maugis_solver::{MergeFault, SolverError};
 
 fn grid() -> SweepGrid {
-    SweepGrid { lambda_min: 1.0, lambda_max: 6.0, lambda_n: 2, axis: SweepAxis::Alpha, min: 0.0, max: 0.35, n: 2, fixed: 1.125, amax: 6.0, points: 60 }
+    SweepGrid { lambda_min: 1.0, lambda_max: 6.0, lambda_n: 2, axis: SweepAxis::Alpha, min: 0.0, max: 0.35, n: 2, fixed: 1.125, profile: None, amax: 6.0, points: 60 }
 }
 
 fn options() -> MapOptions {
