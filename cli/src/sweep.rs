@@ -230,19 +230,18 @@ fn sweep_svg(s: &Sweep) -> Result<String, String> {
         .entry("smooth-like: no roughness-induced loop", cell(RGBColor(225, 225, 225)))
         .entry(format!("shade: dissipation |W| from 0 to {}", short(wmax)), ramp(BLUE))
         .entry("(same shading for cavitating cells)", ramp(ORANGE));
+
     let (plot_w, legend_w) = (860u32, legend.size().0 as u32 + 30);
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, (plot_w + legend_w, 800)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_err)?;
         let (plot, beside) = root.split_horizontally(plot_w);
-        let title = format!(
-            "Regime map: {} over log10 λ, {} (amax = {}, {} points per curve)",
-            axis_name(g.axis),
-            fixed_label(g),
-            short(g.amax),
-            g.points
-        );
+        let title = match g.axis {
+            // the profile, which may not fit a title, is listed in the legend
+            SweepAxis::Amplitude => format!("Regime map: amplitude scale s over log10 λ (amax = {}, {} points per curve)", short(g.amax), g.points),
+            _ => format!("Regime map: {} over log10 λ, {} (amax = {}, {} points per curve)", axis_name(g.axis), fixed_label(g), short(g.amax), g.points),
+        };
         let cells = s.points.iter().map(|p| {
             let t = (p.dissipation.abs() / wmax).clamp(0.0, 1.0);
             let col = match p.regime {
@@ -254,6 +253,14 @@ fn sweep_svg(s: &Sweep) -> Result<String, String> {
         });
         regime_panel(&plot, g, &title, 18, cells, &[])?;
         legend.draw(&beside, (10, 80), legend_w as i32 - 20)?;
+        if let (SweepAxis::Amplitude, Some(p)) = (g.axis, &g.profile) {
+            // the profile, a wave a line, below the legend
+            let style = TextStyle::from(("sans-serif", 16).into_font());
+            for (k, line) in profile_legend(p).iter().enumerate() {
+                let y = 80 + legend.size().1 + 30 + 22 * k as i32;
+                beside.draw(&Text::new(line.as_str(), (20, y), style.clone())).map_err(plot_err)?;
+            }
+        }
         root.present().map_err(plot_err)?;
     }
     Ok(svg)
@@ -267,6 +274,25 @@ pub(crate) fn fixed_label(g: &SweepGrid) -> String {
         (SweepAxis::Beta, _) => format!("α = {}", short(g.fixed)),
         _ => format!("β = {}", short(g.fixed)),
     }
+}
+
+/// The lines naming the profile of an amplitude map below its legend: the profile as
+/// [`profile_title`] names it, a wave a line (at most eight listed).
+fn profile_legend(p: &maugis::contact::profile::WavyProfile) -> Vec<String> {
+    let mut lines = vec!["profile, every α_j times s:".to_string()];
+    match p.waves() {
+        [_] => lines.push(profile_title(p)),
+        ws => {
+            lines.push(format!("{} waves (α, β) =", ws.len()));
+            for (j, w) in ws.iter().enumerate().take(8) {
+                lines.push(format!("{}({}, {})", if j == 0 { "" } else { "+ " }, args::sig4(w.alpha()), args::sig4(w.beta())));
+            }
+            if ws.len() > 8 {
+                lines.push(format!("+ {} more (sweep.json)", ws.len() - 8));
+            }
+        }
+    }
+    lines
 }
 
 /// The second axis' label on a map.
