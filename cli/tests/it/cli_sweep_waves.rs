@@ -9,36 +9,8 @@
 //!   merge as they did (their JSON carries no profile).
 //! Bad sweep flags with waves: cli_waves.rs.
 
-use std::path::PathBuf;
-use std::process::{Command, Output};
-
+use crate::cli_waves::{maugis, Scratch};
 use crate::render;
-
-fn maugis(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_maugis")).args(args).output().expect("spawn maugis")
-}
-
-/// A fresh directory path under the temp directory (not created), removed on drop.
-struct Scratch(PathBuf);
-
-impl Scratch {
-    fn new(tag: &str) -> Scratch {
-        let nanos = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_nanos());
-        Scratch(std::env::temp_dir().join(format!("maugis-sweep-waves-{tag}-{}-{nanos}", std::process::id())))
-    }
-    fn s(&self) -> &str {
-        self.0.to_str().unwrap()
-    }
-    fn read(&self, name: &str) -> String {
-        std::fs::read_to_string(self.0.join(name)).unwrap_or_else(|e| panic!("{}/{name}: {e}", self.s()))
-    }
-}
-
-impl Drop for Scratch {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
 
 fn run_ok(args: &[&str]) -> String {
     let o = maugis(args);

@@ -11,23 +11,27 @@ use serde_json::Value;
 
 use crate::render;
 
-fn maugis(args: &[&str]) -> Output {
+pub(crate) fn maugis(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_maugis")).args(args).output().expect("spawn maugis")
 }
 
 /// A fresh directory path under the temp directory (not created), removed on drop.
-struct Scratch(PathBuf);
+pub(crate) struct Scratch(pub(crate) PathBuf);
 
 impl Scratch {
-    fn new(tag: &str) -> Scratch {
+    pub(crate) fn new(tag: &str) -> Scratch {
         let nanos = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_nanos());
         Scratch(std::env::temp_dir().join(format!("maugis-waves-{tag}-{}-{nanos}", std::process::id())))
     }
     fn join(&self, name: &str) -> String {
         self.0.join(name).to_str().unwrap().to_string()
     }
-    fn s(&self) -> &str {
+    pub(crate) fn s(&self) -> &str {
         self.0.to_str().unwrap()
+    }
+    /// The text of file `name` in this directory.
+    pub(crate) fn read(&self, name: &str) -> String {
+        std::fs::read_to_string(self.0.join(name)).unwrap_or_else(|e| panic!("{}/{name}: {e}", self.s()))
     }
 }
 
