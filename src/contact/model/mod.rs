@@ -78,6 +78,7 @@ pub mod state;
 pub mod strip;
 pub mod validity;
 mod waves;
+pub(crate) use waves::check_bessel_lengths;
 
 pub use params::{Params, ABAR_MAX, ABAR_RANGE, ALPHA_MAX, ALPHA_RANGE, BETA_RANGE, LAMBDA_RANGE};
 pub use solve::{MAX_STRIP, M_REL_TOL};
