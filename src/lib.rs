@@ -77,6 +77,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod ball;
+pub mod budget;
 pub mod contact;
 pub mod error;
 pub mod quad;
@@ -89,6 +90,7 @@ pub mod special;
 pub use rug;
 
 pub use ball::{Ball, Bounded};
+pub use budget::Budget;
 pub use error::{Error, Result};
 
 /// Largest output precision (bits) a caller may request.

@@ -515,7 +515,9 @@ fn check_series_cost(a: &[Ball], b: &[Ball], z: &Ball, wp: u32) -> Result<()> {
         return Ok(());
     }
     let per_term = seconds_per_term(wp);
-    let budget = (MAX_SERIES_SECONDS / per_term) as u64;
+    // the method's cap, shortened by what is left of the call's time budget
+    let limit = crate::budget::limit_seconds(MAX_SERIES_SECONDS);
+    let budget = (limit / per_term) as u64;
     let n_pos = first_positive_index(a)?.max(first_positive_index(b)?);
     if n_pos <= budget && ratio_bound(a, b, z, budget) < 1 {
         return Ok(());
@@ -527,8 +529,8 @@ fn check_series_cost(a: &[Ball], b: &[Ball], z: &Ball, wp: u32) -> Result<()> {
     }
     Err(Error::TooExpensive {
         function: "pFq(a; b; z) by its series",
-        seconds: (n / 2).max(budget) as f64 * per_term,
-        limit_seconds: MAX_SERIES_SECONDS,
+        seconds: ((n / 2).max(budget) as f64 * per_term).max(limit.next_up()),
+        limit_seconds: limit,
     })
 }
 

@@ -236,13 +236,16 @@ pub fn hyp2f1_mp(a: &Float, b: &Float, c: &Float, z: &Float, prec: u32) -> Resul
         // The Gamma-based formulas: refused when the planned cancellation passes
         // MAX_GAMMA_LOSS, and their Ziv loop stops MAX_GAMMA_LOSS bits past the plan.
         let first = prec.saturating_add(DEFAULT_GUARD_BITS + lost);
+        const GAMMA_FORMULA: &str = "2F1 by a connection formula (Gamma values at the working precision its cancellation needs)";
         if lost > MAX_GAMMA_LOSS {
             return Err(Error::TooExpensive {
-                function: "2F1 by a connection formula (Gamma values at the working precision its cancellation needs)",
+                function: GAMMA_FORMULA,
                 seconds: gamma_seconds(first),
-                limit_seconds: gamma_seconds(MAX_GAMMA_LOSS),
+                limit_seconds: crate::budget::limit_seconds(gamma_seconds(MAX_GAMMA_LOSS)),
             });
         }
+        // under a short time budget, the first Gamma's estimate against what is left
+        crate::budget::check_estimate(GAMMA_FORMULA, gamma_seconds(first), f64::INFINITY)?;
         let max_wp = first.saturating_add(MAX_GAMMA_LOSS);
         return ziv_up_to("hyp2f1", prec, DEFAULT_GUARD_BITS + lost, None, max_wp, |wp| evaluate(alg, a, b, c, z, wp));
     }
