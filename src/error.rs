@@ -1056,6 +1056,11 @@ pub enum Reached {
         /// How many.
         count: u64,
     },
+    /// A series: the terms summed.
+    Terms {
+        /// How many.
+        count: u64,
+    },
 }
 
 impl fmt::Display for Reached {
@@ -1066,6 +1071,7 @@ impl fmt::Display for Reached {
             }
             Reached::InputPrecision { bits } => write!(f, "input balls of {bits} bits"),
             Reached::Evaluations { count } => write!(f, "{count} integrand evaluations"),
+            Reached::Terms { count } => write!(f, "{count} terms"),
         }
     }
 }

@@ -487,7 +487,7 @@ fn finite_ball(mid: Float, err: f64) -> Option<Ball> {
 /// Estimated CPU time of one series term at working precision `wp`, in seconds:
 /// 1.2 us at about 130 bits measured for `1F2(3.7e18; 20.03, -179.875; 23.7)` at
 /// 98 bits (4.46M terms in 5.4 s, load 6.6 on 2 cores), scaled linearly above 128 bits.
-fn seconds_per_term(wp: u32) -> f64 {
+pub(crate) fn seconds_per_term(wp: u32) -> f64 {
     1.2e-6 * (f64::from(wp) / 128.0).max(1.0)
 }
 

@@ -10,7 +10,7 @@
 use rug::Float;
 
 use crate::ball::{Ball, MAG_PREC};
-use crate::error::{Error, Result};
+use crate::error::{Error, Reached, Result};
 use crate::special::hyp1f2::{hyp1f2_model_ball, hyp1f2_model_family};
 use crate::special::meijer_g::{
     self, direct_sums_sweep, meijer_g_k_at_one_with, meijer_g_k_direct_ball, meijer_g_k_from_sum, meijer_g_k_near_one_ball, near_one_sums_sweep,
@@ -224,6 +224,11 @@ fn wave_series_wp(kind: SeriesKind, g: &WaveGeometry, kmax: u64, wp: u32) -> Res
         sum = if k % 2 == 0 { sum.add(&term) } else { sum.sub(&term) };
         if k == kmax {
             break;
+        }
+        // the terms past the family's reach cost a Meijer and a 1F2 series each:
+        // the call's time budget, every 16th term
+        if k % 16 == 15 {
+            crate::budget::check_elapsed("the wave series (Eq. 11b/12) term by term", 0.0, Reached::Terms { count: k + 1 })?;
         }
         // Early stop: the rest of the partial sum (k+1..=kmax) is bounded by the tail
         // (checked every 4th term: the bound itself costs a few ball operations).
