@@ -373,6 +373,15 @@ fn wave_series_mp(
         SeriesKind::Displacement => Float::with_val(MAG_PREC, amp.abs_ref()),
         SeriesKind::Gradient => gradient_scale(amp, zeta),
     };
+    // Cost: the Meijer constants need Gamma values at the planned working
+    // precision (the cancellation guard is ~1.44 D bits: 31 000 bits at D = 21 700,
+    // where MPFR's first Gamma takes about 40 s), against the call's time budget.
+    let first_wp = prec.saturating_add(guard);
+    crate::budget::check_estimate(
+        "the wave series (Gamma values at the working precision its cancellation needs)",
+        crate::special::gamma::gamma_seconds(first_wp),
+        f64::INFINITY,
+    )?;
     let partial = ziv_with_floor(name, prec, guard, Some(&floor), |wp| {
         if std::env::var("MAUGIS_TRACE").is_ok() { eprintln!("{name}: wp = {wp}"); }
         let g = wave_geometry(a, zeta, amp, x, wp)?;
