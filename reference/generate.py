@@ -1477,19 +1477,29 @@ MODEL_DECIMAL_OUT_DIGITS = 100
 FIG4C_ALPHA = "0.3535533905932737622004221810524245196424"
 
 
-def model_residual(lam, alpha, beta, abar, e):
-    """F(m) = lambda gbar(m abar) - 1 of Eq. 15b (corrected, docs/model.md),
-    m = 1 + e, at mpmath's current precision; u_w by the Bessel form."""
+def model_cylinder_gap(lam, abar, e):
+    """The Hertz and adhesive terms of the strip gap at m = 1 + e (Eq. 15b)."""
     m = 1 + e
     s = mpmath.sqrt(e * (e + 2))
     acosh_m = mpmath.acosh(m)
     hertz = abar ** 2 / 2 * (m * s - acosh_m)
     adhesive = 4 / mpmath.pi * lam * abar * (s * acosh_m - m * mpmath.log(m))
-    wave = 0
-    if alpha != 0:
-        u = wave_bessel_ref(abar, beta, alpha, m * abar)[0]
-        wave = 2 * alpha * mpmath.sin(mpmath.pi * m * abar / beta) ** 2 - u
-    return lam * (hertz + adhesive + wave) - 1
+    return hertz + adhesive
+
+
+def model_wave_gap(alpha, beta, abar, e):
+    """One wave's term of the strip gap at m = 1 + e; u_w by the Bessel form."""
+    if alpha == 0:
+        return 0
+    m = 1 + e
+    u = wave_bessel_ref(abar, beta, alpha, m * abar)[0]
+    return 2 * alpha * mpmath.sin(mpmath.pi * m * abar / beta) ** 2 - u
+
+
+def model_residual(lam, alpha, beta, abar, e):
+    """F(m) = lambda gbar(m abar) - 1 of Eq. 15b (corrected, docs/model.md),
+    m = 1 + e, at mpmath's current precision; u_w by the Bessel form."""
+    return lam * (model_cylinder_gap(lam, abar, e) + model_wave_gap(alpha, beta, abar, e)) - 1
 
 
 def model_first_root(args, residual=None):
@@ -1578,10 +1588,72 @@ def write_model_decimal():
         MODEL_DECIMAL_BITS, MODEL_DECIMAL_OUT_DIGITS, "lambda,alpha,beta,abar,m,load", model_decimal_rows())
 
 
+# Many waves (issue 35): the strip ratio and the load of a profile of several waves at
+# decimals as typed; the waves' terms of F and of the load summed (docs/model.md,
+# "Many waves"). Columns: lambda, abar, waves (alpha_1 beta_1 alpha_2 beta_2 ...,
+# space-separated), m, load.
+def model_waves_decimal_inputs():
+    two = ((FIG4C_ALPHA, "1.125"), ("0.1767766952966368811002110905262122598212", "0.375"))
+    out = [("3", abar, two) for abar in ("0.7", "2.2", "3.16")]
+    out.append(("0.5", "1.5", two))
+    out.append(("6", "2.5", two))
+    out.append(("1", "1.3", (("0.3", "1.2"), ("0.21", "0.6"), ("0.15", "0.3"))))
+    out.append(("2.7182818284590452353602874713526624977572", "1.4142135623730950488", (("0.1", "0.3"), ("0", "0.7"), ("0.05", "0.11"))))
+    return out
+
+
+def model_waves_residual(waves):
+    """F(m) of Eq. 15b for the profile `waves` (decimal strings), m = 1 + e."""
+    def residual(lam, _alpha, _beta, abar, e):
+        wave = sum(model_wave_gap(mpf(a), mpf(b), abar, e) for a, b in waves)
+        return lam * (model_cylinder_gap(lam, abar, e) + wave) - 1
+    return residual
+
+
+def model_waves_load(lam, abar, waves, m):
+    lam, abar = mpf(lam), mpf(abar)
+    load = mpmath.pi * abar ** 2 / 4 - 2 * lam * abar * mpmath.sqrt(m * m - 1)
+    for a, b in waves:
+        alpha, beta = mpf(a), mpf(b)
+        load += mpmath.pi ** 2 * alpha * abar / beta * mpmath.besselj(1, 2 * mpmath.pi * abar / beta)
+    return load
+
+
+def model_waves_decimal_rows():
+    rows = []
+    for lam, abar, waves in model_waves_decimal_inputs():
+        vals = []
+        for bits in MODEL_DECIMAL_BITS:
+            mp.prec = bits
+            # model_first_root reads (lambda, alpha, beta, abar); the residual ignores alpha, beta
+            m = 1 + model_first_root((lam, "0", "1", abar), model_waves_residual(waves))
+            vals.append((m, model_waves_load(lam, abar, waves, m)))
+        mp.prec = MODEL_DECIMAL_BITS[1]
+        (m0, l0), (m1, l1) = vals
+        tol = mpf(10) ** -(MODEL_DECIMAL_OUT_DIGITS + 20)
+        if not (abs(m0 - m1) < tol * abs(m1) and abs(l0 - l1) < tol * max(abs(l1), 1)):
+            log("model_waves_decimal: reject %s" % ((lam, abar, waves),))
+            continue
+        fmt = lambda v: mpmath.nstr(v, MODEL_DECIMAL_OUT_DIGITS, min_fixed=1, max_fixed=0)
+        flat = " ".join(v for w in waves for v in w)
+        rows.append((lam, abar, flat, fmt(m1), fmt(l1)))
+        log("model_waves_decimal: %s %s %s m = %s" % (lam, abar, flat, mpmath.nstr(m1, 12)))
+    return rows
+
+
+def write_model_waves_decimal():
+    return write_decimal_table(
+        "model_waves_decimal",
+        ["the strip ratio m (first root of Eq. 15b, corrected) and the load (Eq. 14) of a profile of MANY waves",
+         "at the DECIMALS as typed (waves: alpha_1 beta_1 alpha_2 beta_2 ..., the waves' terms summed);",
+         "F by the Bessel form of each u_w, root by a scan at 80 bits and bisection at each precision;"],
+        MODEL_DECIMAL_BITS, MODEL_DECIMAL_OUT_DIGITS, "lambda,abar,waves,m,load", model_waves_decimal_rows())
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--jobs", type=int, default=2)
-    ap.add_argument("--only", default="bessel_j,hyp1f2,hyp2f1,meijer_g_k,bessel_j_decimal,bessel_j_tiny_decimal,hyp2f1_decimal,bessel_j_grid,ball_inputs_decimal,model_decimal")
+    ap.add_argument("--only", default="bessel_j,hyp1f2,hyp2f1,meijer_g_k,bessel_j_decimal,bessel_j_tiny_decimal,hyp2f1_decimal,bessel_j_grid,ball_inputs_decimal,model_decimal,model_waves_decimal")
     ap.add_argument("--limit", type=int, default=0, help="debug: only the first N points per table")
     args = ap.parse_args()
     tables = args.only.split(",")
@@ -1599,6 +1671,11 @@ def main():
     if "bessel_j_decimal" in tables:
         write_bessel_j_decimal()
         tables = [t for t in tables if t != "bessel_j_decimal"]
+        if not tables:
+            return
+    if "model_waves_decimal" in tables:
+        write_model_waves_decimal()
+        tables = [t for t in tables if t != "model_waves_decimal"]
         if not tables:
             return
     if "model_decimal" in tables:

@@ -151,6 +151,21 @@ pub enum Error {
         /// How many were given.
         got: usize,
     },
+    /// A call through [`crate::registry`] of a function that takes a group of
+    /// parameters any number of times (the waves of a profile, `alpha_j, beta_j`)
+    /// whose last group is incomplete.
+    IncompleteGroup {
+        /// The function.
+        function: &'static str,
+        /// What one group is, e.g. `"wave"`.
+        group: &'static str,
+        /// The names in one group, e.g. `["alpha", "beta"]`.
+        names: &'static [&'static str],
+        /// How many arguments come before the groups.
+        fixed: usize,
+        /// How many were given.
+        got: usize,
+    },
     /// An integer given where a real is wanted, or the reverse.
     ArgumentKind {
         /// The function.
@@ -373,6 +388,15 @@ impl fmt::Display for Error {
             Error::Arity { function, expected, got } => {
                 write!(f, "{function} takes {expected} arguments, got {got}")
             }
+            Error::IncompleteGroup { function, group, names, fixed, got } => {
+                let size = names.len().max(1);
+                let index = got.saturating_sub(*fixed) / size + 1;
+                write!(
+                    f,
+                    "{function} takes {fixed} arguments and then ({}) for each {group}: {got} arguments leave {group} {index} incomplete",
+                    names.join(", ")
+                )
+            }
             Error::ArgumentKind { function, arg, expected } => {
                 write!(f, "{function}: {arg} must be {}", expected.describe())
             }
@@ -564,6 +588,19 @@ pub enum ProfileError {
     },
     /// A harmonics table without a single wave.
     NoHarmonics,
+    /// Wave `wave` (1-based) is too fine for the contact: its Bessel length
+    /// `D = 2 pi abar/beta` exceeds `max` (the wave terms' cost and cancellation grow
+    /// with `D`; a refusal at once, at any precision).
+    WaveTooFine {
+        /// Which wave, counting from 1 in the order given.
+        wave: usize,
+        /// Its wavelength `beta`.
+        beta: f64,
+        /// The contact half-width `abar`.
+        abar: f64,
+        /// The most `D` allowed.
+        max: f64,
+    },
     /// Serialized parameters with neither `alpha` and `beta` (one wave) nor `waves`, or both.
     ParamsFields,
 }
@@ -597,6 +634,11 @@ impl fmt::Display for ProfileError {
             ProfileError::ParamsFields => write!(
                 f,
                 "the parameters need `lambda` with either `alpha` and `beta` (one wave) or `waves` (a list of {{alpha, beta}}), not both"
+            ),
+            ProfileError::WaveTooFine { wave, beta, abar, max } => write!(
+                f,
+                "wave {wave}: wavelength = {beta} is too fine for the contact abar = {abar}: 2 pi abar/beta = {:.6e} exceeds {max:e} (use a smaller abar or drop the wave)",
+                2.0 * std::f64::consts::PI * abar / beta
             ),
             ProfileError::NoHarmonics => {
                 write!(f, "the harmonics table has no wave (expected lines `amplitude,wavelength`)")

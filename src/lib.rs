@@ -36,7 +36,8 @@
 //! * `maugis-cli` (`cli/`), the `maugis` command: `curve` (the main job: load-area
 //!   curves, jumps, pull-off), `profile`, `limits`, `sweep` and `merge` (regime
 //!   maps, sharded), `simulate` (the numerical solver), `figures` and `paper` (the
-//!   paper's figures and numbers), `eval` (a JSON Lines calculator), `integrate`
+//!   paper's figures and numbers), `multiscale` (multi-scale roughness studies),
+//!   `eval` (a JSON Lines calculator), `integrate`
 //!   (a certified integral of an expression) and `demo`.
 //! * `maugis-python` (`python/`): the Python package `maugis`.
 //!

@@ -22,14 +22,23 @@
 //! Integer parameters (orders `n`, `k`, the truncation `kmax`) are
 //! [`Arg::Int`]; giving a real where an integer is wanted, or the reverse, is the
 //! typed error [`Error::ArgumentKind`].
+//!
+//! A function may take a group of reals any number of times after its fixed
+//! parameters ([`Function::repeated`]): `strip_ratio_waves` and `load_waves` take
+//! `lambda, abar` and then `alpha_j, beta_j` for each wave of the profile
+//! (docs/model.md, "Many waves"). An incomplete last group is
+//! [`Error::IncompleteGroup`], more than [`Repeated::max`] groups
+//! [`crate::error::ProfileError::TooManyWaves`], a bad wave
+//! [`crate::error::ProfileError::Wave`] naming the wave and the field.
 
 use rug::Float;
 
 use crate::ball::{eval_at_decimals, Decimal};
-use crate::contact::model::{ContactSize, Params};
+use crate::contact::model::{solve_load, ContactSize, Params};
 use crate::contact::displacement::{self, quadrature as wave_quadrature};
 use crate::contact::model_mp;
-use crate::error::{Error, Result};
+use crate::contact::profile::{WavyProfile, MAX_WAVES};
+use crate::error::{Error, ProfileError, Result};
 use crate::special::{bessel_j, hyp1f2, hyp2f1, meijer_g};
 use crate::{Ball, Bounded, Budget};
 
@@ -104,6 +113,22 @@ pub enum Answer {
     },
 }
 
+/// A group of real parameters a function takes any number of times (`0..=max`)
+/// after its fixed [`Function::params`]: the waves of a profile, each `(alpha, beta)`.
+/// The arguments are flat: the fixed ones, then the first group's, the second's, ...
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Repeated {
+    /// What one group is (errors name it), `"wave"`.
+    pub group: &'static str,
+    /// The front ends' name of the list of groups (`maugis eval`'s field, Python's
+    /// keyword), `"waves"`.
+    pub list: &'static str,
+    /// The names in one group, in order, all reals: `["alpha", "beta"]`.
+    pub names: &'static [&'static str],
+    /// The most groups ([`MAX_WAVES`]; more is [`ProfileError::TooManyWaves`]).
+    pub max: usize,
+}
+
 type F64Path = fn(&Args<'_, f64>) -> Result<Answer>;
 type BoundedPath = fn(&Args<'_, f64>) -> Result<Bounded>;
 type MpPath = fn(&Args<'_, Decimal>, u32) -> Result<Answer>;
@@ -116,6 +141,8 @@ pub struct Function {
     pub params: &'static [Param],
     /// How the MP path takes its decimals.
     pub mp_inputs: MpInputs,
+    /// The group of reals taken any number of times after [`Function::params`], if any.
+    pub repeated: Option<Repeated>,
     f64: F64Path,
     bounded: Option<BoundedPath>,
     mp: MpPath,
@@ -132,6 +159,26 @@ pub struct Args<'a, R> {
     function: &'static str,
     params: &'static [Param],
     values: &'a [Arg<R>],
+}
+
+impl<'a, R> Args<'a, R> {
+    /// The repeated groups after the fixed parameters, each as `N` reals (the count
+    /// was checked by [`Function::check`]).
+    fn groups<const N: usize>(&self) -> Result<Vec<[&'a R; N]>> {
+        let tail = &self.values[self.params.len().min(self.values.len())..];
+        tail.chunks(N)
+            .map(|chunk| {
+                let reals: Vec<&'a R> = chunk
+                    .iter()
+                    .map(|v| match v {
+                        Arg::Real(r) => Ok(r),
+                        Arg::Int(_) => Err(Error::ArgumentKind { function: self.function, arg: "a wave", expected: ParamKind::Real }),
+                    })
+                    .collect::<Result<_>>()?;
+                reals.try_into().map_err(|_| Error::Arity { function: self.function, expected: self.params.len() + N, got: self.values.len() })
+            })
+            .collect()
+    }
 }
 
 impl<R> Args<'_, R> {
@@ -183,10 +230,33 @@ fn reals64<const N: usize>(a: &Args<'_, f64>, i: usize) -> Result<[f64; N]> {
 }
 
 impl Function {
-    /// Checks the arguments' number and kinds against [`Function::params`].
+    /// Checks the arguments' number and kinds against [`Function::params`] (and
+    /// [`Function::repeated`]: whole groups, at most `max`, all reals).
     fn check<'a, R>(&self, values: &'a [Arg<R>]) -> Result<Args<'a, R>> {
-        if values.len() != self.params.len() {
-            return Err(Error::Arity { function: self.name, expected: self.params.len(), got: values.len() });
+        let fixed = self.params.len();
+        match self.repeated {
+            None if values.len() != fixed => {
+                return Err(Error::Arity { function: self.name, expected: fixed, got: values.len() });
+            }
+            None => {}
+            Some(_) if values.len() < fixed => {
+                return Err(Error::Arity { function: self.name, expected: fixed, got: values.len() });
+            }
+            Some(r) => {
+                let size = r.names.len();
+                if (values.len() - fixed) % size != 0 {
+                    return Err(Error::IncompleteGroup { function: self.name, group: r.group, names: r.names, fixed, got: values.len() });
+                }
+                let count = (values.len() - fixed) / size;
+                if count > r.max {
+                    return Err(Error::Profile(ProfileError::TooManyWaves { count, max: r.max }));
+                }
+                for (i, v) in values[fixed..].iter().enumerate() {
+                    if !matches!(v, Arg::Real(_)) {
+                        return Err(Error::ArgumentKind { function: self.name, arg: r.names[i % size], expected: ParamKind::Real });
+                    }
+                }
+            }
         }
         for (p, v) in self.params.iter().zip(values) {
             let ok = matches!((p.kind, v), (ParamKind::Integer, Arg::Int(_)) | (ParamKind::Real, Arg::Real(_)));
@@ -282,13 +352,41 @@ const WAVE: [Param; 4] = [real("a"), real("zeta"), real("amp"), real("x")];
 /// The model's parameters (normalised, docs/model.md).
 const MODEL: [Param; 4] = [real("lambda"), real("alpha"), real("beta"), real("abar")];
 
+/// The model's parameters for a profile of many waves: `lambda`, `abar`, then
+/// [`WAVES`] (`alpha_j, beta_j` for each wave).
+const MODEL_WAVES: [Param; 2] = [real("lambda"), real("abar")];
+
+/// The waves of `strip_ratio_waves` and `load_waves`.
+const WAVES: Repeated = Repeated { group: "wave", list: "waves", names: &["alpha", "beta"], max: MAX_WAVES };
+
 /// The model at one contact size in f64: the strip ratio `m` (Eq. 15b,
 /// corrected) or the load at it (Eq. 14).
 fn model_f64(a: &Args<'_, f64>, load: bool) -> Result<Answer> {
     let [lambda, alpha, beta, abar] = reals64::<4>(a, 0)?;
-    let contact = ContactSize::new(Params::new(lambda, alpha, beta)?, abar)?;
-    let m = contact.solve_m()?;
-    Ok(Answer::F64(if load { contact.load(m)? } else { m }))
+    state_f64(Params::new(lambda, alpha, beta)?, abar, load)
+}
+
+/// [`model_f64`] for a profile of many waves (`lambda, abar, alpha_1, beta_1, ...`).
+fn model_waves_f64(a: &Args<'_, f64>, load: bool) -> Result<Answer> {
+    let [lambda, abar] = reals64::<2>(a, 0)?;
+    let pairs: Vec<(f64, f64)> = a.groups::<2>()?.into_iter().map(|[alpha, beta]| (*alpha, *beta)).collect();
+    state_f64(Params::with_profile(lambda, WavyProfile::from_pairs(&pairs)?)?, abar, load)
+}
+
+/// `m`, or the load computed from the solver's strip end (`m - 1` to full relative
+/// accuracy: the load from the rounded `m` lost it as `m -> 1`, 2.4e-5 relative at
+/// lambda = 1e6, abar = 1).
+fn state_f64(params: Params, abar: f64, load: bool) -> Result<Answer> {
+    Ok(Answer::F64(if load { solve_load(params, abar)? } else { ContactSize::new(params, abar)?.solve_m()? }))
+}
+
+/// The certified `m` or load of a profile of many waves at decimals
+/// (`lambda, abar, alpha_1, beta_1, ...`), each a ball that contains it.
+fn model_waves_mp(a: &Args<'_, Decimal>, prec: u32, load: bool) -> Result<Answer> {
+    let [lambda, abar] = decimals::<2>(a, 0)?;
+    let waves: Vec<(Decimal, Decimal)> = a.groups::<2>()?.into_iter().map(|[alpha, beta]| (alpha.clone(), beta.clone())).collect();
+    let at_decimals = if load { model_mp::load_waves_at_decimals } else { model_mp::strip_ratio_waves_at_decimals };
+    Ok(Answer::Ball(at_decimals(&lambda, &abar, &waves, prec)?))
 }
 
 /// Every function the front ends can call, in the order `maugis eval` lists them.
@@ -297,6 +395,7 @@ pub static FUNCTIONS: &[Function] = &[
         name: "bessel_j",
         params: &[int("n"), real("x")],
         mp_inputs: MpInputs::Balls,
+        repeated: None,
         f64: |a| Ok(Answer::F64(bessel_j::bessel_j(a.int(0)?, *a.real(1)?)?)),
         bounded: Some(|a| bessel_j::bessel_j_bounded(a.int(0)?, *a.real(1)?)),
         mp: |a, p| {
@@ -308,6 +407,7 @@ pub static FUNCTIONS: &[Function] = &[
         name: "hyp1f2",
         params: &[real("a"), real("b1"), real("b2"), real("z")],
         mp_inputs: MpInputs::Balls,
+        repeated: None,
         f64: |a| {
             let [x, b1, b2, z] = reals64::<4>(a, 0)?;
             Ok(Answer::F64(hyp1f2::hyp1f2(x, b1, b2, z)?))
@@ -325,6 +425,7 @@ pub static FUNCTIONS: &[Function] = &[
         name: "hyp2f1",
         params: &[real("a"), real("b"), real("c"), real("z")],
         mp_inputs: MpInputs::Balls,
+        repeated: None,
         f64: |a| {
             let [x, b, c, z] = reals64::<4>(a, 0)?;
             Ok(Answer::F64(hyp2f1::hyp2f1(x, b, c, z)?))
@@ -342,6 +443,7 @@ pub static FUNCTIONS: &[Function] = &[
         name: "meijer_g_k",
         params: &[int("k"), real("y")],
         mp_inputs: MpInputs::Balls,
+        repeated: None,
         f64: |a| Ok(Answer::F64(meijer_g::meijer_g_k(a.order_u32(0)?, *a.real(1)?)?)),
         bounded: Some(|a| meijer_g::meijer_g_k_bounded(a.order_u32(0)?, *a.real(1)?)),
         mp: |a, p| {
@@ -353,6 +455,7 @@ pub static FUNCTIONS: &[Function] = &[
         name: "u_wave",
         params: &WAVE,
         mp_inputs: MpInputs::Balls,
+        repeated: None,
         f64: |a| {
             let [x0, z, m, x] = reals64::<4>(a, 0)?;
             Ok(Answer::F64(displacement::u_wave(x0, z, m, x)?))
@@ -367,6 +470,7 @@ pub static FUNCTIONS: &[Function] = &[
         name: "u_wave_series",
         params: &[real("a"), real("zeta"), real("amp"), real("x"), int("kmax")],
         mp_inputs: MpInputs::Rounded,
+        repeated: None,
         f64: |a| {
             let [x0, z, m, x] = reals64::<4>(a, 0)?;
             let (value, trunc) = displacement::u_wave_series(x0, z, m, x, a.count_u64(4)?)?;
@@ -384,6 +488,7 @@ pub static FUNCTIONS: &[Function] = &[
         name: "du_wave",
         params: &WAVE,
         mp_inputs: MpInputs::Balls,
+        repeated: None,
         f64: |a| {
             let [x0, z, m, x] = reals64::<4>(a, 0)?;
             Ok(Answer::F64(displacement::du_wave(x0, z, m, x)?))
@@ -398,6 +503,7 @@ pub static FUNCTIONS: &[Function] = &[
         name: "u_wave_quad",
         params: &WAVE,
         mp_inputs: MpInputs::Rounded,
+        repeated: None,
         f64: |a| {
             let [x0, z, m, x] = reals64::<4>(a, 0)?;
             let q = wave_quadrature::u_wave_quad(x0, z, m, x)?;
@@ -414,6 +520,7 @@ pub static FUNCTIONS: &[Function] = &[
         name: "u_hertz",
         params: &[real("a"), real("r"), real("x")],
         mp_inputs: MpInputs::Rounded,
+        repeated: None,
         f64: |a| {
             let [x0, r, x] = reals64::<3>(a, 0)?;
             Ok(Answer::F64(displacement::u_hertz(x0, r, x)?))
@@ -428,6 +535,7 @@ pub static FUNCTIONS: &[Function] = &[
         name: "u_adhesive",
         params: &[real("a"), real("c"), real("sigma"), real("e_star"), real("x")],
         mp_inputs: MpInputs::Rounded,
+        repeated: None,
         f64: |a| {
             let [x0, c, s, e, x] = reals64::<5>(a, 0)?;
             Ok(Answer::F64(displacement::u_adhesive(x0, c, s, e, x)?))
@@ -442,6 +550,7 @@ pub static FUNCTIONS: &[Function] = &[
         name: "strip_ratio",
         params: &MODEL,
         mp_inputs: MpInputs::Balls,
+        repeated: None,
         f64: |a| model_f64(a, false),
         bounded: None,
         mp: |a, p| Ok(Answer::Ball(model_mp::strip_ratio_at_decimals(&decimals::<4>(a, 0)?, p)?)),
@@ -450,9 +559,28 @@ pub static FUNCTIONS: &[Function] = &[
         name: "load",
         params: &MODEL,
         mp_inputs: MpInputs::Balls,
+        repeated: None,
         f64: |a| model_f64(a, true),
         bounded: None,
         mp: |a, p| Ok(Answer::Ball(model_mp::load_at_decimals(&decimals::<4>(a, 0)?, p)?)),
+    },
+    Function {
+        name: "strip_ratio_waves",
+        params: &MODEL_WAVES,
+        mp_inputs: MpInputs::Balls,
+        repeated: Some(WAVES),
+        f64: |a| model_waves_f64(a, false),
+        bounded: None,
+        mp: |a, p| model_waves_mp(a, p, false),
+    },
+    Function {
+        name: "load_waves",
+        params: &MODEL_WAVES,
+        mp_inputs: MpInputs::Balls,
+        repeated: Some(WAVES),
+        f64: |a| model_waves_f64(a, true),
+        bounded: None,
+        mp: |a, p| model_waves_mp(a, p, true),
     },
 ];
 
@@ -480,24 +608,26 @@ mod tests {
             ("u_adhesive", &["1", "1.2", "0.5", "1", "1.5"]),
             ("strip_ratio", &["1", "0.35", "1.125", "2"]),
             ("load", &["1", "0.35", "1.125", "2"]),
+            ("strip_ratio_waves", &["1", "2", "0.35", "1.125", "0.175", "0.375"]),
+            ("load_waves", &["1", "2", "0.35", "1.125", "0.175", "0.375"]),
         ];
         assert_eq!(points.len(), FUNCTIONS.len(), "a point for every registered function");
         for (name, texts) in points {
             let f = function(name).unwrap();
-            let f64_args: Vec<Arg<f64>> = f
-                .params
+            // the fixed parameters' kinds, then reals (a repeated group)
+            let kind = |i: usize| f.params.get(i).map_or(ParamKind::Real, |p| p.kind);
+            let f64_args: Vec<Arg<f64>> = texts
                 .iter()
-                .zip(texts.iter())
-                .map(|(p, t)| match p.kind {
+                .enumerate()
+                .map(|(i, t)| match kind(i) {
                     ParamKind::Integer => Arg::Int(t.parse().unwrap()),
                     ParamKind::Real => Arg::Real(t.parse().unwrap()),
                 })
                 .collect();
-            let mp_args: Vec<Arg<Decimal>> = f
-                .params
+            let mp_args: Vec<Arg<Decimal>> = texts
                 .iter()
-                .zip(texts.iter())
-                .map(|(p, t)| match p.kind {
+                .enumerate()
+                .map(|(i, t)| match kind(i) {
                     ParamKind::Integer => Arg::Int(t.parse().unwrap()),
                     ParamKind::Real => dec(t),
                 })
@@ -540,5 +670,53 @@ mod tests {
             Err(Error::IntegerOutOfRange { arg: "k", value: -1, .. })
         ));
         assert!(matches!(j.eval_mp(&[Arg::Int(1), dec("2")], 0), Err(Error::Precision { .. })));
+    }
+
+    #[test]
+    fn f64_load_keeps_the_accuracy_of_m_minus_1() {
+        // m - 1 ~ 8e-13 at lambda = 1e6: the load from the rounded m was 2.4e-5 off
+        for (name, args) in [("load", vec![1e6, 0.0, 1.0, 1.0]), ("load_waves", vec![1e6, 1.0, 0.0, 1.0]), ("load", vec![1e4, 0.35, 1.125, 2.2])] {
+            let f = function(name).unwrap();
+            let Answer::F64(v) = f.eval_f64(&args.iter().map(|x| Arg::Real(*x)).collect::<Vec<_>>()).unwrap() else { panic!() };
+            let mp_args: Vec<Arg<Decimal>> = args.iter().map(|x| dec(&format!("{x:e}"))).collect();
+            let Answer::Ball(b) = f.eval_mp(&mp_args, 64).unwrap() else { panic!() };
+            assert!((v - b.to_f64()).abs() <= 1e-12 * b.to_f64().abs(), "{name} {args:?}: {v} vs {b:?}");
+        }
+    }
+
+    #[test]
+    fn bad_wave_lists_are_typed_errors() {
+        let f = function("strip_ratio_waves").unwrap();
+        let r = |v: f64| Arg::Real(v);
+        // an odd count: the second wave has no wavelength
+        let e = f.eval_f64(&[r(1.0), r(2.0), r(0.35), r(1.125), r(0.2)]).unwrap_err();
+        assert!(matches!(e, Error::IncompleteGroup { group: "wave", fixed: 2, got: 5, .. }), "{e:?}");
+        assert!(e.to_string().contains("wave 2 incomplete"), "{e}");
+        let e = f.eval_mp(&[dec("1"), dec("2"), dec("0.35")], 64).unwrap_err();
+        assert!(matches!(e, Error::IncompleteGroup { got: 3, .. }), "{e:?}");
+        // fewer than the fixed parameters
+        assert!(matches!(f.eval_f64(&[r(1.0)]), Err(Error::Arity { expected: 2, got: 1, .. })));
+        // too many waves: refused before any evaluation
+        let mut many = vec![dec("1"), dec("2")];
+        for _ in 0..=MAX_WAVES {
+            many.extend([dec("0.1"), dec("1")]);
+        }
+        let e = f.eval_mp(&many, 64).unwrap_err();
+        assert!(matches!(e, Error::Profile(ProfileError::TooManyWaves { count, max: MAX_WAVES }) if count == MAX_WAVES + 1), "{e:?}");
+        // an integer where a wave's real is wanted
+        let e = f.eval_f64(&[r(1.0), r(2.0), r(0.35), Arg::Int(1)]).unwrap_err();
+        assert!(matches!(e, Error::ArgumentKind { arg: "beta", .. }), "{e:?}");
+        // a bad value names the wave and the field, on both paths
+        use crate::error::WaveField;
+        let e = f.eval_f64(&[r(1.0), r(2.0), r(0.35), r(1.125), r(-0.1), r(0.375)]).unwrap_err();
+        assert!(matches!(e, Error::Profile(ProfileError::Wave { wave: 2, field: WaveField::Amplitude, .. })), "{e:?}");
+        let e = f.eval_f64(&[r(1.0), r(2.0), r(0.35), r(f64::NAN)]).unwrap_err();
+        assert!(matches!(e, Error::Profile(ProfileError::Wave { wave: 1, field: WaveField::Wavelength, .. })), "{e:?}");
+        for prec in [12, 64] {
+            let e = f.eval_mp(&[dec("1"), dec("2"), dec("0.35"), dec("1.125"), dec("0.2"), dec("0")], prec).unwrap_err();
+            assert!(matches!(e, Error::Profile(ProfileError::Wave { wave: 2, field: WaveField::Wavelength, .. })), "{prec}: {e:?}");
+            let e = function("load_waves").unwrap().eval_mp(&[dec("1"), dec("2"), dec("-0.35"), dec("1.125")], prec).unwrap_err();
+            assert!(matches!(e, Error::Profile(ProfileError::Wave { wave: 1, field: WaveField::Amplitude, .. })), "{prec}: {e:?}");
+        }
     }
 }

@@ -19,7 +19,7 @@
 //!   double and the answer is for those doubles.
 //! * With `"prec"` the certified path runs. For the functions wired to ball
 //!   inputs (`bessel_j`, `hyp1f2`, `hyp2f1`, `meijer_g_k`, `u_wave`, `du_wave`,
-//!   and the model's `strip_ratio` and `load`) each decimal becomes a ball that **contains the
+//!   and the model's `strip_ratio`, `load`, `strip_ratio_waves`, `load_waves`) each decimal becomes a ball that **contains the
 //!   decimal** ([`maugis::ball::Decimal`], Arb's convention): exact when the
 //!   decimal is a binary fraction (`2.5`, `0.375`), otherwise the decimal rounded
 //!   to nearest with a one-ulp radius. The printed ball contains the function
@@ -44,6 +44,12 @@
 //!   imaginary part may exceed `rad`), the evaluations spent, and
 //!   `"goal_met": false` with a `"warning"` when a limit stopped it early.
 //!
+//! * `strip_ratio_waves` and `load_waves` are `strip_ratio` and `load` for a profile of
+//!   any number of waves: `"lambda"`, `"abar"` and `"waves": [[alpha_1, beta_1], ...]`
+//!   (each value a number or a decimal string, up to 64 waves; a bad wave is an error
+//!   naming the wave, from 1, and the field):
+//!   `{"fn": "strip_ratio_waves", "lambda": 3, "abar": 2, "waves": [[0.35, 1.125], ["0.175", "0.375"]], "prec": 64}`.
+//!
 //! * `"budget_ms"` (optional, `1 ..= 86 400 000`) is the request's time
 //!   budget in milliseconds; without it the library's default,
 //!   [`maugis::Budget::DEFAULT`] (30 s). A request that its cost model puts past
@@ -64,7 +70,7 @@
 use std::io::{BufRead, Write};
 
 use maugis::ball::Decimal;
-use maugis::registry::{self, Answer, Arg, ParamKind};
+use maugis::registry::{self, Answer, Arg, ParamKind, Repeated};
 use maugis::quad::certified::Options;
 use maugis::quad::expr::{integrate_range, shortfall, DecaySpec, End, Expr, WeightSpec};
 use maugis::{Ball, Budget, Error, MAX_PREC};
@@ -179,12 +185,44 @@ fn arg_f64(obj: &Map<String, Value>, name: &str) -> Req<f64> {
 }
 
 fn arg_f64_untimed(obj: &Map<String, Value>, name: &str) -> Req<f64> {
-    let t = arg_text(obj, name)?;
-    let v: f64 = t.parse().map_err(|_| BadRequest::new(format!("argument \"{name}\" = {t:?} is not a decimal number")))?;
+    parse_f64(&format!("argument \"{name}\""), &arg_text(obj, name)?)
+}
+
+/// Decimal text as a finite f64; `what` names it in the error.
+fn parse_f64(what: &str, t: &str) -> Req<f64> {
+    let v: f64 = t.parse().map_err(|_| BadRequest::new(format!("{what} = {t:?} is not a decimal number")))?;
     if !v.is_finite() {
-        return Err(BadRequest::new(format!("argument \"{name}\" must be finite (got {t})")));
+        return Err(BadRequest::new(format!("{what} must be finite (got {t})")));
     }
     Ok(v)
+}
+
+/// The list of repeated groups of a function (`"waves": [[alpha, beta], ...]`), flat,
+/// each value's text with its name (`waves[2].beta`). The count and the completeness of
+/// the groups are the registry's to check: a group of the wrong length is passed on as
+/// it is and refused there with a typed error ([`maugis::Error::IncompleteGroup`]).
+fn group_texts(obj: &Map<String, Value>, r: Repeated) -> Req<Vec<(String, String)>> {
+    let list = match obj.get(r.list) {
+        Some(Value::Array(list)) => list,
+        None => return Err(BadRequest::new(format!("missing argument \"{}\" (a list of [{}] for each {})", r.list, r.names.join(", "), r.group))),
+        Some(other) => return Err(BadRequest::new(format!("\"{}\" must be a list of [{}] for each {}, got {other}", r.list, r.names.join(", "), r.group))),
+    };
+    let mut out = Vec::new();
+    for (j, item) in list.iter().enumerate() {
+        let Value::Array(group) = item else {
+            return Err(BadRequest::new(format!("{}[{}] must be a list [{}], got {item}", r.list, j + 1, r.names.join(", "))));
+        };
+        for (k, v) in group.iter().enumerate() {
+            let name = format!("{}[{}].{}", r.list, j + 1, r.names.get(k).copied().unwrap_or("?"));
+            let text = match v {
+                Value::Number(n) => n.to_string(),
+                Value::String(s) => s.trim().to_string(),
+                other => return Err(BadRequest::new(format!("{name} must be a number or a decimal string, got {other}"))),
+            };
+            out.push((name, text));
+        }
+    }
+    Ok(out)
 }
 
 /// The argument as an exact [`Decimal`] (for functions wired to ball inputs).
@@ -296,25 +334,36 @@ fn evaluate(obj: &Map<String, Value>) -> Req<Value> {
         }
         other => other.into(),
     })?;
-    let names: Vec<&str> = function.param_names().collect();
+    let mut names: Vec<&str> = function.param_names().collect();
+    names.extend(function.repeated.map(|r| r.list));
     check_names(obj, fname, &names)?;
     let prec = read_prec(obj)?;
     let budget = read_budget(obj)?;
     let answer = match prec {
         None => {
-            let args = function
+            let mut args = function
                 .params
                 .iter()
                 .map(|p| Ok(match p.kind { ParamKind::Integer => Arg::Int(arg_int(obj, p.name)?), ParamKind::Real => Arg::Real(arg_f64(obj, p.name)?) }))
                 .collect::<Req<Vec<_>>>()?;
+            if let Some(r) = function.repeated {
+                args.extend(group_texts(obj, r)?.iter().map(|(name, t)| parse_f64(name, t).map(Arg::Real)).collect::<Req<Vec<_>>>()?);
+            }
             budget.run(|| function.eval_f64(&args))?
         }
         Some(p) => {
-            let args = function
+            let mut args = function
                 .params
                 .iter()
                 .map(|q| Ok(match q.kind { ParamKind::Integer => Arg::Int(arg_int(obj, q.name)?), ParamKind::Real => Arg::Real(arg_decimal(obj, q.name)?) }))
                 .collect::<Req<Vec<_>>>()?;
+            if let Some(r) = function.repeated {
+                let texts = group_texts(obj, r)?;
+                for (name, t) in &texts {
+                    let d = profile::timed(profile::ARGS, || Decimal::parse(t)).map_err(|e| BadRequest::new(format!("{name}: {e}")))?;
+                    args.push(Arg::Real(d));
+                }
+            }
             function.eval_mp_with_budget(&args, p, budget)?
         }
     };
@@ -505,9 +554,10 @@ mod fuzz {
     use bolero::check;
 
     const NAMES: [&str; 6] = ["integrate", "nope", "", "bessel_j ", "BESSEL_J", "load"];
-    const VALUES: [&str; 16] = [
+    const VALUES: [&str; 19] = [
         "1", "-1", "2.5", "\"2.5\"", "\"0.001\"", "1e400", "-0", "\"nan\"", "null", "{}", "[1]", "true", "\"x\"",
         "9223372036854775808", "\"sqrt(x)\"", "{\"alpha\": -0.5, \"log\": 9}",
+        "[[0.35, 1.125], [\"0.175\", \"0.375\"]]", "[[0.35], [1, 2, 3]]", "[[-1, \"0\"], null]",
     ];
     const PRECS: [&str; 7] = ["0", "1", "53", "65537", "-5", "\"64\"", "4294967296"];
 
@@ -524,7 +574,7 @@ mod fuzz {
             let all: Vec<&str> = registry::names().chain(NAMES).collect();
             let name = all[*f as usize % all.len()];
             let params: Vec<&str> = registry::function(name)
-                .map(|g| g.param_names().collect())
+                .map(|g| g.param_names().chain(g.repeated.map(|r| r.list)).collect())
                 .unwrap_or_else(|_| vec!["f", "a", "b", "x", "weight", "decay"]);
             let mut fields = vec![format!("\"fn\": \"{name}\"")];
             for (k, v) in args.iter().take(6) {

@@ -12,6 +12,7 @@
 //! * `maugis sweep` / `maugis merge`: regime maps, sharded for array jobs (`sweep.rs`).
 //! * `maugis paper`: the paper's quoted numbers next to ours, docs/paper.md (`paper.rs`).
 //! * `maugis figures`: the paper's Figs. 2-14 regenerated, docs/figures.md (`figures.rs`).
+//! * `maugis multiscale`: the multi-scale roughness studies, docs/multiscale.md (`multiscale.rs`).
 //!
 //! Usage errors and runtime errors exit with code 2 and a one-line message on
 //! stderr (`maugis: ...`); no output file is written then.
@@ -22,6 +23,7 @@ mod eval;
 mod figures;
 mod integrate;
 mod limits;
+mod multiscale;
 mod output;
 mod paper;
 mod plot;
@@ -66,6 +68,9 @@ enum Command {
     Figures(figures::FiguresArgs),
     /// Every number the seed paper quotes, recomputed, next to the paper's value (docs/paper.md).
     Paper(paper::PaperArgs),
+    /// Multi-scale roughness studies (docs/multiscale.md): `envelope`, the envelope of the
+    /// load-area response of Weierstrass profiles against the model.
+    Multiscale(multiscale::MultiscaleArgs),
 }
 
 /// Requests of the demo: the Eq. 12 factors at abar = 6, beta = 9/8, and the edge x = a.
@@ -114,6 +119,7 @@ fn main() {
         Command::Simulate(a) => report(guarded(move || simulate::run(a))),
         Command::Merge(a) => report(guarded(move || sweep::run_merge(a))),
         Command::Paper(a) => report(guarded(move || paper::run(a))),
+        Command::Multiscale(a) => report(guarded(move || multiscale::run(a))),
         Command::Figures(a) => report(guarded(move || figures::run(a))),
     };
     std::process::exit(code);

@@ -23,6 +23,9 @@ The model (results carry the fields of the ``maugis`` command's JSON)::
     curve(lam, alpha, beta)         load-area response, jumps, loops, dissipation, pull-off
     run_summary(lam, alpha, beta)   the JSON object of `maugis curve --format json`
     state(lam, alpha, beta, abar)   solved states (broadcasting)
+    strip_ratio(lam, alpha, beta, abar), load(lam, alpha, beta, abar)
+                                    m and the load at one contact size (float64, or
+                                    certified balls with prec=)
     profile(lam, alpha, beta, abar) traction, displacement and gap at one state
     simulate(lam, alpha, beta, ...) one cycle of the numerical solver (maugis simulate:
                                     profile=, half_width=, periodic=)
@@ -41,9 +44,11 @@ from ._model import (
     Record,
     Table,
     curve,
+    load,
     profile,
     run_summary,
     state,
+    strip_ratio,
     sweep,
 )
 from ._integrate import integrate
@@ -76,5 +81,7 @@ __all__ = [
     "simulate",
     "curve",
     "state",
+    "strip_ratio",
+    "load",
     "profile",
 ]

@@ -17,7 +17,7 @@ import json
 import numpy as np
 
 from . import _maugis as _ext
-from ._special import _as_real, _flat
+from ._special import _as_real, _call, _flat
 
 __all__ = [
     "FIG4C_ALPHA",
@@ -190,17 +190,79 @@ def curve(lam, alpha=None, beta=None, *, waves=None, amax=6.0, points=600, datum
     return out[0] if lams.ndim == 0 else out
 
 
-def state(lam, alpha, beta, abar):
+def state(lam, alpha, beta, abar, *, waves=None):
     """Solved states (the fields of a curve's grid ``points``), broadcasting like a ufunc.
+
+    The profile is the one wave ``alpha``, ``beta`` (both broadcast), or with
+    ``alpha = beta = None`` the cylinder carrying ``waves``, a list of
+    ``(amplitude, wavelength)`` pairs (one profile for every element; ``lam`` and
+    ``abar`` broadcast), as :func:`curve` takes them.
 
     Returns a :class:`Record` of arrays of the broadcast shape (NumPy scalars
     for scalar arguments): ``abar``, ``m``, ``m_minus_1``, ``load``,
     ``approach`` and the ``validity`` record. States are solved in parallel.
     """
-    conv = [_as_real(n, v) for n, v in (("lam", lam), ("alpha", alpha), ("beta", beta), ("abar", abar))]
-    flat, shape = _flat(conv)
-    rows = json.loads(_ext.states_json(*flat))
+    if waves is None:
+        conv = [_as_real(n, v) for n, v in (("lam", lam), ("alpha", alpha), ("beta", beta), ("abar", abar))]
+        flat, shape = _flat(conv)
+        rows = json.loads(_ext.states_json(*flat))
+    else:
+        _, _, pairs = _roughness(alpha, beta, waves, default=False)
+        flat, shape = _flat([_as_real("lam", lam), _as_real("abar", abar)])
+        rows = json.loads(_ext.states_waves_json(*flat, pairs))
     return _reshape(_table(rows), shape) if rows else Table()
+
+
+def _wave_pairs(waves):
+    """The ``(amplitude, wavelength)`` pairs of ``waves``, each value as given (numbers,
+    ``mpmath.mpf`` or decimal strings; the library checks them and names a bad wave)."""
+    if isinstance(waves, (str, bytes)):
+        raise TypeError("waves must be a sequence of (amplitude, wavelength) pairs")
+    pairs = []
+    for j, w in enumerate(waves):
+        if isinstance(w, (str, bytes)):
+            raise TypeError(f"waves[{j}] must be a pair (amplitude, wavelength) (got {w!r})")
+        try:
+            a, b = w
+        except (TypeError, ValueError):
+            raise TypeError(f"waves[{j}] must be a pair (amplitude, wavelength) (got {w!r})") from None
+        pairs.append((a, b))
+    return pairs
+
+
+def _model_at(function, lam, alpha, beta, abar, waves, prec, output, digits):
+    """``strip_ratio`` or ``load`` of the registry: the one wave ``(alpha, beta)``, or the
+    profile ``waves`` through ``strip_ratio_waves``/``load_waves``
+    (``lambda, abar, alpha_1, beta_1, ...``)."""
+    if waves is None:
+        if alpha is None or beta is None:
+            raise TypeError("give alpha and beta (one wave) or waves=[(amplitude, wavelength), ...]")
+        return _call(function, (lam, alpha, beta, abar), False, prec, output, digits)
+    if alpha is not None or beta is not None:
+        raise ValueError("give waves=[(amplitude, wavelength), ...] or alpha and beta, not both")
+    flat = [v for pair in _wave_pairs(waves) for v in pair]
+    return _call(function + "_waves", (lam, abar, *flat), False, prec, output, digits)
+
+
+def strip_ratio(lam, alpha, beta, abar, *, waves=None, prec=None, output="mpf", digits=None):
+    """The strip ratio ``m = c/a`` at contact size ``abar``: the first root of the
+    corrected Eq. 15b, broadcasting like a ufunc (``maugis eval``'s ``strip_ratio``).
+
+    The profile is the one wave ``alpha``, ``beta``, or with ``alpha = beta = None``
+    the cylinder carrying ``waves``, a list of ``(amplitude, wavelength)`` pairs
+    (``strip_ratio_waves``; one wave gives exactly what ``alpha``, ``beta`` give).
+    float64 by default; ``prec=P`` returns certified balls ``(mid, rad)`` as the
+    special functions do, each decimal string (of ``waves`` too) a ball that contains
+    the decimal as typed. A bad wave raises ``ValueError`` naming the wave and the field.
+    """
+    return _model_at("strip_ratio", lam, alpha, beta, abar, waves, prec, output, digits)
+
+
+def load(lam, alpha, beta, abar, *, waves=None, prec=None, output="mpf", digits=None):
+    """The load (Eq. 14) at the strip ratio of :func:`strip_ratio`, with the same
+    arguments (``maugis eval``'s ``load`` and ``load_waves``). Certified balls are
+    accurate relative to ``max(|load|, pi abar**2/4)``: the load crosses zero."""
+    return _model_at("load", lam, alpha, beta, abar, waves, prec, output, digits)
 
 
 def _reshape(table, shape):

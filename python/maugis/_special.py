@@ -163,6 +163,13 @@ def _call(function, values, bounded, prec, output, digits, budget):
     """Runs the library's registry function `function` (its parameter names and
     kinds come from the registry, ``_ext.signature``) over broadcast arguments."""
     signature = _ext.signature(function)
+    repeated = _ext.repeated(function)
+    if repeated is not None:
+        # a group taken any number of times after the fixed parameters (the waves of
+        # strip_ratio_waves: alpha_1, beta_1, alpha_2, ...), all reals
+        _, group, _ = repeated
+        extra = max(len(values) - len(signature), 0)
+        signature = list(signature) + [(f"{group[k % len(group)]}_{k // len(group) + 1}", "real") for k in range(extra)]
     names = [n for n, _ in signature]
     if prec is not None:
         if bounded:

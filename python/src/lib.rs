@@ -147,39 +147,80 @@ fn signature(function: &str) -> PyResult<Vec<(&'static str, &'static str)>> {
         .collect())
 }
 
+/// The repeated group of a registry function ([`maugis::registry::Repeated`]) as
+/// `(list name, names in one group, most groups)`, or `None`: Python passes the
+/// groups' columns after the fixed parameters' (`lambda, abar, alpha_1, beta_1, ...`).
+#[pyfunction]
+fn repeated(function: &str) -> PyResult<Option<(&'static str, Vec<&'static str>, usize)>> {
+    let f = registry::function(function).map_err(lib_error)?;
+    Ok(f.repeated.map(|r| (r.list, r.names.to_vec(), r.max)))
+}
+
+/// The kind of argument `i` of `f`: a fixed parameter's, or real (a repeated group).
+fn kind_at(f: &Function, i: usize) -> ParamKind {
+    f.params.get(i).map_or(ParamKind::Real, |p| p.kind)
+}
+
+/// The name of argument `i` of `f`: a fixed parameter's, or `alpha_2` (the group's
+/// name and its number, from 1).
+fn name_at(f: &Function, i: usize) -> String {
+    match (f.params.get(i), f.repeated) {
+        (Some(p), _) => p.name.to_string(),
+        (None, Some(r)) => {
+            let k = i - f.params.len();
+            format!("{}_{}", r.names[k % r.names.len()], k / r.names.len() + 1)
+        }
+        (None, None) => "?".to_string(),
+    }
+}
+
+/// Checks the number of argument columns: the registry checks the rest (kinds, whole
+/// groups, at most the most groups) with its typed errors.
+fn check_columns(f: &Function, got: usize) -> PyResult<()> {
+    let fixed = f.params.len();
+    let fits = if f.repeated.is_some() { got >= fixed && got <= MAX_COLUMNS } else { got == fixed };
+    if fits {
+        Ok(())
+    } else if let (Some(r), true) = (f.repeated, got > MAX_COLUMNS) {
+        let count = (got - fixed) / r.names.len();
+        Err(lib_error(Error::Profile(maugis::error::ProfileError::TooManyWaves { count, max: r.max })))
+    } else {
+        Err(lib_error(Error::Arity { function: f.name, expected: fixed, got }))
+    }
+}
+
 /// A registry function ([`maugis::registry`]) over flat argument columns (one
-/// per parameter, int64 for integers and float64 for reals, all of one length):
-/// a float64 array, or with `bounded` the `(value, err)` pair of arrays.
+/// per parameter, int64 for integers and float64 for reals, all of one length;
+/// a repeated group's columns after the fixed ones): a float64 array, or with
+/// `bounded` the `(value, err)` pair of arrays.
 #[pyfunction]
 fn eval_f64<'py>(py: Python<'py>, function: &str, columns: Vec<Bound<'py, PyAny>>, bounded: bool) -> PyResult<Bound<'py, PyAny>> {
     let f = registry::function(function).map_err(lib_error)?;
-    if columns.len() != f.params.len() || columns.len() > MAX_COLUMNS {
-        return Err(lib_error(Error::Arity { function: f.name, expected: f.params.len(), got: columns.len() }));
-    }
-    let cols = f
-        .params
+    check_columns(f, columns.len())?;
+    let cols = columns
         .iter()
-        .zip(&columns)
-        .map(|(p, c)| {
-            Ok(match p.kind {
+        .enumerate()
+        .map(|(i, c)| {
+            Ok(match kind_at(f, i) {
                 ParamKind::Integer => Column::Int(c.extract()?),
                 ParamKind::Real => Column::Real(c.extract()?),
             })
         })
         .collect::<PyResult<Vec<Column>>>()?;
+    let names: Vec<String> = (0..cols.len()).map(|i| name_at(f, i)).collect();
     let slices = cols
         .iter()
-        .zip(f.params)
-        .map(|(c, p)| {
+        .zip(&names)
+        .map(|(c, n)| {
             Ok(match c {
-                Column::Int(a) => ColumnSlice::Int(slice(a, p.name)?),
-                Column::Real(a) => ColumnSlice::Real(slice(a, p.name)?),
+                Column::Int(a) => ColumnSlice::Int(slice(a, n)?),
+                Column::Real(a) => ColumnSlice::Real(slice(a, n)?),
             })
         })
         .collect::<PyResult<Vec<ColumnSlice>>>()?;
     let len = same_len(&slices.iter().map(ColumnSlice::len).collect::<Vec<_>>())?;
     let describe = |i: usize| {
-        let args: Vec<String> = f.param_names().zip(&slices).map(|(n, c)| format!("{n}={}", show_arg(&c.at(i)))).collect();
+        let args: Vec<String> = names.iter().zip(&slices).map(|(n, c)| format!("{n}={}", show_arg(&c.at(i)))).collect();
         format!("{function}({})", args.join(", "))
     };
     run_f64(
@@ -195,8 +236,9 @@ fn eval_f64<'py>(py: Python<'py>, function: &str, columns: Vec<Bound<'py, PyAny>
     )
 }
 
-/// More parameters than any registry function has.
-const MAX_COLUMNS: usize = 8;
+/// More parameters than any registry function has: the two fixed parameters of
+/// `strip_ratio_waves` and two for each of up to `MAX_WAVES` waves.
+const MAX_COLUMNS: usize = 2 + 2 * maugis::contact::profile::MAX_WAVES;
 
 /// Row `i` of the columns, in `buf` (no allocation per element).
 fn row<'b>(columns: &[ColumnSlice<'_>], i: usize, buf: &'b mut [Arg<f64>; MAX_COLUMNS]) -> &'b [Arg<f64>] {
@@ -340,14 +382,14 @@ impl std::fmt::Display for MpArg {
 /// [`maugis::registry::MpInputs`] says for `f`); answers that are not certified
 /// balls (estimates) are refused.
 fn mp_one(f: &Function, args: &[MpArg], prec: u32, budget: Budget) -> maugis::Result<Ball> {
-    let values = f
-        .params
+    let values = args
         .iter()
-        .zip(args)
-        .map(|(p, a)| {
-            Ok(match p.kind {
-                ParamKind::Integer => Arg::Int(a.to_i64(p.name)?),
-                ParamKind::Real => Arg::Real(a.to_decimal(p.name)?),
+        .enumerate()
+        .map(|(i, a)| {
+            let name = f.params.get(i).map_or("a wave", |p| p.name);
+            Ok(match kind_at(f, i) {
+                ParamKind::Integer => Arg::Int(a.to_i64(name)?),
+                ParamKind::Real => Arg::Real(a.to_decimal(name)?),
             })
         })
         .collect::<maugis::Result<Vec<_>>>()?;
@@ -418,10 +460,8 @@ fn eval_mp<'py>(
 ) -> PyResult<Bound<'py, PyList>> {
     let budget = budget.map_or(Ok(Budget::DEFAULT), Budget::from_secs_f64).map_err(lib_error)?;
     let f = registry::function(function).map_err(lib_error)?;
-    let names: Vec<&str> = f.param_names().collect();
-    if columns.len() != names.len() {
-        return Err(lib_error(Error::Arity { function: f.name, expected: names.len(), got: columns.len() }));
-    }
+    check_columns(f, columns.len())?;
+    let names: Vec<String> = (0..columns.len()).map(|i| name_at(f, i)).collect();
     maugis::error::check_prec(prec).map_err(lib_error)?;
     let len = same_len(&columns.iter().map(Vec::len).collect::<Vec<_>>())?;
     let row = |i: usize| columns.iter().map(|c| c[i].clone()).collect::<Vec<_>>();
@@ -601,6 +641,25 @@ fn states_json(
     to_json(&pts)
 }
 
+/// Solved states of the profile `waves` (`(amplitude, wavelength)` pairs, normalised)
+/// over flat `(lam, abar)` arrays: JSON text of the list of the library's `CurvePoint`s,
+/// as [`states_json`] (a bad wave is an error naming the wave and the field).
+#[pyfunction]
+fn states_waves_json(py: Python<'_>, lam: PyReadonlyArray1<'_, f64>, abar: PyReadonlyArray1<'_, f64>, waves: Vec<(f64, f64)>) -> PyResult<String> {
+    let (l, ab) = (slice(&lam, "lam")?, slice(&abar, "abar")?);
+    let len = same_len(&[l.len(), ab.len()])?;
+    let profile = WavyProfile::from_pairs(&waves).map_err(|e| PyValueError::new_err(format!("waves: {e}")))?;
+    let pts = py
+        .detach(|| {
+            (0..len)
+                .into_par_iter()
+                .map(|i| Params::with_profile(l[i], profile).and_then(|p| curve::state(p, ab[i])).map_err(|error| ElementError { index: i, error }))
+                .collect::<Result<Vec<_>, _>>()
+        })
+        .map_err(|e| element_error(e, |i| format!("state(lam={:?}, abar={:?}, waves={} waves)", l[i], ab[i], waves.len())))?;
+    to_json(&pts)
+}
+
 /// One state and its traction, displacement, gap and surface depth at `x`, or
 /// (`x` None) on the library's default grid of `points` positions
 /// ([`sample_state`]): the fields of `maugis profile --format json`, samples as columns.
@@ -699,6 +758,7 @@ fn fallback_counts(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
 #[pymodule]
 fn _maugis(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(signature, m)?)?;
+    m.add_function(wrap_pyfunction!(repeated, m)?)?;
     m.add_function(wrap_pyfunction!(eval_f64, m)?)?;
     m.add_function(wrap_pyfunction!(family_f64, m)?)?;
     m.add_function(wrap_pyfunction!(eval_mp, m)?)?;
@@ -706,6 +766,7 @@ fn _maugis(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(integrate_mp, m)?)?;
     m.add_function(wrap_pyfunction!(curve_summary_json, m)?)?;
     m.add_function(wrap_pyfunction!(states_json, m)?)?;
+    m.add_function(wrap_pyfunction!(states_waves_json, m)?)?;
     m.add_function(wrap_pyfunction!(sweep_json, m)?)?;
     m.add_function(wrap_pyfunction!(profile_dict, m)?)?;
     m.add_function(wrap_pyfunction!(fallback_counts, m)?)?;

@@ -21,7 +21,7 @@
 use rayon::prelude::*;
 
 pub use crate::contact::curve_state::{load_at, state, CurvePoint};
-use crate::contact::model::{ContactSize, Params, Validity};
+use crate::contact::model::{solve_validity, Params, Validity};
 use crate::roots::brent;
 pub use crate::contact::paths::{HysteresisLoop, Jump, JumpDirection};
 use crate::contact::paths::{control_paths, ControlPaths, Driver, PathNode};
@@ -144,8 +144,7 @@ pub fn load_area_curve(params: Params, opts: CurveOptions) -> Result<Curve> {
     let displacement_control = control_paths(params, &points, Driver::displacement(opts.datum)?)?;
     let pull_off = match load_control.end {
         Some(end) => {
-            let cs = ContactSize::new(params, end.state.abar)?;
-            let validity = cs.validity_at(cs.solve_strip()?)?;
+            let validity = solve_validity(params, end.state.abar)?;
             Some(PullOff {
                 abar: end.state.abar,
                 load: end.state.load,

@@ -23,6 +23,12 @@
 //! * [`sweep`]: regime maps over grids of lambda and alpha, beta or the Johnson parameter, sharded.
 //! * [`limits`]: Appendix E (JKR, M-DMT) and the Eq. 17 envelope, one by one and
 //!   as the rows of `maugis limits`.
+//! * [`multiscale`]: what bounds the response of a profile of many waves: the envelope
+//!   constants (triangle sum, phase-locked `M+` and `M-`) and the model's excursion
+//!   outside them (docs/multiscale.md).
+//! * [`jkr_line`]: the JKR limit of the line contact for any wavy profile, from the
+//!   energy-release-rate balance and the profile's slope (an independent reference
+//!   for the model at large lambda).
 //! * [`units`]: SI inputs and outputs (scales of Eq. 13a with two length scales).
 //! * [`state_profile`]: the profiles of one state sampled over x (traction, displacement, gap).
 //! * [`located`]: the error of a profile, a run of curves or a table of limits, and where it arose.
@@ -55,3 +61,5 @@ pub mod sweep;
 pub mod units;
 pub mod state_profile;
 pub mod located;
+pub mod jkr_line;
+pub mod multiscale;

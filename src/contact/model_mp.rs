@@ -7,7 +7,9 @@
 //! wave terms are summed over them, docs/model.md "Many waves") ([`ModelBalls`], Arb's
 //! convention): the result encloses the quantity at *every* point of the input
 //! balls, which is how a decimal typed by a user is certified
-//! (`maugis eval`'s `strip_ratio` and `load`). The f64 entry points
+//! (`maugis eval`'s `strip_ratio` and `load`, and for many waves
+//! `strip_ratio_waves` and `load_waves`: [`strip_ratio_waves_at_decimals`],
+//! [`load_waves_at_decimals`]). The f64 entry points
 //! ([`strip_residual_mp`], [`solve_m_mp`], [`load_mp`]) read their inputs as
 //! exact binary numbers and run the ball code on exact balls.
 //!
@@ -546,12 +548,63 @@ pub fn load_mp(params: Params, abar: f64, m: &Ball, prec: u32) -> Result<Ball> {
     load_ball_mp(&ModelBalls::exact(params, abar)?, m, prec)
 }
 
-/// The four model inputs `[lambda, alpha, beta, abar]` typed as decimals, as balls.
-fn model_balls(b: &[Ball]) -> Result<ModelBalls> {
-    match b {
-        [lambda, alpha, beta, abar] => ModelBalls::new(lambda.clone(), alpha.clone(), beta.clone(), abar.clone()),
-        _ => Err(Error::Arity { function: "the model", expected: 4, got: b.len() }),
+/// How the model's decimal inputs are laid out, and how their balls become [`ModelBalls`].
+#[derive(Clone, Copy)]
+enum Layout {
+    /// `[lambda, alpha, beta, abar]` (the seed paper's one wave; errors name `alpha`, `beta`).
+    OneWave,
+    /// `[lambda, abar, alpha_1, beta_1, alpha_2, beta_2, ...]` (errors name the wave and the field).
+    Waves,
+}
+
+impl Layout {
+    /// The inputs' balls as [`ModelBalls`].
+    fn balls(self, b: &[Ball]) -> Result<ModelBalls> {
+        match (self, b) {
+            (Layout::OneWave, [lambda, alpha, beta, abar]) => ModelBalls::new(lambda.clone(), alpha.clone(), beta.clone(), abar.clone()),
+            (Layout::Waves, [lambda, abar, waves @ ..]) if waves.len() % 2 == 0 => {
+                let waves = waves.chunks(2).map(|w| WaveBalls { alpha: w[0].clone(), beta: w[1].clone() }).collect();
+                ModelBalls::with_waves(lambda.clone(), waves, abar.clone())
+            }
+            (Layout::OneWave, _) => Err(Error::Arity { function: "the model", expected: 4, got: b.len() }),
+            (Layout::Waves, _) => Err(Error::IncompleteGroup { function: "the model", group: "wave", names: &["alpha", "beta"], fixed: 2, got: b.len() }),
+        }
     }
+
+    /// Where `abar` is.
+    fn abar(self) -> usize {
+        match self {
+            Layout::OneWave => 3,
+            Layout::Waves => 1,
+        }
+    }
+}
+
+/// `[lambda, abar, alpha_1, beta_1, ...]` as one list; at most [`MAX_WAVES`] waves
+/// ([`ProfileError::TooManyWaves`] at once, before any evaluation).
+fn wave_args(lambda: &Decimal, abar: &Decimal, waves: &[(Decimal, Decimal)]) -> Result<Vec<Decimal>> {
+    if waves.len() > MAX_WAVES {
+        return Err(Error::Profile(ProfileError::TooManyWaves { count: waves.len(), max: MAX_WAVES }));
+    }
+    let mut args = vec![lambda.clone(), abar.clone()];
+    for (alpha, beta) in waves {
+        args.extend([alpha.clone(), beta.clone()]);
+    }
+    Ok(args)
+}
+
+fn strip_ratio_in(layout: Layout, args: &[Decimal], prec: u32) -> Result<Ball> {
+    eval_at_decimals(args, prec, |b| solve_m_ball_mp(&layout.balls(b)?, prec))
+}
+
+fn load_in(layout: Layout, args: &[Decimal], prec: u32) -> Result<Ball> {
+    let abar = Float::with_val(64, args[layout.abar()].as_rational());
+    let hertz = Float::with_val(64, &abar * &abar) * Float::with_val(64, rug::float::Constant::Pi) / 4u32;
+    eval_at_decimals_with_floor(args, prec, Some(&hertz), |b| {
+        let inputs = layout.balls(b)?;
+        let e = bracket_root(&inputs, prec + 32, RootScale::StripRatioMinusOne)?;
+        load_from_m_minus_1(&inputs, &e, prec)
+    })
 }
 
 /// The strip ratio `m` at decimal inputs `[lambda, alpha, beta, abar]` on the
@@ -559,7 +612,7 @@ fn model_balls(b: &[Ball]) -> Result<ModelBalls> {
 /// for `strip_ratio`): the ball contains the (first) root of Eq. 15b at the
 /// decimals as typed, with `rad <= 2^-prec m`.
 pub fn strip_ratio_at_decimals(args: &[Decimal; 4], prec: u32) -> Result<Ball> {
-    eval_at_decimals(args, prec, |b| solve_m_ball_mp(&model_balls(b)?, prec))
+    strip_ratio_in(Layout::OneWave, args, prec)
 }
 
 /// The load (Eq. 14) at the strip ratio of Eq. 15b, at decimal inputs
@@ -567,13 +620,26 @@ pub fn strip_ratio_at_decimals(args: &[Decimal; 4], prec: u32) -> Result<Ball> {
 /// vanishes along every load-area curve, so the accuracy promise is absolute,
 /// on the Hertz load of the same contact: `rad <= 2^-prec max(|L|, pi abar^2/4)`.
 pub fn load_at_decimals(args: &[Decimal; 4], prec: u32) -> Result<Ball> {
-    let abar = Float::with_val(64, args[3].as_rational());
-    let hertz = Float::with_val(64, &abar * &abar) * Float::with_val(64, rug::float::Constant::Pi) / 4u32;
-    eval_at_decimals_with_floor(args, prec, Some(&hertz), |b| {
-        let inputs = model_balls(b)?;
-        let e = bracket_root(&inputs, prec + 32, RootScale::StripRatioMinusOne)?;
-        load_from_m_minus_1(&inputs, &e, prec)
-    })
+    load_in(Layout::OneWave, args, prec)
+}
+
+/// [`strip_ratio_at_decimals`] for a profile of any number of waves
+/// (`0..=`[`MAX_WAVES`], each `(alpha_j, beta_j)` as typed; what `maugis eval` runs
+/// for `strip_ratio_waves`). Every decimal is a ball that contains it; the
+/// answer contains the first root of Eq. 15b (the waves' terms summed, docs/model.md
+/// "Many waves") at the decimals, with `rad <= 2^-prec m`. One wave gives the ball of
+/// [`strip_ratio_at_decimals`] bit for bit. A bad wave is [`ProfileError::Wave`]
+/// naming the wave (from 1) and the field.
+pub fn strip_ratio_waves_at_decimals(lambda: &Decimal, abar: &Decimal, waves: &[(Decimal, Decimal)], prec: u32) -> Result<Ball> {
+    strip_ratio_in(Layout::Waves, &wave_args(lambda, abar, waves)?, prec)
+}
+
+/// [`load_at_decimals`] for a profile of any number of waves (what `maugis eval`
+/// runs for `load_waves`), on the same contract:
+/// `rad <= 2^-prec max(|L|, pi abar^2/4)`. One wave gives the ball of
+/// [`load_at_decimals`] bit for bit.
+pub fn load_waves_at_decimals(lambda: &Decimal, abar: &Decimal, waves: &[(Decimal, Decimal)], prec: u32) -> Result<Ball> {
+    load_in(Layout::Waves, &wave_args(lambda, abar, waves)?, prec)
 }
 
 #[cfg(test)]

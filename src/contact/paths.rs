@@ -5,7 +5,7 @@
 //! # Paths (issue 9, "what to build" 1)
 //!
 //! A path is driven by a *control variable* `y`: the load `Lbar` under load
-//! control, the approach `Delta-bar` ([`ContactSize::approach_at`]) under
+//! control, the approach `Delta-bar` ([`crate::contact::model::ContactSize::approach_at`]) under
 //! displacement control. Both are functions of the contact size along the
 //! solved curve.
 //!
@@ -68,7 +68,7 @@
 //! apart.
 
 use crate::contact::curve_state::CurvePoint;
-use crate::contact::model::{ContactSize, Params};
+use crate::contact::model::{solve_load_and_approach, Params};
 use crate::roots::{brent, golden_section_min};
 use crate::error::{Error, Interval, Invariant, Result};
 
@@ -242,11 +242,9 @@ impl Driver {
     }
 }
 
-/// The state at `abar`: `(load, approach)`.
+/// The state at `abar`: `(load, approach)` ([`solve_load_and_approach`]).
 pub fn load_and_approach(params: Params, abar: f64) -> Result<(f64, f64)> {
-    let cs = ContactSize::new(params, abar)?;
-    let strip = cs.solve_strip()?;
-    Ok((cs.load_at(strip), cs.approach_at(strip)))
+    solve_load_and_approach(params, abar)
 }
 
 /// Validity of the grid state nearest to `abar`.

@@ -381,7 +381,7 @@ pub fn all() -> Vec<Figure> {
             caption: "Displacement and traction, {2√2/8, 9/8}, λ = 1/4, (a) loading at ā ≈ 2.59, (b) unloading at 3.47; numerical loading dotted with diamonds, unloading dashed with squares; semi-analytical solid.",
             paper: "Model and solver, loading and unloading, coincide at both states.",
             ours: "The model at our cavitating stretch's ends and the solver's loading and unloading states nearest to them.",
-            differences: "The solver's states are the cycle's states whose total contact half-width is nearest the model's ā (labels give theirs). Our stretch ends are its outermost grid states with p̄ > 1 (2.60, 3.46; paper 2.59, 3.47), so the model states drawn are flagged invalid, barely.",
+            differences: "The solver's states are the cycle's states whose total contact half-width is nearest the model's ā (labels give theirs). Our stretch ends are its outermost grid states with p̄ > 1 (2.60, 3.47; paper 2.59, 3.47), so the model states drawn are flagged invalid, barely.",
             files: &["fig09a", "fig09b"],
             curves: fig4c_runs(&[0.25]),
             sims: fig4c_runs(&[0.25]),

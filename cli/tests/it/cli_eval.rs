@@ -201,6 +201,60 @@ fn model_strip_ratio_and_load_at_typed_decimals() {
     assert!(out[0]["error"].as_str().unwrap().contains("alpha"), "{}", out[0]);
 }
 
+#[test]
+fn model_of_many_waves_at_typed_decimals() {
+    // strip_ratio_waves / load_waves: one wave prints what strip_ratio / load print,
+    // byte for byte; two waves contain the mpmath values of
+    // reference/data/model_waves_decimal.csv; a bad wave or an incomplete one is an
+    // error line that names it, and the stream goes on.
+    let one = "\"lambda\":\"3\",\"alpha\":\"0.35\",\"beta\":\"1.125\",\"abar\":\"2.2\"";
+    let many = "\"lambda\":\"3\",\"abar\":\"2.2\",\"waves\":[[\"0.35\",\"1.125\"]]";
+    let mut input = String::new();
+    for (a, b) in [("strip_ratio", "strip_ratio_waves"), ("load", "load_waves")] {
+        for prec in [",\"prec\":96", ""] {
+            input.push_str(&format!("{{\"fn\":\"{a}\",{one}{prec}}}\n{{\"fn\":\"{b}\",{many}{prec}}}\n"));
+        }
+    }
+    let (out, code) = eval_lines(&input);
+    assert_eq!(code, 0);
+    assert_eq!(out.len(), 8);
+    for pair in out.chunks(2) {
+        assert!(pair[0].get("error").is_none(), "{}", pair[0]);
+        assert_eq!(pair[0], pair[1]);
+    }
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../reference/data/model_waves_decimal.csv");
+    let table = std::fs::read_to_string(path).expect("reference table");
+    let row = table.lines().find(|l| !l.starts_with('#') && !l.starts_with("lambda,")).expect("a row");
+    let c: Vec<&str> = row.split(',').collect();
+    let w: Vec<&str> = c[2].split_whitespace().collect();
+    let list: Vec<String> = w.chunks(2).map(|p| format!("[\"{}\",\"{}\"]", p[0], p[1])).collect();
+    let fields = format!("\"lambda\":\"{}\",\"abar\":\"{}\",\"waves\":[{}],\"prec\":128", c[0], c[1], list.join(","));
+    let (out, _) = eval_lines(&format!("{{\"fn\":\"strip_ratio_waves\",{fields}}}\n{{\"fn\":\"load_waves\",{fields}}}\n"));
+    for (resp, value) in out.iter().zip([c[3], c[4]]) {
+        let mid = Float::with_val(400, Float::parse(resp["mid"].as_str().unwrap_or_else(|| panic!("{row}: {resp}"))).unwrap());
+        let rad = Float::with_val(400, Float::parse(resp["rad"].as_str().unwrap()).unwrap());
+        let exact = Float::with_val(400, Float::parse(value).unwrap());
+        assert!(Float::with_val(400, &mid - &exact).abs() <= rad, "{row}: {resp} vs {value}");
+    }
+    let bad = [
+        ("[[0.35,1.125],[-0.1,0.375]]", "wave 2: amplitude"),
+        ("[[0.35,1.125],[0.1,0]]", "wave 2: wavelength"),
+        ("[[0.35,1.125],[0.1]]", "wave 2 incomplete"),
+        ("[[0.35,\"x\"]]", "waves[1].beta"),
+        ("[0.35,1.125]", "waves[1] must be a list"),
+        ("\"0.35,1.125\"", "must be a list"),
+    ];
+    let input: String = bad.iter().map(|(w, _)| format!("{{\"fn\":\"load_waves\",\"lambda\":3,\"abar\":2,\"waves\":{w},\"prec\":64}}\n")).collect();
+    let (out, code) = eval_lines(&format!("{input}{{\"fn\":\"strip_ratio_waves\",\"lambda\":3,\"abar\":2}}\n"));
+    assert_eq!(code, 0);
+    assert_eq!(out.len(), bad.len() + 1);
+    for (resp, (w, says)) in out.iter().zip(&bad) {
+        let msg = resp["error"].as_str().unwrap_or_else(|| panic!("{w}: {resp}"));
+        assert!(msg.contains(says), "{w}: {msg}");
+    }
+    assert!(out[bad.len()]["error"].as_str().unwrap().contains("missing argument \"waves\""), "{}", out[bad.len()]);
+}
+
 /// Responses are batched only while more input is waiting: a client that sends
 /// one line and waits gets its answer before it sends the next (stdin open).
 #[test]

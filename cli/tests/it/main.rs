@@ -20,6 +20,7 @@ mod cli_profile_prec;
 mod cli_simulate;
 mod cli_simulate_profile;
 mod cli_waves;
+mod cli_multiscale;
 mod figures;
 mod render_check;
 mod cli_integrate_auto;

@@ -4,8 +4,10 @@
 //! The files: [`params`] (the parameters and their ranges), [`strip`] (the strip end
 //! `m` and the strip functions), `waves` (the waves' terms, summed over the profile),
 //! [`state`] ([`ContactSize`]: residual, load, approach, traction, displacement, gap),
-//! [`solve`] (the first root) and [`validity`]. Data flows one way: the parameters and
-//! the strip functions feed the waves' terms, the state, then the root and the checks.
+//! [`solve`] (the first root), [`validity`], and [`solved`] (a contact size solved whole
+//! in one call, [`SolvedState`]: what the load-area response reads). Data flows one way:
+//! the parameters and the strip functions feed the waves' terms, the state, then the
+//! root and the checks, then the solved state; the callers only assemble it.
 //!
 //! # Normalisation (two length scales, docs/model.md)
 //!
@@ -71,13 +73,16 @@
 
 pub mod params;
 pub mod solve;
+pub mod solved;
 pub mod state;
 pub mod strip;
 pub mod validity;
 mod waves;
+pub(crate) use waves::check_bessel_lengths;
 
 pub use params::{Params, ABAR_MAX, ABAR_RANGE, ALPHA_MAX, ALPHA_RANGE, BETA_RANGE, LAMBDA_RANGE};
 pub use solve::{MAX_STRIP, M_REL_TOL};
+pub use solved::{solve_load, solve_load_and_approach, solve_state, solve_validity, SolvedState};
 pub use state::ContactSize;
 pub use strip::{adhesive_approach_fn, adhesive_gap_fn, hertz_gap_fn, StripEnd};
 pub use validity::{Validity, GAP_REL_TOL, RESCAN_MARGIN, SAMPLES_PER_WAVELENGTH, TRACTION_TOL};

@@ -131,8 +131,19 @@ impl ContactSize {
     ///       + (4 lambda abar/pi) (m acosh(m) - sqrt(m^2-1)),   D_j = 2 pi abar/beta_j.
     /// ```
     pub fn approach_at(&self, strip: StripEnd) -> f64 {
-        let (a, lambda) = (self.abar, self.params.lambda);
+        self.approach_from_load(strip, self.load_at(strip))
+    }
+
+    /// The load ([`Self::load_at`]) and the approach ([`Self::approach_at`]) at a solved
+    /// strip end, the load computed once.
+    pub fn load_and_approach_at(&self, strip: StripEnd) -> (f64, f64) {
         let load = self.load_at(strip);
+        (load, self.approach_from_load(strip, load))
+    }
+
+    /// [`Self::approach_at`] given the load there.
+    fn approach_from_load(&self, strip: StripEnd, load: f64) -> f64 {
+        let (a, lambda) = (self.abar, self.params.lambda);
         2.0 * load / PI * (2.0 / a).ln()
             + a * a / 4.0
             + self.waves.approach()

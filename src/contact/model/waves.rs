@@ -22,9 +22,9 @@
 
 use std::f64::consts::PI;
 
-use crate::contact::displacement::WaveBessel;
+use crate::contact::displacement::{WaveBessel, MAX_WAVE_D};
 use crate::contact::profile::{CosineWave, WavyProfile};
-use crate::error::Result;
+use crate::error::{Error, ProfileError, Result};
 use crate::special::bessel_j::bessel_j_sequence;
 
 /// One wave with a nonzero amplitude at one contact size: its Bessel data.
@@ -37,6 +37,17 @@ struct WaveAtSize {
 }
 
 /// The waves' terms at contact size `abar`.
+/// Every wave with an amplitude resolvable at `abar`: a Bessel length over
+/// [`MAX_WAVE_D`] is [`ProfileError::WaveTooFine`] naming the wave.
+pub(crate) fn check_bessel_lengths(profile: &WavyProfile, abar: f64) -> Result<()> {
+    for (i, wave) in profile.waves().iter().enumerate().filter(|(_, w)| w.alpha() > 0.0) {
+        if !(wave.bessel_length(abar) <= MAX_WAVE_D) {
+            return Err(Error::Profile(ProfileError::WaveTooFine { wave: i + 1, beta: wave.beta(), abar, max: MAX_WAVE_D }));
+        }
+    }
+    Ok(())
+}
+
 #[derive(Debug, Clone)]
 pub(crate) struct WaveTerms {
     abar: f64,
@@ -44,8 +55,11 @@ pub(crate) struct WaveTerms {
 }
 
 impl WaveTerms {
-    /// Builds each nonzero wave's Bessel data at `abar`.
+    /// Builds each nonzero wave's Bessel data at `abar`. A wave whose Bessel length
+    /// exceeds [`MAX_WAVE_D`] is [`ProfileError::WaveTooFine`] naming it, before any
+    /// wave's data is built.
     pub(crate) fn new(profile: &WavyProfile, abar: f64) -> Result<WaveTerms> {
+        check_bessel_lengths(profile, abar)?;
         let waves = profile
             .active_waves()
             .map(|&wave| {
