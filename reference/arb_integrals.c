@@ -18,64 +18,8 @@
 #include <acb_calc.h>
 #include <acb_hypgeom.h>
 
-static long evals;
+#include "arb_integrands.h"
 
-static int f_atanderiv(acb_ptr res, const acb_t z, void *param, slong order, slong prec)
-{
-    evals++;
-    acb_mul(res, z, z, prec);
-    acb_add_ui(res, res, 1, prec);
-    acb_inv(res, res, prec);
-    return 0;
-}
-
-static int f_rump(acb_ptr res, const acb_t z, void *param, slong order, slong prec)
-{
-    evals++;
-    acb_exp(res, z, prec);
-    acb_add(res, res, z, prec);
-    acb_sin(res, res, prec);
-    return 0;
-}
-
-static int f_exp(acb_ptr res, const acb_t z, void *param, slong order, slong prec)
-{
-    evals++;
-    acb_exp(res, z, prec);
-    return 0;
-}
-
-static int f_sqrt(acb_ptr res, const acb_t z, void *param, slong order, slong prec)
-{
-    evals++;
-    acb_sqrt_analytic(res, z, order != 0, prec);
-    return 0;
-}
-
-static int f_xj0(acb_ptr res, const acb_t z, void *param, slong order, slong prec)
-{
-    acb_t nu;
-    evals++;
-    acb_init(nu);
-    acb_hypgeom_bessel_j(res, nu, z, prec);
-    acb_mul(res, res, z, prec);
-    acb_clear(nu);
-    return 0;
-}
-
-static int f_sin(acb_ptr res, const acb_t z, void *param, slong order, slong prec)
-{
-    evals++;
-    acb_sin(res, z, prec);
-    return 0;
-}
-
-typedef struct
-{
-    const char *id;
-    acb_calc_func_t f;
-    int a, b;
-} integral_t;
 
 static const integral_t integrals[] = {
     {"atanderiv", f_atanderiv, 0, 1},
@@ -86,12 +30,6 @@ static const integral_t integrals[] = {
     {"sin100", f_sin, 0, 100},
 };
 
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
 
 int main(int argc, char **argv)
 {

@@ -50,6 +50,14 @@ INTEGRALS = [
      lambda: +mp.pi, lambda: mpmath.quad(lambda x: 1 / mpmath.sqrt(x * (1 - x)), [0, 0.5, 1])),
     ("sinc_mid", "int_0^1 sin(x-1/2)/(x-1/2) dx = 2 Si(1/2) (removable point inside)", "sin(x-0.5)/(x-0.5)", "0", "1",
      lambda: 2 * mpmath.si(mpf(1) / 2), lambda: mpmath.quad(lambda x: mpmath.sinc(x - mpf(1) / 2), [0, 0.5, 1])),
+    # issue 40's table: a narrow peak on a long range (refused at 2 bits before), and a
+    # shifted Lorentzian to infinity (a radius of 125 at 8 to 53 bits with a declared decay)
+    ("lorentz_narrow", "int_1^10000 1/((x-5)^2+0.01) dx = 10 (atan(99950) + atan(40))", "1/((x-5)^2+0.01)", "1", "10000",
+     lambda: 10 * (mpmath.atan(99950) + mpmath.atan(40)),
+     lambda: mpmath.quad(lambda x: 1 / ((x - 5) ** 2 + mpf(1) / 100), [1, 4, 5, 6, 100, 10000])),
+    ("lorentz_shift_tail", "int_1^inf 1/((x-5)^2+1) dx = pi/2 + atan(4)", "1/((x-5)^2+1)", "1", "inf",
+     lambda: mp.pi / 2 + mpmath.atan(4),
+     lambda: mpmath.quad(lambda x: 1 / ((x - 5) ** 2 + 1), [1, 5, 100, mpmath.inf])),
 ]
 
 

@@ -41,8 +41,10 @@
 //!   `"decay": {"rate": C | "power": P, "bound": M}` (`|f(x)| <= M e^(-C x)` or
 //!   `M x^(-P)` for `x >= a`). It is always certified (`"prec"` defaults to 53)
 //!   and answers `mid` and `rad` of the real part (`im_mid`, `im_rad` too when the
-//!   imaginary part may exceed `rad`), the evaluations spent, and
-//!   `"goal_met": false` with a `"warning"` when a limit stopped it early.
+//!   imaginary part may exceed `rad`), the evaluations spent,
+//!   `"goal_met": false` with a `"warning"` when a limit stopped it early, and
+//!   `"abs_tol"` when the ball contains 0 and met the goal by the default absolute
+//!   tolerance (`2^-prec` times a bound of `int |f|`: a zero integral).
 //!
 //! * `strip_ratio_waves` and `load_waves` are `strip_ratio` and `load` for a profile of
 //!   any number of waves: `"lambda"`, `"abar"` and `"waves": [[alpha_1, beta_1], ...]`

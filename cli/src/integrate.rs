@@ -10,7 +10,9 @@
 //! the certified integrator ([`maugis::quad::certified`]) on the expression
 //! parsed by [`maugis::quad::expr`]; `im_mid` and `im_rad` follow when the
 //! imaginary part may be larger than `rad` (an integrand that is complex
-//! somewhere, such as `sqrt(x)` for `x < 0`). The endpoints and the exponents are decimals
+//! somewhere, such as `sqrt(x)` for `x < 0`), and `abs_tol` when the ball contains 0
+//! and met the goal by the default absolute tolerance, `2^-P` times a bound of `int |f|`
+//! (a zero integral, `sin(x)` on `[-1, 1]`; docs/quadrature.md). The endpoints and the exponents are decimals
 //! taken as balls that contain them; `B` may be `inf` with a declared decay.
 //! `--alpha AL --beta BE --log K` multiply the integrand by
 //! `(x-A)^AL (B-x)^BE log^K(x-A)`, certified without truncation.
@@ -26,7 +28,7 @@ use clap::Args;
 
 use maugis::ball::Decimal;
 use maugis::quad::certified::{Integral, Options};
-use maugis::quad::expr::{integrate_range, shortfall, significant_imaginary, DecaySpec, End, Expr, WeightSpec};
+use maugis::quad::expr::{abs_tol_text, integrate_range, shortfall, significant_imaginary, DecaySpec, End, Expr, WeightSpec};
 use maugis::MAX_PREC;
 
 use crate::output::print_stdout;
@@ -94,7 +96,8 @@ pub fn digits_for(prec: u32) -> usize {
 
 /// The printed fields of an integral at `prec` bits: `mid` and `rad` of the real
 /// part, then `im_mid` and `im_rad` when the imaginary part may exceed `rad`
-/// ([`significant_imaginary`]).
+/// ([`significant_imaginary`]), then `abs_tol` when the ball contains 0 and met the
+/// goal by the absolute tolerance ([`abs_tol_text`]).
 pub fn ball_fields(r: &Integral, prec: u32) -> Vec<(&'static str, String)> {
     let digits = digits_for(prec);
     let (mid, rad) = r.value.re().to_decimal(digits);
@@ -102,6 +105,9 @@ pub fn ball_fields(r: &Integral, prec: u32) -> Vec<(&'static str, String)> {
     if let Some(im) = significant_imaginary(r) {
         let (im_mid, im_rad) = im.to_decimal(digits);
         fields.extend([("im_mid", im_mid), ("im_rad", im_rad)]);
+    }
+    if let Some(t) = abs_tol_text(r) {
+        fields.push(("abs_tol", t));
     }
     fields
 }

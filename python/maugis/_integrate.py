@@ -80,7 +80,9 @@ def integrate(
 
     Returns ``(mid, rad)``: the integral lies within ``rad`` of ``mid`` (in each of
     the real and imaginary parts) and ``rad <= 2**-prec |mid|`` when the goal is
-    met. ``mid`` is an ``mpmath.mpf``, or an ``mpmath.mpc`` when the integrand is
+    met, or, for a ball that contains 0 (a zero integral such as ``sin(x)`` on
+    ``[-1, 1]``), ``rad`` at most the default absolute tolerance, ``2**-prec`` times a
+    bound of ``int |f|`` (``docs/quadrature.md``). ``mid`` is an ``mpmath.mpf``, or an ``mpmath.mpc`` when the integrand is
     complex somewhere on the range (``sqrt(x)`` for ``x < 0``) and the imaginary
     part may exceed ``rad``; with ``output="str"`` both are decimal strings (a
     complex ``mid`` written ``"re+imj"``). A result stopped by a limit before its

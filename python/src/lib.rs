@@ -34,7 +34,7 @@ use maugis::contact::state_profile::{sample_state, sample_state_at, ProfileSampl
 use maugis::ball::Decimal;
 use maugis::registry::{self, Answer, Arg, Function, ParamKind};
 use maugis::quad::certified::Options;
-use maugis::quad::expr::{integrate_range, shortfall, significant_imaginary, DecaySpec, End, Expr, WeightSpec};
+use maugis::quad::expr::{abs_tol_text, integrate_range, shortfall, significant_imaginary, DecaySpec, End, Expr, WeightSpec};
 use maugis::rug::{Float, Integer, Rational};
 use maugis::special::hyp1f2::hyp1f2_model_family_f64;
 use maugis::special::meijer_g::meijer_g_k_family_f64;
@@ -496,7 +496,9 @@ fn eval_mp<'py>(
 /// `"-inf"` are infinite ends (the tail bound derived from the expression); the weight is `(x-a)^alpha (b-x)^beta log^log(x-a)`.
 /// Returns a dict: `re` and `im` (`None` when it is a ball around 0 no wider than
 /// `re`'s radius), each `(mid, rad)` as exact pairs or decimal strings like
-/// [`eval_mp`], `evaluations`, and `warning` (`None`, or why the goal was not met).
+/// [`eval_mp`], `evaluations`, `warning` (`None`, or why the goal was not met), and
+/// `abs_tol` (`None`, or, as a decimal string, the absolute tolerance `2^-prec` times a
+/// certified bound of `int |f|` that a ball containing 0 met: a zero integral).
 #[pyfunction]
 #[pyo3(signature = (f, a, b, prec, alpha=None, beta=None, log=0, decay_rate=None, decay_power=None, decay_bound=None, digits=None))]
 #[allow(clippy::too_many_arguments)]
@@ -547,6 +549,7 @@ fn integrate_mp<'py>(
     out.set_item("im", significant_imaginary(&r).map(|im| ball_out(im, digits)))?;
     out.set_item("evaluations", r.evaluations)?;
     out.set_item("warning", shortfall(&r))?;
+    out.set_item("abs_tol", abs_tol_text(&r))?;
     Ok(out)
 }
 

@@ -103,8 +103,15 @@ fn compute(id: &str, p: u32) -> Outcome {
         }
         // int_0^10000 x^1000 e^-x
         "I10" => one(integrate(|x| x.powi(1000) * (-x).exp(), &zero, &int(10000, p), p, &o).unwrap()),
-        // int_{-10}^{10} sin x + e^(-200-x^2)
-        "I12" => one(integrate(|x| x.sin() + (-(x.sqr() + x.int(200))).exp(), &int(-10, p), &int(10, p), p, &o).unwrap()),
+        // int_{-10}^{10} sin x + e^(-200-x^2) = 2.6e-87, far below 2^-prec int |f| at
+        // every precision of this set: with the default absolute tolerance a ball around
+        // 0 meets the goal (as in Arb under the absolute tolerance 2^-prec of its
+        // examples/integrals.c). The golden set asks for the relative goal, which the
+        // caller must then ask for.
+        "I12" => {
+            let o = Options::new().relative_only();
+            one(integrate(|x| x.sin() + (-(x.sqr() + x.int(200))).exp(), &int(-10, p), &int(10, p), p, &o).unwrap())
+        }
         // int_{-1020}^{-1010} e^x
         "I13" => one(integrate(|x| x.exp(), &int(-1020, p), &int(-1010, p), p, &o).unwrap()),
         // int_0^inf e^(-x^2), |f| <= e^(1 - 2x) <= 3 e^(-2x)

@@ -56,3 +56,6 @@ mod quad_infinite;
 mod quad_singular_auto;
 mod quad_spelling;
 mod quad_oscillatory_proptest;
+mod hankel_bound;
+mod quad_zero;
+mod quad_precision_sweep;

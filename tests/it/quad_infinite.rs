@@ -21,17 +21,7 @@ fn rows() -> Vec<Row> {
     let mut out = Vec::new();
     for line in CSV.lines().skip(1) {
         // id,description,expression,a,b,value with optional "quoted" fields
-        let mut fields = Vec::new();
-        let mut cur = String::new();
-        let mut quoted = false;
-        for ch in line.chars() {
-            match ch {
-                '"' => quoted = !quoted,
-                ',' if !quoted => fields.push(std::mem::take(&mut cur)),
-                c => cur.push(c),
-            }
-        }
-        fields.push(cur);
+        let fields = crate::common::csv_fields(line);
         assert_eq!(fields.len(), 6, "{line}");
         out.push(Row { id: fields[0].clone(), expr: fields[2].clone(), a: fields[3].clone(), b: fields[4].clone(), value: fields[5].clone() });
     }

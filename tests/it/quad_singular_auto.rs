@@ -11,18 +11,7 @@ use maugis::rug::Float;
 const CSV: &str = include_str!("../../reference/data/integrals_singular.csv");
 
 fn fields(line: &str) -> Vec<String> {
-    let mut fields = Vec::new();
-    let mut cur = String::new();
-    let mut quoted = false;
-    for ch in line.chars() {
-        match ch {
-            '"' => quoted = !quoted,
-            ',' if !quoted => fields.push(std::mem::take(&mut cur)),
-            c => cur.push(c),
-        }
-    }
-    fields.push(cur);
-    fields
+    crate::common::csv_fields(line)
 }
 
 #[test]

@@ -70,3 +70,30 @@ fn eval_requests_take_infinite_ends() {
     }
     assert_eq!(lines.len(), 2);
 }
+
+/// A zero integral answers under the default absolute tolerance, which both front ends
+/// print (`abs_tol`), and the ball contains 0 (issue 40, item 3).
+#[test]
+fn zero_integral_reports_its_absolute_tolerance() {
+    let zero = Float::new(64);
+    let out = Command::new(env!("CARGO_BIN_EXE_maugis")).args(["integrate", "sin(x)", "-1", "1", "--prec", "64"]).output().unwrap();
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(out.stderr.is_empty(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(contains(field(&stdout, "mid"), field(&stdout, "rad"), &zero), "{stdout}");
+    let tol: f64 = field(&stdout, "abs_tol").parse().unwrap();
+    let rad: f64 = field(&stdout, "rad").parse().unwrap();
+    assert!(rad <= tol && tol < 4.0 * 2f64.powi(-64), "{stdout}");
+
+    let mut child = Command::new(env!("CARGO_BIN_EXE_maugis")).arg("eval").stdin(Stdio::piped()).stdout(Stdio::piped()).spawn().unwrap();
+    let input = concat!(r#"{"id":1,"fn":"integrate","f":"atan(tanh(tanh(x)))","a":-3,"b":3,"prec":64}"#, "\n", r#"{"id":2,"fn":"integrate","f":"exp(x)","a":0,"b":1,"prec":64}"#, "\n");
+    child.stdin.take().unwrap().write_all(input.as_bytes()).unwrap();
+    let out = child.wait_with_output().unwrap();
+    let lines: Vec<Value> = String::from_utf8(out.stdout).unwrap().lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    assert_eq!(lines.len(), 2);
+    assert!(lines[0].get("goal_met").is_none(), "{}", lines[0]);
+    assert!(contains(lines[0]["mid"].as_str().unwrap(), lines[0]["rad"].as_str().unwrap(), &zero), "{}", lines[0]);
+    assert!(lines[0]["abs_tol"].as_str().is_some_and(|t| t.parse::<f64>().unwrap() < 8.0 * 2f64.powi(-64)), "{}", lines[0]);
+    // a nonzero integral meets the relative goal and has no abs_tol
+    assert!(lines[1].get("abs_tol").is_none(), "{}", lines[1]);
+}

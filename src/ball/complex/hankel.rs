@@ -3,24 +3,42 @@
 //!
 //! # Method
 //!
-//! DLMF 10.17.5 and 10.17.13: with `a_0 = 1`, `a_k(n) = (4n^2 - 1^2)(4n^2 - 3^2) ...
-//! (4n^2 - (2k-1)^2) / (k! 8^k)` (10.17.1) and `omega = w - n pi/2 - pi/4`,
+//! DLMF 10.17.1, 10.17.2 and 10.17.13: with `a_0 = 1`, `a_k(n) = (4n^2 - 1^2)(4n^2 -
+//! 3^2) ... (4n^2 - (2k-1)^2) / (k! 8^k)` and `omega = w - n pi/2 - pi/4`,
 //!
 //! ```text
-//! H_n^(1)(w) = (2/(pi w))^(1/2) e^{i omega} (sum_{k<l} i^k a_k(n) w^-k + R_l(w)),
-//! |R_l(w)| <= 2 |a_l(n)| V(t^-l) exp(|n^2 - 1/4| V(t^-1))          (DLMF 10.17.15)
+//! H_n^(1)(w) = (2/(pi w))^(1/2) e^{i omega} (sum_{k<l} i^k a_k(n) w^-k + R_l^+(n, w)),
+//! |R_l^+(n, w)| <= 2 |a_l(n)| V(t^-l) exp(|n^2 - 1/4| V(t^-1))          (DLMF 10.17.14)
 //! ```
 //!
-//! where `V(t^-l)`, the variation of `t^-l` along a path from `w` to `+i inf`, is at most
-//! `|w|^-l` for `0 <= ph w <= pi` and at most `chi(l) |w|^-l` for `-pi/2 <= ph w <= 0`
-//! (DLMF 10.17.16), `chi(l) = pi^(1/2) Gamma(l/2 + 1)/Gamma(l/2 + 1/2) <= (pi (l/2 +
-//! 1))^(1/2)` (Gautschi's inequality). The square root is the principal one (10.17.7,
-//! `|ph w| < pi/2` here). The bound is evaluated with `|w|` replaced by a lower bound
-//! over the rectangle, so it holds for every point of it; the sum itself is computed in
-//! complex ball arithmetic. The expansion stops at the first `l >= max(|n|, 1)` whose
-//! bound is below `2^-(prec+10)`, or where the terms stop decreasing (the error is then
-//! about `e^{-2|w|}`, and the radius says so). `H^(2)_n(w) = conj(H^(1)_n(conj w))` for
-//! real order (DLMF 10.11.9), and `H_{-n} = (-1)^n H_n` (10.4.6).
+//! where `V(t^-l)` is the variation of `t^-l` along a path from `w` to `+i inf` on which
+//! `|Im t|` changes monotonically, bounded by (DLMF 10.17.15)
+//!
+//! ```text
+//! V(t^-l) <= |w|^-l            for 0 <= ph w <= pi,
+//! V(t^-l) <= chi(l) |w|^-l     for -pi/2 <= ph w <= 0,
+//! chi(l) = pi^(1/2) Gamma(l/2 + 1) / Gamma(l/2 + 1/2)       (DLMF 9.7(i)),
+//! ```
+//!
+//! so that below the real axis the exponent carries `chi(1) = pi/2` too (`V(t^-1) <=
+//! (pi/2) |w|^-1`), and `chi(l) <= (pi (l/2 + 1))^(1/2)` (Gautschi's inequality
+//! `Gamma(x + 1)/Gamma(x + 1/2) < (x + 1)^(1/2)`). The statement holds for every `l >=
+//! 1`. It was checked word for word against the text of DLMF section 10.17(iv) (version
+//! of the DLMF-markdown mirror, equations 10.17.13-15; an earlier version of this file
+//! cited them as 10.17.15-16 and left out the factor `chi(1)` in the exponent below the
+//! axis, which made the bound up to `e^{(pi/2 - 1) |n^2 - 1/4| / |w|}` too small there).
+//! The test `tests/it/hankel_bound.rs` compares the bound with the true remainder,
+//! formed from `H^(1)_n` at 120 digits (`reference/generate_hankel.py`), for `n <= 10`,
+//! `l <= 24` and `|w|` from 1/2 to 45 at phases from near `-pi/2` to near `pi/2`.
+//!
+//! The bound is evaluated with `|w|` replaced by a lower bound over the rectangle, and
+//! with `chi(l)` wherever the rectangle reaches below the axis, so it holds for every
+//! point of it; the sum itself is computed in complex ball arithmetic. The expansion
+//! stops at the first `l >= max(|n|, 1)` whose bound is below `2^-(prec+10)`, or where
+//! the terms stop decreasing (the error is then about `e^{-2|w|}`, and the radius says
+//! so). The square root is the principal one (10.17.7, `|ph w| < pi/2` here).
+//! `H^(2)_n(w) = conj(H^(1)_n(conj w))` for real order (DLMF 10.11.9), and `H_{-n} =
+//! (-1)^n H_n` (10.4.6).
 //!
 //! Used by the certified integrator for Hankel-type integrals `int g(x) J_n(w x) dx` to
 //! infinity, whose tails it integrates along rays in the upper and lower half-planes
@@ -68,16 +86,7 @@ impl CBall {
             let a_up = a_abs.abs_upper_mag();
             // bound after the terms 0..k-1: l = k
             if k >= m.max(1) && (a_up.le(&target) || !a_up.le(&last) || k >= MAX_TERMS) {
-                let mut b = a_up.mul_2exp(1);
-                // exp(|n^2 - 1/4| / rho)
-                let nu = Ball::from_i64(m as i64, 64).sqr().sub(&Ball::from_ratio(1, 4, 64));
-                let e = nu.abs_upper_mag().div(rho);
-                let e = Ball::from_float(&e.to_float(), 64).exp().map(|x| x.abs_upper_mag()).unwrap_or(Mag::inf());
-                b = b.mul(e);
-                if below_axis {
-                    // chi(l) <= (pi (l/2 + 1))^(1/2) <= (2 (l + 2))^(1/2)
-                    b = b.mul(Mag::from_f64(((2 * (k + 2)) as f64).sqrt()).mul(Mag::from_f64(1.0 + 1e-9)));
-                }
+                let b = remainder_bound(m, k, a_up, rho, below_axis);
                 break b;
             }
             last = a_up;
@@ -122,16 +131,69 @@ impl CBall {
                 total = total.add(a_abs.abs_upper_mag());
             }
         }
-        let nu = Ball::from_i64(m as i64, p).sqr().sub(&Ball::from_ratio(1, 4, p));
-        let e = Ball::from_float(&nu.abs_upper_mag().div(rho).to_float(), p).exp().map(|x| x.abs_upper_mag()).unwrap_or(Mag::inf());
-        let chi = Mag::from_f64(((2 * (l + 2)) as f64).sqrt() * (1.0 + 1e-9));
-        total.add(a_abs.abs_upper_mag().mul_2exp(1).mul(e).mul(chi))
+        total.add(remainder_bound(m, l, a_abs.abs_upper_mag(), rho, true))
+    }
+
+    /// The bound of DLMF 10.17.14-15 (module docs) of the remainder `R_l^+(n, w)` of
+    /// Hankel's expansion of `H_n^(1)` after the terms `k < l`, for every `w` in the
+    /// rectangle; infinite unless the rectangle lies in `0 <= ph w <= pi` or in `Re w >
+    /// 0` (then `-pi/2 < ph w < pi/2`), or when `l = 0`. For `H_n^(2)` (`R_l^-`) apply
+    /// it to `conj w` (DLMF: the bounds hold in the conjugate sectors).
+    pub fn hankel_remainder_bound(n: i64, l: u64, w: &CBall) -> Mag {
+        if l == 0 || !w.is_finite() {
+            return Mag::inf();
+        }
+        let rho = w.abs_lower_mag();
+        if rho.is_zero() {
+            return Mag::inf();
+        }
+        let below_axis = if !w.im().lower().is_sign_negative() || w.im().lower().is_zero() {
+            false
+        } else if w.re().is_positive() {
+            true
+        } else {
+            return Mag::inf();
+        };
+        let m = n.unsigned_abs();
+        let p = 64;
+        let rho_b = Ball::from_float(&rho.to_float(), p);
+        let mu = Ball::from_i64(4, p).mul(&Ball::from_i64(m as i64, p).sqr());
+        let mut a_abs = Ball::one(p);
+        for k in 1..=l {
+            let odd = Ball::from_i64((2 * k - 1) as i64, p).sqr();
+            let Ok(f) = mu.sub(&odd).div(&Ball::from_i64(8 * k as i64, p)) else { return Mag::inf() };
+            let Ok(next) = a_abs.mul(&f).div(&rho_b) else { return Mag::inf() };
+            a_abs = next;
+        }
+        remainder_bound(m, l, a_abs.abs_upper_mag(), rho, below_axis)
     }
 
     /// `H_n^(2)(w) = conj(H_n^(1)(conj w))` (module docs).
     pub fn hankel2_large(&self, n: i64) -> CBall {
         self.conj().hankel1_large(n).conj()
     }
+}
+
+/// `2 |a_l| V(t^-l) exp(|n^2 - 1/4| V(t^-1))` (DLMF 10.17.14) from `a_rho = |a_l(n)|
+/// rho^-l` (an upper bound), with the variations of DLMF 10.17.15: `rho^-l` and
+/// `rho^-1` for `0 <= ph w <= pi`, `chi(l) rho^-l` and `chi(1) rho^-1 = (pi/2) rho^-1`
+/// when `below_axis` (`-pi/2 <= ph w <= 0`), `rho <= |w|`.
+fn remainder_bound(m: u64, l: u64, a_rho: Mag, rho: Mag, below_axis: bool) -> Mag {
+    let p = 64;
+    let nu = Ball::from_i64(m as i64, p).sqr().sub(&Ball::from_ratio(1, 4, p));
+    let mut v1 = nu.abs_upper_mag().div(rho);
+    if below_axis {
+        // chi(1) = pi^(1/2) Gamma(3/2) / Gamma(1) = pi/2 < 1.5707963267949
+        v1 = v1.mul(Mag::from_f64(1.5707963267949));
+    }
+    let e = Ball::from_float(&v1.to_float(), p).exp().map(|x| x.abs_upper_mag()).unwrap_or(Mag::inf());
+    let mut b = a_rho.mul_2exp(1).mul(e);
+    if below_axis {
+        // chi(l) < (pi (l/2 + 1))^(1/2) (Gautschi); the f64 square root errs by far
+        // less than the factor 1 + 1e-12
+        b = b.mul(Mag::from_f64((std::f64::consts::PI * (l as f64 + 2.0) / 2.0).sqrt() * (1.0 + 1e-12)));
+    }
+    b
 }
 
 #[cfg(test)]

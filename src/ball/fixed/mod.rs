@@ -214,18 +214,43 @@ fn tables(l: usize) -> &'static Tables {
         let mut exp = Vec::new();
         let mut sin = Vec::new();
         let mut cos = Vec::new();
-        for level in 1..=MAX_LEVELS as u32 {
+        // Only the levels the kernels read (exp: `exp_levels`, sin/cos: `trig_levels`).
+        // The entries k = 1..255 of a level are powers of its step `t = 2^-(8 level)`:
+        // `e^{kt} = e^{(k-1)t} e^t`, and `(cos kt, sin kt)` the previous pair rotated by
+        // `(cos t, sin t)`, in MPFR at `p = f + 128` bits rounded to nearest: each of the
+        // at most 255 steps adds a relative error of a few `2^-p` (a rotation keeps the
+        // norm, so errors add), in all below `2^(12 - p) = 2^-(f + 116)`, far below the
+        // table's unit `2^-f`: the floor is off by at most one unit, as with one MPFR
+        // call per entry (the 2 ulps of `trig_terms`), at a fraction of the cost (the
+        // first call of a kernel at a new limb count builds its tables).
+        for level in 1..=exp_levels.max(trig_levels) as u32 {
+            let step = Float::with_val(p, 1) >> (TAB_BITS * level);
             let (mut e, mut sn, mut cs) = (Vec::new(), Vec::new(), Vec::new());
+            let e_step = Float::with_val(p, step.exp_ref());
+            let (s_step, c_step) = step.clone().sin_cos(Float::new(p));
+            let (mut ev, mut sv, mut cv) = (Float::with_val(p, 1), Float::new(p), Float::with_val(p, 1));
             for k in 0..TAB_LEN {
-                let x = Float::with_val(p, k) >> (TAB_BITS * level);
-                e.extend(fixed_limbs(&Float::with_val(p, x.exp_ref()), f as i32, l));
-                let (sv, cv) = x.sin_cos(Float::new(p));
-                sn.extend(fixed_limbs(&sv, f as i32, l));
-                cs.extend(fixed_limbs(&cv, f as i32, l));
+                if k > 0 {
+                    ev *= &e_step;
+                    let ns = Float::with_val(p, &sv * &c_step) + Float::with_val(p, &cv * &s_step);
+                    let nc = Float::with_val(p, &cv * &c_step) - Float::with_val(p, &sv * &s_step);
+                    (sv, cv) = (ns, nc);
+                }
+                if level as usize <= exp_levels {
+                    e.extend(fixed_limbs(&ev, f as i32, l));
+                }
+                if level as usize <= trig_levels {
+                    sn.extend(fixed_limbs(&sv, f as i32, l));
+                    cs.extend(fixed_limbs(&cv, f as i32, l));
+                }
             }
-            exp.push(e);
-            sin.push(sn);
-            cos.push(cs);
+            if level as usize <= exp_levels {
+                exp.push(e);
+            }
+            if level as usize <= trig_levels {
+                sin.push(sn);
+                cos.push(cs);
+            }
         }
         let ln2 = fixed_limbs(&Float::with_val(p, rug::float::Constant::Log2), f as i32 + 64, l + 1);
         let half_pi = fixed_limbs(&(Float::with_val(p, rug::float::Constant::Pi) >> 1), f as i32 + 64, l + 1);

@@ -103,6 +103,10 @@ pub(crate) struct Outcome {
     pub limit: Option<Limit>,
     /// Where the integrand was last found unbounded (a piece that could not be enclosed).
     pub unbounded_near: Option<f64>,
+    /// An upper bound of `int |f|` over `[a, b]`: the sum over the pieces of the
+    /// magnitude of their crude enclosures, `|(hi - lo) f([lo, hi])| >= int_lo^hi |f|`
+    /// (certified; infinite when a piece has none).
+    pub l1: Mag,
 }
 
 /// `rho` (rounded down) and `Y` (rounded up) for `X = 2^xexp`, `xexp >= 1`.
@@ -240,6 +244,7 @@ where
     let mut truncation = Mag::ZERO;
     let mut limit = None;
     let mut unbounded_near = None;
+    let mut l1 = Mag::ZERO;
     let mut progress = Progress::new(f.stats.evaluations, lim.max_evaluations, a, b);
     let overdraft = lim.max_evaluations.saturating_add(lim.max_evaluations / 4 + 64);
     while let Some(piece) = stack.pop() {
@@ -259,6 +264,7 @@ where
             Some(c) if c.rad_mag().le(&dyn_tol) || reached.is_some() => {
                 progress.settled(&piece.lo, &piece.hi);
                 sum = sum.add(c);
+                l1 = l1.add(c.abs_upper_mag());
                 if reached.is_some() {
                     limit = reached;
                 }
@@ -269,6 +275,7 @@ where
                 limit = reached;
                 unbounded_near = Some(midpoint(&piece.lo, &piece.hi).to_f64());
                 sum = CBall::indeterminate(wp);
+                l1 = Mag::inf();
                 continue;
             }
             // A limit, and no enclosure yet (the segment's ball was too wide, as
@@ -285,6 +292,7 @@ where
                 raise(&mut dyn_tol, &v);
                 progress.settled(&piece.lo, &piece.hi);
                 sum = sum.add(&v);
+                l1 = l1.add(c.abs_upper_mag());
                 truncation = truncation.add(err);
                 continue;
             }
@@ -305,7 +313,7 @@ where
             stack.push(left);
         }
     }
-    Ok(Outcome { value: sum, truncation, limit, unbounded_near })
+    Ok(Outcome { value: sum, truncation, limit, unbounded_near, l1 })
 }
 
 /// The share of an interval settled against the evaluations spent, to stop early a

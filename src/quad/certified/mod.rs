@@ -111,6 +111,7 @@ impl fmt::Display for Limit {
 pub struct Options {
     goal_bits: Option<u32>,
     abs_tol: Option<Mag>,
+    relative_only: bool,
     max_evaluations: Option<u64>,
     max_depth: Option<u32>,
     max_degree: Option<usize>,
@@ -124,11 +125,13 @@ impl Default for Options {
 }
 
 impl Options {
-    /// The defaults: relative goal = the requested precision, no absolute tolerance,
-    /// Arb's limits (`1000 prec + prec^2` evaluations, depth `2 prec`, degree
-    /// `prec/2 + 60` but at most 362), working precision up to `8 prec + 256` bits.
+    /// The defaults: relative goal = the requested precision, the default absolute
+    /// tolerance for balls that contain 0 ([`Options::abs_tol`]), Arb's limits with
+    /// evaluations and depth sized by the first working precision `w = prec + 20`
+    /// (`1000 w + w^2` evaluations, depth `2 w`, degree `prec/2 + 60` but at most 362), working precision up to `8 prec +
+    /// 256` bits.
     pub fn new() -> Options {
-        Options { goal_bits: None, abs_tol: None, max_evaluations: None, max_depth: None, max_degree: None, max_working_prec: 0 }
+        Options { goal_bits: None, abs_tol: None, relative_only: false, max_evaluations: None, max_depth: None, max_degree: None, max_working_prec: 0 }
     }
 
     /// Relative goal in bits (`rad <= 2^-bits |mid|`), at most [`crate::MAX_PREC`].
@@ -141,12 +144,33 @@ impl Options {
     }
 
     /// Absolute tolerance: the goal is also met when `rad <= tol`. Must be finite and `> 0`.
+    /// It replaces the default absolute tolerance.
+    ///
+    /// **The default absolute tolerance.** Without this option, a result whose ball
+    /// contains 0 also meets the goal when `rad <= 2^-goal L`, where `L` is a certified
+    /// upper bound of `int |f|` along the path integrated (the sum over the final pieces
+    /// of `|(hi - lo) f([lo, hi])|`, plus the bounds of the tails cut), or four times an
+    /// estimate of `int |f|` where that is smaller ([`Integral::abs_scale`]). A relative goal
+    /// cannot be met by an integral that is 0 (`int_{-1}^1 sin x`), and one below
+    /// `2^-goal int |f|` is, at this goal, indistinguishable from 0: this is Arb's
+    /// `abs_tol`, scaled to the integrand. A ball that keeps off 0 always meets the
+    /// relative goal. The tolerance, when it decided, is in [`Integral::abs_tol`].
+    /// [`Options::relative_only`] turns it off.
     pub fn abs_tol(mut self, tol: f64) -> Result<Options> {
         if !(tol.is_finite() && tol > 0.0) {
             return Err(Error::Integration(IntegrationError::Option { what: "abs_tol must be a finite number > 0" }));
         }
         self.abs_tol = Some(Mag::from_f64(tol));
         Ok(self)
+    }
+
+    /// No default absolute tolerance (see [`Options::abs_tol`]): the relative goal
+    /// only, so an integral far below `int |f|` is refined until its ball keeps off 0
+    /// (`int_{-10}^{10} sin x + e^{-200-x^2}`, 2.6e-87: 768 working bits at 64 bits).
+    /// An integral that is exactly 0 then ends at a limit, flagged.
+    pub fn relative_only(mut self) -> Options {
+        self.relative_only = true;
+        self
     }
 
     /// Largest number of integrand evaluations (at least 1).
@@ -190,11 +214,16 @@ impl Options {
         self.goal_bits.unwrap_or(prec)
     }
 
+    /// The limits. Evaluations and depth are sized by the first working precision `w =
+    /// prec + 20`, not the requested one: at 2 bits a depth of `2 prec = 4` turned a
+    /// long range into a "not bounded" error (`1/((x-5)^2 + 0.01)` on `[1, 10^4]`),
+    /// which 16 bits answered.
     fn limits(&self, prec: u32) -> RunLimits {
-        let p = prec as u64;
+        let w = prec.saturating_add(20);
+        let p = w as u64;
         RunLimits {
             max_evaluations: self.max_evaluations.unwrap_or(1000 * p + p * p),
-            max_depth: self.max_depth.unwrap_or(2 * prec).max(1),
+            max_depth: self.max_depth.unwrap_or(2 * w).max(1),
             max_degree: self.max_degree.unwrap_or((prec as usize / 2 + 60).min(DEFAULT_MAX_DEGREE_CAP)),
         }
     }
@@ -223,6 +252,18 @@ pub struct Integral {
     pub subintervals: u64,
     /// The working precision of the final attempt (bits).
     pub working_prec: u32,
+    /// The scale `L` of the default absolute tolerance `2^-goal L` ([`Options::abs_tol`]):
+    /// the smaller of a certified upper bound of `int |f|` along the path integrated
+    /// (the real range, the mapped pieces, the rays of an oscillatory tail, with the
+    /// tails cut) and four times an 8-point estimate of it (the certified bound comes
+    /// from crude enclosures `|(hi - lo) f([lo, hi])|` and can be loose on wide pieces;
+    /// the estimate only ever makes the tolerance smaller).
+    pub abs_scale: Mag,
+    /// The absolute tolerance the result met, when the goal was met by it and not by
+    /// the relative goal (the ball then contains 0): the caller's [`Options::abs_tol`],
+    /// or the default `2^-goal abs_scale`. `None` when the relative goal was met or not
+    /// met at all.
+    pub abs_tol: Option<Mag>,
 }
 
 impl Integral {
@@ -473,29 +514,42 @@ where
 
 /// The absolute tolerance for a magnitude estimate: relative to the integral, but
 /// never asking for more than 32 bits below `int |f|` (beyond that the goal is met by
-/// the retries, on the next attempt's estimate).
+/// the retries, on the next attempt's estimate). With the default absolute tolerance
+/// ([`Options::abs_tol`]), an estimate below `2^-goal int |f|` asks for that level
+/// only: the ball is then expected to contain 0 and to meet `2^-goal L`.
 fn tolerance(opts: &Options, goal: u32, mag: Mag, l1: Mag) -> Mag {
     let scale = mag.max(l1.mul_2exp(-32));
-    let rel = if !scale.is_zero() && scale.is_finite() {
+    let mut rel = if !scale.is_zero() && scale.is_finite() {
         scale.mul_2exp(-(goal as i64) - 2)
     } else {
         Mag::pow2(-(goal as i64) - 32)
     };
+    if opts.abs_tol.is_none() && !opts.relative_only && l1.is_finite() && !l1.is_zero() && mag.le(&l1.mul_2exp(-(goal as i64))) {
+        rel = rel.max(l1.mul_2exp(-(goal as i64) - 3));
+    }
     match opts.abs_tol {
         Some(t) => rel.max(t),
         None => rel,
     }
 }
 
-/// Whether a ball meets the goal.
-fn meets(v: &CBall, goal: u32, abs_tol: Option<Mag>) -> bool {
+/// Whether a ball meets the goal, and the absolute tolerance that decided (if one
+/// did): relative, the caller's absolute tolerance, or (when the ball contains 0) the
+/// default `2^-goal scale` ([`Options::abs_tol`], [`Integral::abs_scale`]).
+pub(crate) fn meets(v: &CBall, goal: u32, opts: &Options, scale: Mag) -> (bool, Option<Mag>) {
     let rad = v.rad_mag();
-    if let Some(t) = abs_tol {
-        if rad.le(&t) {
-            return true;
-        }
+    if rad.le(&v.abs_lower_mag().mul_2exp(-(goal as i64))) {
+        return (true, None);
     }
-    rad.le(&v.abs_lower_mag().mul_2exp(-(goal as i64)))
+    match (opts.abs_tol, opts.relative_only) {
+        (Some(t), _) => (rad.le(&t), rad.le(&t).then_some(t)),
+        (None, false) => {
+            let t = scale.mul_2exp(-(goal as i64));
+            let met = v.contains_zero() && scale.is_finite() && rad.le(&t);
+            (met, met.then_some(t))
+        }
+        (None, true) => (false, None),
+    }
 }
 
 /// Attempts of the driver before the last enclosure is returned flagged.
@@ -519,6 +573,7 @@ where
     let provisional = builder(Mag::pow2(-(goal as i64)), wp, f)?;
     let mut crudes = Vec::new();
     let (mut mag, mut l1) = rough_magnitude(f, &provisional, wp, &mut evaluations, &mut crudes);
+    let l1_estimate = l1;
     let mut reusable: Vec<Option<CBall>> =
         provisional.iter().zip(crudes.into_iter().chain(std::iter::repeat(None))).map(|(p, c)| c.filter(|_| p.lo != p.hi)).collect();
     let spans: Vec<(Float, Float)> = provisional.iter().map(|p| (p.lo.clone(), p.hi.clone())).collect();
@@ -535,6 +590,7 @@ where
         let n_parts = parts.iter().filter(|p| p.lo != p.hi).count().max(1) as u64;
         let mut total = CBall::zero(wp);
         let mut truncation = Mag::ZERO;
+        let mut l1_bound = Mag::ZERO;
         let mut stats = Stats::default();
         let mut limit = None;
         let same_parts = parts.len() == spans.len() && parts.iter().zip(&spans).all(|(p, (lo, hi))| p.lo == *lo && p.hi == *hi);
@@ -555,16 +611,24 @@ where
                 }
                 total = total.add(&out.value);
                 truncation = truncation.add(out.truncation);
+                l1_bound = l1_bound.add(out.l1);
             }
             if !part.tail.is_finite() {
                 return Err(adaptive::unbounded_error(Some(part.map.to_x(part.lo.to_f64())), &stats));
             }
             total.add_error_mag(part.tail);
             truncation = truncation.add(part.tail);
+            l1_bound = l1_bound.add(part.tail);
         }
         evaluations += stats.evaluations;
-        let goal_met = meets(&total, goal, opts.abs_tol);
-        let result = Integral { value: total, goal_met, limit, evaluations, subintervals: stats.subintervals, working_prec: wp };
+        let abs_scale = if l1_estimate.is_zero() || !l1_estimate.is_finite() {
+            l1_bound
+        } else {
+            let four = l1_estimate.mul_2exp(2);
+            if l1_bound.le(&four) { l1_bound } else { four }
+        };
+        let (goal_met, abs_tol) = meets(&total, goal, opts, abs_scale);
+        let result = Integral { value: total, goal_met, limit, evaluations, subintervals: stats.subintervals, working_prec: wp, abs_scale, abs_tol };
         if goal_met {
             return Ok(result);
         }

@@ -140,18 +140,19 @@ where
         let goal = (prec + extra).min(crate::MAX_PREC);
         let o = opts.clone().goal_bits(goal)?;
         let parts = pieces(goal, &o)?;
-        let (mut evaluations, mut limit, mut wp) = (0, None, 0);
+        let (mut evaluations, mut limit, mut wp, mut l1) = (0, None, 0, crate::ball::Mag::ZERO);
         let mut total = crate::ball::CBall::zero(prec);
         for r in &parts {
             evaluations += r.evaluations;
             limit = limit.or(r.limit);
             wp = wp.max(r.working_prec);
             total = total.add(&r.value);
+            l1 = l1.add(r.abs_scale);
         }
         let rad = total.rad_mag();
         let wanted = total.abs_lower_mag().mul_2exp(-(prec as i64));
-        let met = rad.le(&wanted);
-        let result = Integral { value: total, goal_met: met, limit: if met { None } else { limit }, evaluations, subintervals: 0, working_prec: wp };
+        let (met, abs_tol) = crate::quad::certified::meets(&total, prec, opts, l1);
+        let result = Integral { value: total, goal_met: met, limit: if met { None } else { limit }, evaluations, subintervals: 0, working_prec: wp, abs_scale: l1, abs_tol };
         if met || limit.is_some() {
             return Ok(result);
         }

@@ -240,3 +240,13 @@ pub fn shortfall(r: &Integral) -> Option<String> {
         r.evaluations
     ))
 }
+
+/// The absolute tolerance the result met, as a short decimal (4 digits, rounded up),
+/// when the goal was met by it and not by the relative goal (the ball contains 0):
+/// `2^-prec` times a certified bound of `int |f|` by default
+/// ([`crate::quad::certified::Options::abs_tol`]). `None` otherwise.
+pub fn abs_tol_text(r: &Integral) -> Option<String> {
+    let t = r.abs_tol?;
+    let up = rug::Float::with_val_round(24, t.to_float(), rug::float::Round::Up).0;
+    Some(up.to_string_radix_round(10, Some(4), rug::float::Round::Up))
+}

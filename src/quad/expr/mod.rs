@@ -100,7 +100,7 @@ use std::str::FromStr;
 pub use error::ExprError;
 pub use eval::ExprValue;
 pub use function::Function;
-pub use integrate::{integrate_expr, integrate_range, shortfall, significant_imaginary, DecaySpec, End, UpperLimit, WeightSpec};
+pub use integrate::{integrate_expr, integrate_range, abs_tol_text, shortfall, significant_imaginary, DecaySpec, End, UpperLimit, WeightSpec};
 pub use limits::{MAX_BESSEL_ORDER, MAX_DEPTH, MAX_LEN};
 pub use tree::Expr;
 

@@ -158,3 +158,20 @@ pub fn hyp2f1_at_decimals(a: &str, b: &str, c: &str, z: &str, prec: u32) -> maug
     let d: Vec<Decimal> = [a, b, c, z].iter().map(|s| Decimal::parse(s).expect("decimal parses")).collect();
     eval_at_decimals(&d, prec, |x| maugis::special::hyp2f1::hyp2f1_ball_mp(&x[0], &x[1], &x[2], &x[3], prec))
 }
+
+/// The fields of one line of the integral tables (`reference/data/integrals_*.csv`):
+/// comma-separated, a field in double quotes may hold commas.
+pub fn csv_fields(line: &str) -> Vec<String> {
+    let mut fields = Vec::new();
+    let mut cur = String::new();
+    let mut quoted = false;
+    for ch in line.chars() {
+        match ch {
+            '"' => quoted = !quoted,
+            ',' if !quoted => fields.push(std::mem::take(&mut cur)),
+            c => cur.push(c),
+        }
+    }
+    fields.push(cur);
+    fields
+}
