@@ -21,6 +21,7 @@ mod bessel_f64;
 mod bessel_large;
 mod bessel_sequence_mp;
 mod bounded_golden;
+mod budget;
 mod edges_low_precision;
 mod certified_golden;
 mod certified_quad;
