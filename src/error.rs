@@ -687,6 +687,25 @@ pub enum SweepError {
     NothingToMerge,
     /// The shards were computed on different grids.
     DifferentGrids,
+    /// The shards were computed for different base profiles (the `amplitude` axis'
+    /// profile, or one of them on a one-wave axis).
+    DifferentProfiles {
+        /// The first shard's profile ([`crate::contact::profile::WavyProfile::describe`],
+        /// or `"one wave"` for a one-wave axis).
+        first: String,
+        /// The differing shard's.
+        other: String,
+    },
+    /// The `amplitude` axis without a base profile (or with one of no wave) to scale.
+    NoBaseProfile,
+    /// A base profile given with a one-wave axis (`alpha`, `beta`, `johnson`), which
+    /// builds its wave from `fixed`: sweep a profile on the `amplitude` axis.
+    ProfileOnOneWaveAxis {
+        /// The axis.
+        axis: &'static str,
+        /// The profile's number of waves.
+        waves: usize,
+    },
     /// A grid point appears in two shards.
     DuplicatePoint {
         /// The point's index.
@@ -720,6 +739,16 @@ impl fmt::Display for SweepError {
             SweepError::Shard { s, n } => write!(f, "shard must be s/n with 1 <= s <= n (got {s}/{n})"),
             SweepError::NothingToMerge => write!(f, "nothing to merge"),
             SweepError::DifferentGrids => write!(f, "the shards belong to different grids"),
+            SweepError::DifferentProfiles { first, other } => {
+                write!(f, "the shards belong to different profiles ({first}; {other})")
+            }
+            SweepError::NoBaseProfile => {
+                write!(f, "the amplitude axis scales a profile: give the grid a profile of at least one wave")
+            }
+            SweepError::ProfileOnOneWaveAxis { axis, waves } => write!(
+                f,
+                "the {axis} axis builds one wave from the fixed parameter, but a profile of {waves} wave(s) was given: sweep it on the amplitude axis"
+            ),
             SweepError::DuplicatePoint { index } => write!(f, "grid point {index} appears in two shards"),
             SweepError::PointOutsideGrid { index } => write!(f, "grid point {index} lies outside the grid"),
             SweepError::MissingPoints { missing, total } => {

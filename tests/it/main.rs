@@ -59,3 +59,4 @@ mod quad_oscillatory_proptest;
 mod hankel_bound;
 mod quad_zero;
 mod quad_precision_sweep;
+mod sweep_waves;
