@@ -290,6 +290,22 @@ pub enum Error {
         /// The limit in seconds.
         limit_seconds: f64,
     },
+    /// A loop whose length no cost model bounds in advance (a Ziv loop, the
+    /// retries at tighter input balls, a quadrature's nodes) stopped at the
+    /// call's time budget ([`crate::budget`]): the time spent plus the next
+    /// iteration's estimate passed it.
+    BudgetSpent {
+        /// The function or loop.
+        function: &'static str,
+        /// Seconds spent when it stopped.
+        elapsed_seconds: f64,
+        /// Estimated seconds of the next iteration (0 when the budget was already spent).
+        next_seconds: f64,
+        /// The budget in seconds.
+        budget_seconds: f64,
+        /// How far the loop got.
+        reached: Reached,
+    },
     /// A root of the model (the strip ratio of Eq. 15b) that the certified
     /// bracketing could not separate: the residual's balls stay too wide around it.
     RootNotCertified {
@@ -446,8 +462,18 @@ impl fmt::Display for Error {
             ),
             Error::TooExpensive { function, seconds, limit_seconds } => write!(
                 f,
-                "{function} would take about {seconds:.0} s with the cheapest method, past the limit of about \
-                 {limit_seconds:.0} s; lower the precision"
+                "{function} would take about {} with the cheapest method, past the limit of {} (the method's cap \
+                 or what is left of the time budget); lower the precision or raise the budget",
+                Seconds(*seconds),
+                Seconds(*limit_seconds)
+            ),
+            Error::BudgetSpent { function, elapsed_seconds, next_seconds, budget_seconds, reached } => write!(
+                f,
+                "{function} stopped at its time budget of {} after {} (next step about {}), having reached {reached}; \
+                 raise the budget or lower the precision",
+                Seconds(*budget_seconds),
+                Seconds(*elapsed_seconds),
+                Seconds(*next_seconds)
             ),
             Error::RootNotCertified { quantity, near, input_balls } => {
                 write!(f, "could not certify the root {quantity} near {near:e}: the residual's balls stay too wide")?;
@@ -472,6 +498,13 @@ impl Error {
     /// guarantees them, so reaching this is a bug ([`Error::Internal`]).
     pub(crate) fn precondition(what: &'static str) -> Error {
         Error::Invariant(Invariant::Precondition { what })
+    }
+
+    /// Whether this is a refusal for time ([`Error::TooExpensive`] or
+    /// [`Error::BudgetSpent`]): the input is fine, and a larger budget (or a
+    /// lower precision) may answer it.
+    pub fn is_time_limit(&self) -> bool {
+        matches!(self, Error::TooExpensive { .. } | Error::BudgetSpent { .. })
     }
 
     /// Whether the error says that an argument lies outside the function's domain
@@ -654,6 +687,25 @@ pub enum SweepError {
     NothingToMerge,
     /// The shards were computed on different grids.
     DifferentGrids,
+    /// The shards were computed for different base profiles (the `amplitude` axis'
+    /// profile, or one of them on a one-wave axis).
+    DifferentProfiles {
+        /// The first shard's profile ([`crate::contact::profile::WavyProfile::describe`],
+        /// or `"one wave"` for a one-wave axis).
+        first: String,
+        /// The differing shard's.
+        other: String,
+    },
+    /// The `amplitude` axis without a base profile (or with one of no wave) to scale.
+    NoBaseProfile,
+    /// A base profile given with a one-wave axis (`alpha`, `beta`, `johnson`), which
+    /// builds its wave from `fixed`: sweep a profile on the `amplitude` axis.
+    ProfileOnOneWaveAxis {
+        /// The axis.
+        axis: &'static str,
+        /// The profile's number of waves.
+        waves: usize,
+    },
     /// A grid point appears in two shards.
     DuplicatePoint {
         /// The point's index.
@@ -687,6 +739,16 @@ impl fmt::Display for SweepError {
             SweepError::Shard { s, n } => write!(f, "shard must be s/n with 1 <= s <= n (got {s}/{n})"),
             SweepError::NothingToMerge => write!(f, "nothing to merge"),
             SweepError::DifferentGrids => write!(f, "the shards belong to different grids"),
+            SweepError::DifferentProfiles { first, other } => {
+                write!(f, "the shards belong to different profiles ({first}; {other})")
+            }
+            SweepError::NoBaseProfile => {
+                write!(f, "the amplitude axis scales a profile: give the grid a profile of at least one wave")
+            }
+            SweepError::ProfileOnOneWaveAxis { axis, waves } => write!(
+                f,
+                "the {axis} axis builds one wave from the fixed parameter, but a profile of {waves} wave(s) was given: sweep it on the amplitude axis"
+            ),
             SweepError::DuplicatePoint { index } => write!(f, "grid point {index} appears in two shards"),
             SweepError::PointOutsideGrid { index } => write!(f, "grid point {index} lies outside the grid"),
             SweepError::MissingPoints { missing, total } => {
@@ -1040,6 +1102,65 @@ impl fmt::Display for Invariant {
             Invariant::JumpTargetNotComputable { lo, hi } => {
                 write!(f, "jump target: state not computable in [{lo}, {hi}]")
             }
+        }
+    }
+}
+
+/// How far a loop stopped by its time budget got ([`Error::BudgetSpent`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum Reached {
+    /// A Ziv loop: the last working precision and the relative accuracy its ball had.
+    WorkingPrecision {
+        /// The working precision of the last evaluation (bits).
+        bits: u32,
+        /// Its relative accuracy (bits; `-inf` for a ball that contains 0).
+        accuracy_bits: f64,
+    },
+    /// The retries of a decimal-input evaluation: the input balls' precision.
+    InputPrecision {
+        /// The precision of the last input balls (bits).
+        bits: u32,
+    },
+    /// A quadrature: the integrand evaluations done.
+    Evaluations {
+        /// How many.
+        count: u64,
+    },
+    /// A series: the terms summed.
+    Terms {
+        /// How many.
+        count: u64,
+    },
+}
+
+impl fmt::Display for Reached {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Reached::WorkingPrecision { bits, accuracy_bits } => {
+                write!(f, "{accuracy_bits:.0} correct bits at a working precision of {bits} bits")
+            }
+            Reached::InputPrecision { bits } => write!(f, "input balls of {bits} bits"),
+            Reached::Evaluations { count } => write!(f, "{count} integrand evaluations"),
+            Reached::Terms { count } => write!(f, "{count} terms"),
+        }
+    }
+}
+
+/// Seconds for a message: `1.2 ms`, `35 s`.
+struct Seconds(f64);
+
+impl fmt::Display for Seconds {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let s = self.0;
+        if !s.is_finite() {
+            write!(f, "{s} s")
+        } else if s < 1e-3 {
+            write!(f, "{:.0} us", s * 1e6)
+        } else if s < 1.0 {
+            write!(f, "{:.1} ms", s * 1e3)
+        } else {
+            write!(f, "{s:.1} s")
         }
     }
 }

@@ -78,6 +78,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod ball;
+pub mod budget;
 pub mod contact;
 pub mod error;
 pub mod quad;
@@ -90,6 +91,7 @@ pub mod special;
 pub use rug;
 
 pub use ball::{Ball, Bounded};
+pub use budget::Budget;
 pub use error::{Error, Result};
 
 /// Largest output precision (bits) a caller may request.

@@ -40,7 +40,7 @@ use crate::contact::model_mp;
 use crate::contact::profile::{WavyProfile, MAX_WAVES};
 use crate::error::{Error, ProfileError, Result};
 use crate::special::{bessel_j, hyp1f2, hyp2f1, meijer_g};
-use crate::{Ball, Bounded};
+use crate::{Ball, Bounded, Budget};
 
 pub use crate::error::ParamKind;
 
@@ -289,10 +289,19 @@ impl Function {
         path(&self.check(args)?)
     }
 
-    /// The MP path at `prec` bits (`2 ..= MAX_PREC`), inputs as [`Function::mp_inputs`] says.
+    /// The MP path at `prec` bits (`2 ..= MAX_PREC`), inputs as [`Function::mp_inputs`] says,
+    /// under the default time budget ([`Budget::DEFAULT`]).
     pub fn eval_mp(&self, args: &[Arg<Decimal>], prec: u32) -> Result<Answer> {
+        self.eval_mp_with_budget(args, prec, Budget::DEFAULT)
+    }
+
+    /// [`Function::eval_mp`] within `budget`: the same answer, or a prompt
+    /// [`Error::TooExpensive`] (a cost estimate past the budget) or
+    /// [`Error::BudgetSpent`] (a loop stopped at it); see [`crate::budget`].
+    pub fn eval_mp_with_budget(&self, args: &[Arg<Decimal>], prec: u32, budget: Budget) -> Result<Answer> {
         crate::error::check_prec(prec)?;
-        (self.mp)(&self.check(args)?, prec)
+        let args = self.check(args)?;
+        budget.run(|| (self.mp)(&args, prec))
     }
 }
 
@@ -503,7 +512,7 @@ pub static FUNCTIONS: &[Function] = &[
         bounded: None,
         mp: |a, p| {
             let [x0, z, m, x] = rounded_reals::<4>(a, p)?;
-            let q = wave_quadrature::u_wave_quad_mp_with_budget(&x0, &z, &m, &x, p, wave_quadrature::MAX_QUAD_MP_SECONDS)?;
+            let q = wave_quadrature::u_wave_quad_mp(&x0, &z, &m, &x, p)?;
             Ok(Answer::EstimateMp { value: q.value, error_estimate: q.error_estimate })
         },
     },

@@ -157,7 +157,7 @@ pub fn short(x: f64) -> String {
 }
 
 /// `--alpha` and `--beta` (curve, profile, limits, sweep), and the profiles of many
-/// waves: `--wave`, `--waves`, `--weierstrass` (curve, profile, limits, simulate).
+/// waves: `--wave`, `--waves`, `--weierstrass` (curve, profile, limits, simulate, sweep).
 #[derive(Args, Debug, Clone, Default)]
 pub struct Roughness {
     /// Normalised wave amplitude alpha >= 0, e.g. 2*sqrt(2)/8 [default: 2 sqrt(2)/8];

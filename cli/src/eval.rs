@@ -52,7 +52,15 @@
 //!   naming the wave, from 1, and the field):
 //!   `{"fn": "strip_ratio_waves", "lambda": 3, "abar": 2, "waves": [[0.35, 1.125], ["0.175", "0.375"]], "prec": 64}`.
 //!
-//! Integer arguments (`n`, `k`, `kmax`, `prec`) must be integers as typed.
+//! * `"budget_ms"` (optional, `1 ..= 86 400 000`) is the request's time
+//!   budget in milliseconds; without it the library's default,
+//!   [`maugis::Budget::DEFAULT`] (30 s). A request that its cost model puts past
+//!   the budget is refused at once, and one whose loops reach it is stopped
+//!   there; either way the line is `{"id": ..., "error": "...", "refused": "time"}`
+//!   (the input is fine: a larger budget or a lower precision may answer it).
+//!   The budget never changes an answer ([`maugis::budget`]).
+//!
+//! Integer arguments (`n`, `k`, `kmax`, `prec`, `budget_ms`) must be integers as typed.
 //! A bad line gets `{"id": ..., "error": "..."}` and the stream goes on.
 //!
 //! Responses are flushed whenever no further input waits, so an interactive
@@ -67,7 +75,7 @@ use maugis::ball::Decimal;
 use maugis::registry::{self, Answer, Arg, ParamKind, Repeated};
 use maugis::quad::certified::Options;
 use maugis::quad::expr::{integrate_range, shortfall, DecaySpec, End, Expr, WeightSpec};
-use maugis::{Ball, Error, MAX_PREC};
+use maugis::{Ball, Budget, Error, MAX_PREC};
 use serde_json::{json, Map, Value};
 
 use crate::integrate::{ball_fields, digits_for};
@@ -138,12 +146,23 @@ mod profile {
     }
 }
 
-/// A request-level failure, turned into an error line.
-struct BadRequest(String);
+/// A request-level failure, turned into an error line (with `"refused": "time"`
+/// for a refusal of the time budget: the input is fine, a larger `"budget_ms"`
+/// may answer it).
+struct BadRequest {
+    msg: String,
+    time_limit: bool,
+}
+
+impl BadRequest {
+    fn new(msg: impl Into<String>) -> Self {
+        BadRequest { msg: msg.into(), time_limit: false }
+    }
+}
 
 impl From<Error> for BadRequest {
     fn from(e: Error) -> Self {
-        BadRequest(e.to_string())
+        BadRequest { msg: e.to_string(), time_limit: e.is_time_limit() }
     }
 }
 
@@ -156,10 +175,10 @@ const INTEGRATE: (&str, &[&str]) = ("integrate", &["f", "a", "b", "weight", "dec
 /// The argument as decimal text (JSON number text or string).
 fn arg_text<'a>(obj: &'a Map<String, Value>, name: &str) -> Req<String> {
     match obj.get(name) {
-        None => Err(BadRequest(format!("missing argument \"{name}\""))),
+        None => Err(BadRequest::new(format!("missing argument \"{name}\""))),
         Some(Value::Number(n)) => Ok(n.to_string()),
         Some(Value::String(s)) => Ok(s.trim().to_string()),
-        Some(other) => Err(BadRequest(format!("argument \"{name}\" must be a number or a decimal string, got {other}"))),
+        Some(other) => Err(BadRequest::new(format!("argument \"{name}\" must be a number or a decimal string, got {other}"))),
     }
 }
 
@@ -173,9 +192,9 @@ fn arg_f64_untimed(obj: &Map<String, Value>, name: &str) -> Req<f64> {
 
 /// Decimal text as a finite f64; `what` names it in the error.
 fn parse_f64(what: &str, t: &str) -> Req<f64> {
-    let v: f64 = t.parse().map_err(|_| BadRequest(format!("{what} = {t:?} is not a decimal number")))?;
+    let v: f64 = t.parse().map_err(|_| BadRequest::new(format!("{what} = {t:?} is not a decimal number")))?;
     if !v.is_finite() {
-        return Err(BadRequest(format!("{what} must be finite (got {t})")));
+        return Err(BadRequest::new(format!("{what} must be finite (got {t})")));
     }
     Ok(v)
 }
@@ -187,20 +206,20 @@ fn parse_f64(what: &str, t: &str) -> Req<f64> {
 fn group_texts(obj: &Map<String, Value>, r: Repeated) -> Req<Vec<(String, String)>> {
     let list = match obj.get(r.list) {
         Some(Value::Array(list)) => list,
-        None => return Err(BadRequest(format!("missing argument \"{}\" (a list of [{}] for each {})", r.list, r.names.join(", "), r.group))),
-        Some(other) => return Err(BadRequest(format!("\"{}\" must be a list of [{}] for each {}, got {other}", r.list, r.names.join(", "), r.group))),
+        None => return Err(BadRequest::new(format!("missing argument \"{}\" (a list of [{}] for each {})", r.list, r.names.join(", "), r.group))),
+        Some(other) => return Err(BadRequest::new(format!("\"{}\" must be a list of [{}] for each {}, got {other}", r.list, r.names.join(", "), r.group))),
     };
     let mut out = Vec::new();
     for (j, item) in list.iter().enumerate() {
         let Value::Array(group) = item else {
-            return Err(BadRequest(format!("{}[{}] must be a list [{}], got {item}", r.list, j + 1, r.names.join(", "))));
+            return Err(BadRequest::new(format!("{}[{}] must be a list [{}], got {item}", r.list, j + 1, r.names.join(", "))));
         };
         for (k, v) in group.iter().enumerate() {
             let name = format!("{}[{}].{}", r.list, j + 1, r.names.get(k).copied().unwrap_or("?"));
             let text = match v {
                 Value::Number(n) => n.to_string(),
                 Value::String(s) => s.trim().to_string(),
-                other => return Err(BadRequest(format!("{name} must be a number or a decimal string, got {other}"))),
+                other => return Err(BadRequest::new(format!("{name} must be a number or a decimal string, got {other}"))),
             };
             out.push((name, text));
         }
@@ -212,7 +231,7 @@ fn group_texts(obj: &Map<String, Value>, r: Repeated) -> Req<Vec<(String, String
 fn arg_decimal(obj: &Map<String, Value>, name: &str) -> Req<Decimal> {
     profile::timed(profile::ARGS, || {
         let t = arg_text(obj, name)?;
-        Decimal::parse(&t).map_err(|e| BadRequest(format!("argument \"{name}\": {e}")))
+        Decimal::parse(&t).map_err(|e| BadRequest::new(format!("argument \"{name}\": {e}")))
     })
 }
 
@@ -231,17 +250,30 @@ fn arg_int_untimed(obj: &Map<String, Value>, name: &str) -> Req<i64> {
     if let Ok(v) = t.parse::<i64>() {
         return Ok(v);
     }
-    let v: f64 = t.parse().map_err(|_| BadRequest(format!("argument \"{name}\" = {t:?} is not an integer")))?;
+    let v: f64 = t.parse().map_err(|_| BadRequest::new(format!("argument \"{name}\" = {t:?} is not an integer")))?;
     if v.is_finite() && v == v.trunc() && v.abs() < 9.0e15 {
         Ok(v as i64)
     } else {
-        Err(BadRequest(format!("argument \"{name}\" must be an integer (got {t})")))
+        Err(BadRequest::new(format!("argument \"{name}\" must be an integer (got {t})")))
     }
 }
 
 fn arg_u32(obj: &Map<String, Value>, name: &str) -> Req<u32> {
     let v = arg_int(obj, name)?;
-    u32::try_from(v).map_err(|_| BadRequest(format!("argument \"{name}\" must be a non-negative integer (got {v})")))
+    u32::try_from(v).map_err(|_| BadRequest::new(format!("argument \"{name}\" must be a non-negative integer (got {v})")))
+}
+
+/// Reads `"budget_ms"`: the request's time budget in milliseconds
+/// (`1 ..= 86 400 000`), [`Budget::DEFAULT`] (30 s) without it.
+fn read_budget(obj: &Map<String, Value>) -> Req<Budget> {
+    match obj.get("budget_ms") {
+        None | Some(Value::Null) => Ok(Budget::DEFAULT),
+        Some(_) => {
+            let ms = arg_int(obj, "budget_ms")?;
+            let ms = u64::try_from(ms).unwrap_or(0);
+            Ok(Budget::from_millis(ms)?)
+        }
+    }
 }
 
 /// Reads `"prec"` if present.
@@ -251,7 +283,7 @@ fn read_prec(obj: &Map<String, Value>) -> Req<Option<u32>> {
         Some(_) => {
             let p = arg_int(obj, "prec")?;
             if p < 2 || p > MAX_PREC as i64 {
-                Err(BadRequest(format!("\"prec\" = {p} is out of range: use 2 ..= {MAX_PREC} bits")))
+                Err(BadRequest::new(format!("\"prec\" = {p} is out of range: use 2 ..= {MAX_PREC} bits")))
             } else {
                 Ok(Some(p as u32))
             }
@@ -262,10 +294,10 @@ fn read_prec(obj: &Map<String, Value>) -> Req<Option<u32>> {
 /// Rejects argument names the function does not take (typos would otherwise be silent).
 fn check_names(obj: &Map<String, Value>, fname: &str, args: &[&str]) -> Req<()> {
     for key in obj.keys() {
-        if key == "id" || key == "fn" || key == "prec" || args.contains(&key.as_str()) {
+        if key == "id" || key == "fn" || key == "prec" || key == "budget_ms" || args.contains(&key.as_str()) {
             continue;
         }
-        return Err(BadRequest(format!(
+        return Err(BadRequest::new(format!(
             "unknown argument \"{key}\" for {fname} (it takes {})",
             args.join(", ")
         )));
@@ -289,17 +321,18 @@ fn evaluate(obj: &Map<String, Value>) -> Req<Value> {
     let id = obj.get("id").cloned().unwrap_or(Value::Null);
     let fname = match obj.get("fn") {
         Some(Value::String(s)) => s.as_str(),
-        Some(_) => return Err(BadRequest("\"fn\" must be a string".into())),
-        None => return Err(BadRequest("missing \"fn\" (the function name)".into())),
+        Some(_) => return Err(BadRequest::new("\"fn\" must be a string")),
+        None => return Err(BadRequest::new("missing \"fn\" (the function name)")),
     };
     if fname == INTEGRATE.0 {
         check_names(obj, fname, INTEGRATE.1)?;
         let prec = read_prec(obj)?;
-        return evaluate_integral(obj, &id, prec.unwrap_or(DEFAULT_INTEGRAL_PREC));
+        let budget = read_budget(obj)?;
+        return budget.run(|| evaluate_integral(obj, &id, prec.unwrap_or(DEFAULT_INTEGRAL_PREC)));
     }
     let function = registry::function(fname).map_err(|e| match e {
         Error::UnknownFunction { name, known } => {
-            BadRequest(format!("unknown fn \"{name}\"; known: {}, {}", known.join(", "), INTEGRATE.0))
+            BadRequest::new(format!("unknown fn \"{name}\"; known: {}, {}", known.join(", "), INTEGRATE.0))
         }
         other => other.into(),
     })?;
@@ -307,6 +340,7 @@ fn evaluate(obj: &Map<String, Value>) -> Req<Value> {
     names.extend(function.repeated.map(|r| r.list));
     check_names(obj, fname, &names)?;
     let prec = read_prec(obj)?;
+    let budget = read_budget(obj)?;
     let answer = match prec {
         None => {
             let mut args = function
@@ -317,7 +351,7 @@ fn evaluate(obj: &Map<String, Value>) -> Req<Value> {
             if let Some(r) = function.repeated {
                 args.extend(group_texts(obj, r)?.iter().map(|(name, t)| parse_f64(name, t).map(Arg::Real)).collect::<Req<Vec<_>>>()?);
             }
-            function.eval_f64(&args)?
+            budget.run(|| function.eval_f64(&args))?
         }
         Some(p) => {
             let mut args = function
@@ -328,11 +362,11 @@ fn evaluate(obj: &Map<String, Value>) -> Req<Value> {
             if let Some(r) = function.repeated {
                 let texts = group_texts(obj, r)?;
                 for (name, t) in &texts {
-                    let d = profile::timed(profile::ARGS, || Decimal::parse(t)).map_err(|e| BadRequest(format!("{name}: {e}")))?;
+                    let d = profile::timed(profile::ARGS, || Decimal::parse(t)).map_err(|e| BadRequest::new(format!("{name}: {e}")))?;
                     args.push(Arg::Real(d));
                 }
             }
-            function.eval_mp(&args, p)?
+            function.eval_mp_with_budget(&args, p, budget)?
         }
     };
     Ok(respond(&id, answer, prec))
@@ -374,11 +408,11 @@ fn sub_object<'a>(obj: &'a Map<String, Value>, name: &str, names: &[&str]) -> Re
         None | Some(Value::Null) => Ok(None),
         Some(Value::Object(sub)) => {
             if let Some(key) = sub.keys().find(|k| !names.contains(&k.as_str())) {
-                return Err(BadRequest(format!("unknown field \"{key}\" in \"{name}\" (it takes {})", names.join(", "))));
+                return Err(BadRequest::new(format!("unknown field \"{key}\" in \"{name}\" (it takes {})", names.join(", "))));
             }
             Ok(Some(sub))
         }
-        Some(other) => Err(BadRequest(format!("\"{name}\" must be an object, got {other}"))),
+        Some(other) => Err(BadRequest::new(format!("\"{name}\" must be an object, got {other}"))),
     }
 }
 
@@ -392,8 +426,8 @@ fn opt_decimal(obj: &Map<String, Value>, name: &str) -> Req<Option<Decimal>> {
 fn evaluate_integral(obj: &Map<String, Value>, id: &Value, prec: u32) -> Req<Value> {
     let f = match obj.get("f") {
         Some(Value::String(s)) => Expr::parse(s)?,
-        Some(other) => return Err(BadRequest(format!("\"f\" must be the integrand as a string, got {other}"))),
-        None => return Err(BadRequest("missing argument \"f\" (the integrand in x, e.g. \"exp(-x^2)\")".into())),
+        Some(other) => return Err(BadRequest::new(format!("\"f\" must be the integrand as a string, got {other}"))),
+        None => return Err(BadRequest::new("missing argument \"f\" (the integrand in x, e.g. \"exp(-x^2)\")")),
     };
     let a = End::parse(&arg_text(obj, "a")?)?;
     let b = End::parse(&arg_text(obj, "b")?)?;
@@ -412,7 +446,7 @@ fn evaluate_integral(obj: &Map<String, Value>, id: &Value, prec: u32) -> Req<Val
             Some(match (opt_decimal(d, "rate")?, opt_decimal(d, "power")?) {
                 (Some(rate), None) => DecaySpec::Exponential { rate, bound },
                 (None, Some(power)) => DecaySpec::Algebraic { power, bound },
-                _ => return Err(BadRequest("\"decay\" takes one of \"rate\" (exponential) and \"power\" (algebraic), with \"bound\"".into())),
+                _ => return Err(BadRequest::new("\"decay\" takes one of \"rate\" (exponential) and \"power\" (algebraic), with \"bound\"")),
             })
         }
     };
@@ -459,7 +493,8 @@ pub fn handle_line(line: &str) -> Value {
     let result = std::panic::catch_unwind(|| evaluate_timed(&obj));
     match result {
         Ok(Ok(v)) => v,
-        Ok(Err(BadRequest(msg))) => json!({"id": id, "error": msg}),
+        Ok(Err(BadRequest { msg, time_limit: false })) => json!({"id": id, "error": msg}),
+        Ok(Err(BadRequest { msg, time_limit: true })) => json!({"id": id, "error": msg, "refused": "time"}),
         Err(_) => json!({"id": id, "error": "internal error while evaluating (please report this input)"}),
     }
 }

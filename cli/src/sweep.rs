@@ -1,13 +1,17 @@
 //! `maugis sweep` and `maugis merge`: regime maps over a grid of lambda (log)
-//! and alpha, beta or the Johnson parameter (library: `maugis::contact::sweep`).
+//! and alpha, beta or the Johnson parameter of one wave, or the amplitude scale
+//! `s` of a profile of many waves (`--wave`, `--waves`, `--weierstrass`: every
+//! `alpha_j` times `s`, the wavelengths fixed) (library: `maugis::contact::sweep`).
 //!
 //! `maugis sweep` writes into `--out`:
 //!
 //! * `sweep.csv`: one row per grid point (`index, lambda, value, alpha, beta,
 //!   instabilities, unloading_jumps, dissipation, dissipation_valid,
 //!   dissipation_invalid, pull_off, pull_off_valid, valid_pull_off, valid_fraction,
-//!   regime`);
-//! * `sweep.json`: the grid, the shard and the points (the library's `Sweep`);
+//!   regime`); on the amplitude axis `alpha, beta` are the point's scaled profile,
+//!   `alpha_1, beta_1, alpha_2, ..` for many waves;
+//! * `sweep.json`: the grid (with its base profile on the amplitude axis), the
+//!   shard and the points (the library's `Sweep`);
 //! * `sweep.svg`: the regime map (colour: regime; shade: dissipation) — only
 //!   for a whole sweep, not for a shard.
 //!
@@ -29,10 +33,10 @@ use std::time::Instant;
 use clap::{Args, ValueEnum};
 use plotters::prelude::*;
 
-use maugis::contact::sweep::{merge, run_sweep, Regime, Sweep, SweepAxis, SweepGrid};
+use maugis::contact::sweep::{merge, run_sweep, Regime, Sweep, SweepAxis, SweepGrid, SweepPoint};
 use maugis_solver::map::model_regime_name;
 
-use crate::args::{self, num, short, Roughness};
+use crate::args::{self, num, profile_columns, profile_report, profile_title, short, Roughness};
 use crate::curve::progress;
 use crate::output::{check_out_dir, print_stdout, write_atomically, OutFile};
 use crate::plot::{plot_err, tick, Legend, Mark};
@@ -48,6 +52,9 @@ pub enum Axis {
     Beta,
     /// Johnson parameter sqrt(beta/alpha^2) (beta fixed by --beta).
     Johnson,
+    /// The scale s of every amplitude of the profile (--wave/--waves/--weierstrass,
+    /// or --alpha/--beta): wave j is (s alpha_j, beta_j).
+    Amplitude,
 }
 
 /// Flags of `maugis sweep`.
@@ -62,19 +69,23 @@ pub struct SweepArgs {
     /// Number of lambda values (log-spaced).
     #[arg(long, value_name = "N", default_value = "40", value_parser = axis_points)]
     pub lambda_n: usize,
-    /// The second axis: alpha, beta or johnson.
-    #[arg(long, value_name = "AXIS", default_value = "alpha")]
-    pub axis: Axis,
-    /// Smallest value of the second axis.
-    #[arg(long, value_name = "V", default_value = "0", value_parser = args::non_negative, allow_negative_numbers = true)]
-    pub min: f64,
-    /// Largest value of the second axis.
-    #[arg(long, value_name = "V", default_value = "0.7", value_parser = args::positive, allow_negative_numbers = true)]
-    pub max: f64,
+    /// The second axis: alpha, beta or johnson (one wave), or amplitude (the scale of
+    /// every amplitude of the profile) [default: alpha; amplitude with --wave, --waves
+    /// or --weierstrass, which take no other axis].
+    #[arg(long, value_name = "AXIS")]
+    pub axis: Option<Axis>,
+    /// Smallest value of the second axis [default: 0].
+    #[arg(long, value_name = "V", value_parser = args::non_negative, allow_negative_numbers = true)]
+    pub min: Option<f64>,
+    /// Largest value of the second axis [default: 0.7; 1 on the amplitude axis, the
+    /// profile as given].
+    #[arg(long, value_name = "V", value_parser = args::positive, allow_negative_numbers = true)]
+    pub max: Option<f64>,
     /// Number of values of the second axis (linear).
     #[arg(long, value_name = "N", default_value = "40", value_parser = axis_points)]
     pub n: usize,
-    /// --alpha (fixed for --axis beta), --beta (fixed for --axis alpha or johnson).
+    /// --alpha (fixed for --axis beta), --beta (fixed for --axis alpha or johnson);
+    /// the profile --wave/--waves/--weierstrass (scaled by --axis amplitude).
     #[command(flatten)]
     pub roughness: Roughness,
     /// Largest contact half-width of every curve.
@@ -141,28 +152,43 @@ fn shard(s: &str) -> Result<(usize, usize), String> {
 }
 
 pub(crate) fn axis_name(a: SweepAxis) -> &'static str {
-    match a {
-        SweepAxis::Alpha => "alpha",
-        SweepAxis::Beta => "beta",
-        SweepAxis::Johnson => "johnson",
+    a.name()
+}
+
+/// The CSV columns naming a point's profile, and their values: `alpha, beta` of the
+/// point on the one-wave axes; on the amplitude axis the scaled profile's
+/// ([`profile_columns`]: `alpha, beta` for one wave, `alpha_1, beta_1, ..` for many).
+fn profile_cells(s: &Sweep, p: &SweepPoint) -> Result<(Vec<String>, Vec<String>), String> {
+    match s.grid.axis {
+        SweepAxis::Amplitude => {
+            let scaled = s.grid.profile_at(p.index % s.grid.n).map_err(|e| e.to_string())?;
+            Ok(profile_columns(&scaled))
+        }
+        _ => Ok((vec!["alpha".into(), "beta".into()], vec![p.alpha.to_string(), p.beta.to_string()])),
     }
 }
 
 fn sweep_csv(s: &Sweep) -> Result<String, String> {
     let mut w = csv::Writer::from_writer(Vec::new());
     let err = |e: csv::Error| format!("could not format CSV: {e}");
-    w.write_record([
-        "index", "lambda", "value", "alpha", "beta", "instabilities", "unloading_jumps", "dissipation", "dissipation_valid",
-        "dissipation_invalid", "pull_off", "pull_off_valid", "valid_pull_off", "valid_fraction", "regime",
-    ])
-    .map_err(err)?;
+    let names = match s.points.first() {
+        Some(p) => profile_cells(s, p)?.0,
+        None => vec!["alpha".into(), "beta".into()],
+    };
+    let mut header: Vec<String> = vec!["index".into(), "lambda".into(), "value".into()];
+    header.extend(names);
+    header.extend(
+        [
+            "instabilities", "unloading_jumps", "dissipation", "dissipation_valid", "dissipation_invalid", "pull_off", "pull_off_valid",
+            "valid_pull_off", "valid_fraction", "regime",
+        ]
+        .map(String::from),
+    );
+    w.write_record(&header).map_err(err)?;
     for p in &s.points {
-        w.write_record([
-            p.index.to_string(),
-            p.lambda.to_string(),
-            p.value.to_string(),
-            p.alpha.to_string(),
-            p.beta.to_string(),
+        let mut row = vec![p.index.to_string(), p.lambda.to_string(), p.value.to_string()];
+        row.extend(profile_cells(s, p)?.1);
+        row.extend([
             p.instabilities.to_string(),
             p.unloading_jumps.to_string(),
             p.dissipation.to_string(),
@@ -173,8 +199,8 @@ fn sweep_csv(s: &Sweep) -> Result<String, String> {
             p.valid_pull_off.map_or(String::new(), |v| v.to_string()),
             p.valid_fraction.to_string(),
             model_regime_name(p.regime).to_string(),
-        ])
-        .map_err(err)?;
+        ]);
+        w.write_record(&row).map_err(err)?;
     }
     let bytes = w.into_inner().map_err(|e| format!("could not format CSV: {e}"))?;
     String::from_utf8(bytes).map_err(|e| format!("could not format CSV: {e}"))
@@ -204,19 +230,18 @@ fn sweep_svg(s: &Sweep) -> Result<String, String> {
         .entry("smooth-like: no roughness-induced loop", cell(RGBColor(225, 225, 225)))
         .entry(format!("shade: dissipation |W| from 0 to {}", short(wmax)), ramp(BLUE))
         .entry("(same shading for cavitating cells)", ramp(ORANGE));
+
     let (plot_w, legend_w) = (860u32, legend.size().0 as u32 + 30);
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, (plot_w + legend_w, 800)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_err)?;
         let (plot, beside) = root.split_horizontally(plot_w);
-        let title = format!(
-            "Regime map: {} over log10 λ, {} (amax = {}, {} points per curve)",
-            axis_name(g.axis),
-            fixed_label(g),
-            short(g.amax),
-            g.points
-        );
+        let title = match g.axis {
+            // the profile, which may not fit a title, is listed in the legend
+            SweepAxis::Amplitude => format!("Regime map: amplitude scale s over log10 λ (amax = {}, {} points per curve)", short(g.amax), g.points),
+            _ => format!("Regime map: {} over log10 λ, {} (amax = {}, {} points per curve)", axis_name(g.axis), fixed_label(g), short(g.amax), g.points),
+        };
         let cells = s.points.iter().map(|p| {
             let t = (p.dissipation.abs() / wmax).clamp(0.0, 1.0);
             let col = match p.regime {
@@ -228,16 +253,53 @@ fn sweep_svg(s: &Sweep) -> Result<String, String> {
         });
         regime_panel(&plot, g, &title, 18, cells, &[])?;
         legend.draw(&beside, (10, 80), legend_w as i32 - 20)?;
+        if let (SweepAxis::Amplitude, Some(p)) = (g.axis, &g.profile) {
+            // the profile, a wave a line, below the legend
+            let style = TextStyle::from(("sans-serif", 16).into_font());
+            for (k, line) in profile_legend(p).iter().enumerate() {
+                let y = 80 + legend.size().1 + 30 + 22 * k as i32;
+                beside.draw(&Text::new(line.as_str(), (20, y), style.clone())).map_err(plot_err)?;
+            }
+        }
         root.present().map_err(plot_err)?;
     }
     Ok(svg)
 }
 
-/// `β = ...` or `α = ...`: the parameter a map holds fixed.
+/// `β = ...` or `α = ...`: the parameter a map holds fixed; on the amplitude axis
+/// the profile it scales.
 pub(crate) fn fixed_label(g: &SweepGrid) -> String {
-    match g.axis {
-        SweepAxis::Beta => format!("α = {}", short(g.fixed)),
+    match (g.axis, &g.profile) {
+        (SweepAxis::Amplitude, Some(p)) => format!("s × [{}]", profile_title(p)),
+        (SweepAxis::Beta, _) => format!("α = {}", short(g.fixed)),
         _ => format!("β = {}", short(g.fixed)),
+    }
+}
+
+/// The lines naming the profile of an amplitude map below its legend: the profile as
+/// [`profile_title`] names it, a wave a line (at most eight listed).
+fn profile_legend(p: &maugis::contact::profile::WavyProfile) -> Vec<String> {
+    let mut lines = vec!["profile, every α_j times s:".to_string()];
+    match p.waves() {
+        [_] => lines.push(profile_title(p)),
+        ws => {
+            lines.push(format!("{} waves (α, β) =", ws.len()));
+            for (j, w) in ws.iter().enumerate().take(8) {
+                lines.push(format!("{}({}, {})", if j == 0 { "" } else { "+ " }, args::sig4(w.alpha()), args::sig4(w.beta())));
+            }
+            if ws.len() > 8 {
+                lines.push(format!("+ {} more (sweep.json)", ws.len() - 8));
+            }
+        }
+    }
+    lines
+}
+
+/// The second axis' label on a map.
+fn axis_label(g: &SweepGrid) -> &'static str {
+    match g.axis {
+        SweepAxis::Amplitude => "amplitude scale s",
+        a => a.name(),
     }
 }
 
@@ -265,7 +327,7 @@ pub(crate) fn regime_panel<DB: DrawingBackend>(
     chart
         .configure_mesh()
         .x_desc("log10 λ (Maugis parameter)")
-        .y_desc(axis_name(g.axis))
+        .y_desc(axis_label(g))
         .axis_desc_style(("sans-serif", 18))
         .label_style(("sans-serif", 15))
         .x_label_formatter(&tick)
@@ -307,6 +369,9 @@ fn report(s: &Sweep, written: &[PathBuf], out: &std::path::Path, secs: Option<f6
         count(Regime::Cavitating),
         count(Regime::SmoothLike)
     );
+    if let (SweepAxis::Amplitude, Some(p)) = (s.grid.axis, &s.grid.profile) {
+        let _ = writeln!(r, "profile: {}, every amplitude times s in [{}, {}]", profile_report(p), short(s.grid.min), short(s.grid.max));
+    }
     let _ = writeln!(r, "wrote {} file(s) to {}:", written.len(), out.display());
     for p in written {
         let _ = writeln!(r, "  {}", p.display());
@@ -316,42 +381,49 @@ fn report(s: &Sweep, written: &[PathBuf], out: &std::path::Path, secs: Option<f6
 
 /// Runs `maugis sweep`.
 pub fn run(a: SweepArgs) -> Result<(), String> {
-    if a.roughness.many_waves_given() {
-        // the grid's axes are one wave's alpha, beta or Johnson parameter
-        return Err("sweep maps one wave over (lambda, alpha | beta | chi): --wave, --waves and --weierstrass are not supported by sweep (use curve or limits for a profile of many waves)".into());
-    }
-    let (axis, fixed) = match a.axis {
-        Axis::Alpha => (SweepAxis::Alpha, a.roughness.values().1),
-        Axis::Beta => (SweepAxis::Beta, a.roughness.values().0),
-        Axis::Johnson => (SweepAxis::Johnson, a.roughness.values().1),
+    let many = a.roughness.many_waves_given();
+    let axis = match (a.axis, many) {
+        (None, true) | (Some(Axis::Amplitude), _) => SweepAxis::Amplitude,
+        (Some(other), true) => {
+            return Err(format!(
+                "--axis {} sweeps one wave's parameter: a profile of --wave/--waves/--weierstrass is swept on --axis amplitude (every amplitude times s)",
+                other.to_possible_value().map_or_else(String::new, |v| v.get_name().to_string())
+            ))
+        }
+        (None, false) | (Some(Axis::Alpha), false) => SweepAxis::Alpha,
+        (Some(Axis::Beta), false) => SweepAxis::Beta,
+        (Some(Axis::Johnson), false) => SweepAxis::Johnson,
+    };
+    let (min, max) = (a.min.unwrap_or(0.0), a.max.unwrap_or(if axis == SweepAxis::Amplitude { 1.0 } else { 0.7 }));
+    let (fixed, profile) = match axis {
+        SweepAxis::Alpha | SweepAxis::Johnson => (a.roughness.values().1, None),
+        SweepAxis::Beta => (a.roughness.values().0, None),
+        SweepAxis::Amplitude => (0.0, Some(a.roughness.profile()?)),
     };
     if a.lambda_max < a.lambda_min {
         return Err(format!("--lambda-max ({}) must be >= --lambda-min ({})", num(a.lambda_max), num(a.lambda_min)));
     }
-    if a.max < a.min {
-        return Err(format!("--max ({}) must be >= --min ({})", num(a.max), num(a.min)));
+    if max < min {
+        return Err(format!("--max ({}) must be >= --min ({})", num(max), num(min)));
     }
-    if axis != SweepAxis::Alpha && a.min <= 0.0 {
-        return Err(format!("--min must be > 0 for --axis {} (got {})", axis_name(axis), num(a.min)));
+    if matches!(axis, SweepAxis::Beta | SweepAxis::Johnson) && min <= 0.0 {
+        return Err(format!("--min must be > 0 for --axis {} (got {})", axis_name(axis), num(min)));
     }
-    let grid = SweepGrid {
-        lambda_min: a.lambda_min,
-        lambda_max: a.lambda_max,
-        lambda_n: a.lambda_n,
-        axis,
-        min: a.min,
-        max: a.max,
-        n: a.n,
-        fixed,
-        amax: a.amax,
-        points: a.points,
-    };
+    if a.solver {
+        if let Some(p) = profile.filter(|p| p.len() > 1) {
+            return Err(format!(
+                "--solver maps one wave's cycles, but the profile has {} waves: map it with the model (without --solver)",
+                p.len()
+            ));
+        }
+    }
+    let grid = SweepGrid { lambda_min: a.lambda_min, lambda_max: a.lambda_max, lambda_n: a.lambda_n, axis, min, max, n: a.n, fixed, profile, amax: a.amax, points: a.points };
     grid.check().map_err(|e| e.to_string())?;
-    let smallest_beta = match axis {
-        SweepAxis::Beta => a.min,
-        _ => fixed,
-    };
-    args::check_size("--amax", a.amax, 1.0, smallest_beta)?;
+    match (&profile, axis) {
+        (Some(p), _) => args::check_profile_size("--amax", a.amax, p)?,
+        (None, SweepAxis::Beta) => args::check_size("--amax", a.amax, 1.0, min)?,
+        (None, _) => args::check_size("--amax", a.amax, 1.0, fixed)?,
+    }
     check_out_dir(&a.out)?;
     if a.solver {
         return solver_map::run(&a, grid);

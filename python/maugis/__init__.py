@@ -30,10 +30,13 @@ The model (results carry the fields of the ``maugis`` command's JSON)::
     simulate(lam, alpha, beta, ...) one cycle of the numerical solver (maugis simulate:
                                     profile=, half_width=, periodic=)
 
-Bad input raises ``ValueError`` with the library's message. See docs/python.md.
+Bad input raises ``ValueError`` with the library's message. A certified call
+(``prec=``) runs within ``budget=`` seconds (default 30): past it, or when its cost
+estimate passes it, it raises ``TimeLimitError`` (a ``ValueError``) at once.
+See docs/python.md.
 """
 
-from ._maugis import MAX_PREC, PARALLEL_MIN_LEN, fallback_counts
+from ._maugis import MAX_PREC, PARALLEL_MIN_LEN, TimeLimitError, fallback_counts
 from ._model import (
     DEFAULT_DATUM,
     FIG4C_ALPHA,
@@ -57,6 +60,7 @@ __version__ = "0.1.0"
 __all__ = [
     "MAX_PREC",
     "PARALLEL_MIN_LEN",
+    "TimeLimitError",
     "DEFAULT_DATUM",
     "FIG4C_ALPHA",
     "FIG4C_BETA",

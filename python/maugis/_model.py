@@ -302,13 +302,28 @@ def profile(lam, alpha, beta, abar, *, waves=None, x=None, points=600):
     return out
 
 
-def sweep(lambda_min, lambda_max, lambda_n, axis, min, max, n, fixed, *, amax=6.0, points=600):
+def sweep(lambda_min, lambda_max, lambda_n, axis, min, max, n, fixed=None, *, waves=None, amax=6.0, points=600):
     """A ``maugis sweep``: ``lambda_n`` log-spaced ``lambda`` times ``n`` linearly spaced
     values of ``axis`` (``"alpha"``, ``"beta"`` or ``"johnson"``), the other roughness
     parameter held at ``fixed``; each grid point's regime, dissipation and pull-off.
 
+    With ``axis="amplitude"`` the second axis is the scale ``s`` of every amplitude of
+    the profile ``waves`` (a list of ``(amplitude, wavelength)`` pairs; ``fixed`` is not
+    used): grid point ``(lambda, s)`` is the profile with waves ``(s alpha_j, beta_j)``.
+
     Returns the library's ``Sweep`` as a :class:`Record` (its point list as a :class:`Table`).
     """
+    axis = str(axis)
+    if axis == "amplitude":
+        if waves is None:
+            raise TypeError('axis="amplitude" scales a profile: give waves=[(amplitude, wavelength), ...]')
+        _, _, pairs = _roughness(None, None, waves)
+        fixed = 0.0 if fixed is None else fixed
+    else:
+        if waves is not None:
+            raise ValueError(f'waves are swept on axis="amplitude", not "{axis}"')
+        if fixed is None:
+            raise TypeError(f'axis="{axis}" needs fixed (the other parameter of the one wave)')
     grid = {
         "lambda_min": _real_scalar("lambda_min", lambda_min),
         "lambda_max": _real_scalar("lambda_max", lambda_max),
@@ -321,4 +336,6 @@ def sweep(lambda_min, lambda_max, lambda_n, axis, min, max, n, fixed, *, amax=6.
         "amax": _real_scalar("amax", amax),
         "points": _count("points", points),
     }
+    if axis == "amplitude":
+        grid["profile"] = [{"alpha": a, "beta": b} for a, b in pairs]
     return _convert(json.loads(_ext.sweep_json(json.dumps(grid))))

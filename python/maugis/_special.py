@@ -124,7 +124,16 @@ def _mp_options(prec, output):
     return prec
 
 
-def _eval_mp(function, names, values, prec, output, digits):
+def _budget(budget):
+    """Checks ``budget=`` (seconds, ``None`` for the library default of 30 s)."""
+    if budget is None:
+        return None
+    if isinstance(budget, bool) or not isinstance(budget, (int, float, np.integer, np.floating)):
+        raise TypeError(f"budget must be a number of seconds (got {budget!r})")
+    return float(budget)
+
+
+def _eval_mp(function, names, values, prec, output, digits, budget=None):
     prec = _mp_options(prec, output)
     arrays = [np.asarray(v, dtype=object) for v in values]
     b = np.broadcast(*arrays)
@@ -134,11 +143,11 @@ def _eval_mp(function, names, values, prec, output, digits):
     if output == "str":
         if digits is None:
             digits = int(prec * _LOG10_2) + 2
-        balls = _ext.eval_mp(function, columns, prec, int(digits))
+        balls = _ext.eval_mp(function, columns, prec, int(digits), _budget(budget))
         mids = [m for m, _ in balls]
         rads = [r for _, r in balls]
     else:
-        balls = _ext.eval_mp(function, columns, prec, None)
+        balls = _ext.eval_mp(function, columns, prec, None, _budget(budget))
         mids = [_to_mpf(m) for m, _ in balls]
         rads = [_to_mpf(r) for _, r in balls]
     if shape == ():
@@ -150,7 +159,7 @@ def _eval_mp(function, names, values, prec, output, digits):
     return mid.reshape(shape), rad.reshape(shape)
 
 
-def _call(function, values, bounded, prec, output, digits):
+def _call(function, values, bounded, prec, output, digits, budget):
     """Runs the library's registry function `function` (its parameter names and
     kinds come from the registry, ``_ext.signature``) over broadcast arguments."""
     signature = _ext.signature(function)
@@ -165,7 +174,9 @@ def _call(function, values, bounded, prec, output, digits):
     if prec is not None:
         if bounded:
             raise ValueError("choose one of bounded=True (float64 with an error bound) and prec= (certified balls)")
-        return _eval_mp(function, names, values, prec, output, digits)
+        return _eval_mp(function, names, values, prec, output, digits, budget)
+    if budget is not None:
+        raise ValueError("budget= is the time budget of a certified call: give it with prec=")
     conv = [(_as_int if k == "int" else _as_real)(n, v) for (n, k), v in zip(signature, values)]
     flat, shape = _flat(conv)
     return _shaped(_ext.eval_f64(function, flat, bool(bounded)), shape)
@@ -174,27 +185,27 @@ def _call(function, values, bounded, prec, output, digits):
 # ---------------------------------------------------------------- the functions
 
 
-def bessel_j(n, x, *, bounded=False, prec=None, output="mpf", digits=None):
+def bessel_j(n, x, *, bounded=False, prec=None, output="mpf", digits=None, budget=None):
     """Bessel function of the first kind ``J_n(x)``, integer order ``n``, real ``x``.
 
     float64: within 2 ulp. Domain: ``|n| <= 1e6``; see ``docs/special-functions.md``.
     """
-    return _call("bessel_j", (n, x), bounded, prec, output, digits)
+    return _call("bessel_j", (n, x), bounded, prec, output, digits, budget)
 
 
-def hyp1f2(a, b1, b2, z, *, bounded=False, prec=None, output="mpf", digits=None):
+def hyp1f2(a, b1, b2, z, *, bounded=False, prec=None, output="mpf", digits=None, budget=None):
     """Hypergeometric function ``1F2(a; b1, b2; z)``, real parameters and argument (entire in z)."""
-    return _call("hyp1f2", (a, b1, b2, z), bounded, prec, output, digits)
+    return _call("hyp1f2", (a, b1, b2, z), bounded, prec, output, digits, budget)
 
 
-def hyp2f1(a, b, c, z, *, bounded=False, prec=None, output="mpf", digits=None):
+def hyp2f1(a, b, c, z, *, bounded=False, prec=None, output="mpf", digits=None, budget=None):
     """Gauss hypergeometric function ``2F1(a, b; c; z)``, real, ``z <= 1`` (principal branch)."""
-    return _call("hyp2f1", (a, b, c, z), bounded, prec, output, digits)
+    return _call("hyp2f1", (a, b, c, z), bounded, prec, output, digits, budget)
 
 
-def meijer_g_k(k, y, *, bounded=False, prec=None, output="mpf", digits=None):
+def meijer_g_k(k, y, *, bounded=False, prec=None, output="mpf", digits=None, budget=None):
     """The Eq. 12 Meijer-G factor ``Re G^{2,2}_{3,3}(-y | 0, 1/2-k, 1; 0, 0, -k-1)``, ``0 < y <= 1``."""
-    return _call("meijer_g_k", (k, y), bounded, prec, output, digits)
+    return _call("meijer_g_k", (k, y), bounded, prec, output, digits, budget)
 
 
 def hyp1f2_model_family(kmax, z):
@@ -220,14 +231,14 @@ def _family_order(kmax):
     return int(kmax)
 
 
-def u_wave(a, zeta, amp, x, *, bounded=False, prec=None, output="mpf", digits=None):
+def u_wave(a, zeta, amp, x, *, bounded=False, prec=None, output="mpf", digits=None, budget=None):
     """Wave displacement ``u_w(x)`` of the seed paper's Eq. 12 (Bessel form), ``x >= a``.
 
     ``a``: contact half-width, ``zeta``: wavelength, ``amp``: wave amplitude, ``x``: position.
     """
-    return _call("u_wave", (a, zeta, amp, x), bounded, prec, output, digits)
+    return _call("u_wave", (a, zeta, amp, x), bounded, prec, output, digits, budget)
 
 
-def du_wave(a, zeta, amp, x, *, bounded=False, prec=None, output="mpf", digits=None):
+def du_wave(a, zeta, amp, x, *, bounded=False, prec=None, output="mpf", digits=None, budget=None):
     """Gradient ``du_w/dx`` of the wave displacement (the seed paper's Eq. 11b), ``x >= a``."""
-    return _call("du_wave", (a, zeta, amp, x), bounded, prec, output, digits)
+    return _call("du_wave", (a, zeta, amp, x), bounded, prec, output, digits, budget)

@@ -38,7 +38,7 @@ use maugis::quad::expr::{abs_tol_text, integrate_range, shortfall, significant_i
 use maugis::rug::{Float, Integer, Rational};
 use maugis::special::hyp1f2::hyp1f2_model_family_f64;
 use maugis::special::meijer_g::meijer_g_k_family_f64;
-use maugis::{Ball, Bounded, Error};
+use maugis::{Ball, Bounded, Budget, Error};
 
 /// Arrays shorter than this are evaluated on the calling thread: below it,
 /// handing chunks to rayon costs more than it saves for the cheapest
@@ -71,12 +71,27 @@ where
 
 /// Turns a failed element into a `ValueError`: `"bessel_j(n=3, x=nan): <library message>"`.
 fn element_error(e: ElementError, describe: impl Fn(usize) -> String) -> PyErr {
-    PyValueError::new_err(format!("{}: {}", describe(e.index), e.error))
+    let msg = format!("{}: {}", describe(e.index), e.error);
+    if e.error.is_time_limit() {
+        return TimeLimitError::new_err(msg);
+    }
+    PyValueError::new_err(msg)
 }
 
 fn lib_error(e: Error) -> PyErr {
+    if e.is_time_limit() {
+        return TimeLimitError::new_err(e.to_string());
+    }
     PyValueError::new_err(e.to_string())
 }
+
+pyo3::create_exception!(
+    _maugis,
+    TimeLimitError,
+    PyValueError,
+    "A certified call refused for time: its cost estimate, or its loops, passed the call's budget \
+     (`budget=`, default 30 s). The input is fine; a larger budget or a lower precision may answer it."
+);
 
 /// Flat input slices; Python guarantees contiguity and equal lengths.
 fn slice<'a, T: numpy::Element>(a: &'a PyReadonlyArray1<'_, T>, name: &str) -> PyResult<&'a [T]> {
@@ -366,7 +381,7 @@ impl std::fmt::Display for MpArg {
 /// `prec` bits (balls that contain the numbers given, or rounded inputs, as
 /// [`maugis::registry::MpInputs`] says for `f`); answers that are not certified
 /// balls (estimates) are refused.
-fn mp_one(f: &Function, args: &[MpArg], prec: u32) -> maugis::Result<Ball> {
+fn mp_one(f: &Function, args: &[MpArg], prec: u32, budget: Budget) -> maugis::Result<Ball> {
     let values = args
         .iter()
         .enumerate()
@@ -378,7 +393,7 @@ fn mp_one(f: &Function, args: &[MpArg], prec: u32) -> maugis::Result<Ball> {
             })
         })
         .collect::<maugis::Result<Vec<_>>>()?;
-    match f.eval_mp(&values, prec)? {
+    match f.eval_mp_with_budget(&values, prec, budget)? {
         Answer::Ball(b) => Ok(b),
         Answer::SeriesBall { mut value, trunc } => {
             value.add_error(&trunc);
@@ -430,10 +445,20 @@ impl<'py> IntoPyObject<'py> for MpOut {
 
 /// Certified balls of `function` over argument columns (one list per argument,
 /// all of one length), at `prec` bits. `digits = None` returns exact binary
-/// pairs, `Some(d)` decimal strings with `d` significant digits.
+/// pairs, `Some(d)` decimal strings with `d` significant digits. `budget` is
+/// each element's time budget in seconds ([`maugis::budget`]; `None`: the
+/// default, 30 s); a refusal for time raises `TimeLimitError`.
 #[pyfunction]
-#[pyo3(signature = (function, columns, prec, digits=None))]
-fn eval_mp<'py>(py: Python<'py>, function: &str, columns: Vec<Vec<MpArg>>, prec: u32, digits: Option<usize>) -> PyResult<Bound<'py, PyList>> {
+#[pyo3(signature = (function, columns, prec, digits=None, budget=None))]
+fn eval_mp<'py>(
+    py: Python<'py>,
+    function: &str,
+    columns: Vec<Vec<MpArg>>,
+    prec: u32,
+    digits: Option<usize>,
+    budget: Option<f64>,
+) -> PyResult<Bound<'py, PyList>> {
+    let budget = budget.map_or(Ok(Budget::DEFAULT), Budget::from_secs_f64).map_err(lib_error)?;
     let f = registry::function(function).map_err(lib_error)?;
     check_columns(f, columns.len())?;
     let names: Vec<String> = (0..columns.len()).map(|i| name_at(f, i)).collect();
@@ -446,7 +471,7 @@ fn eval_mp<'py>(py: Python<'py>, function: &str, columns: Vec<Vec<MpArg>>, prec:
             (0..len)
                 .into_par_iter()
                 .map(|i| {
-                    let ball = mp_one(f, &row(i), prec).map_err(|error| ElementError { index: i, error })?;
+                    let ball = mp_one(f, &row(i), prec, budget).map_err(|error| ElementError { index: i, error })?;
                     Ok(ball_out(&ball, digits))
                 })
                 .collect::<Result<Vec<MpOut>, ElementError>>()
@@ -740,6 +765,7 @@ fn _maugis(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(eval_f64, m)?)?;
     m.add_function(wrap_pyfunction!(family_f64, m)?)?;
     m.add_function(wrap_pyfunction!(eval_mp, m)?)?;
+    m.add("TimeLimitError", m.py().get_type::<TimeLimitError>())?;
     m.add_function(wrap_pyfunction!(integrate_mp, m)?)?;
     m.add_function(wrap_pyfunction!(curve_summary_json, m)?)?;
     m.add_function(wrap_pyfunction!(states_json, m)?)?;

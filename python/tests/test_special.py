@@ -312,3 +312,20 @@ def test_fallback_counts_snapshot_every_route_and_count_2f1():
     after = maugis.fallback_counts()
     assert after["hyp2f1"] >= before["hyp2f1"] + 1
     assert all(after[k] >= before[k] for k in keys)
+
+
+def test_budget_refuses_at_once_and_never_changes_an_answer():
+    # 1F2(1e12; 1.5, 2.5; 100): about 4.6e4 series terms, estimated past 1 ms
+    args = ("1e12", 1.5, 2.5, 100)
+    with pytest.raises(maugis.TimeLimitError, match="would take about"):
+        maugis.hyp1f2(*args, prec=64, budget=0.001)
+    assert issubclass(maugis.TimeLimitError, ValueError)
+    default = maugis.hyp1f2(*args, prec=64)
+    generous = maugis.hyp1f2(*args, prec=64, budget=600)
+    assert default == generous
+    with pytest.raises(ValueError, match="budget"):
+        maugis.hyp1f2(*args, prec=64, budget=0)
+    with pytest.raises(ValueError, match="prec="):
+        maugis.hyp1f2(0.5, 1, 1.5, -2, budget=1)
+    with pytest.raises(TypeError):
+        maugis.hyp1f2(*args, prec=64, budget="1")

@@ -113,3 +113,22 @@ def test_strip_ratio_and_load_of_many_waves():
         maugis.strip_ratio(3, None, None, 2.2, waves=[(0.01, 1.0)] * 65)
     with pytest.raises(TypeError, match="pair"):
         maugis.strip_ratio(3, None, None, 2.2, waves=[(0.3, 1.0, 2.0)])
+
+
+def test_sweep_scales_the_amplitudes_of_a_profile():
+    # one wave of amplitude 1 on the amplitude axis is the alpha axis, point for point
+    one = maugis.sweep(1.0, 6.0, 2, "amplitude", 0.1, 0.35, 2, waves=[(1.0, 1.125)], amax=2.0, points=30)
+    ref = maugis.sweep(1.0, 6.0, 2, "alpha", 0.1, 0.35, 2, 1.125, amax=2.0, points=30)
+    assert list(one["points"]["dissipation"]) == list(ref["points"]["dissipation"])
+    assert list(one["points"]["alpha"]) == list(ref["points"]["alpha"])
+    # two waves: the grid records the profile; the points carry the first wave, scaled
+    two = maugis.sweep(1.0, 6.0, 2, "amplitude", 0.0, 1.0, 2, waves=WAVES, amax=2.0, points=30)
+    profile = two["grid"]["profile"]
+    assert list(zip(profile["alpha"], profile["beta"])) == [tuple(map(float, w)) for w in WAVES]
+    assert list(two["points"]["alpha"]) == [0.0, WAVES[0][0], 0.0, WAVES[0][0]]
+    with pytest.raises(TypeError, match="waves"):
+        maugis.sweep(1.0, 6.0, 2, "amplitude", 0.0, 1.0, 2)
+    with pytest.raises(ValueError, match="amplitude"):
+        maugis.sweep(1.0, 6.0, 2, "alpha", 0.0, 1.0, 2, 1.125, waves=WAVES)
+    with pytest.raises(ValueError, match="wave 2"):
+        maugis.sweep(1.0, 6.0, 2, "amplitude", 0.0, 1.0, 2, waves=[(0.3, 1.0), (0.1, 0.0)])

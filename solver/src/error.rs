@@ -70,6 +70,12 @@ pub enum SolverError {
         /// Approach steps done.
         steps: usize,
     },
+    /// A solver map ([`crate::map`]) over a profile of many waves: the map runs one
+    /// wave's cycles (`maugis sweep` maps many waves with the model only).
+    MapManyWaves {
+        /// The number of waves of the grid's base profile.
+        waves: usize,
+    },
     /// A shard `shard/of` that does not exist (1-based, `1 <= shard <= of`).
     BadShard {
         /// The shard asked for.
@@ -267,6 +273,10 @@ impl fmt::Display for SolverError {
                 f,
                 "the contact half-width reached only {reached:.4} in {steps} approach steps, short of amax = {amax}; \
                  lower amax or give more steps"
+            ),
+            SolverError::MapManyWaves { waves } => write!(
+                f,
+                "the solver map runs one wave's cycles, but the grid's profile has {waves} waves: map it with the model (without --solver), or run maugis simulate per profile"
             ),
             SolverError::BadShard { shard, of } => write!(f, "shard must be s/n with 1 <= s <= n (got {shard}/{of})"),
             SolverError::Merge { fault } => write!(f, "cannot merge the shards: {fault}"),

@@ -307,9 +307,13 @@ fn key(lambda: f64, alpha: f64, beta: f64) -> CycleKey {
 
 /// The cycles a shard runs: each point's and each of its rows' smooth
 /// cylinder, without repeats. Their number is what the progress callback of
-/// [`run_map`] counts to.
+/// [`run_map`] counts to. A grid whose base profile has more than one wave (the
+/// `amplitude` axis) is [`SolverError::MapManyWaves`]: the cycles are one wave's.
 pub fn map_cycles(grid: &SweepGrid, shard: Option<(usize, usize)>) -> Result<Vec<(f64, f64, f64)>> {
     grid.check()?;
+    if let Some(p) = grid.profile.filter(|p| p.len() > 1) {
+        return Err(SolverError::MapManyWaves { waves: p.len() });
+    }
     let mut cycles: Vec<(f64, f64, f64)> = Vec::new();
     let mut seen = std::collections::HashSet::new();
     for k in shard_indices(grid, shard)? {

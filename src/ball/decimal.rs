@@ -244,13 +244,28 @@ where
 /// vanish at the decimals (for example `u_w(a) = A (1 - cos(2 pi a/zeta))`,
 /// zero when `a/zeta` is an integer): the answer is accepted once
 /// `rad <= 2^-prec max(|mid|, floor)`.
-pub fn eval_at_decimals_with_floor<F>(args: &[Decimal], prec: u32, floor: Option<&Float>, mut f: F) -> Result<Ball>
+pub fn eval_at_decimals_with_floor<F>(args: &[Decimal], prec: u32, floor: Option<&Float>, f: F) -> Result<Ball>
+where
+    F: FnMut(&[Ball]) -> Result<Ball>,
+{
+    crate::budget::ensure(|| eval_at_decimals_loop(args, prec, floor, f))
+}
+
+/// The loop of [`eval_at_decimals_with_floor`], under the call's time budget.
+fn eval_at_decimals_loop<F>(args: &[Decimal], prec: u32, floor: Option<&Float>, mut f: F) -> Result<Ball>
 where
     F: FnMut(&[Ball]) -> Result<Ball>,
 {
     let all_exact = args.iter().all(Decimal::is_binary_fraction);
     let mut input_prec = prec.max(53) + 64;
+    let mut round_start = std::time::Instant::now();
     loop {
+        if input_prec > prec.max(53) + 64 {
+            // a retry: its time is at least about the last round's
+            let reached = crate::error::Reached::InputPrecision { bits: input_prec };
+            crate::budget::check_elapsed("eval_at_decimals (retries at tighter input balls)", crate::budget::since(round_start), reached)?;
+            round_start = std::time::Instant::now();
+        }
         let balls: Vec<Ball> = args.iter().map(|d| d.to_ball(input_prec)).collect();
         let out = match f(&balls) {
             Ok(out) => out,

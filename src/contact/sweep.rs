@@ -3,7 +3,11 @@
 //! A [`SweepGrid`] spans `lambda` on a logarithmic grid and a second parameter
 //! on a linear grid: the amplitude `alpha`, the wavelength `beta`, or the
 //! Johnson parameter `chi = sqrt(beta/alpha^2)` at fixed `beta`
-//! (`alpha = sqrt(beta)/chi`). Each grid point is one [`load_area_curve`] run,
+//! (`alpha = sqrt(beta)/chi`), or the `amplitude` scale `s` of a profile of any
+//! number of waves (docs/model.md "Many waves"): every amplitude `alpha_j` of the
+//! grid's base profile times `s`, the wavelengths fixed, so that the profile keeps
+//! its shape (for one wave `(alpha_1, beta)` this is the `alpha` axis at
+//! `alpha = s alpha_1`). Each grid point is one [`load_area_curve`] run,
 //! summarised by [`SweepPoint`]: the instabilities the loading path meets, the
 //! dissipation under load control (split valid/invalid), pull-off, the valid
 //! fraction of the states, and a [`Regime`]:
@@ -24,6 +28,7 @@ use rayon::prelude::*;
 use crate::contact::curve::{load_area_curve, CurveOptions};
 use crate::contact::model::Params;
 use crate::contact::paths::JumpDirection;
+use crate::contact::profile::WavyProfile;
 use crate::error::{finite, Error, Result, SweepError};
 
 /// The second axis of a sweep.
@@ -37,6 +42,9 @@ pub enum SweepAxis {
     Beta,
     /// Johnson parameter `sqrt(beta/alpha^2)` (at fixed `beta`).
     Johnson,
+    /// The scale `s` of every amplitude of the grid's base profile
+    /// ([`SweepGrid::profile`]): wave `j` is `(s alpha_j, beta_j)`.
+    Amplitude,
 }
 
 impl SweepAxis {
@@ -46,6 +54,7 @@ impl SweepAxis {
             SweepAxis::Alpha => "alpha",
             SweepAxis::Beta => "beta",
             SweepAxis::Johnson => "johnson",
+            SweepAxis::Amplitude => "amplitude",
         }
     }
 }
@@ -63,7 +72,11 @@ pub enum Regime {
     SmoothLike,
 }
 
-/// A sweep's grid.
+/// A sweep's grid. The one-wave axes (`alpha`, `beta`, `johnson`) build their wave
+/// from `fixed` and the axis' value and carry no `profile`; the `amplitude` axis scales
+/// the base `profile` (which it must carry) and ignores `fixed`. In JSON the
+/// `profile` (a list of `{"alpha", "beta"}` waves) is written only when present,
+/// so sweeps written before it existed read back unchanged.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SweepGrid {
@@ -81,8 +94,12 @@ pub struct SweepGrid {
     pub max: f64,
     /// Number of values (linearly spaced).
     pub n: usize,
-    /// The parameter held fixed: `beta` for the `alpha` and Johnson axes, `alpha` for the `beta` axis.
+    /// The parameter held fixed: `beta` for the `alpha` and Johnson axes, `alpha` for
+    /// the `beta` axis (unused by the `amplitude` axis).
     pub fixed: f64,
+    /// The base profile the `amplitude` axis scales (`None` for the one-wave axes).
+    #[cfg_attr(feature = "serde", serde(default, skip_serializing_if = "Option::is_none"))]
+    pub profile: Option<WavyProfile>,
     /// The curve grid of every point.
     pub amax: f64,
     /// Grid points per curve.
@@ -99,9 +116,10 @@ pub struct SweepPoint {
     pub lambda: f64,
     /// The second axis' value.
     pub value: f64,
-    /// Amplitude.
+    /// Amplitude (on the `amplitude` axis: the first wave's, `s alpha_1`; the whole
+    /// profile is [`SweepGrid::profile_at`]).
     pub alpha: f64,
-    /// Wavelength.
+    /// Wavelength (on the `amplitude` axis: the first wave's, `beta_1`).
     pub beta: f64,
     /// Loading jumps from turning points (the instabilities the loading path meets).
     pub instabilities: usize,
@@ -153,12 +171,17 @@ impl SweepGrid {
         if self.max < self.min {
             return Err(Error::Sweep(SweepError::AxisOrder { min: self.min, max: self.max }));
         }
-        let lo_ok = match self.axis {
-            SweepAxis::Alpha => self.min >= 0.0,
-            SweepAxis::Beta | SweepAxis::Johnson => self.min > 0.0,
-        };
+        let zero_allowed = matches!(self.axis, SweepAxis::Alpha | SweepAxis::Amplitude);
+        let lo_ok = if zero_allowed { self.min >= 0.0 } else { self.min > 0.0 };
         if !lo_ok {
-            return Err(Error::Sweep(SweepError::AxisStart { axis: self.axis.name(), min: self.min, zero_allowed: self.axis == SweepAxis::Alpha }));
+            return Err(Error::Sweep(SweepError::AxisStart { axis: self.axis.name(), min: self.min, zero_allowed }));
+        }
+        match (self.axis, &self.profile) {
+            (SweepAxis::Amplitude, None) => return Err(Error::Sweep(SweepError::NoBaseProfile)),
+            (SweepAxis::Amplitude, Some(p)) if p.is_empty() => return Err(Error::Sweep(SweepError::NoBaseProfile)),
+            (SweepAxis::Amplitude, Some(_)) => {}
+            (axis, Some(p)) => return Err(Error::Sweep(SweepError::ProfileOnOneWaveAxis { axis: axis.name(), waves: p.len() })),
+            (_, None) => {}
         }
         // every combination must be a valid parameter set
         for i in [0, self.lambda_n - 1] {
@@ -186,15 +209,32 @@ impl SweepGrid {
         self.min + (self.max - self.min) * j as f64 / (self.n - 1) as f64
     }
 
-    /// The parameters of grid point `(i, j)`.
-    pub fn params(&self, i: usize, j: usize) -> Result<Params> {
+    /// The profile at the second axis' `j`-th value: the one wave of the one-wave axes,
+    /// or on the `amplitude` axis the base profile with every `alpha_j` times the value.
+    pub fn profile_at(&self, j: usize) -> Result<WavyProfile> {
         let v = self.value(j);
         let (alpha, beta) = match self.axis {
             SweepAxis::Alpha => (v, self.fixed),
             SweepAxis::Beta => (self.fixed, v),
             SweepAxis::Johnson => (self.fixed.sqrt() / v, self.fixed),
+            SweepAxis::Amplitude => {
+                let base = self.profile.ok_or(Error::Sweep(SweepError::NoBaseProfile))?;
+                let pairs: Vec<(f64, f64)> = base.waves().iter().map(|w| (v * w.alpha(), w.beta())).collect();
+                return WavyProfile::from_pairs(&pairs);
+            }
         };
-        Params::new(self.lambda(i), alpha, beta)
+        WavyProfile::one_wave(alpha, beta)
+    }
+
+    /// The parameters of grid point `(i, j)`.
+    pub fn params(&self, i: usize, j: usize) -> Result<Params> {
+        let v = self.value(j);
+        match self.axis {
+            SweepAxis::Alpha => Params::new(self.lambda(i), v, self.fixed),
+            SweepAxis::Beta => Params::new(self.lambda(i), self.fixed, v),
+            SweepAxis::Johnson => Params::new(self.lambda(i), self.fixed.sqrt() / v, self.fixed),
+            SweepAxis::Amplitude => Params::with_profile(self.lambda(i), self.profile_at(j)?),
+        }
     }
 
     /// Number of grid points.
@@ -275,6 +315,12 @@ pub fn merge(parts: &[Sweep]) -> Result<Sweep> {
     let grid = first.grid;
     let mut slots: Vec<Option<SweepPoint>> = vec![None; grid.len()];
     for p in parts {
+        if p.grid.profile != grid.profile {
+            return Err(Error::Sweep(SweepError::DifferentProfiles {
+                first: grid.profile.map_or_else(|| "one wave".to_string(), |w| w.describe()),
+                other: p.grid.profile.map_or_else(|| "one wave".to_string(), |w| w.describe()),
+            }));
+        }
         if p.grid != grid {
             return Err(Error::Sweep(SweepError::DifferentGrids));
         }
@@ -298,7 +344,7 @@ mod tests {
     use super::*;
 
     fn grid() -> SweepGrid {
-        SweepGrid { lambda_min: 1.0, lambda_max: 6.0, lambda_n: 2, axis: SweepAxis::Alpha, min: 0.0, max: 0.35, n: 2, fixed: 1.125, amax: 6.0, points: 40 }
+        SweepGrid { lambda_min: 1.0, lambda_max: 6.0, lambda_n: 2, axis: SweepAxis::Alpha, min: 0.0, max: 0.35, n: 2, fixed: 1.125, profile: None, amax: 6.0, points: 40 }
     }
 
     #[test]

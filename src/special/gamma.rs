@@ -248,14 +248,35 @@ pub(crate) fn gamma_of_ball(x: &Ball, wp: u32) -> Result<Ball> {
     if crate::special::pfq::contains_pole(&hull, None).is_some() {
         (lo_psi, hi_psi) = (lo, hi);
     }
-    let psi_lo = Ball::from_float(&lo_psi, lo_psi.prec()).digamma()?;
-    let psi_hi = Ball::from_float(&hi_psi, hi_psi.prec()).digamma()?;
-    let m = psi_lo.abs_upper_mag().max(psi_hi.abs_upper_mag());
+    let m = psi_abs_upper(&lo_psi)?.max(psi_abs_upper(&hi_psi)?);
     let mut e = m.mul(x.rad_mag()).to_float();
     e.exp_m1_round(Round::Up);
     let grow = g.abs_upper_mag().mul(crate::ball::Mag::from_float_up(&e));
     g.add_error_mag(grow);
     Ok(g)
+}
+
+/// An upper bound of `|psi(t)|` at an exact `t` that is not a pole. Within
+/// `d <= 2^-10` of a pole `-n` (`n >= 0`) it is `1/d + ln(n + 2) + 1`, from the
+/// reflection `psi(t) = psi(1 - t) - pi cot(pi t)` [DLMF 5.5.4] with
+/// `|pi cot(pi t)| = |pi cot(pi d)| <= 1/d` and `-gamma <= psi(1 - t) <= ln(n + 2)`
+/// (`1 - t` lies within `2^-10` of `n + 1`; psi is increasing, `psi(1) =
+/// -0.5772..`, `psi(y) < ln y`). MPFR's digamma works there at about `-log2 d`
+/// extra bits with Bernoulli numbers: 0.7 s at `t = -10^4 + 4.3e-14` (through
+/// 2F1's large-parameter route, issue 37's scan); elsewhere it is fast.
+fn psi_abs_upper(t: &Float) -> Result<crate::ball::Mag> {
+    use crate::ball::Mag;
+    if *t < 0.5 {
+        let n = Float::with_val(t.prec(), t.round_ref());
+        let d = exact_sub(t, &n);
+        if !d.is_zero() && d.get_exp().is_some_and(|e| e <= -10) {
+            let abs = Float::with_val(d.prec(), d.abs_ref());
+            let (inv, _) = Float::with_val_round(64, abs.recip_ref(), Round::Up);
+            let log_term = ((-n.to_f64()).max(0.0) + 2.0).ln().next_up() + 1.0;
+            return Ok(Mag::from_float_up(&inv).add(Mag::from_f64(log_term.next_up())));
+        }
+    }
+    Ok(Ball::from_float(t, t.prec()).digamma()?.abs_upper_mag())
 }
 
 /// [`gamma_ball`] without the rounding of long arguments: `Gamma(x)` at
@@ -284,6 +305,12 @@ fn gamma_exact(x: &Float, wp: u32) -> Result<Ball> {
         // x + K exact may be long (x = 10^-300 + 1): through gamma_ball, which rounds it
         let shifted = exact_add(x, &int_float(k));
         return gamma_ball(&shifted, wp)?.div(&pochhammer(x, k, wp));
+    }
+    // Gamma(x) at x >= 2^61 exceeds every exponent range (ln Gamma(x) > x (ln x - 1)
+    // > 2^66, MPFR's largest exponent is below 2^63): the overflow MPFR reports
+    // after working at about log2(x) bits (0.17 s at x = 2.1e31839), at once
+    if x.is_sign_positive() && x.get_exp().is_some_and(|e| e > 61) {
+        return Err(Error::Overflow { what: "gamma".into() });
     }
     xball(x, wp).gamma()
 }

@@ -84,7 +84,7 @@ use rug::ops::{AddAssignRound, AssignRound};
 use rug::Float;
 
 use crate::ball::{Ball, Bounded};
-use crate::error::{Error, Result};
+use crate::error::{Error, Reached, Result};
 use crate::MAX_WORKING_PREC;
 
 /// Checks the relative tolerance of an `f_native_bounded` call: positive and finite.
@@ -151,22 +151,35 @@ where
     if !(2..=max_wp).contains(&prec) {
         return Err(Error::Precision { requested: prec as u64 });
     }
-    let mut guard = guard.max(8);
-    loop {
-        let wp = prec.saturating_add(guard).min(max_wp);
-        let b = eval(wp)?;
-        if b.meets_rel(prec) || floor.is_some_and(|f| !f.is_zero() && b.meets_abs(prec, f)) {
-            return Ok(b);
+    crate::budget::ensure(|| {
+        let mut guard = guard.max(8);
+        loop {
+            let wp = prec.saturating_add(guard).min(max_wp);
+            let t = std::time::Instant::now();
+            let b = eval(wp)?;
+            if b.meets_rel(prec) || floor.is_some_and(|f| !f.is_zero() && b.meets_abs(prec, f)) {
+                return Ok(b);
+            }
+            if wp >= max_wp {
+                return Err(Error::PrecisionExhausted { function, working_prec: wp });
+            }
+            // Bits achieved vs. bits wanted: raise by the shortfall plus margin.
+            let achieved = b.rel_accuracy_bits();
+            let shortfall = if achieved.is_finite() { (prec as f64 - achieved).max(0.0) } else { wp as f64 };
+            let next = (guard as f64 + shortfall + 16.0).max(2.0 * guard as f64);
+            guard = next.min((max_wp - prec) as f64) as u32;
+            check_next_round(function, t, wp, prec.saturating_add(guard).min(max_wp), achieved)?;
         }
-        if wp >= max_wp {
-            return Err(Error::PrecisionExhausted { function, working_prec: wp });
-        }
-        // Bits achieved vs. bits wanted: raise by the shortfall plus margin.
-        let achieved = b.rel_accuracy_bits();
-        let shortfall = if achieved.is_finite() { (prec as f64 - achieved).max(0.0) } else { wp as f64 };
-        let next = (guard as f64 + shortfall + 16.0).max(2.0 * guard as f64);
-        guard = next.min((max_wp - prec) as f64) as u32;
-    }
+    })
+}
+
+/// Between two rounds of a Ziv loop: [`Error::BudgetSpent`] when the time spent
+/// plus the next round's estimate (the last round's time scaled linearly with
+/// the working precision, a low estimate for MPFR's superlinear costs) passes
+/// the call's budget ([`crate::budget`]).
+fn check_next_round(function: &'static str, round_start: std::time::Instant, wp: u32, next_wp: u32, achieved: f64) -> Result<()> {
+    let next_seconds = crate::budget::since(round_start) * f64::from(next_wp) / f64::from(wp.max(1));
+    crate::budget::check_elapsed(function, next_seconds, Reached::WorkingPrecision { bits: wp, accuracy_bits: achieved })
 }
 
 /// [`ziv_with_floor`] for inexact (ball) inputs, where raising the working
@@ -186,23 +199,27 @@ where
     if !(2..=MAX_WORKING_PREC).contains(&prec) {
         return Err(Error::Precision { requested: prec as u64 });
     }
-    let mut guard = guard.max(8);
-    let mut previous: Option<Float> = None;
-    loop {
-        let wp = prec.saturating_add(guard).min(MAX_WORKING_PREC);
-        let b = eval(wp)?;
-        let meets = b.meets_rel(prec) || floor.is_some_and(|f| !f.is_zero() && b.meets_abs(prec, f));
-        let rad = b.rad();
-        let stalled = previous.as_ref().is_some_and(|p| rad.is_finite() && rad > Float::with_val(p.prec(), p / 2u32));
-        if meets || stalled || wp >= MAX_WORKING_PREC {
-            return Ok(b);
+    crate::budget::ensure(|| {
+        let mut guard = guard.max(8);
+        let mut previous: Option<Float> = None;
+        loop {
+            let wp = prec.saturating_add(guard).min(MAX_WORKING_PREC);
+            let t = std::time::Instant::now();
+            let b = eval(wp)?;
+            let meets = b.meets_rel(prec) || floor.is_some_and(|f| !f.is_zero() && b.meets_abs(prec, f));
+            let rad = b.rad();
+            let stalled = previous.as_ref().is_some_and(|p| rad.is_finite() && rad > Float::with_val(p.prec(), p / 2u32));
+            if meets || stalled || wp >= MAX_WORKING_PREC {
+                return Ok(b);
+            }
+            previous = Some(rad);
+            let achieved = b.rel_accuracy_bits();
+            let shortfall = if achieved.is_finite() { (prec as f64 - achieved).max(0.0) } else { wp as f64 };
+            let next = (guard as f64 + shortfall + 16.0).max(2.0 * guard as f64);
+            guard = next.min((MAX_WORKING_PREC - prec) as f64) as u32;
+            check_next_round("a ball-input Ziv loop", t, wp, prec.saturating_add(guard).min(MAX_WORKING_PREC), achieved)?;
         }
-        previous = Some(rad);
-        let achieved = b.rel_accuracy_bits();
-        let shortfall = if achieved.is_finite() { (prec as f64 - achieved).max(0.0) } else { wp as f64 };
-        let next = (guard as f64 + shortfall + 16.0).max(2.0 * guard as f64);
-        guard = next.min((MAX_WORKING_PREC - prec) as f64) as u32;
-    }
+    })
 }
 
 /// Runs the MP path for an f64 function and rounds the certified midpoint.

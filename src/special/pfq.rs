@@ -487,7 +487,7 @@ fn finite_ball(mid: Float, err: f64) -> Option<Ball> {
 /// Estimated CPU time of one series term at working precision `wp`, in seconds:
 /// 1.2 us at about 130 bits measured for `1F2(3.7e18; 20.03, -179.875; 23.7)` at
 /// 98 bits (4.46M terms in 5.4 s, load 6.6 on 2 cores), scaled linearly above 128 bits.
-fn seconds_per_term(wp: u32) -> f64 {
+pub(crate) fn seconds_per_term(wp: u32) -> f64 {
     1.2e-6 * (f64::from(wp) / 128.0).max(1.0)
 }
 
@@ -515,7 +515,9 @@ fn check_series_cost(a: &[Ball], b: &[Ball], z: &Ball, wp: u32) -> Result<()> {
         return Ok(());
     }
     let per_term = seconds_per_term(wp);
-    let budget = (MAX_SERIES_SECONDS / per_term) as u64;
+    // the method's cap, shortened by what is left of the call's time budget
+    let limit = crate::budget::limit_seconds(MAX_SERIES_SECONDS);
+    let budget = (limit / per_term) as u64;
     let n_pos = first_positive_index(a)?.max(first_positive_index(b)?);
     if n_pos <= budget && ratio_bound(a, b, z, budget) < 1 {
         return Ok(());
@@ -527,8 +529,8 @@ fn check_series_cost(a: &[Ball], b: &[Ball], z: &Ball, wp: u32) -> Result<()> {
     }
     Err(Error::TooExpensive {
         function: "pFq(a; b; z) by its series",
-        seconds: (n / 2).max(budget) as f64 * per_term,
-        limit_seconds: MAX_SERIES_SECONDS,
+        seconds: ((n / 2).max(budget) as f64 * per_term).max(limit.next_up()),
+        limit_seconds: limit,
     })
 }
 

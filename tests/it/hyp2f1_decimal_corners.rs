@@ -1,5 +1,5 @@
 //! Issue 23h: MP `2F1` at decimal parameters far outside `1e-30..1e4`, the inputs
-//! that the slow-input driver (`registry_mp_slow_scan` in tests/it/fuzz.rs, the full
+//! that the slow-input driver (`registry_mp_slow_scan`, now `registry_mp_budget_scan` in tests/it/fuzz.rs, the full
 //! range of the fuzz generator) found running for seconds to hours. Each now
 //! answers certified (enclosing the reference) or returns its typed error; the
 //! times are in docs/fuzzing.md (no timing assertion here).

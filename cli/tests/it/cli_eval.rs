@@ -314,3 +314,28 @@ fn profile_reports_the_stages_on_stderr() {
         assert!(err.contains(stage), "{stage} missing in {err}");
     }
 }
+
+#[test]
+fn budget_ms_refuses_at_once_and_never_changes_an_answer() {
+    let input = concat!(
+        // 1F2(1e12; 1.5, 2.5; 100): about 4.6e4 series terms, estimated past 1 ms
+        "{\"id\":1,\"fn\":\"hyp1f2\",\"a\":\"1e12\",\"b1\":1.5,\"b2\":2.5,\"z\":100,\"prec\":64,\"budget_ms\":1}\n",
+        "{\"id\":2,\"fn\":\"hyp1f2\",\"a\":\"1e12\",\"b1\":1.5,\"b2\":2.5,\"z\":100,\"prec\":64}\n",
+        "{\"id\":3,\"fn\":\"hyp1f2\",\"a\":\"1e12\",\"b1\":1.5,\"b2\":2.5,\"z\":100,\"prec\":64,\"budget_ms\":600000}\n",
+        "{\"id\":4,\"fn\":\"bessel_j\",\"n\":1,\"x\":1,\"prec\":64,\"budget_ms\":0}\n",
+        "{\"id\":5,\"fn\":\"bessel_j\",\"n\":1,\"x\":1,\"prec\":64,\"budget_ms\":\"1.5\"}\n",
+    );
+    let (out, code) = eval_lines(input);
+    assert_eq!(code, 0);
+    let msg = out[0]["error"].as_str().expect("refused");
+    assert_eq!(out[0]["refused"], "time", "{}", out[0]);
+    assert!(msg.contains("would take about") && msg.contains("budget"), "{msg}");
+    // the default and a long budget give the same ball
+    assert!(out[1]["mid"].is_string(), "{}", out[1]);
+    assert_eq!((&out[1]["mid"], &out[1]["rad"]), (&out[2]["mid"], &out[2]["rad"]));
+    // a budget out of range or not an integer is a bad request, not a time refusal
+    for r in &out[3..] {
+        assert!(r["error"].is_string() && r.get("refused").is_none(), "{r}");
+    }
+    assert!(out[3]["error"].as_str().unwrap().contains("budget_ms"), "{}", out[3]);
+}

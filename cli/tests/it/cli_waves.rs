@@ -1,6 +1,6 @@
 //! Profiles of many waves through the command line (issue 35): `--wave A,B`
 //! (repeatable), `--waves FILE.csv`, `--weierstrass N,GAMMA,H` for curve, profile,
-//! limits and simulate. One wave given as `--wave A,B` writes byte for byte what
+//! limits, simulate and sweep (its regime maps: cli_sweep_waves.rs). One wave given as `--wave A,B` writes byte for byte what
 //! `--alpha A --beta B` writes; every output names all the waves; bad input exits
 //! with 2, one line on stderr, and writes nothing.
 
@@ -11,23 +11,27 @@ use serde_json::Value;
 
 use crate::render;
 
-fn maugis(args: &[&str]) -> Output {
+pub(crate) fn maugis(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_maugis")).args(args).output().expect("spawn maugis")
 }
 
 /// A fresh directory path under the temp directory (not created), removed on drop.
-struct Scratch(PathBuf);
+pub(crate) struct Scratch(pub(crate) PathBuf);
 
 impl Scratch {
-    fn new(tag: &str) -> Scratch {
+    pub(crate) fn new(tag: &str) -> Scratch {
         let nanos = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_nanos());
         Scratch(std::env::temp_dir().join(format!("maugis-waves-{tag}-{}-{nanos}", std::process::id())))
     }
     fn join(&self, name: &str) -> String {
         self.0.join(name).to_str().unwrap().to_string()
     }
-    fn s(&self) -> &str {
+    pub(crate) fn s(&self) -> &str {
         self.0.to_str().unwrap()
+    }
+    /// The text of file `name` in this directory.
+    pub(crate) fn read(&self, name: &str) -> String {
+        std::fs::read_to_string(self.0.join(name)).unwrap_or_else(|e| panic!("{}/{name}: {e}", self.s()))
     }
 }
 
@@ -147,7 +151,12 @@ fn bad_waves_exit_2_with_one_line_and_no_files() {
         (vec!["--wave", "0.1,1", "--wave", "0.1,0.5", "--weierstrass", "3,2,0.5"], "expands one first wave"),
     ];
     for (extra, needle) in cases {
-        for cmd in [&["curve", "--lambda", "1", "--amax", "2", "--points", "20"][..], &["limits", "--lambda", "1", "--points", "10"], &["simulate", "--lambda", "1", "--grid", "512", "--steps", "4"]] {
+        for cmd in [
+            &["curve", "--lambda", "1", "--amax", "2", "--points", "20"][..],
+            &["limits", "--lambda", "1", "--points", "10"],
+            &["simulate", "--lambda", "1", "--grid", "512", "--steps", "4"],
+            &["sweep", "--lambda-n", "2", "--n", "2", "--amax", "2", "--points", "20"],
+        ] {
             let out = dir.join("out");
             let o = maugis(&[cmd, &extra, &["--out", &out]].concat());
             let err = String::from_utf8_lossy(&o.stderr);
@@ -156,10 +165,22 @@ fn bad_waves_exit_2_with_one_line_and_no_files() {
             assert!(!std::path::Path::new(&out).exists(), "{cmd:?} {extra:?} wrote files");
         }
     }
-    // sweep maps one wave: many waves are refused, not ignored
-    let o = maugis(&["sweep", "--wave", "0.1,1", "--wave", "0.1,0.5", "--out", &dir.join("sweep")]);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("sweep maps one wave"));
+    // sweep: a profile is swept on the amplitude axis only, the solver map runs one
+    // wave, and a scale that takes a wave out of range is refused before any work
+    let two = ["--wave", "0.1,1", "--wave", "0.1,0.5", "--lambda-n", "2", "--n", "2", "--points", "20"];
+    for (extra, needle) in [
+        (&["--axis", "beta"][..], "--axis amplitude"),
+        (&["--solver"], "--solver maps one wave"),
+        (&["--max", "1e8"], "wave 1: amplitude"),
+        (&["--max", "inf"], "--max"),
+    ] {
+        let out = dir.join("sweep");
+        let o = maugis(&[&["sweep"][..], &two, extra, &["--out", &out]].concat());
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{extra:?}: {err}");
+        assert!(err.contains(needle), "{extra:?}: {err}");
+        assert!(!std::path::Path::new(&out).exists(), "{extra:?} wrote files");
+    }
 }
 
 #[test]

@@ -19,6 +19,7 @@ mod cli_integrate;
 mod cli_profile_prec;
 mod cli_simulate;
 mod cli_simulate_profile;
+mod cli_sweep_waves;
 mod cli_waves;
 mod cli_multiscale;
 mod figures;

@@ -10,7 +10,7 @@ use maugis_solver::map::{
 use maugis_solver::{MergeFault, SolverError};
 
 fn grid() -> SweepGrid {
-    SweepGrid { lambda_min: 1.0, lambda_max: 6.0, lambda_n: 2, axis: SweepAxis::Alpha, min: 0.0, max: 0.35, n: 2, fixed: 1.125, amax: 6.0, points: 60 }
+    SweepGrid { lambda_min: 1.0, lambda_max: 6.0, lambda_n: 2, axis: SweepAxis::Alpha, min: 0.0, max: 0.35, n: 2, fixed: 1.125, profile: None, amax: 6.0, points: 60 }
 }
 
 fn options() -> MapOptions {
@@ -82,4 +82,18 @@ fn bad_merges_and_options_are_errors() {
     assert!(matches!(run_map(g, o, Some((0, 2)), || ()), Err(SolverError::BadShard { shard: 0, of: 2 })));
     assert!(matches!(run_map(g, o, Some((3, 2)), || ()), Err(SolverError::BadShard { shard: 3, of: 2 })));
     assert!(matches!(run_map(SweepGrid { lambda_min: 0.0, ..g }, o, None, || ()), Err(SolverError::Model(_))));
+}
+
+/// The map runs one wave's cycles: one wave on the amplitude axis (`alpha_1 = 1`, so
+/// the scale is the amplitude) runs the alpha axis' cycles; two waves are refused with
+/// `MapManyWaves` before any cycle.
+#[test]
+fn the_amplitude_axis_maps_one_wave_and_refuses_many() {
+    use maugis::contact::profile::WavyProfile;
+    let g = grid();
+    let one = SweepGrid { axis: SweepAxis::Amplitude, fixed: 0.0, profile: Some(WavyProfile::one_wave(1.0, 1.125).unwrap()), ..g };
+    assert_eq!(map_cycles(&one, None).unwrap(), map_cycles(&g, None).unwrap());
+    let two = SweepGrid { profile: Some(WavyProfile::from_pairs(&[(1.0, 1.125), (0.5, 0.375)]).unwrap()), ..one };
+    assert_eq!(map_cycles(&two, None), Err(SolverError::MapManyWaves { waves: 2 }));
+    assert!(matches!(run_map(two, options(), None, || ()), Err(SolverError::MapManyWaves { waves: 2 })));
 }

@@ -30,9 +30,18 @@
 //! * As `x -> a+` the kernels peak at `th = 0` with width `phi ~ sqrt(2(x/a-1))`:
 //!   the inner interval is split at `th_s = min(phi, pi/2)` (gradient) or
 //!   `min(2 sqrt(r-1), pi/2)` (displacement), and each piece is integrated by
-//!   tanh-sinh (MP), which clusters nodes at the piece ends, or (f64) composite
-//!   Gauss–Legendre on panels graded geometrically away from `th = 0`.
-//! * The outer integrand `J0(t) * inner(t)` is smooth on `[0, D]`.
+//!   tanh-sinh (MP, the gradient), which clusters nodes at the piece ends, or
+//!   (f64) composite Gauss–Legendre on panels graded geometrically away from `th = 0`.
+//! * MP displacement: the inner integral in closed form, a Neumann series in
+//!   `J_{2k}(t - D)` with exact coefficients (Jacobi–Anger and the Fourier series
+//!   of the log kernel; `InnerNeumann`), evaluated at each outer node from one
+//!   Bessel sequence. The nested tanh-sinh it replaced evaluated the kernel (a
+//!   `sin_cos`, a `cos`, an `ln1p`) at every inner node of every outer node:
+//!   `u_wave_quad_mp(29.208292368802887, 23.6293610310602, 24.46665687179133,
+//!   212.75)` took 3.25 s at 146 bits and now 0.032 s, with the same 40 digits
+//!   (dev profile; `examples/wave_quad_timing.rs`, docs/fuzzing.md).
+//! * The outer integrand `J0(t) * inner(t)` is smooth on `[0, D]`; the call's
+//!   time budget ([`crate::budget`]) is checked at every outer node.
 //!
 //! The results are quadrature *estimates* (see [`crate::quad`]), not certified
 //! balls; they serve as the independent cross-check of the series routes.
@@ -40,9 +49,9 @@
 use rug::float::Constant;
 use rug::Float;
 
-use crate::error::{finite, Error, Interval, Result};
+use crate::error::{finite, Error, Interval, Reached, Result};
 use crate::quad::{gauss_legendre, tanh_sinh, QuadEstimate, QuadEstimateMp, TanhSinhOptions};
-use crate::special::bessel_j::{bessel_j_mp, bessel_j_sequence};
+use crate::special::bessel_j::{bessel_j_mp, bessel_j_sequence, bessel_j_sequence_mp, bessel_j_sequence_three_term};
 use crate::special::{check_finite, exact_sub};
 
 /// Which quantity.
@@ -82,18 +91,6 @@ fn check(a: f64, zeta: f64, amp: f64, x: f64) -> Result<()> {
     Ok(())
 }
 
-/// The default time budget of the MP quadrature through the registry (`maugis
-/// eval`, Python): [`u_wave_quad_mp_with_budget`] stops with
-/// [`Error::TooExpensive`] past it (checked at every outer node; the error's
-/// `seconds` is the time spent, a lower bound of the whole). The nested
-/// tanh-sinh evaluates the kernel (a `sin_cos`, a `cos`, an `ln1p` at
-/// `prec + 24` bits and more) at every inner node of every outer node: 0.6 s at
-/// 24 bits, 2 s at 64 and 5-11 s at 100-146 bits at moderate inputs such as
-/// `(a, zeta, A, x) = (1, 0.7, 0.1, 1.5)` or `(29.2, 23.6, 24.5, 212.75)`
-/// (release build, load about 5). The certified wave values are `u_wave`'s
-/// Bessel route; this estimate is the independent cross-check.
-pub const MAX_QUAD_MP_SECONDS: f64 = 30.0;
-
 /// Largest `D = 2 pi a/zeta` the quadrature route accepts.
 pub const MAX_QUAD_D: f64 = 1.0e3;
 
@@ -119,7 +116,9 @@ struct MpGeometry {
     rm1: Float,
 }
 
-fn mp_kernel(kind: Quantity, g: &MpGeometry, t: &Float, th: &Float) -> Float {
+/// The gradient's inner kernel `cos(phi) sin^2(th) cos((t - D) cos th) / (1 - cos th cos phi)`
+/// (the increment's inner integral is [`InnerNeumann`]).
+fn mp_kernel(g: &MpGeometry, t: &Float, th: &Float) -> Float {
     let p = t.prec().max(th.prec());
     // One sin_cos of th/2 gives everything: 1 - cos th = 2 s^2, cos th = 1 - 2 s^2,
     // sin th = 2 s c.
@@ -132,25 +131,13 @@ fn mp_kernel(kind: Quantity, g: &MpGeometry, t: &Float, th: &Float) -> Float {
     let sin2 = Float::with_val(p, sin_th.square_ref());
     let arg = Float::with_val(p, t - &g.d) * &c;
     let osc = Float::with_val(p, arg.cos_ref());
-    match kind {
-        Quantity::Gradient => {
-            // cos(phi) sin^2 / (2 sin^2(th/2) + cos th (1 - cos phi))
-            let den = Float::with_val(p, &two_s2 + Float::with_val(p, &c * &g.one_minus_cos_phi));
-            Float::with_val(p, &g.cos_phi * &sin2) * &osc / den
-        }
-        Quantity::Increment => {
-            if two_s2.is_zero() {
-                return Float::new(p);
-            }
-            let ratio = Float::with_val(p, &g.rm1 / &two_s2);
-            let lg = Float::with_val(p, ratio.ln_1p_ref());
-            sin2 * osc * lg
-        }
-    }
+    // cos(phi) sin^2 / (2 sin^2(th/2) + cos th (1 - cos phi))
+    let den = Float::with_val(p, &two_s2 + Float::with_val(p, &c * &g.one_minus_cos_phi));
+    Float::with_val(p, &g.cos_phi * &sin2) * &osc / den
 }
 
 /// `2 int_0^pi kernel(t, th) dth` by tanh-sinh on the two pieces.
-fn mp_inner(kind: Quantity, g: &MpGeometry, t: &Float, split: f64, opts: &TanhSinhOptions) -> Result<Float> {
+fn mp_inner(g: &MpGeometry, t: &Float, split: f64, opts: &TanhSinhOptions) -> Result<Float> {
     let p = t.prec();
     let zero = Float::new(p);
     let pi = Float::with_val(p, Constant::Pi);
@@ -166,7 +153,7 @@ fn mp_inner(kind: Quantity, g: &MpGeometry, t: &Float, split: f64, opts: &TanhSi
             |th: &Float, from_lo: &Float, _to_hi: &Float| {
                 // Near th = 0 use the accurate distance from 0 as the angle itself.
                 let angle = if lo.is_zero() { from_lo } else { th };
-                Ok(mp_kernel(kind, g, t, angle))
+                Ok(mp_kernel(g, t, angle))
             },
             &lo,
             &hi,
@@ -177,7 +164,110 @@ fn mp_inner(kind: Quantity, g: &MpGeometry, t: &Float, split: f64, opts: &TanhSi
     Ok(total * 2u32)
 }
 
-fn mp_quadrature(kind: Quantity, a: &Float, zeta: &Float, amp: &Float, x: &Float, prec: u32, budget: Option<f64>) -> Result<QuadEstimateMp> {
+/// The inner integral of `u_w` as a function of `s = t - D`, in closed form:
+///
+/// ```text
+/// 2 int_0^pi sin^2(th) L(th) cos(s cos th) dth = 2 M_0 J_0(s) + 4 sum_{k>=1} (-1)^k M_k J_{2k}(s),
+/// ```
+///
+/// by the Jacobi-Anger expansion `cos(s cos th) = J_0(s) + 2 sum_k (-1)^k
+/// J_{2k}(s) cos(2k th)` [DLMF 10.12.3], with the moments `M_k = int_0^pi
+/// sin^2(th) L(th) cos(2k th) dth` of `L = ln((r - cos th)/(1 - cos th))`
+/// exact: with `r = cosh(eta)`, `rho = e^-eta`, the Fourier series
+/// `ln(1 - 2 rho cos th + rho^2) = -2 sum rho^n cos(n th)/n` gives
+/// `L = eta + 2 sum_{n>=1} (1 - rho^n) cos(n th)/n`, so `Lam_n = int_0^pi L cos(n th)
+/// = pi (1 - rho^n)/n` (`Lam_0 = pi eta`), and `sin^2 = (1 - cos 2th)/2` gives
+/// `M_k = Lam_{2k}/2 - (Lam_{2k+2} + Lam_{|2k-2|})/4`. The series is cut where
+/// `4 M_0 (|s|/2)^{2k}/(2k)!` (a bound of the term: `|M_k| <= M_0` as the
+/// weight is positive, `|J_n(s)| <= (|s|/2)^n/n!` [DLMF 10.14.4]) and the tail
+/// after it pass below `2^-wp M_0` for every `|s| <= D`.
+struct InnerNeumann {
+    /// `c_0 = 2 M_0`, `c_k = 4 (-1)^k M_k`.
+    coeffs: Vec<Float>,
+    wp: u32,
+}
+
+impl InnerNeumann {
+    fn new(rm1: &Float, d: f64, wp: u32) -> InnerNeumann {
+        let pi = Float::with_val(wp, Constant::Pi);
+        // eta = acosh(1 + rm1) = ln1p(rm1 + sqrt(rm1 (2 + rm1))), cancellation-free
+        let root = Float::with_val(wp, rm1 * Float::with_val(wp, rm1 + 2u32)).sqrt();
+        let eta = Float::with_val(wp, rm1 + &root).ln_1p();
+        let kmax = Self::terms(d, wp);
+        // Lam_n for n = 0, 2, 4, ..., 2 kmax + 2
+        let lam: Vec<Float> = (0..=kmax + 1)
+            .map(|j| {
+                let n = 2 * j as u32;
+                if n == 0 {
+                    return Float::with_val(wp, &pi * &eta);
+                }
+                // 1 - rho^n = -expm1(-n eta)
+                let one_minus = -Float::with_val(wp, -Float::with_val(wp, &eta * n)).exp_m1();
+                Float::with_val(wp, &pi * one_minus) / n
+            })
+            .collect();
+        let coeffs = (0..=kmax)
+            .map(|k| {
+                let below = if k == 0 { &lam[1] } else { &lam[k - 1] };
+                let quarter = Float::with_val(wp, &lam[k + 1] + below) / 4u32;
+                let m = Float::with_val(wp, &lam[k] / 2u32) - quarter;
+                match k {
+                    0 => m * 2u32,
+                    _ if k % 2 == 1 => -(m * 4u32),
+                    _ => m * 4u32,
+                }
+            })
+            .collect();
+        InnerNeumann { coeffs, wp }
+    }
+
+    /// The last `k` kept: `(D/2)^{2k}/(2k)! <= 2^-(wp + 8)` with the ratio of
+    /// the next terms below 1/4 (so the tail is at most a third more).
+    fn terms(d: f64, wp: u32) -> usize {
+        let h = (d / 2.0).max(1e-300);
+        let mut log2_term = 0.0f64; // log2 of (D/2)^{2k}/(2k)!
+        let mut k = 0usize;
+        loop {
+            let n = 2.0 * k as f64;
+            let ratio = h * h / ((n + 1.0) * (n + 2.0));
+            if log2_term <= -(f64::from(wp) + 8.0) && ratio <= 0.25 {
+                return k;
+            }
+            log2_term += ratio.log2();
+            k += 1;
+        }
+    }
+
+    /// The inner integral at `s` (working precision of the series).
+    fn at(&self, s: &Float) -> Result<Float> {
+        let wp = self.wp;
+        let mut sum = Float::with_val(wp, &self.coeffs[0]);
+        if s.is_zero() {
+            return Ok(sum); // J_0(0) = 1, J_n(0) = 0
+        }
+        // J_{2k}(s) = J_{2k}(|s|); the ball recurrence loses about 0.68 |s|
+        // bits, the three-term sequence a few (its radii are not needed here)
+        let x = Float::with_val(wp, s.abs_ref());
+        let nmax = 2 * (self.coeffs.len() as u64 - 1);
+        let seq = if x > 32 {
+            bessel_j_sequence_three_term(nmax, &x, wp)?
+        } else {
+            bessel_j_sequence_mp(nmax, &x, wp)?
+        };
+        sum *= seq[0].mid();
+        for (k, c) in self.coeffs.iter().enumerate().skip(1) {
+            sum += Float::with_val(wp, c * seq[2 * k].mid());
+        }
+        Ok(sum)
+    }
+}
+
+fn mp_quadrature(kind: Quantity, a: &Float, zeta: &Float, amp: &Float, x: &Float, prec: u32) -> Result<QuadEstimateMp> {
+    crate::budget::ensure(|| mp_quadrature_in_budget(kind, a, zeta, amp, x, prec))
+}
+
+/// [`mp_quadrature`] under the call's time budget.
+fn mp_quadrature_in_budget(kind: Quantity, a: &Float, zeta: &Float, amp: &Float, x: &Float, prec: u32) -> Result<QuadEstimateMp> {
     for (v, n) in [(a, "a"), (zeta, "zeta"), (amp, "amp"), (x, "x")] {
         check_finite(v, n)?;
     }
@@ -206,23 +296,23 @@ fn mp_quadrature(kind: Quantity, a: &Float, zeta: &Float, amp: &Float, x: &Float
     // natural scale (|A| for u, 2 pi |A|/zeta for du).
     outer_opts.abs_tol = Float::with_val(53, amp.abs_ref()) >> (prec as i32);
     let zero = Float::new(wp);
-    let start = std::time::Instant::now();
+    // u_w: the inner integral in closed form as a Neumann series in s = t - D
+    let neumann = (kind == Quantity::Increment).then(|| InnerNeumann::new(&g.rm1, d.to_f64(), wp));
+    let mut evaluations = 0u64;
+    let mut last = std::time::Instant::now();
     let outer = tanh_sinh::integrate(
         |t: &Float| {
-            // the nested quadrature's length is not known in advance: a time
-            // budget checked at every outer node bounds the call
-            if let Some(limit) = budget {
-                let spent = start.elapsed().as_secs_f64();
-                if spent > limit {
-                    return Err(Error::TooExpensive {
-                        function: "the Eq. 11a quadrature estimate in MP (nested tanh-sinh at the requested precision)",
-                        seconds: spent,
-                        limit_seconds: limit,
-                    });
-                }
-            }
+            // the nested quadrature's length is not known in advance: the call's
+            // time budget is checked at every outer node, with the last node's
+            // time as the next one's estimate
+            crate::budget::check_elapsed(kind.name(), crate::budget::since(last), Reached::Evaluations { count: evaluations })?;
+            last = std::time::Instant::now();
+            evaluations += 1;
             let j0 = bessel_j_mp(0, t, t.prec())?;
-            let inner = mp_inner(kind, &g, t, split, &inner_opts)?;
+            let inner = match &neumann {
+                Some(series) => series.at(&Float::with_val(wp, t - &g.d))?,
+                None => mp_inner(&g, t, split, &inner_opts)?,
+            };
             Ok(Float::with_val(t.prec(), j0.mid() * &inner))
         },
         &zero,
@@ -245,25 +335,17 @@ fn mp_quadrature(kind: Quantity, a: &Float, zeta: &Float, amp: &Float, x: &Float
 }
 
 /// `u_w(x)` from the Eq. 11a quadrature (tanh-sinh), to about `prec` bits
-/// (estimate), without a time budget: seconds to minutes (see
-/// [`MAX_QUAD_MP_SECONDS`]); for cross-checks. [`u_wave_quad_mp_with_budget`]
-/// bounds the time.
+/// (estimate). The nested quadrature's length is not known in advance: the
+/// call's time budget ([`crate::budget`], default 30 s) is checked at every
+/// outer node ([`Error::BudgetSpent`] past it).
 pub fn u_wave_quad_mp(a: &Float, zeta: &Float, amp: &Float, x: &Float, prec: u32) -> Result<QuadEstimateMp> {
-    mp_quadrature(Quantity::Increment, a, zeta, amp, x, prec, None)
-}
-
-/// [`u_wave_quad_mp`] that stops with [`Error::TooExpensive`] once
-/// `budget_seconds` have passed (checked at every outer node, so the call ends
-/// within about one outer node's time past the budget). The registry (`maugis
-/// eval`, Python) uses [`MAX_QUAD_MP_SECONDS`].
-pub fn u_wave_quad_mp_with_budget(a: &Float, zeta: &Float, amp: &Float, x: &Float, prec: u32, budget_seconds: f64) -> Result<QuadEstimateMp> {
-    mp_quadrature(Quantity::Increment, a, zeta, amp, x, prec, Some(budget_seconds))
+    mp_quadrature(Quantity::Increment, a, zeta, amp, x, prec)
 }
 
 /// `du_w/dx` from the Eq. 11a double integral (tanh-sinh), to about `prec` bits
-/// (estimate), without a time budget (as [`u_wave_quad_mp`]).
+/// (estimate), under the call's time budget (as [`u_wave_quad_mp`]).
 pub fn du_wave_quad_mp(a: &Float, zeta: &Float, amp: &Float, x: &Float, prec: u32) -> Result<QuadEstimateMp> {
-    mp_quadrature(Quantity::Gradient, a, zeta, amp, x, prec, None)
+    mp_quadrature(Quantity::Gradient, a, zeta, amp, x, prec)
 }
 
 // ---------------------------------------------------------------- f64

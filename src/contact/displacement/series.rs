@@ -10,7 +10,7 @@
 use rug::Float;
 
 use crate::ball::{Ball, MAG_PREC};
-use crate::error::{Error, Result};
+use crate::error::{Error, Reached, Result};
 use crate::special::hyp1f2::{hyp1f2_model_ball, hyp1f2_model_family};
 use crate::special::meijer_g::{
     self, direct_sums_sweep, meijer_g_k_at_one_with, meijer_g_k_direct_ball, meijer_g_k_from_sum, meijer_g_k_near_one_ball, near_one_sums_sweep,
@@ -225,6 +225,11 @@ fn wave_series_wp(kind: SeriesKind, g: &WaveGeometry, kmax: u64, wp: u32) -> Res
         if k == kmax {
             break;
         }
+        // the terms past the family's reach cost a Meijer and a 1F2 series each:
+        // the call's time budget, every 16th term
+        if k % 16 == 15 {
+            crate::budget::check_elapsed("the wave series (Eq. 11b/12) term by term", 0.0, Reached::Terms { count: k + 1 })?;
+        }
         // Early stop: the rest of the partial sum (k+1..=kmax) is bounded by the tail
         // (checked every 4th term: the bound itself costs a few ball operations).
         let tail = if k % 4 == 3 { series_tail(kind, g, k + 1)? } else { None };
@@ -368,6 +373,15 @@ fn wave_series_mp(
         SeriesKind::Displacement => Float::with_val(MAG_PREC, amp.abs_ref()),
         SeriesKind::Gradient => gradient_scale(amp, zeta),
     };
+    // Cost: the Meijer constants need Gamma values at the planned working
+    // precision (the cancellation guard is ~1.44 D bits: 31 000 bits at D = 21 700,
+    // where MPFR's first Gamma takes about 40 s), against the call's time budget.
+    let first_wp = prec.saturating_add(guard);
+    crate::budget::check_estimate(
+        "the wave series (Gamma values at the working precision its cancellation needs)",
+        crate::special::gamma::gamma_seconds(first_wp),
+        f64::INFINITY,
+    )?;
     let partial = ziv_with_floor(name, prec, guard, Some(&floor), |wp| {
         if std::env::var("MAUGIS_TRACE").is_ok() { eprintln!("{name}: wp = {wp}"); }
         let g = wave_geometry(a, zeta, amp, x, wp)?;

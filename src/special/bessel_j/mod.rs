@@ -412,9 +412,8 @@ pub const MAX_COST: f64 = 6.0e10;
 /// prec <= 4096 comes near it).
 fn check_cost(m: u64, x: f64, prec: u32) -> Result<u32> {
     let c = choose(m, x, prec + 32);
-    if !(c.cost <= MAX_COST) {
-        return Err(Error::TooExpensive { function: "J_n(x)", seconds: c.cost * 1e-9, limit_seconds: MAX_COST * 1e-9 });
-    }
+    // the cap, shortened by what is left of the call's time budget
+    crate::budget::check_estimate("J_n(x)", c.cost * 1e-9, MAX_COST * 1e-9)?;
     Ok(c.guard)
 }
 

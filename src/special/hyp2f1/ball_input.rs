@@ -47,7 +47,7 @@
 use rug::float::Round;
 use rug::Float;
 
-use super::choose::{evaluate, plan};
+use super::choose::{evaluate, plan, plan_regions, Algorithm};
 use super::large_param::{hyp2f1_large_param, large_param_loss, large_param_terms};
 use super::{hyp2f1_mp, validate};
 use crate::ball::{Ball, Mag};
@@ -215,9 +215,20 @@ fn majorant(p: &Float, q: &Float, r: &Float, x: &Float) -> Result<Mag> {
     if x.is_zero() {
         return Ok(Mag::pow2(0));
     }
-    let (alg, lost) = plan(p, q, r, x, MAJORANT_PREC);
+    let (mut alg, lost) = plan(p, q, r, x, MAJORANT_PREC);
     let mut wp = MAJORANT_PREC + DEFAULT_GUARD_BITS + lost.min(MAJORANT_MAX_LOST);
-    let mut m = evaluate(alg, p, q, r, x, wp)?;
+    let mut m = match evaluate(alg, p, q, r, x, wp) {
+        // the large-parameter route can meet a Gamma argument or a series
+        // denominator next to a pole (`2F1(100001, 1.8e-202; 41.375; -38.125)`:
+        // Gamma near -100002): the region's own methods, as `hyp2f1_mp` does
+        Err(e) if alg == Algorithm::LargeParam && !e.is_time_limit() => {
+            let (regional, lost) = plan_regions(p, q, r, x, MAJORANT_PREC);
+            alg = regional;
+            wp = MAJORANT_PREC + DEFAULT_GUARD_BITS + lost.min(MAJORANT_MAX_LOST);
+            evaluate(alg, p, q, r, x, wp)?
+        }
+        other => other?,
+    };
     // a little accuracy keeps the bound tight (a loose one asks the input balls
     // for many more bits, and long parameters slow every later evaluation)
     while !m.meets_rel(MAJORANT_ACCURACY) && wp < MAJORANT_MAX_WP {

@@ -90,8 +90,9 @@
 //! an integer and `z > 1/2` or `z < -1`. Tested: `|a|, |b| <= 10`,
 //! `0.25 <= c <= 15`, `-10^6 <= z <= 1`, and the model case up to `k = 1000`.
 //! Larger parameters work but cost grows with them (`2F1(-10^6+1/2, 2; 3; 1/2)`
-//! takes 0.2 s); a series that would need more than 5 * 10^6 terms is
-//! [`Error::NoConvergence`] (at once when the ratio bound proves it). The
+//! takes 0.2 s); a series that would need more than 5 * 10^6 terms, or more
+//! than what is left of the call's time budget ([`crate::budget`]) allows, is
+//! [`Error::TooExpensive`] at once (the ratio bound proves the term count). The
 //! Gamma-based formulas (connection, Gauss) are [`Error::TooExpensive`] when the
 //! planned cancellation passes [`MAX_GAMMA_LOSS`] bits (MPFR's Gamma at tens of
 //! thousands of bits takes minutes to hours), and Gamma arguments longer than
@@ -229,6 +230,8 @@ pub fn hyp2f1_mp(a: &Float, b: &Float, c: &Float, z: &Float, prec: u32) -> Resul
             Ok(r) => return Ok(r),
             // a Gamma argument or series denominator too close to a pole at the
             // working precision: the region's own methods
+            // (a refusal for time ends the call: the budget is spent either way)
+            Err(e) if e.is_time_limit() => return Err(e),
             Err(_) => (alg, lost) = plan_regions(a, b, c, z, prec + DEFAULT_GUARD_BITS),
         }
     }
@@ -236,13 +239,16 @@ pub fn hyp2f1_mp(a: &Float, b: &Float, c: &Float, z: &Float, prec: u32) -> Resul
         // The Gamma-based formulas: refused when the planned cancellation passes
         // MAX_GAMMA_LOSS, and their Ziv loop stops MAX_GAMMA_LOSS bits past the plan.
         let first = prec.saturating_add(DEFAULT_GUARD_BITS + lost);
+        const GAMMA_FORMULA: &str = "2F1 by a connection formula (Gamma values at the working precision its cancellation needs)";
         if lost > MAX_GAMMA_LOSS {
             return Err(Error::TooExpensive {
-                function: "2F1 by a connection formula (Gamma values at the working precision its cancellation needs)",
+                function: GAMMA_FORMULA,
                 seconds: gamma_seconds(first),
-                limit_seconds: gamma_seconds(MAX_GAMMA_LOSS),
+                limit_seconds: crate::budget::limit_seconds(gamma_seconds(MAX_GAMMA_LOSS)),
             });
         }
+        // under a short time budget, the first Gamma's estimate against what is left
+        crate::budget::check_estimate(GAMMA_FORMULA, gamma_seconds(first), f64::INFINITY)?;
         let max_wp = first.saturating_add(MAX_GAMMA_LOSS);
         return ziv_up_to("hyp2f1", prec, DEFAULT_GUARD_BITS + lost, None, max_wp, |wp| evaluate(alg, a, b, c, z, wp));
     }

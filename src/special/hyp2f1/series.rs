@@ -17,7 +17,8 @@
 //!   so `rho` stays valid for every later stopping index `N`), and
 //!   `sum_{n>=N} |t_n| <= |t_N| / (1 - rho)`. When `rho` at the term limit
 //!   (`MAX_SERIES_TERMS`) is still `>= 1`, no stopping index exists below it and
-//!   the series is refused before summing ([`Error::NoConvergence`]). `rho` is rounded upward at `wp + 16`
+//!   the series is refused before summing ([`Error::TooExpensive`], also when
+//!   it passes what is left of the call's time budget, [`crate::budget`]). `rho` is rounded upward at `wp + 16`
 //!   bits (not with the 53-bit radius arithmetic: `|z|` may be within `2^-40` of
 //!   1, where the direct series can still be the cheap choice when `c - a - b` is
 //!   large), and summation stops once `|t_N| / (1 - rho)` is below `2^-wp |s|`
@@ -164,6 +165,15 @@ pub(super) fn scaled_integers(a: &Float, b: &Float, c: &Float) -> Option<(i64, i
 /// or any `z` when the series terminates) summed in place at `wp` bits, with the
 /// a-priori rounding bound, the perturbation bound for the radius of `z` and the
 /// rigorous tail bound of the module docs.
+/// The refusal of a 2F1 series of at least `terms` terms past `limit` seconds.
+fn too_expensive(terms: u64, per_term: f64, limit: f64) -> Error {
+    Error::TooExpensive {
+        function: "2F1(a, b; c; z) by its series",
+        seconds: (terms as f64 * per_term).max(limit.next_up()),
+        limit_seconds: limit,
+    }
+}
+
 pub(crate) fn series_2f1(a: &Float, b: &Float, c: &Float, z: &Ball, wp: u32) -> Result<Ball> {
     let wp = wp.max(MIN_SERIES_PREC);
     let deg = terminating_degree(a, b);
@@ -175,9 +185,14 @@ pub(crate) fn series_2f1(a: &Float, b: &Float, c: &Float, z: &Ball, wp: u32) -> 
     if deg.is_none() && !(z.upper() < 1 && z.lower() > -1) {
         return Err(Error::precondition("2F1 series needs |z| < 1 (transform the argument first)"));
     }
+    // The series' cost: its cap of MAX_SERIES_TERMS terms, shortened by what
+    // is left of the call's time budget (crate::budget).
+    let per_term = crate::special::pfq::seconds_per_term(wp);
+    let limit = crate::budget::limit_seconds(MAX_SERIES_TERMS as f64 * per_term);
+    let max_terms = ((limit / per_term) as u64).min(MAX_SERIES_TERMS);
     if let Some(d) = deg {
-        if d > MAX_SERIES_TERMS {
-            return Err(Error::NoConvergence { function: "hyp2f1", terms: d });
+        if d > max_terms {
+            return Err(too_expensive(d, per_term, limit));
         }
     }
     let zm = z.mid();
@@ -194,14 +209,17 @@ pub(crate) fn series_2f1(a: &Float, b: &Float, c: &Float, z: &Ball, wp: u32) -> 
     let rho_prec = wp + 16;
     let z_abs_up = abs_upper_precise(z, rho_prec);
     let mut tail_factor = TailFactor::new();
-    if deg.is_none()
-        && (n_pos > MAX_SERIES_TERMS
-            || !(ratio_bound(a, b, c, &one(), &z_abs_up, MAX_SERIES_TERMS + 1, rho_prec) < 1))
-    {
+    let runs_past = |n: u64| n < n_pos || !(ratio_bound(a, b, c, &one(), &z_abs_up, n + 1, rho_prec) < 1);
+    if deg.is_none() && runs_past(max_terms) {
         // The loop stops only at some n >= n_pos with rho_n < 1, and rho_n is
         // non-increasing in n: rho just past the term limit >= 1 means it would
-        // run past the limit and fail there, so fail now.
-        return Err(Error::NoConvergence { function: "hyp2f1", terms: MAX_SERIES_TERMS });
+        // run past the limit, so refuse now, naming a lower bound of the terms
+        // (a doubling search: within a factor 2).
+        let mut n = max_terms.max(1);
+        while n < 1 << 62 && runs_past(n) {
+            n *= 2;
+        }
+        return Err(too_expensive((n / 2).max(max_terms), per_term, limit));
     }
 
     let scaled = scaled_integers(a, b, c);
@@ -327,5 +345,10 @@ pub(super) fn pow_exact_exponent(base: &Ball, e: &Float, wp: u32) -> Result<Ball
         let p = base.pow_u64(n);
         return if e.is_sign_negative() { p.recip() } else { Ok(p) };
     }
+    // A base longer than the working precision (`1 - z` exact at `z = 3e-29731`
+    // holds about 98 000 bits) is rounded into its ball first: `ln` at the
+    // base's own length took 0.5 s (issue 37's scan), and the answer is the
+    // same enclosure at `wp` bits.
+    let base = if base.mid().prec() > wp { base.set_prec(wp) } else { base.clone() };
     base.pow(&xball(e, wp))
 }
