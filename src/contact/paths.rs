@@ -32,7 +32,13 @@
 //! repeated loading and unloading in contact: unloading from the largest
 //! contact to its end (pull-off under load control), then **reloading** from
 //! that state back to the largest contact. The two paths meet at both ends, so
-//! the energy lost is the area they enclose in the `(Delta, Lbar)` plane,
+//! the energy lost is the area they enclose in the `(Delta, Lbar)` plane.
+//! When the largest contact lies on a falling branch (a fine wave's fold at the
+//! grid's end, common with many scales), reloading cannot get back to it; the
+//! cycle then runs between pull-off and the grid state of the largest control
+//! value, the state a machine loading up to that value reaches, and its unloading
+//! path is [`ControlPaths::cycle_unloading`] (the first version reported no loop and
+//! W = 0 there). The area is
 //!
 //! ```text
 //! W = -oint Delta dL = oint L dDelta = sum over loops of the enclosed area,
@@ -190,6 +196,12 @@ pub struct ControlPaths {
     /// The jumps `reloading` meets (below the first loading jump they can
     /// differ from `jumps`).
     pub reloading_jumps: Vec<Jump>,
+    /// The closed cycle's unloading path when it is not `unloading`: empty, unless
+    /// the largest contact lies on a falling branch that reloading cannot reach;
+    /// the cycle then runs between pull-off and the grid state of the largest
+    /// control value, and this is its unloading path (from that state).
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub cycle_unloading: Vec<PathNode>,
     /// The hysteresis loops, by increasing control variable.
     pub loops: Vec<HysteresisLoop>,
     /// Their dissipation.
@@ -394,6 +406,68 @@ pub fn control_paths(params: Params, pts: &[CurvePoint], control: Driver) -> Res
     let (loading, mut jumps, loading_truncated) = walk_loading(pts, params, control, grid_node(&pts[0]), 1, true)?;
 
     // ---------------------------------------------------------- unloading
+    let (unloading, unloading_jumps, end) = walk_unloading(pts, params, control)?;
+    jumps.extend(unloading_jumps);
+
+    // ---------------------------------------------------------- reloading
+    // The closed cycle: load again from the end of unloading.
+    let (mut reloading, mut reloading_jumps, mut reloading_truncated) = reload(pts, params, control, end)?;
+    let mut cycle_unloading = Vec::new();
+    let mut levels: Vec<f64> = jumps.iter().map(|j| yn(&j.from)).collect();
+    if reloading_truncated {
+        // The largest contact lies on a falling branch: reloading cannot get back to
+        // it. The cycle then runs between pull-off and the grid's largest control
+        // value (the state a machine loading to that value reaches), on the grid up
+        // to that state.
+        let top = (0..n).fold(0, |best, k| if y(&pts[k]) >= y(&pts[best]) { k } else { best });
+        if top >= 1 {
+            let grid = &pts[..=top];
+            let (u, u_jumps, u_end) = walk_unloading(grid, params, control)?;
+            let (r, r_jumps, r_truncated) = reload(grid, params, control, u_end)?;
+            if !r_truncated {
+                levels.extend(u_jumps.iter().map(|j| yn(&j.from)));
+                (cycle_unloading, reloading, reloading_jumps, reloading_truncated) = (u, r, r_jumps, false);
+            }
+        }
+    }
+    levels.extend(reloading_jumps.iter().map(|j| yn(&j.from)));
+    let cycle = if cycle_unloading.is_empty() { &unloading } else { &cycle_unloading };
+    let (loops, dissipation) = loops_and_dissipation(control, &reloading, cycle, &levels, reloading_truncated);
+    Ok(ControlPaths {
+        control: control.control,
+        datum: control.ln_datum.exp(),
+        loading,
+        unloading,
+        jumps,
+        end,
+        loading_truncated,
+        reloading,
+        reloading_jumps,
+        cycle_unloading,
+        loops,
+        dissipation,
+    })
+}
+
+/// The closed cycle's reloading walk from the end of unloading (from the smallest
+/// grid contact when unloading reached the grid's edge).
+fn reload(pts: &[CurvePoint], params: Params, control: Driver, end: Option<PathEnd>) -> Result<(Vec<PathNode>, Vec<Jump>, bool)> {
+    match end {
+        Some(e) if !e.at_grid_edge => {
+            let i0 = pts.partition_point(|p| p.abar <= e.state.abar);
+            walk_loading(pts, params, control, e.state, i0, false)
+        }
+        _ => walk_loading(pts, params, control, grid_node(&pts[0]), 1, true),
+    }
+}
+
+/// An unloading walk from the largest grid contact down the running minimum of the
+/// control variable: its states, its jumps and its end (pull-off under load control).
+fn walk_unloading(pts: &[CurvePoint], params: Params, control: Driver) -> Result<(Vec<PathNode>, Vec<Jump>, Option<PathEnd>)> {
+    let y = |p: &CurvePoint| control.value((p.load, p.approach));
+    let yn = |n: &PathNode| control.value((n.load, n.approach));
+    let n = pts.len();
+    let mut jumps = Vec::new();
     let mut unloading = vec![grid_node(&pts[n - 1])];
     let mut end = None;
     let mut last_target = f64::INFINITY;
@@ -441,31 +515,7 @@ pub fn control_paths(params: Params, pts: &[CurvePoint], control: Driver) -> Res
             end = Some(PathEnd { state: last, at_grid_edge: true });
         }
     }
-
-    // ---------------------------------------------------------- reloading
-    // The closed cycle: load again from the end of unloading.
-    let (reloading, reloading_jumps, reloading_truncated) = match end {
-        Some(e) if !e.at_grid_edge => {
-            let i0 = pts.partition_point(|p| p.abar <= e.state.abar);
-            walk_loading(pts, params, control, e.state, i0, false)?
-        }
-        _ => walk_loading(pts, params, control, grid_node(&pts[0]), 1, true)?,
-    };
-    let levels: Vec<f64> = jumps.iter().chain(reloading_jumps.iter()).map(|j| yn(&j.from)).collect();
-    let (loops, dissipation) = loops_and_dissipation(control, &reloading, &unloading, &levels, reloading_truncated);
-    Ok(ControlPaths {
-        control: control.control,
-        datum: control.ln_datum.exp(),
-        loading,
-        unloading,
-        jumps,
-        end,
-        loading_truncated,
-        reloading,
-        reloading_jumps,
-        loops,
-        dissipation,
-    })
+    Ok((unloading, jumps, end))
 }
 
 /// A path as `(y, x, abar, valid)` by increasing `y` (`x` is the conjugate variable).

@@ -326,3 +326,31 @@ fn lambda_quarter_valid_pull_off_is_on_the_small_contact_branch() {
     let (po6, v6) = (c6.pull_off.unwrap(), c6.valid_pull_off.unwrap());
     assert!(po6.validity.valid && (v6.load - po6.load).abs() < 1e-12, "{po6:?} {v6:?}");
 }
+
+/// The largest contact on a falling branch (6 Weierstrass scales at lambda = 30, the
+/// finest wave folding at abar = 6): the closed cycle runs up to the grid's largest
+/// load instead of reporting no loop and W = 0, under both controls; the cycle's
+/// paths meet at both ends; on a curve whose last state is the largest (one wave) no
+/// cycle is re-based.
+#[test]
+fn a_cycle_whose_largest_contact_is_on_a_falling_branch_still_closes() {
+    use maugis::contact::profile::WavyProfile;
+    let profile = WavyProfile::weierstrass(2.0 * std::f64::consts::SQRT_2 / 8.0, 9.0 / 8.0, 6, 2.0, 0.5).unwrap();
+    let params = maugis::contact::model::Params::with_profile(30.0, profile).unwrap();
+    let curve = maugis::contact::curve::load_area_curve(params, maugis::contact::curve::CurveOptions { amax: 6.0, points: 2730, ..Default::default() }).unwrap();
+    let last = curve.points.last().unwrap();
+    let top = curve.points.iter().map(|p| p.load).fold(f64::NEG_INFINITY, f64::max);
+    assert!(last.load < top, "the grid ends on a falling branch ({} < {top})", last.load);
+    for cp in [&curve.load_control, &curve.displacement_control] {
+        assert!(!cp.cycle_unloading.is_empty(), "{:?}: the cycle is re-based", cp.control);
+        assert!(cp.dissipation.total > 0.0 && !cp.loops.is_empty(), "{:?}: W = {}", cp.control, cp.dissipation.total);
+        // the cycle's two paths start and end at the same states
+        let (u, r) = (&cp.cycle_unloading, &cp.reloading);
+        assert_eq!(u.first().unwrap().abar, r.last().unwrap().abar, "{:?}: top", cp.control);
+        assert_eq!(u.last().unwrap().abar, r.first().unwrap().abar, "{:?}: bottom", cp.control);
+    }
+    // W is at most the sum of the loops' areas and they are all positive
+    assert!(curve.load_control.loops.iter().all(|l| l.dissipation > 0.0));
+    let one = maugis::contact::curve::load_area_curve(maugis::contact::model::Params::new(3.0, 2.0 * std::f64::consts::SQRT_2 / 8.0, 9.0 / 8.0).unwrap(), Default::default()).unwrap();
+    assert!(one.load_control.cycle_unloading.is_empty() && one.displacement_control.cycle_unloading.is_empty());
+}

@@ -383,7 +383,6 @@ fn wave_series_mp(
         f64::INFINITY,
     )?;
     let partial = ziv_with_floor(name, prec, guard, Some(&floor), |wp| {
-        if std::env::var("MAUGIS_TRACE").is_ok() { eprintln!("{name}: wp = {wp}"); }
         let g = wave_geometry(a, zeta, amp, x, wp)?;
         wave_series_wp(kind, &g, kmax, wp)
     })?;
