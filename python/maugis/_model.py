@@ -230,21 +230,21 @@ def _wave_pairs(waves):
     return pairs
 
 
-def _model_at(function, lam, alpha, beta, abar, waves, prec, output, digits):
+def _model_at(function, lam, alpha, beta, abar, waves, prec, output, digits, budget):
     """``strip_ratio`` or ``load`` of the registry: the one wave ``(alpha, beta)``, or the
     profile ``waves`` through ``strip_ratio_waves``/``load_waves``
     (``lambda, abar, alpha_1, beta_1, ...``)."""
     if waves is None:
         if alpha is None or beta is None:
             raise TypeError("give alpha and beta (one wave) or waves=[(amplitude, wavelength), ...]")
-        return _call(function, (lam, alpha, beta, abar), False, prec, output, digits)
+        return _call(function, (lam, alpha, beta, abar), False, prec, output, digits, budget)
     if alpha is not None or beta is not None:
         raise ValueError("give waves=[(amplitude, wavelength), ...] or alpha and beta, not both")
     flat = [v for pair in _wave_pairs(waves) for v in pair]
-    return _call(function + "_waves", (lam, abar, *flat), False, prec, output, digits)
+    return _call(function + "_waves", (lam, abar, *flat), False, prec, output, digits, budget)
 
 
-def strip_ratio(lam, alpha, beta, abar, *, waves=None, prec=None, output="mpf", digits=None):
+def strip_ratio(lam, alpha, beta, abar, *, waves=None, prec=None, output="mpf", digits=None, budget=None):
     """The strip ratio ``m = c/a`` at contact size ``abar``: the first root of the
     corrected Eq. 15b, broadcasting like a ufunc (``maugis eval``'s ``strip_ratio``).
 
@@ -254,15 +254,17 @@ def strip_ratio(lam, alpha, beta, abar, *, waves=None, prec=None, output="mpf", 
     float64 by default; ``prec=P`` returns certified balls ``(mid, rad)`` as the
     special functions do, each decimal string (of ``waves`` too) a ball that contains
     the decimal as typed. A bad wave raises ``ValueError`` naming the wave and the field.
+    ``budget`` (seconds) bounds a certified call as for the special functions
+    (``TimeLimitError`` past it).
     """
-    return _model_at("strip_ratio", lam, alpha, beta, abar, waves, prec, output, digits)
+    return _model_at("strip_ratio", lam, alpha, beta, abar, waves, prec, output, digits, budget)
 
 
-def load(lam, alpha, beta, abar, *, waves=None, prec=None, output="mpf", digits=None):
+def load(lam, alpha, beta, abar, *, waves=None, prec=None, output="mpf", digits=None, budget=None):
     """The load (Eq. 14) at the strip ratio of :func:`strip_ratio`, with the same
     arguments (``maugis eval``'s ``load`` and ``load_waves``). Certified balls are
     accurate relative to ``max(|load|, pi abar**2/4)``: the load crosses zero."""
-    return _model_at("load", lam, alpha, beta, abar, waves, prec, output, digits)
+    return _model_at("load", lam, alpha, beta, abar, waves, prec, output, digits, budget)
 
 
 def _reshape(table, shape):
