@@ -239,6 +239,7 @@ fn run_envelope(a: EnvelopeArgs) -> Result<(), String> {
     for &(n, gamma, hurst, lambda) in &study.cases() {
         let profile = WavyProfile::weierstrass(a.alpha, a.beta, n, gamma, hurst).map_err(|e| e.to_string())?;
         Params::with_profile(lambda, profile).map_err(|e| e.to_string())?;
+        envelope_curve_options(&profile, a.amax).map_err(|e| format!("N = {n}, gamma = {}: {e}", short(gamma)))?;
     }
     if study.cases().is_empty() {
         return Err("nothing to compute: give at least one value of --scales, --gamma, --hurst and --lambda".into());
@@ -346,7 +347,7 @@ fn wave_svg(profile: &WavyProfile, study: &EnvelopeStudy) -> Result<String, Stri
         n => vec![lambdas[0], lambdas[n / 2], lambdas[n - 1]],
     };
     let c = envelope_constants(profile);
-    let options = envelope_curve_options(profile, study.amax);
+    let options = envelope_curve_options(profile, study.amax).map_err(|e| e.to_string())?;
     let mut series = Vec::new();
     for &lambda in &picks {
         let params = Params::with_profile(lambda, *profile).map_err(|e| e.to_string())?;

@@ -59,7 +59,7 @@ use crate::contact::limits::jkr_load_profile;
 use crate::contact::model::Params;
 use crate::contact::curve_state::load_at;
 use crate::contact::profile::WavyProfile;
-use crate::error::{Error, Interval, Result};
+use crate::error::{finite, Error, Interval, Result};
 
 /// The envelope constants of a profile: the half-width of the asymptotic envelope of
 /// the waves' load is `sqrt(abar)` times one of them.
@@ -272,12 +272,23 @@ pub fn jkr_excursion(profile: &WavyProfile, options: CurveOptions) -> Result<(f6
     Ok((up, down))
 }
 
+/// The largest grid [`envelope_curve_options`] builds (a curve of this many states
+/// takes minutes; beyond it the request is refused at once).
+pub const MAX_ENVELOPE_POINTS: usize = 200_000;
+
 /// The curve options of a profile's envelope check: `amax`, and at least
-/// [`POINTS_PER_FINEST`] grid points per finest wavelength (600 at least).
-pub fn envelope_curve_options(profile: &WavyProfile, amax: f64) -> CurveOptions {
+/// [`POINTS_PER_FINEST`] grid points per finest wavelength (600 at least). More than
+/// [`MAX_ENVELOPE_POINTS`] is [`Error::IntegerOutOfRange`], before any work.
+pub fn envelope_curve_options(profile: &WavyProfile, amax: f64) -> Result<CurveOptions> {
+    finite(amax, "amax")?;
+    Interval::above(0.0).check("amax", amax)?;
     let finest = profile.finest_wavelength().unwrap_or(amax);
-    let points = ((POINTS_PER_FINEST * amax / finest).ceil() as usize).max(600);
-    CurveOptions { amax, points, ..CurveOptions::default() }
+    let wanted = (POINTS_PER_FINEST * amax / finest).ceil().max(600.0);
+    if !(wanted <= MAX_ENVELOPE_POINTS as f64) {
+        let value = if wanted < i64::MAX as f64 { wanted as i64 } else { i64::MAX };
+        return Err(Error::IntegerOutOfRange { arg: "grid points of an envelope curve (32 per finest wavelength up to amax)", value, min: 2, max: MAX_ENVELOPE_POINTS as i64 });
+    }
+    Ok(CurveOptions { amax, points: wanted as usize, ..CurveOptions::default() })
 }
 
 /// [`EnvelopeRow`] of the Weierstrass profile `(alpha_1, beta_1, scales, gamma, hurst)`
@@ -285,7 +296,7 @@ pub fn envelope_curve_options(profile: &WavyProfile, amax: f64) -> CurveOptions 
 pub fn envelope_row(alpha_1: f64, beta_1: f64, scales: usize, gamma: f64, hurst: f64, lambda: f64, amax: f64) -> Result<EnvelopeRow> {
     let profile = WavyProfile::weierstrass(alpha_1, beta_1, scales, gamma, hurst)?;
     let params = Params::with_profile(lambda, profile)?;
-    let options = envelope_curve_options(&profile, amax);
+    let options = envelope_curve_options(&profile, amax)?;
     let curve = load_area_curve(params, options)?;
     Ok(EnvelopeRow {
         scales,

@@ -58,6 +58,7 @@ fn bad_input_exits_2_and_writes_nothing() {
         ("lambda", &["--lambda", "nan"]),
         ("scales", &["--scales", "0"]),
         ("figure", &["--figure", "2,0.5,0.5"]),
+        ("grid", &["--amax", "1e6"]),
     ] {
         let out = scratch(tag);
         let o = maugis(&[&["multiscale", "envelope", "--scales", "2", "--gamma", "2", "--hurst", "0.5", "--lambda", "3", "--out", out.to_str().unwrap()][..], extra].concat());
