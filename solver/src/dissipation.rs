@@ -66,13 +66,15 @@
 //! branches whatever the contact's shape:
 //!
 //! * unloading: the largest contact (the last loading state), then the
-//!   unloading leg's states in contact, walked as above (running minimum of
+//!   unloading leg's states in contact, from the state of largest controlled
+//!   value (the largest contact, unless it lies on a falling branch: the
+//!   library re-bases its cycle the same way), walked as above (running minimum of
 //!   the controlled variable, a jump at each local minimum to the first later
 //!   state at its level), to the end of unloading;
 //! * reloading: the reloading leg (then the loading leg above where it
 //!   rejoined), from its state of least controlled value (the end of
 //!   unloading, met again from below), walked by the running maximum to the
-//!   largest contact;
+//!   level unloading started at;
 //! * W is the work of the machine around that closed polygon in the
 //!   `(Delta, Lbar)` plane, `oint Lbar dDelta` (exact on its straight
 //!   segments): the energy the cycle dissipates, since the body returns to
@@ -383,7 +385,8 @@ pub struct LegCycle {
     pub control: Control,
     /// The datum `x_d` of displacement control (1 under load control).
     pub datum: f64,
-    /// The unloading path, from the largest contact.
+    /// The unloading path, from the state of largest controlled value (the
+    /// largest contact, unless that lies on a falling branch).
     pub unloading: Vec<PathNode>,
     /// The end of unloading (pull-off under load control).
     pub end: PathNode,
@@ -391,7 +394,7 @@ pub struct LegCycle {
     /// the true end may lie beyond it.
     pub end_at_edge: bool,
     /// The reloading path, from the reloading leg's state of least controlled
-    /// value to the largest contact.
+    /// value up to the level unloading started at.
     pub reloading: Vec<PathNode>,
     /// Reloading stopped at a maximum with no later state at its level: the
     /// cycle does not close and `work` is not W.
@@ -433,6 +436,12 @@ pub fn closed_cycle_along_legs(cycle: &Cycle, solver_datum: f64, driver: Driver)
         unload_states.push(node(s)?);
     }
     count_in_range(unload_states.len(), "the unloading leg's states in contact (the cycle needs 2)", 2, usize::MAX)?;
+    // The cycle turns at the largest controlled value: the largest contact
+    // unless it lies on a falling branch (as the library re-bases its cycle,
+    // `ControlPaths::cycle_unloading`).
+    let top = (0..unload_states.len()).fold(0, |best, i| if y(&unload_states[i]) > y(&unload_states[best]) { i } else { best });
+    unload_states.drain(..top);
+    let top_level = y(&unload_states[0]);
     unload_states.reverse();
     let n = unload_states.len();
     let unloading = walk(driver, &unload_states, unload_states[n - 1], true, n as isize - 2, -1);
@@ -453,8 +462,16 @@ pub fn closed_cycle_along_legs(cycle: &Cycle, solver_datum: f64, driver: Driver)
     }
     let i0 = (0..leg_len).min_by(|&i, &j| y(&reload_states[i]).total_cmp(&y(&reload_states[j]))).unwrap_or(0);
     let reloading = walk(driver, &reload_states, reload_states[i0], true, i0 as isize + 1, 1);
-    let reloading_truncated = reloading.stopped.is_some();
-    let (unloading, reloading) = (unloading.path, reloading.path);
+    // It closes where it reaches the level the cycle turned at (a stop at a
+    // maximum there is the top itself); the loading leg beyond is cut off.
+    let closes_at = top_level - 1e-9 * top_level.abs().max(1.0);
+    let reloading_truncated = reloading.stopped.is_some_and(|p| y(&p) < closes_at);
+    let (unloading, mut reloading) = (unloading.path, reloading.path);
+    if let Some(k) = reloading.iter().position(|p| y(p) >= closes_at).filter(|&k| k > 0) {
+        let last = interpolate(driver, reloading[k - 1], reloading[k], top_level);
+        reloading.truncate(k);
+        reloading.push(last);
+    }
     let start_gap = (reloading[0].approach - end.approach).abs();
     // oint Lbar dDelta: unloading, then reloading, closed back to the top.
     let polygon: Vec<&PathNode> = unloading.iter().chain(&reloading).chain(unloading.first()).collect();
