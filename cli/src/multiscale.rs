@@ -51,6 +51,9 @@ pub enum Study {
     /// Merge the output directories of `maugis multiscale scales --shard s/n` runs (or
     /// redraw one whole study's tables and figure from its scales.json).
     Merge(scales::ScalesMergeArgs),
+    /// The transitional lambda* against the number of scales: the lambda below which the
+    /// solver's roughness-induced W falls under a fraction of the JKR limit's.
+    Transition(scales::TransitionArgs),
 }
 
 /// Output format.
@@ -105,6 +108,7 @@ pub fn run(a: MultiscaleArgs) -> Result<(), String> {
         Study::Envelope(e) => run_envelope(e),
         Study::Scales(s) => scales::run_scales(s),
         Study::Merge(m) => scales::run_merge(m),
+        Study::Transition(t) => scales::run_transition(t),
     }
 }
 

@@ -46,6 +46,7 @@ use maugis::contact::model::Params;
 use maugis::contact::profile::WavyProfile;
 
 use crate::dissipation::cycle_dissipation_along_legs;
+use crate::transition::{relative_uncertainty, scan_lambdas, search_with, Evaluation, Search, JKR_LAMBDA};
 use crate::error::{count_in_range, finite, in_range, Interval, MergeFault, Result, SolverError};
 use crate::path::suggested_half_width;
 use crate::map::{Resolution, ResolutionRule};
@@ -120,7 +121,8 @@ pub struct ScalesSpec {
     pub amax: f64,
     /// The resolution rule.
     pub resolution: ScaleResolution,
-    /// Model curve points (`abar` spacing `amax/points`).
+    /// Model curve points (`abar` spacing `amax/points`), at least 32 per
+    /// finest wavelength ([`model_points`]).
     pub model_points: usize,
     /// The adhesion law.
     #[cfg_attr(feature = "serde", serde(default))]
@@ -266,14 +268,39 @@ pub struct ScaleCycle {
     pub seconds: f64,
 }
 
-/// Runs one cycle of the study and measures it. A failed simulation or model
-/// is recorded in `error`, not returned: the rest of the study goes on.
+/// The model's parameters and the profile (`None`: the smooth cylinder) of
+/// `waves` at `lambda`.
+fn case_params(spec: &ScalesSpec, lambda: f64, waves: &[(f64, f64)]) -> Result<(Params, Option<WavyProfile>)> {
+    if waves.is_empty() {
+        return Ok((Params::new(lambda, 0.0, spec.beta)?, None));
+    }
+    let p = WavyProfile::from_pairs(waves)?;
+    Ok((Params::with_profile(lambda, p)?, Some(p)))
+}
+
+/// The finest wavelength of `waves` (the first wave's for the smooth cylinder).
+fn finest_wavelength(spec: &ScalesSpec, waves: &[(f64, f64)]) -> f64 {
+    waves.iter().map(|w| w.1).fold(spec.beta, f64::min)
+}
+
+/// Model curve points for a finest wavelength `beta_min`: `spec.model_points`,
+/// and at least 32 per finest wavelength (the envelope study's rule; with
+/// fewer the model's W misses loops of the finest wave: 25.6 at 100 points
+/// against 38.6 at 600 for 4 scales at lambda = 10, docs/model.md).
+pub fn model_points(spec: &ScalesSpec, beta_min: f64) -> usize {
+    spec.model_points.max((32.0 * spec.amax / beta_min).ceil() as usize)
+}
+
+/// Runs one cycle of the study and measures it, the model beside it. A
+/// failed simulation or model is recorded in `error`, not returned: the rest
+/// of the study goes on.
 pub fn run_cycle(spec: &ScalesSpec, case: &CycleCase, resolution: ScaleResolution) -> ScaleCycle {
-    let t = std::time::Instant::now();
-    let profile = if case.waves.is_empty() { Ok(None) } else { WavyProfile::from_pairs(&case.waves).map(Some) };
-    let finest = case.waves.iter().map(|w| w.1).fold(spec.beta, f64::min);
-    let traction_estimate = case.waves.iter().min_by(|a, b| a.1.total_cmp(&b.1)).map_or(0.0, |&(a, b)| a / (case.lambda * b));
-    let mut out = ScaleCycle {
+    with_model(spec, solver_cycle(spec, case, resolution))
+}
+
+/// A cycle's record before anything is measured.
+fn blank_cycle(case: &CycleCase) -> ScaleCycle {
+    ScaleCycle {
         index: case.index,
         lambda: case.lambda,
         waves: case.waves.clone(),
@@ -287,42 +314,48 @@ pub fn run_cycle(spec: &ScalesSpec, case: &CycleCase, resolution: ScaleResolutio
         max_intervals: 0,
         pull_off: None,
         model: None,
-        traction_estimate,
+        traction_estimate: case.waves.iter().min_by(|a, b| a.1.total_cmp(&b.1)).map_or(0.0, |&(a, b)| a / (case.lambda * b)),
         error: None,
         seconds: 0.0,
-    };
-    let mut errors = Vec::new();
-    match profile {
-        Err(e) => errors.push(format!("profile: {e}")),
-        Ok(profile) => {
-            let params = match profile {
-                Some(p) => Params::with_profile(case.lambda, p),
-                None => Params::new(case.lambda, 0.0, spec.beta),
-            };
-            match params {
-                Err(e) => errors.push(format!("parameters: {e}")),
-                Ok(params) => {
-                    match model_cycle(params, spec) {
-                        Ok(m) => out.model = Some(m),
-                        Err(e) => errors.push(format!("model: {e}")),
-                    }
-                    if let Err(e) = simulate_case(spec, case, params, profile, finest, resolution, &mut out) {
-                        errors.push(format!("solver: {e}"));
-                    }
-                }
+    }
+}
+
+/// The solver's part of [`run_cycle`] (no model).
+fn solver_cycle(spec: &ScalesSpec, case: &CycleCase, resolution: ScaleResolution) -> ScaleCycle {
+    let t = std::time::Instant::now();
+    let mut out = blank_cycle(case);
+    match case_params(spec, case.lambda, &case.waves) {
+        Err(e) => out.error = Some(format!("parameters: {e}")),
+        Ok((params, profile)) => {
+            if let Err(e) = simulate_case(spec, case, params, profile, finest_wavelength(spec, &case.waves), resolution, &mut out) {
+                out.error = Some(format!("solver: {e}"));
             }
         }
-    }
-    if !errors.is_empty() {
-        out.error = Some(errors.join("; "));
     }
     out.seconds = t.elapsed().as_secs_f64();
     out
 }
 
+/// `cycle` with the model's closed cycle on its profile (re)computed
+/// ([`model_points`]); a model that fails adds to `error`.
+pub fn with_model(spec: &ScalesSpec, mut cycle: ScaleCycle) -> ScaleCycle {
+    let model = case_params(spec, cycle.lambda, &cycle.waves).and_then(|(params, _)| model_cycle(params, spec, finest_wavelength(spec, &cycle.waves)));
+    // An earlier model's error goes; the solver's stays.
+    let mut errors: Vec<String> = cycle.error.iter().flat_map(|e| e.split("; ")).filter(|p| !p.starts_with("model: ")).map(str::to_string).collect();
+    cycle.model = match model {
+        Ok(m) => Some(m),
+        Err(e) => {
+            errors.push(format!("model: {e}"));
+            None
+        }
+    };
+    cycle.error = (!errors.is_empty()).then(|| errors.join("; "));
+    cycle
+}
+
 /// The model's W, W_d and validity on `params`' profile.
-fn model_cycle(params: Params, spec: &ScalesSpec) -> Result<ModelCycle> {
-    let c = load_area_curve(params, CurveOptions { amax: spec.amax, points: spec.model_points, ..CurveOptions::default() })?;
+fn model_cycle(params: Params, spec: &ScalesSpec, beta_min: f64) -> Result<ModelCycle> {
+    let c = load_area_curve(params, CurveOptions { amax: spec.amax, points: model_points(spec, beta_min), ..CurveOptions::default() })?;
     let closed_valid = |p: &maugis::contact::paths::ControlPaths| {
         p.reloading.iter().chain(&p.unloading).chain(&p.cycle_unloading).all(|n| n.valid) && p.dissipation.invalid == 0.0
     };
@@ -410,10 +443,11 @@ fn same_setup(spec: &ScalesSpec, earlier: &ScalesSpec) -> bool {
     spec.amax == earlier.amax && spec.resolution == earlier.resolution && spec.model_points == earlier.model_points && spec.law == earlier.law
 }
 
-/// [`run_study`], taking each cycle that one of `earlier` studies already ran
-/// with the same setup (same `lambda` and waves, [`same_setup`]) from it
-/// instead of running it again (its index and roles renumbered for this
-/// study): a study of more scales extends one of fewer.
+/// [`run_study`], taking each solver cycle that one of `earlier` studies
+/// already ran with the same setup (same `lambda` and waves, [`same_setup`])
+/// from it instead of running it again (its index and roles renumbered for
+/// this study, the model recomputed, which is cheap beside the solver): a
+/// study of more scales extends one of fewer.
 pub fn run_study_reusing<P: Fn(&ScaleCycle) + Sync>(
     spec: ScalesSpec,
     shard: Option<(usize, usize)>,
@@ -428,7 +462,7 @@ pub fn run_study_reusing<P: Fn(&ScaleCycle) + Sync>(
     };
     let run = |case: &CycleCase| {
         let r = match known(case) {
-            Some(c) => ScaleCycle { index: case.index, roles: case.roles.clone(), ..c.clone() },
+            Some(c) => with_model(&spec, ScaleCycle { index: case.index, roles: case.roles.clone(), ..c.clone() }),
             None => run_cycle(&spec, case, spec.resolution),
         };
         progress(&r);
@@ -524,4 +558,113 @@ impl ScalesStudy {
         }
         rows
     }
+}
+
+/// The search of `lambda*` for one profile of a study ([`lambda_star`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct StarScan {
+    /// Scan range of `lambda`.
+    pub lambda_min: f64,
+    /// Scan range of `lambda`.
+    pub lambda_max: f64,
+    /// Scan points (log-spaced, `>= 2`).
+    pub scan: usize,
+    /// Threshold as a fraction of `W_JKR` (`> 0`).
+    pub fraction: f64,
+    /// Bisect until the bracket's ratio is below `1 + rel_tol`.
+    pub rel_tol: f64,
+    /// Repeat the search at the refined resolution (the grid uncertainty).
+    pub refine: bool,
+}
+
+/// `lambda*` of one profile of a study.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct ScaleTransition {
+    /// Hurst exponent.
+    pub hurst: f64,
+    /// Number of scales.
+    pub scales: usize,
+    /// The search's settings.
+    pub scan: StarScan,
+    /// The model's W (load control) of the profile at [`JKR_LAMBDA`].
+    pub w_jkr: f64,
+    /// `fraction * w_jkr`.
+    pub threshold: f64,
+    /// At the study's resolution.
+    pub search: Search,
+    /// At the refined resolution (`None`: not run).
+    pub refined: Option<Search>,
+}
+
+impl ScaleTransition {
+    /// `lambda*` of the refined search, or of the search without one.
+    pub fn lambda_star(&self) -> Option<f64> {
+        self.refined.as_ref().map_or(self.search.lambda_star, |r| r.lambda_star)
+    }
+
+    /// Relative uncertainty (`crate::transition` module docs).
+    pub fn relative_uncertainty(&self) -> Option<f64> {
+        relative_uncertainty(&self.search, self.refined.as_ref())
+    }
+}
+
+/// `lambda*` of the profile of `scales` scales at `hurst` (issue 39 item 3),
+/// with `crate::transition`'s definition: the lower end of the range where the
+/// excess `W - W_smooth` of the solver's closed cycle exceeds `fraction` times
+/// the model's W in the JKR limit ([`JKR_LAMBDA`]) on the same profile, by a
+/// log scan and bisection, repeated at the refined resolution for the grid
+/// uncertainty. The cycles are the study's ([`run_cycle`]'s resolution rule),
+/// read along the legs; `progress` is called after each cycle pair.
+pub fn lambda_star(spec: &ScalesSpec, hurst: f64, scales: usize, scan: StarScan, progress: &(dyn Fn(&Evaluation) + Sync)) -> Result<ScaleTransition> {
+    spec.check()?;
+    count_in_range(scales, "the number of scales", 1, spec.max_scales)?;
+    for (v, what) in [(scan.lambda_min, "lambda_min"), (scan.lambda_max, "lambda_max"), (scan.fraction, "fraction")] {
+        finite(v, what)?;
+        in_range(v, what, Interval::above(0.0))?;
+    }
+    in_range(scan.lambda_max, "lambda_max (above lambda_min)", Interval::above(scan.lambda_min))?;
+    let waves = spec.waves(hurst, scales)?;
+    let (jkr, _) = case_params(spec, JKR_LAMBDA, &waves)?;
+    let w_jkr = model_cycle(jkr, spec, finest_wavelength(spec, &waves))?.w;
+    let threshold = scan.fraction * w_jkr;
+    let mut cache: std::collections::HashMap<(u64, u32), Evaluation> = std::collections::HashMap::new();
+    let mut run = |resolution: ScaleResolution, lambdas: &[f64]| -> Result<Search> {
+        let mut eval = |lambda: f64| -> Result<Evaluation> {
+            if let Some(e) = cache.get(&(lambda.to_bits(), resolution.refinement)) {
+                return Ok(*e);
+            }
+            let w = |waves: &[(f64, f64)]| -> Result<(f64, Resolution)> {
+                let case = CycleCase { index: 0, lambda, waves: waves.to_vec(), roles: Vec::new() };
+                let (params, profile) = case_params(spec, lambda, waves)?;
+                let mut c = blank_cycle(&case);
+                simulate_case(spec, &case, params, profile, finest_wavelength(spec, waves), resolution, &mut c)?;
+                Ok((c.w.unwrap_or(f64::NAN), Resolution { cells: c.cells, steps_per_leg: c.steps_per_leg }))
+            };
+            let (w_rough, r) = w(&waves)?;
+            let (w_smooth, _) = w(&[])?;
+            let e = Evaluation { lambda, w: w_rough, w_smooth, resolution: r };
+            progress(&e);
+            cache.insert((lambda.to_bits(), resolution.refinement), e);
+            Ok(e)
+        };
+        search_with(lambdas, scan.rel_tol, threshold, &mut eval)
+    };
+    let lambdas = scan_lambdas(scan.lambda_min, scan.lambda_max, scan.scan);
+    let search = run(spec.resolution, &lambdas)?;
+    let refined = if scan.refine {
+        let fine = spec.resolution.refined();
+        let mut r = match search.scan_bracket {
+            Some((lo, hi)) => run(fine, &[lo, hi])?,
+            None => run(fine, &lambdas)?,
+        };
+        if r.outside.is_some() && search.scan_bracket.is_some() {
+            r = run(fine, &lambdas)?;
+        }
+        Some(r)
+    } else {
+        None
+    };
+    Ok(ScaleTransition { hurst, scales, scan, w_jkr, threshold, search, refined })
 }

@@ -158,14 +158,21 @@ impl Transition {
     /// bracket in `ln lambda`, plus the shift between the two resolutions when
     /// the refined search ran (without it, the bisection part only).
     pub fn relative_uncertainty(&self) -> Option<f64> {
-        let best = self.refined.as_ref().unwrap_or(&self.search);
-        let (lo, hi) = best.bracket?;
-        let shift = match &self.refined {
-            Some(r) => (r.lambda_star?.ln() - self.search.lambda_star?.ln()).abs(),
-            None => 0.0,
-        };
-        Some(0.5 * (hi / lo).ln() + shift)
+        relative_uncertainty(&self.search, self.refined.as_ref())
     }
+}
+
+/// The relative uncertainty of `lambda*` from a search and its refined
+/// repetition (module docs): half the final bracket in `ln lambda`, plus the
+/// shift between the two resolutions when the refined search ran.
+pub fn relative_uncertainty(search: &Search, refined: Option<&Search>) -> Option<f64> {
+    let best = refined.unwrap_or(search);
+    let (lo, hi) = best.bracket?;
+    let shift = match refined {
+        Some(r) => (r.lambda_star?.ln() - search.lambda_star?.ln()).abs(),
+        None => 0.0,
+    };
+    Some(0.5 * (hi / lo).ln() + shift)
 }
 
 /// The model's W (load control) at [`JKR_LAMBDA`].
