@@ -6,7 +6,7 @@
 //!
 //! Wave `j = 0..N-1` of the profile has wavelength `beta gamma^-j` and amplitude
 //! `alpha gamma^(-H j)` (`WavyProfile::weierstrass`). For each Hurst exponent
-//! `H`, each `lambda` and each `N <= max_scales` [`ScalesSpec::cases`] lists
+//! `H`, each `lambda` and each `N <= max_scales` [`ScalesSpec::cycles`] lists
 //! three kinds of cycle:
 //!
 //! * the profile of `N` scales;
@@ -40,6 +40,16 @@
 //! `lambda <= 1`, 4096 above, 400 steps). [`ScaleResolution::refined`] doubles both: the grid
 //! study of `docs/multiscale.md` runs the largest `N` at both and reports the
 //! change.
+
+//!
+//! # lambda* ([`lambda_star`])
+//!
+//! The transitional Maugis parameter of `crate::transition` for a profile of
+//! the study: the lower end of the lambda range where the excess of the
+//! solver's W over the smooth cylinder's exceeds a fraction of the model's W
+//! in the JKR limit on the same profile, by a log scan and bisection, repeated
+//! at the refined resolution for the grid part of its uncertainty
+//! ([`crate::transition::search_with`]).
 
 use maugis::contact::curve::{load_area_curve, CurveOptions, DEFAULT_DATUM};
 use maugis::contact::model::Params;
@@ -444,7 +454,8 @@ fn same_setup(spec: &ScalesSpec, earlier: &ScalesSpec) -> bool {
 }
 
 /// [`run_study`], taking each solver cycle that one of `earlier` studies
-/// already ran with the same setup (same `lambda` and waves, [`same_setup`])
+/// already ran with the same setup (the same `lambda` and waves; the same amax,
+/// resolution rule, model points and law)
 /// from it instead of running it again (its index and roles renumbered for
 /// this study, the model recomputed, which is cheap beside the solver): a
 /// study of more scales extends one of fewer.
