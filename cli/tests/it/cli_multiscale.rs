@@ -98,7 +98,9 @@ fn a_sharded_scales_study_merges_into_its_tables_and_plot() {
     let md = std::fs::read_to_string(whole.join("scales.md")).unwrap();
     assert!(md.contains("| 1 |") && md.contains("smallest N cavitating"), "{md}");
     let plot = render::check_svg(&whole.join("scales.svg"));
-    assert!(plot.entries().any(|e| e.label.starts_with("λ = 1, H = 0.5") || e.label.starts_with("lambda = 1, H = 0.5")), "plot legend");
+    for label in ["solver W, H = 0.5", "sum of the single scales", "model W"] {
+        assert!(plot.entries().any(|e| e.label.starts_with(label)), "plot legend: no entry {label}");
+    }
     // Reusing the merged study runs no cycle and gives the same rows.
     let o = maugis(&[&base[..], &["--reuse", whole.to_str().unwrap(), "--out", again.to_str().unwrap()]].concat());
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
