@@ -55,7 +55,12 @@ impl ContactSize {
         let beta = self.params.profile.scan_wavelength();
         let max_step = (beta / 16.0).min(0.25).max(1e-6);
         let eval = |s: f64| -> Result<f64> {
-            let v = f(s / a);
+            let z = s / a;
+            if !z.is_finite() {
+                // a strip width over f64::MAX times a subnormal contact size
+                return Err(Error::NotRepresentable { quantity: "m - 1 (the strip end)", abar: a });
+            }
+            let v = f(z);
             if v.is_finite() {
                 Ok(v)
             } else {
