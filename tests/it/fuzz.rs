@@ -270,6 +270,7 @@ fn registry_mp_budget_scan() {
                 (worst, worst_text) = (took, text.clone());
             }
             if limit.is_some_and(|l| took > l) {
+                eprintln!("over the limit: {text}: {took:.3} s");
                 too_slow.push(format!("{text}: {took:.2} s"));
             }
             match answer {
