@@ -90,6 +90,7 @@ mod limits;
 mod local;
 mod oscillatory;
 mod parse;
+mod removable;
 mod tree;
 
 #[cfg(test)]
