@@ -7,7 +7,7 @@ use rug::{Float, Rational};
 
 use super::decay::const_rational;
 use super::local::{affine, factors, local_class, singular_candidates};
-use super::removable::removable_point;
+use super::removable::{atan_reciprocals_rewritten, removable_point};
 use super::tree::{Expr, Function};
 use crate::ball::{CBall, Decimal};
 use crate::error::{Error, IntegrationError, Result};
@@ -27,6 +27,13 @@ pub(crate) fn integrate_finite(f: &Expr, a: &Rational, b: &Rational, ip: u32, pr
         return integrate(g, &to_ball(a), &to_ball(b), prec, opts);
     }
     let (lo, hi, flip) = if a < b { (a, b, false) } else { (b, a, true) };
+    if let Some(g) = atan_reciprocals_rewritten(f, lo, hi) {
+        let mut r = integrate_finite(&g, lo, hi, ip, prec, opts)?;
+        if flip {
+            r.value = r.value.neg();
+        }
+        return Ok(r);
+    }
     let mut candidates = Vec::new();
     singular_candidates(f, &mut candidates);
     let finite_at = |p: &Rational| f.eval(&CBall::from_real(to_ball(p))).is_finite();

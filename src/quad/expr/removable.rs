@@ -1,7 +1,9 @@
 //! Removable singular points of a quotient, `f = N / U` with `U` affine: `sin(x)/x`,
 //! `(exp(x) - 1)/x`, `sin(x - 1/2)/(x - 1/2)`. The integrand is then enclosed on every
 //! box, the point's included, and integrated as the analytic function it is, with no
-//! split and no map at the point (issue 40).
+//! split and no map at the point (issue 40). Also `atan(1/u)` at an end of the range
+//! where `u` vanishes, replaced by the function equal to it on the segment
+//! ([`atan_reciprocals_rewritten`]).
 //!
 //! # Method
 //!
@@ -221,5 +223,58 @@ mod tests {
             let e = Expr::parse(text).unwrap().canonical();
             assert_eq!(removable_point(&e, &q("-1"), &q("1")).is_some(), found, "{text}");
         }
+    }
+}
+
+/// `f` with every `atan(1/u)` (`u` affine, not vanishing inside `(lo, hi)`) replaced by
+/// `s pi/2 - atan(u)`, `s` the sign of `u` on `(lo, hi)`: the two agree at every point
+/// of the open segment (for real `u > 0` both have the derivative `-1/(1 + u^2)` and
+/// tend to 0 as `u -> inf`; `u < 0` is the odd mirror), so the integral is the same,
+/// and the new integrand is analytic next to the segment where the old one jumps at
+/// `u = 0` (`atan(1/x)` on `[0, 1]`). `None` when there is nothing to replace.
+pub(crate) fn atan_reciprocals_rewritten(f: &Expr, lo: &Rational, hi: &Rational) -> Option<Expr> {
+    let mut changed = false;
+    let e = rewrite(f, lo, hi, &mut changed);
+    changed.then_some(e)
+}
+
+fn rewrite(e: &Expr, lo: &Rational, hi: &Rational, changed: &mut bool) -> Expr {
+    let mut r = |a: &Expr| bx(rewrite(a, lo, hi, changed));
+    match e {
+        Expr::Call(Function::Atan, arg) => {
+            let u = match &**arg {
+                Expr::Div(one, u) if matches!(&**one, Expr::Number(d) if *d.as_rational() == 1) => Some(u),
+                Expr::PowInt(u, -1) => Some(u),
+                _ => None,
+            };
+            if let Some((u, (c0, c1))) = u.and_then(|u| affine(u).map(|c| (u, c))) {
+                let at = |x: &Rational| Rational::from(&c0 + Rational::from(&c1 * x));
+                let (ulo, uhi) = (at(lo), at(hi));
+                let sign = if ulo >= 0 && uhi >= 0 && (ulo > 0 || uhi > 0) {
+                    1
+                } else if ulo <= 0 && uhi <= 0 && (ulo < 0 || uhi < 0) {
+                    -1
+                } else {
+                    0
+                };
+                if sign != 0 {
+                    *changed = true;
+                    let half_pi = Expr::Div(bx(Expr::Pi), bx(number(2)));
+                    let half_pi = if sign > 0 { half_pi } else { Expr::Neg(bx(half_pi)) };
+                    return Expr::Sub(bx(half_pi), bx(Expr::Call(Function::Atan, u.clone())));
+                }
+            }
+            Expr::Call(Function::Atan, r(arg))
+        }
+        Expr::X | Expr::Pi | Expr::Number(_) => e.clone(),
+        Expr::Neg(a) => Expr::Neg(r(a)),
+        Expr::Add(a, b) => Expr::Add(r(a), r(b)),
+        Expr::Sub(a, b) => Expr::Sub(r(a), r(b)),
+        Expr::Mul(a, b) => Expr::Mul(r(a), r(b)),
+        Expr::Div(a, b) => Expr::Div(r(a), r(b)),
+        Expr::PowInt(a, n) => Expr::PowInt(r(a), *n),
+        Expr::Pow(a, b) => Expr::Pow(r(a), r(b)),
+        Expr::Call(f, a) => Expr::Call(*f, r(a)),
+        Expr::BesselJ(n, a) => Expr::BesselJ(*n, r(a)),
     }
 }
