@@ -91,6 +91,7 @@ mod local;
 mod oscillatory;
 mod parse;
 mod removable;
+mod substitute;
 mod tree;
 
 #[cfg(test)]
