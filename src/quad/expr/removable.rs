@@ -239,7 +239,6 @@ pub(crate) fn atan_reciprocals_rewritten(f: &Expr, lo: &Rational, hi: &Rational)
 }
 
 fn rewrite(e: &Expr, lo: &Rational, hi: &Rational, changed: &mut bool) -> Expr {
-    let mut r = |a: &Expr| bx(rewrite(a, lo, hi, changed));
     match e {
         Expr::Call(Function::Atan, arg) => {
             let u = match &**arg {
@@ -264,17 +263,8 @@ fn rewrite(e: &Expr, lo: &Rational, hi: &Rational, changed: &mut bool) -> Expr {
                     return Expr::Sub(bx(half_pi), bx(Expr::Call(Function::Atan, u.clone())));
                 }
             }
-            Expr::Call(Function::Atan, r(arg))
+            e.map_children(|a| rewrite(a, lo, hi, changed))
         }
-        Expr::X | Expr::Pi | Expr::Number(_) => e.clone(),
-        Expr::Neg(a) => Expr::Neg(r(a)),
-        Expr::Add(a, b) => Expr::Add(r(a), r(b)),
-        Expr::Sub(a, b) => Expr::Sub(r(a), r(b)),
-        Expr::Mul(a, b) => Expr::Mul(r(a), r(b)),
-        Expr::Div(a, b) => Expr::Div(r(a), r(b)),
-        Expr::PowInt(a, n) => Expr::PowInt(r(a), *n),
-        Expr::Pow(a, b) => Expr::Pow(r(a), r(b)),
-        Expr::Call(f, a) => Expr::Call(*f, r(a)),
-        Expr::BesselJ(n, a) => Expr::BesselJ(*n, r(a)),
+        _ => e.map_children(|a| rewrite(a, lo, hi, changed)),
     }
 }

@@ -71,34 +71,25 @@ fn substitute(e: &Expr, a: &Rational, resolved: &mut bool) -> Expr {
     if let Some((c0, c1)) = affine(e) {
         return affine_in_t(&c0, &c1, a);
     }
-    let mut r = |x: &Expr| bx(substitute(x, a, resolved));
     match e {
-        Expr::Call(Function::Sqrt, u) => match vanishing_slope(u, a) {
-            Some(c1) => {
+        Expr::Call(Function::Sqrt, u) => {
+            if let Some(c1) = vanishing_slope(u, a) {
                 *resolved = true;
-                Expr::Mul(bx(Expr::Call(Function::Sqrt, bx(number(c1)))), bx(Expr::X))
+                return Expr::Mul(bx(Expr::Call(Function::Sqrt, bx(number(c1)))), bx(Expr::X));
             }
-            None => Expr::Call(Function::Sqrt, r(u)),
-        },
-        Expr::Pow(u, p) => match (vanishing_slope(u, a), const_rational(p)) {
-            (Some(c1), Some(q)) if *q.denom() == 2 => {
-                *resolved = true;
-                let k = Rational::from(&q * 2u32);
-                let k = k.numer().to_i64().unwrap_or(0);
-                Expr::Mul(bx(Expr::Pow(bx(number(c1)), bx(number(q)))), bx(Expr::PowInt(bx(Expr::X), k)))
+        }
+        Expr::Pow(u, p) => {
+            if let (Some(c1), Some(q)) = (vanishing_slope(u, a), const_rational(p)) {
+                if *q.denom() == 2 {
+                    *resolved = true;
+                    let k = Rational::from(&q * 2u32).numer().to_i64().unwrap_or(0);
+                    return Expr::Mul(bx(Expr::Pow(bx(number(c1)), bx(number(q)))), bx(Expr::PowInt(bx(Expr::X), k)));
+                }
             }
-            _ => Expr::Pow(r(u), r(p)),
-        },
-        Expr::X | Expr::Pi | Expr::Number(_) => e.clone(),
-        Expr::Neg(x) => Expr::Neg(r(x)),
-        Expr::Add(x, y) => Expr::Add(r(x), r(y)),
-        Expr::Sub(x, y) => Expr::Sub(r(x), r(y)),
-        Expr::Mul(x, y) => Expr::Mul(r(x), r(y)),
-        Expr::Div(x, y) => Expr::Div(r(x), r(y)),
-        Expr::PowInt(x, n) => Expr::PowInt(r(x), *n),
-        Expr::Call(f, x) => Expr::Call(*f, r(x)),
-        Expr::BesselJ(n, x) => Expr::BesselJ(*n, r(x)),
+        }
+        _ => {}
     }
+    e.map_children(|x| substitute(x, a, resolved))
 }
 
 #[cfg(test)]
