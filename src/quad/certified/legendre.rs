@@ -437,7 +437,8 @@ fn newton_bits(n: usize, prec: u32) -> u32 {
 fn derivative_bound_at_one(n: usize, k: usize) -> Mag {
     let mut m = Mag::from_f64(1.0);
     for j in 0..2 * k {
-        m = m.mul(Mag::from_f64((n + k - j) as f64));
+        // a factor n + k - j <= 0 (n < k) makes the derivative 0: the bound 0 holds
+        m = m.mul(Mag::from_f64((n + k).saturating_sub(j) as f64));
     }
     for j in 1..=k {
         m = m.div(Mag::from_f64((2 * j) as f64));
@@ -514,7 +515,8 @@ fn weight(node: &Ball, slope: &Ball) -> Result<Ball> {
 fn certify_node(n: usize, x: &Float, prec: u32, fw: &FourierWeights) -> Result<Option<(Ball, Ball)>> {
     let ext = precisions(n, prec).1;
     let xb = Ball::from_float(x, ext);
-    if !xb.rad_mag().is_zero() {
+    // x exact, and inside (-1, 1), where the bounds through M_3 hold
+    if !xb.rad_mag().is_zero() || *x >= 1 || *x <= -1 {
         return Ok(None);
     }
     let (value, slope) = legendre_fourier(n, &xb, fw)?;

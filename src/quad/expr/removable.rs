@@ -120,9 +120,9 @@ fn mul(a: Expr, b: Expr) -> Expr {
 }
 
 /// The derivative in `x` of the tree, by the sum, product, quotient, power and chain
-/// rules and the derivatives of the functions (DLMF 4.14, 4.35, 10.6.2 for `J_n' =
-/// (J_{n-1} - J_{n+1})/2`, `J_0' = -J_1`). `None` for `J_n` of negative order or of
-/// the largest order.
+/// rules and the derivatives of the functions (DLMF 4.14 and 4.34 for the
+/// trigonometric and hyperbolic ones, 10.6(i) for `J_n' = (J_{n-1} - J_{n+1})/2` and
+/// `J_0' = -J_1`). `None` for `J_n` of negative order or of the largest order.
 pub(crate) fn derivative(e: &Expr) -> Option<Expr> {
     if !e.depends_on_x() {
         return Some(number(0));
