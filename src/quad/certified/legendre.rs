@@ -648,13 +648,15 @@ mod tests {
         }
     }
 
-    /// Every node of the integrator's degrees (up to 512) is certified by the one
-    /// evaluation of step 3 at 64, 333 and 1000 bits, none by the fallback; the nodes
-    /// and weights, rounded to the requested bits, keep them.
+    /// Every node of the integrator's degrees (up to 512, its default cap) is certified
+    /// by the one evaluation of step 3 at 64, 333 and 1000 bits (and three degrees at
+    /// 3333), none by the fallback; the nodes and weights, rounded to the requested
+    /// bits, keep them.
     #[test]
     fn every_node_is_certified_by_the_taylor_bound() {
-        for &prec in &[64u32, 333, 1000] {
-            for &n in crate::quad::certified::adaptive::DEGREES.iter().filter(|&&n| n <= 512) {
+        let all: Vec<usize> = crate::quad::certified::adaptive::DEGREES.iter().copied().filter(|&n| n <= 512).collect();
+        for (prec, degrees) in [(64u32, all.clone()), (333, all.clone()), (1000, all), (3333, vec![7, 108, 512])] {
+            for n in degrees {
                 let mut fallbacks = 0;
                 let r = build_rule(n, prec, &mut fallbacks).unwrap();
                 assert_eq!(fallbacks, 0, "n {n} at {prec} bits");
