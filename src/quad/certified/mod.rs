@@ -590,6 +590,8 @@ where
     let mut zero_shift: i64 = 0;
     let mut zero_attempts = 0u32;
     for _attempt in 0..MAX_ATTEMPTS {
+        // the installed time budget (crate::budget), between attempts
+        crate::budget::check_elapsed("certified quadrature (attempts)", 0.0, crate::error::Reached::Evaluations { count: evaluations })?;
         let tol = tolerance(opts, goal, mag, l1).mul_2exp(tol_shift + zero_shift);
         let parts = builder(tol, wp, f)?;
         let n_parts = parts.iter().filter(|p| p.lo != p.hi).count().max(1) as u64;
