@@ -7,6 +7,10 @@
 //! * `hyp1f2_large_grid`: `hyp1f2_mp` at 128 bits on the issue-23 grid of large
 //!   parameters and `1F2(1/2; 1, 3/2; z)` down to `z = -10^6` at 53, 128, 400 bits;
 //! * `hyp2f1(1, k+1/2; k+2; y)` at 128 bits near and at y = 1;
+//! * `hyp2f1_large_param`: MP `2F1` with one large parameter (`b` in {1e4, 1e5, 1e6})
+//!   on the 76 points of `reference/data/hyp2f1_large_param.csv` at 64 and 256 bits,
+//!   through the decimal path `maugis eval` takes (target: 50 ms a call; Arb and
+//!   mpmath beside it: `reference/bench_hyp2f1_large_param.py`);
 //! * `bessel_j` MP at fixed points; f64 over the issue-8 domain (`bessel_j_f64`);
 //! * `bessel_j_large`: `bessel_j_mp` over the issue-13 grid (n in {0, 1, 7, 60,
 //!   500, 2000, 10000} x x in {0.001, ..., 1000000.5}) and J_500(30000),
@@ -214,6 +218,29 @@ fn bench_hyp2f1(c: &mut Criterion) {
     g.finish();
 }
 
+/// MP `2F1` with one large parameter over the grid of
+/// `reference/data/hyp2f1_large_param.csv` (issue 37), at 64 and 256 bits, through
+/// `eval_at_decimals` + `hyp2f1_ball_mp` as `maugis eval` runs it; one id per point
+/// (`prec=P/i:a,b,c,z`). Arb and mpmath on the same points:
+/// `python3 reference/bench_hyp2f1_large_param.py 64 256`.
+fn bench_hyp2f1_large_param(c: &mut Criterion) {
+    use maugis::ball::{eval_at_decimals, Decimal};
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/reference/data/hyp2f1_large_param.csv");
+    let mut rdr = csv::ReaderBuilder::new().comment(Some(b'#')).from_path(path).expect("reference/data/hyp2f1_large_param.csv");
+    let rows: Vec<Vec<String>> = rdr.records().map(|r| r.expect("csv row").iter().take(4).map(str::to_string).collect()).collect();
+    let mut g = c.benchmark_group("hyp2f1_large_param");
+    g.sample_size(10).warm_up_time(std::time::Duration::from_millis(100)).measurement_time(std::time::Duration::from_millis(400));
+    for prec in [64u32, 256] {
+        for (i, r) in rows.iter().enumerate() {
+            let d: Vec<Decimal> = r.iter().map(|s| Decimal::parse(s).expect("decimal")).collect();
+            g.bench_function(BenchmarkId::new(format!("prec={prec}"), format!("{i}:{}", r.join(","))), |b| {
+                b.iter(|| eval_at_decimals(black_box(&d), prec, |x| hyp2f1::hyp2f1_ball_mp(&x[0], &x[1], &x[2], &x[3], prec)).unwrap())
+            });
+        }
+    }
+    g.finish();
+}
+
 /// The issue-8 domain for the f64 comparison with SciPy: a, b in [-3, 3],
 /// c in [0.5, 6], z in [-5, 0.9], from the 64-bit LCG that
 /// reference/bench_scipy.py reproduces (same seed, same points).
@@ -340,6 +367,6 @@ fn bench_bessel_large(c: &mut Criterion) {
 criterion_group! {
     name = benches;
     config = Criterion::default().sample_size(20).warm_up_time(std::time::Duration::from_millis(300)).measurement_time(std::time::Duration::from_secs(1));
-    targets = bench_meijer, bench_hyp1f2, bench_hyp1f2_large, bench_hyp1f2_domain, bench_meijer_domain, bench_hyp2f1, bench_hyp2f1_f64, bench_bessel, bench_bessel_large, bench_bessel_f64
+    targets = bench_meijer, bench_hyp1f2, bench_hyp1f2_large, bench_hyp1f2_domain, bench_meijer_domain, bench_hyp2f1, bench_hyp2f1_large_param, bench_hyp2f1_f64, bench_bessel, bench_bessel_large, bench_bessel_f64
 }
 criterion_main!(benches);

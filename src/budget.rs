@@ -12,10 +12,16 @@
 //! * **Between the iterations** of a loop whose length no model bounds in
 //!   advance (the Ziv loops that raise the working precision, the retries of
 //!   [`crate::ball::eval_at_decimals`] at tighter input balls, the MP wave
-//!   quadrature's outer nodes), the time spent plus an estimate of the next
+//!   quadrature's outer nodes, the certified quadrature's bisection and attempts,
+//!   the pFq series every 64 terms, the 1F2 model family's series every 256 terms,
+//!   the wave series every term, the model's f64 strip-root scan every 64
+//!   samples), the time spent plus an estimate of the next
 //!   iteration (the last one's time, scaled with the precision) is compared with
 //!   the budget; past it the loop stops with [`Error::BudgetSpent`], which names
 //!   the time spent and what was reached ([`Reached`]).
+//! * **One MPFR Gamma** (no loop to interrupt) is refused with
+//!   [`Error::TooExpensive`] when its estimated time at the precision it would run
+//!   at (the first call's, Bernoulli numbers included) passes the budget.
 //!
 //! # Setting a budget
 //!

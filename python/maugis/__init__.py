@@ -51,7 +51,7 @@ from ._model import (
     strip_ratio,
     sweep,
 )
-from ._integrate import integrate
+from ._integrate import Integral, integrate
 from ._simulate import simulate
 from ._special import bessel_j, du_wave, hyp1f2, hyp1f2_model_family, hyp2f1, meijer_g_k, meijer_g_k_family, u_wave
 
@@ -76,6 +76,7 @@ __all__ = [
     "du_wave",
     "fallback_counts",
     "integrate",
+    "Integral",
     "run_summary",
     "sweep",
     "simulate",

@@ -76,7 +76,16 @@ def integrate(
     decay_bound: Union[float, int, str, mpmath.mpf, None] = ...,
     output: Literal["mpf", "str"] = ...,
     digits: int | None = ...,
-) -> Tuple[Any, Any]: ...
+) -> Integral: ...
+
+class Integral(Tuple[Any, Any]):
+    """``(mid, rad)`` of a certified integral, with ``abs_tol`` and ``evaluations``."""
+    abs_tol: Any
+    evaluations: int
+    @property
+    def mid(self) -> Any: ...
+    @property
+    def rad(self) -> Any: ...
 
 class Record(dict[str, Any]):
     """A JSON object; keys are also attributes."""

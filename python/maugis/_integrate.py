@@ -12,7 +12,33 @@ import numpy as np
 from . import _maugis as _ext
 from ._special import _LOG10_2, _mp_arg, _mp_options, _to_mpf
 
-__all__ = ["integrate"]
+__all__ = ["integrate", "Integral"]
+
+
+class Integral(tuple):
+    """``(mid, rad)`` of a certified integral, unpacked like a pair, with two more
+    attributes: ``abs_tol``, the absolute tolerance a ball containing 0 met (``None``
+    when the relative goal decided; an ``mpmath.mpf``, or a decimal string with
+    ``output="str"``), and ``evaluations``, the integrand evaluations used."""
+
+    def __new__(cls, mid, rad, abs_tol, evaluations):
+        self = super().__new__(cls, (mid, rad))
+        self.abs_tol = abs_tol
+        self.evaluations = evaluations
+        return self
+
+    @property
+    def mid(self):
+        """The midpoint."""
+        return self[0]
+
+    @property
+    def rad(self):
+        """The radius (bounding each of the real and imaginary parts)."""
+        return self[1]
+
+    def __repr__(self):
+        return f"Integral(mid={self[0]!r}, rad={self[1]!r}, abs_tol={self.abs_tol!r}, evaluations={self.evaluations})"
 
 
 def _is_plus_inf(v):
@@ -78,11 +104,14 @@ def integrate(
     ``(x-a)**alpha (b-x)**beta log(x-a)**log f(x)``, certified without truncation
     (``alpha, beta > -1``).
 
-    Returns ``(mid, rad)``: the integral lies within ``rad`` of ``mid`` (in each of
-    the real and imaginary parts) and ``rad <= 2**-prec |mid|`` when the goal is
-    met, or, for a ball that contains 0 (a zero integral such as ``sin(x)`` on
-    ``[-1, 1]``), ``rad`` at most the default absolute tolerance, ``2**-prec`` times a
-    bound of ``int |f|`` (``docs/quadrature.md``). ``mid`` is an ``mpmath.mpf``, or an ``mpmath.mpc`` when the integrand is
+    Returns an ``Integral``, the pair ``(mid, rad)`` (``mid, rad = integrate(...)``):
+    the integral lies within ``rad`` of ``mid`` (in each of the real and imaginary
+    parts) and ``rad <= 2**-prec |mid|`` when the goal is met, or, for a ball that
+    contains 0 (a zero integral such as ``sin(x)`` on ``[-1, 1]``), ``rad`` at most
+    the default absolute tolerance, ``2**-prec`` times a bound of ``int |f|``
+    (``docs/quadrature.md``), which is then its attribute ``abs_tol`` (``None``
+    otherwise); ``evaluations`` counts the integrand's evaluations. ``mid`` is an
+    ``mpmath.mpf``, or an ``mpmath.mpc`` when the integrand is
     complex somewhere on the range (``sqrt(x)`` for ``x < 0``) and the imaginary
     part may exceed ``rad``; with ``output="str"`` both are decimal strings (a
     complex ``mid`` written ``"re+imj"``). A result stopped by a limit before its
@@ -117,15 +146,17 @@ def integrate(
     if r["warning"] is not None:
         warnings.warn(r["warning"], RuntimeWarning, stacklevel=2)
     (re_mid, re_rad), im = r["re"], r["im"]
+    abs_tol, evaluations = r["abs_tol"], r["evaluations"]
     if output == "str":
         if im is None:
-            return re_mid, re_rad
+            return Integral(re_mid, re_rad, abs_tol, evaluations)
         im_mid, im_rad = im
         sign = "" if im_mid.startswith("-") else "+"
         rad = re_rad if Decimal(re_rad) >= Decimal(im_rad) else im_rad
-        return f"{re_mid}{sign}{im_mid}j", rad
+        return Integral(f"{re_mid}{sign}{im_mid}j", rad, abs_tol, evaluations)
+    abs_tol = None if abs_tol is None else mpmath.mpf(abs_tol)
     mid, rad = _to_mpf(re_mid), _to_mpf(re_rad)
     if im is None:
-        return mid, rad
+        return Integral(mid, rad, abs_tol, evaluations)
     im_mid, im_rad = _to_mpf(im[0]), _to_mpf(im[1])
-    return mpmath.mp.make_mpc((mid._mpf_, im_mid._mpf_)), max(rad, im_rad)
+    return Integral(mpmath.mp.make_mpc((mid._mpf_, im_mid._mpf_)), max(rad, im_rad), abs_tol, evaluations)

@@ -138,3 +138,22 @@ def test_type_errors():
         maugis.integrate(lambda x: x, 0, 1)
     with pytest.raises(TypeError):
         maugis.integrate("x", 0, 1, prec=1.5)
+
+
+def test_zero_integral_carries_its_absolute_tolerance():
+    """sin(x) on [-1, 1] is 0: the ball meets the default absolute tolerance, 2^-prec
+    times a certified bound of int |sin| = 2 (1 - cos 1) = 0.92 (at most four times the
+    rough estimate of it), and says so in abs_tol; a nonzero integral has none."""
+    for prec in (64, 200):
+        r = maugis.integrate("sin(x)", -1, 1, prec=prec)
+        mid, rad = r
+        assert (mid, rad) == (r.mid, r.rad)
+        assert _contains(mid, rad, 0)
+        assert r.abs_tol is not None and rad <= r.abs_tol
+        scale = r.abs_tol * mpmath.mpf(2) ** prec
+        assert 2 * (1 - mpmath.cos(1)) <= scale <= 8, scale
+        assert r.evaluations > 0
+    r = maugis.integrate("exp(x)", 0, 1, prec=64)
+    assert r.abs_tol is None and r.evaluations > 0
+    s = maugis.integrate("sin(x)", -1, 1, prec=64, output="str")
+    assert isinstance(s.abs_tol, str) and mpmath.mpf(s.abs_tol) > 0

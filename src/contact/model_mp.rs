@@ -164,17 +164,36 @@ impl ModelBalls {
     }
 
     /// The midpoints rounded to f64, for the f64 root scan that starts
-    /// [`solve_m_ball_mp`].
-    fn f64_start(&self) -> Result<ContactSize> {
+    /// [`solve_m_ball_mp`], and the start `e0 = m - 1` at working precision `wp`
+    /// that the scan gives.
+    ///
+    /// A contact size below [`START_ABAR_MIN`] (down to the MP range, `1e-400` as
+    /// typed) is scanned at `START_ABAR_MIN`: the root's strip width `s = abar (m - 1)`
+    /// depends on `abar` there only through terms of relative size `abar ln(1/abar)`
+    /// (its limit solves `lambda (s^2/2 + (4 ln 2/pi) lambda s + 2 alpha sin^2(pi s/beta)) = 1`),
+    /// far below the f64 scan's own tolerance, so `e0 = s/abar` is computed in MP at
+    /// the midpoint. Only the start comes from here: the sign changes that enclose
+    /// the root are proven in ball arithmetic at the inputs as given.
+    fn f64_start(&self, wp: u32) -> Result<Float> {
         let f = |v: &Ball| v.mid().to_f64();
         let pairs: Vec<(f64, f64)> = self.waves.iter().map(|w| (f(&w.alpha), f(&w.beta))).collect();
         let params = match pairs.as_slice() {
             [(alpha, beta)] => Params::new(f(&self.lambda), *alpha, *beta)?,
             _ => Params::with_profile(f(&self.lambda), WavyProfile::from_pairs(&pairs)?)?,
         };
-        ContactSize::new(params, f(&self.abar))
+        let abar = f(&self.abar);
+        if abar >= START_ABAR_MIN {
+            return Ok(Float::with_val(wp, ContactSize::new(params, abar)?.solve_strip()?.m_minus_1()));
+        }
+        let width = ContactSize::new(params, START_ABAR_MIN)?.solve_strip()?.m_minus_1() * START_ABAR_MIN;
+        Ok(Float::with_val(wp, width) / self.abar.mid())
     }
 }
+
+/// The smallest contact size the f64 scan that starts [`bracket_root`] runs at
+/// (see `ModelBalls::f64_start`; below it the Bessel data of the f64 wave terms
+/// reach subnormal numbers).
+const START_ABAR_MIN: f64 = 1e-300;
 
 /// `F(m) = lambda gbar(m abar) - 1` over the input balls, at working precision
 /// `wp`, for a ball of `e = m - 1 >= 0`.
@@ -233,19 +252,30 @@ enum RootScale {
 /// of `F`; see the module doc and [`solve_m_ball_mp`].
 fn bracket_root(inputs: &ModelBalls, prec: u32, scale: RootScale) -> Result<Ball> {
     check_prec(prec)?;
-    let e0 = inputs.f64_start()?.solve_strip()?.m_minus_1();
     let mut wp = prec + 32;
+    let e0 = inputs.f64_start(wp)?;
     let mids = inputs.midpoints();
     let exact = inputs.is_exact();
     // Bracket [lo, hi] of m - 1 around the f64 root with a proven sign change
-    // over the whole input balls.
-    let mut delta = e0 * 1e-9;
+    // over the whole input balls: e0 (1 -+ 1e-9 16^tries), in f64 where that is
+    // finite (the f64 root as it was always used), else in MP (m - 1 past 1e290:
+    // a contact size below about 1e-290).
+    let e0_f64 = e0.to_f64();
+    let around = |spread: f64, wp: u32| -> (Float, Float) {
+        if e0_f64 < 1e290 {
+            let delta = e0_f64 * spread;
+            (Float::with_val(wp, (e0_f64 - delta).max(0.0)), Float::with_val(wp, e0_f64 + delta))
+        } else {
+            let delta = Float::with_val(wp, &e0 * spread);
+            (Float::with_val(wp, &e0 - &delta), Float::with_val(wp, &e0 + &delta))
+        }
+    };
+    let mut spread = 1e-9;
     let (mut lo, mut hi);
     let mut tries = 0;
     let mut raises = 0;
     loop {
-        lo = Float::with_val(wp, (e0 - delta).max(0.0));
-        hi = Float::with_val(wp, e0 + delta);
+        (lo, hi) = around(spread, wp);
         let flo = strip_residual_ball_mp(inputs, &Ball::from_float(&lo, wp), wp)?;
         let fhi = strip_residual_ball_mp(inputs, &Ball::from_float(&hi, wp), wp)?;
         if flo.is_negative() && fhi.is_positive() {
@@ -270,7 +300,7 @@ fn bracket_root(inputs: &ModelBalls, prec: u32, scale: RootScale) -> Result<Ball
                 continue;
             }
         }
-        delta *= 16.0;
+        spread *= 16.0;
         tries += 1;
         if tries > 12 {
             // No proven sign change at this working precision: the residual's
@@ -281,11 +311,11 @@ fn bracket_root(inputs: &ModelBalls, prec: u32, scale: RootScale) -> Result<Ball
             // width, not the working precision, is then what limits).
             if wp < 2 * (prec + 32) {
                 wp = (2 * wp).min(crate::MAX_WORKING_PREC);
-                delta = e0 * 1e-9;
+                spread = 1e-9;
                 tries = 0;
                 continue;
             }
-            return Err(Error::RootNotCertified { quantity: "m - 1 (the strip ratio, Eq. 15b)", near: e0, input_balls: !exact });
+            return Err(Error::RootNotCertified { quantity: "m - 1 (the strip ratio, Eq. 15b)", near: e0_f64, input_balls: !exact });
         }
     }
     let target_width = match scale {

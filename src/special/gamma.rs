@@ -234,7 +234,9 @@ fn gamma_arg_bits(x: &Float, wp: u32) -> u32 {
 /// contains a pole is [`Error::Pole`].
 pub(crate) fn gamma_of_ball(x: &Ball, wp: u32) -> Result<Ball> {
     if x.is_exact() {
-        return gamma_exact(x.mid(), wp);
+        // through gamma_ball, which rounds a midpoint longer than Gamma needs (a
+        // decimal input tightened to 65 535 bits: MPFR's Gamma there took minutes)
+        return gamma_ball(x.mid(), wp);
     }
     if let Some(at) = crate::special::pfq::contains_pole(x, None) {
         return Err(Error::Pole { function: "Gamma", at: at as f64 });
@@ -308,10 +310,42 @@ fn gamma_exact(x: &Float, wp: u32) -> Result<Ball> {
     }
     // Gamma(x) at x >= 2^61 exceeds every exponent range (ln Gamma(x) > x (ln x - 1)
     // > 2^66, MPFR's largest exponent is below 2^63): the overflow MPFR reports
-    // after working at about log2(x) bits (0.17 s at x = 2.1e31839), at once
-    if x.is_sign_positive() && x.get_exp().is_some_and(|e| e > 61) {
-        return Err(Error::Overflow { what: "gamma".into() });
+    // after working at about log2(x) bits (0.17 s at x = 2.1e31839), at once. At
+    // x <= -2^61 (not an integer: a pole is caught above) the reflection
+    // Gamma(x) = pi/(sin(pi x) Gamma(1 - x)) [DLMF 5.5.3] puts |Gamma(x)| below
+    // 2^-2^66 / |sin(pi x)|, and |sin(pi x)| >= 2 dist(x, Z) >= 2^(62 - prec(x)):
+    // below every exponent range too (MPFR worked 0.17 s to report it, issue 37's
+    // scan, `hyp2f1(21.01e31838, -67, 3.66e-106, -65.5)` at 10 bits)
+    if x.get_exp().is_some_and(|e| e > 61) {
+        let what = if x.is_sign_positive() { "gamma" } else { "gamma (its magnitude below the exponent range)" };
+        return Err(Error::Overflow { what: what.into() });
     }
+    // Negative x (x <= -64 here: smaller ones were shifted above). MPFR's Gamma is
+    // slow there: within d of a pole -n it works at about wp + log2(1/d) bits with
+    // Bernoulli numbers (over a minute at d = 4.5e-22713, 2F1's c - a in issue 37's
+    // scan, `hyp2f1(16777216, 24.06, 45e-22714, -74.875)` at 11 bits), and at
+    // x = -99978.75 (2F1's large-parameter route, `hyp2f1(17, 100001, 22.25,
+    // -123.25)` at 130 bits) it ran for seconds. The reflection
+    // Gamma(x) = pi / (sin(pi x) Gamma(1 - x)) [DLMF 5.5.3] with
+    // sin(pi x) = (-1)^n sin(pi d) (x = -n + d, d exact, |d| <= 1/2) needs Gamma only
+    // at 1 - x = n + 1 - d > 64, far from every pole (a long argument is rounded and
+    // the rounding carried by gamma_ball), and sin at d: ball arithmetic, so the
+    // enclosure is as rigorous as the rest.
+    if *x < 0.5 {
+        let n = Float::with_val(x.prec(), x.round_ref());
+        let d = exact_sub(x, &n);
+        if !d.is_zero() {
+            let g = gamma_ball(&exact_sub(&int_float(1), x), wp + 8)?;
+            let sin = Ball::from_float(&d, wp + 8).mul(&Ball::pi(wp + 8)).sin();
+            let odd = !Float::with_val(n.prec() + 1, &n / 2u32).is_integer();
+            let den = g.mul(&sin);
+            return Ball::pi(wp + 8).div(&if odd { den.neg() } else { den });
+        }
+    }
+    // MPFR's Gamma at wp.max(prec(x)) bits: refused at once when its estimated time
+    // (the first call's, Bernoulli numbers included) passes the installed budget
+    let bits = wp.max(x.prec());
+    crate::budget::check_estimate("Gamma(x) (MPFR)", gamma_seconds(bits), f64::INFINITY)?;
     xball(x, wp).gamma()
 }
 
@@ -347,3 +381,27 @@ pub(crate) fn lgamma_est(x: f64) -> f64 {
     acc + (x - 0.5) * x.ln() - x + 0.5 * (2.0 * PI).ln() + 1.0 / (12.0 * x) - 1.0 / (360.0 * x * x * x)
 }
 
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The reflection at negative `x` against MPFR's Gamma at the same exact `x`
+    /// (where MPFR is still quick: `x = -n +- 2^e`, `d = 2^-70` and `2^-200` next to
+    /// the poles `-64`, `-101`, `-1000`, and `d` from 1/8 to 1/2): the balls overlap
+    /// and carry the precision asked for.
+    #[test]
+    fn gamma_next_to_a_pole_by_reflection_matches_mpfr() {
+        for n in [64u32, 101, 1000] {
+            for (e, sign) in [(-70i32, 1i32), (-70, -1), (-200, 1), (-1, 1), (-1, -1), (-3, 1), (-2, -1)] {
+                let x = Float::with_val(400, -(n as i32)) + Float::with_val(400, sign) * Float::with_val(2, Float::i_exp(1, e));
+                for wp in [53u32, 128] {
+                    let reflected = gamma_exact(&x, wp).unwrap();
+                    let direct = Ball::from_float(&x, x.prec()).gamma().unwrap();
+                    assert!(reflected.overlaps(&direct), "x = -{n} + {sign} 2^{e} at {wp}: {reflected:?} vs {direct:?}");
+                    assert!(reflected.rel_accuracy_bits() >= wp as f64 - 4.0, "x = -{n} + {sign} 2^{e} at {wp}: {reflected:?}");
+                }
+            }
+        }
+    }
+}

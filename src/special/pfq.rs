@@ -234,6 +234,14 @@ pub(crate) fn pfq_series(a: &[Ball], b: &[Ball], z: &Ball, wp: u32) -> Result<Se
         if n > MAX_SERIES_TERMS {
             return Err(Error::NoConvergence { function: "pFq", terms: n });
         }
+        if n % 64 == 0 {
+            // the installed time budget (crate::budget): the cost model counts terms
+            // at the working precision, but a parameter held exactly at 10^5 bits
+            // (1e31099 typed) makes every term cost that precision, and the tail bound
+            // (ratio_bound: each factor (a+n)/(b+n) <= 1 bounded by 1 over all later
+            // n) can keep the series going for thousands of terms
+            crate::budget::check_elapsed("the pFq series, term by term", 0.0, crate::error::Reached::Terms { count: n })?;
+        }
     }
 }
 

@@ -114,3 +114,22 @@ fn budgets_out_of_range_are_typed_errors() {
     assert!(matches!(Budget::from_millis(0), Err(Error::IntegerOutOfRange { arg: "budget_ms", .. })));
     assert_eq!(Budget::default().seconds(), 30.0);
 }
+
+#[test]
+fn the_certified_quadrature_checks_the_budget_between_its_rounds() {
+    use maugis::ball::Ball;
+    use maugis::quad::certified::{integrate, Options};
+    // int_0^30 sin(x^2) dx at 128 bits: a chirp the adaptive bisection cuts into many
+    // pieces; under a microsecond the first check between rounds stops it
+    let (a, b) = (Ball::from_i64(0, 128), Ball::from_i64(30, 128));
+    let run = || integrate(|x| x.sqr().sin(), &a, &b, 128, &Options::new());
+    match Budget::from_secs_f64(1e-6).unwrap().run(run) {
+        Err(ref e @ Error::BudgetSpent { reached: Reached::Evaluations { .. }, .. }) => assert!(e.is_time_limit(), "{e}"),
+        other => panic!("expected BudgetSpent, got {other:?}"),
+    }
+    // the budget never changes an answer: with room it is the answer without one
+    let free = run().expect("answers without a budget");
+    let roomy = Budget::from_secs_f64(600.0).unwrap().run(run).expect("answers in 600 s");
+    assert!(free.goal_met && roomy.goal_met);
+    assert_eq!(free.real().mid(), roomy.real().mid());
+}

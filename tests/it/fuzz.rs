@@ -270,6 +270,7 @@ fn registry_mp_budget_scan() {
                 (worst, worst_text) = (took, text.clone());
             }
             if limit.is_some_and(|l| took > l) {
+                eprintln!("over the limit: {text}: {took:.3} s");
                 too_slow.push(format!("{text}: {took:.2} s"));
             }
             match answer {
@@ -300,7 +301,9 @@ fn registry_mp_budget_scan() {
 
 /// Whether a refusal is about the input as typed: outside the domain, an edge
 /// inside the input ball, a precision or an integer out of range, a decimal
-/// the parser or the function cannot take.
+/// the parser or the function cannot take, a profile the model does not take (a
+/// wave finer than `abar/beta = 1e5 / (2 pi)`: `ProfileError::WaveTooFine`, checked
+/// before any work).
 fn about_the_input(e: &maugis::Error) -> bool {
     use maugis::Error as E;
     e.is_domain()
@@ -313,6 +316,7 @@ fn about_the_input(e: &maugis::Error) -> bool {
                 | E::Arity { .. }
                 | E::NotRepresentable { .. }
                 | E::NonFiniteResult { .. }
+                | E::Profile(_)
         )
 }
 

@@ -40,6 +40,7 @@ mod maugis_model;
 mod meijer_g_f64_routes;
 mod model_decimal;
 mod model_rough;
+mod model_tiny_contact;
 mod model_waves;
 mod model_waves_decimal;
 mod multiscale_envelope;

@@ -62,12 +62,15 @@ fn quadrature_agrees_mp() {
     tier_points().par_iter().for_each(|&(a, zeta, x)| {
         let (ae, ze, me, xe) = (exact(a), exact(zeta), exact(1.0), exact(x));
         let bessel = u_wave_mp(&ae, &ze, &me, &xe, 100).unwrap();
-        let quad = u_wave_quad_mp(&ae, &ze, &me, &xe, QUAD_PREC).expect("quad u");
+        // an explicit budget: the default (30 s of wall time) ran out for du on a
+        // machine loaded 8-fold (3 s of CPU time in 30 s)
+        let roomy = maugis::Budget::from_secs_f64(900.0).expect("budget");
+        let quad = roomy.run(|| u_wave_quad_mp(&ae, &ze, &me, &xe, QUAD_PREC)).expect("quad u");
         let scale = bessel.abs_upper().to_f64().max(1.0);
         let diff = bessel.sub(&ball_of(&quad.value)).abs_upper().to_f64();
         assert!(diff <= 1e-25 * scale, "u at ({a},{zeta},{x}): quad {} vs {bessel:?}", quad.value);
         let dbessel = du_wave_mp(&ae, &ze, &me, &xe, 100).unwrap();
-        let dquad = du_wave_quad_mp(&ae, &ze, &me, &xe, QUAD_PREC).expect("quad du");
+        let dquad = roomy.run(|| du_wave_quad_mp(&ae, &ze, &me, &xe, QUAD_PREC)).expect("quad du");
         let dscale = dbessel.abs_upper().to_f64().max(2.0 * std::f64::consts::PI / zeta);
         let ddiff = dbessel.sub(&ball_of(&dquad.value)).abs_upper().to_f64();
         assert!(ddiff <= 1e-25 * dscale, "du at ({a},{zeta},{x}): quad {} vs {dbessel:?}", dquad.value);

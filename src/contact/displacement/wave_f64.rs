@@ -268,9 +268,16 @@ impl WaveBessel {
     pub fn u_fast(&self, x: f64) -> f64 {
         let a = self.a;
         let rm1 = (x - a) / a;
-        let sq = (rm1 * (rm1 + 2.0)).sqrt();
-        let q = 1.0 / (1.0 + rm1 + sq);
-        let acosh_r = (rm1 + sq).ln_1p();
+        let (q, acosh_r) = if rm1 < 1e100 {
+            let sq = (rm1 * (rm1 + 2.0)).sqrt();
+            (1.0 / (1.0 + rm1 + sq), (rm1 + sq).ln_1p())
+        } else {
+            // far from a tiny contact (r = x/a up to overflow): with p = sqrt(x^2 - a^2),
+            // q = a/(x + p) and acosh r = ln r + ln1p(p/x), no r^2 formed
+            let p = (x - a).sqrt() * (x + a).sqrt();
+            let ln_r = if rm1.is_finite() { rm1.ln_1p() } else { x.ln() - a.ln() };
+            (a / (x + p), ln_r + (p / x).ln_1p())
+        };
         let q2 = q * q;
         let mut q_pow = 1.0f64;
         let mut su = 0.0f64;

@@ -5,7 +5,7 @@
 
 use super::state::ContactSize;
 use super::strip::StripEnd;
-use crate::error::{Error, Invariant, Result};
+use crate::error::{Error, Invariant, Reached, Result};
 use crate::roots::{brent, first_crossing, BRENT_REL_TOL};
 
 /// Largest strip width `c - a` (in `l_h`) the root scan explores.
@@ -54,8 +54,23 @@ impl ContactSize {
         // (the one-wave smooth case Params::new(lambda, 0, beta) scans as before)
         let beta = self.params.profile.scan_wavelength();
         let max_step = (beta / 16.0).min(0.25).max(1e-6);
+        let evaluations = std::cell::Cell::new(0u64);
         let eval = |s: f64| -> Result<f64> {
-            let v = f(s / a);
+            // the installed time budget (crate::budget; none on the f64 path unless
+            // the caller installs one), every 64 samples: the scan's length is
+            // the root over the step (lambda = 1e-6, beta = 6.5e-3: 3.5e6 samples
+            // of a wave sum with D = 2e4 terms, minutes, under an MP strip_ratio)
+            let count = evaluations.get() + 1;
+            evaluations.set(count);
+            if count % 64 == 0 {
+                crate::budget::check_elapsed("the strip root scan (Eq. 15b, f64)", 0.0, Reached::Evaluations { count })?;
+            }
+            let z = s / a;
+            if !z.is_finite() {
+                // a strip width over f64::MAX times a subnormal contact size
+                return Err(Error::NotRepresentable { quantity: "m - 1 (the strip end)", abar: a });
+            }
+            let v = f(z);
             if v.is_finite() {
                 Ok(v)
             } else {

@@ -8,7 +8,7 @@
 use std::f64::consts::PI;
 
 use super::params::{Params, ABAR_RANGE};
-use super::strip::{acosh_1p, adhesive_approach_fn, adhesive_gap_fn, hertz_gap_fn, sqrt_z2z, StripEnd};
+use super::strip::{acosh_1p, adhesive_approach_fn, adhesive_gap_fn, hertz_gap_fn, sqrt_z2z, ScaledStrip, StripEnd, SCALED_Z};
 use super::waves::WaveTerms;
 use crate::contact::displacement::{u_adhesive, u_hertz};
 use crate::error::{finite, Error, Interval, Result};
@@ -65,13 +65,28 @@ impl ContactSize {
     }
 
     /// The three gap contributions at `c = m abar`, `m = 1 + z` with `z >= 0`:
-    /// (Hertz, adhesive, wave), units of `l_v`.
+    /// (Hertz, adhesive, wave), units of `l_v`. From `z = `[`SCALED_Z`] on in the strip
+    /// width ([`ScaledStrip`]: finite wherever the strip width is).
     fn strip_terms(&self, z: f64) -> (f64, f64, f64) {
         let (a, lambda) = (self.abar, self.params.lambda);
+        let c = a + a * z;
+        if z >= SCALED_Z {
+            let scaled = ScaledStrip::new(a, z);
+            return (0.5 * scaled.hertz_gap(), 4.0 / PI * lambda * scaled.adhesive_gap(), self.wave_gap(c));
+        }
         let hertz = 0.5 * a * a * hertz_gap_fn(z);
         let adhesive = 4.0 / PI * lambda * a * adhesive_gap_fn(z);
-        let c = a + a * z;
         (hertz, adhesive, self.wave_gap(c))
+    }
+
+    /// `abar sqrt(m^2 - 1)` at the strip end (finite wherever the strip width is).
+    fn a_sqrt_m2_minus_1(&self, strip: StripEnd) -> f64 {
+        let z = strip.m_minus_1();
+        if z >= SCALED_Z {
+            ScaledStrip::new(self.abar, z).a_sqrt_m2_minus_1()
+        } else {
+            self.abar * strip.sqrt_m2_minus_1()
+        }
     }
 
     /// The three gap contributions at `c = m abar` (`m >= 1`): (Hertz, adhesive, wave).
@@ -113,7 +128,12 @@ impl ContactSize {
     /// Eq. 14: `pi abar^2/4 - 2 lambda abar sqrt(m^2-1) + sum_j (pi^2 alpha_j abar/beta_j) J1(2 pi abar/beta_j)`.
     pub fn load_at(&self, strip: StripEnd) -> f64 {
         let (a, lambda) = (self.abar, self.params.lambda);
-        PI * a * a / 4.0 - 2.0 * lambda * a * strip.sqrt_m2_minus_1() + self.waves.load()
+        let adhesive = if strip.m_minus_1() >= SCALED_Z {
+            2.0 * lambda * self.a_sqrt_m2_minus_1(strip)
+        } else {
+            2.0 * lambda * a * strip.sqrt_m2_minus_1()
+        };
+        PI * a * a / 4.0 - adhesive + self.waves.load()
     }
 
     /// The approach `Delta-bar` (units of `l_v`) measured from a datum at
@@ -144,10 +164,13 @@ impl ContactSize {
     /// [`Self::approach_at`] given the load there.
     fn approach_from_load(&self, strip: StripEnd, load: f64) -> f64 {
         let (a, lambda) = (self.abar, self.params.lambda);
-        2.0 * load / PI * (2.0 / a).ln()
-            + a * a / 4.0
-            + self.waves.approach()
-            + 4.0 * lambda * a / PI * adhesive_approach_fn(strip.m_minus_1())
+        let z = strip.m_minus_1();
+        let adhesive = if z >= SCALED_Z {
+            4.0 * lambda / PI * ScaledStrip::new(a, z).adhesive_approach()
+        } else {
+            4.0 * lambda * a / PI * adhesive_approach_fn(z)
+        };
+        2.0 * load / PI * (2.0 / a).ln() + a * a / 4.0 + self.waves.approach() + adhesive
     }
 
     /// [`Self::approach_at`] for `m > 1`.
@@ -169,7 +192,7 @@ impl ContactSize {
             return if ax - a <= a * z { 1.0 } else { 0.0 };
         }
         let w = ((a - ax) * (a + ax)).sqrt();
-        let adhesive = 2.0 / PI * (a * strip.sqrt_m2_minus_1() / w).atan();
+        let adhesive = 2.0 / PI * (self.a_sqrt_m2_minus_1(strip) / w).atan();
         adhesive - w / (2.0 * lambda) * (1.0 + self.waves.traction(ax / a))
     }
 
@@ -182,7 +205,7 @@ impl ContactSize {
             return self.traction_at(strip, x);
         }
         let w = ((a - ax) * (a + ax)).sqrt();
-        let adhesive = 2.0 / PI * (a * strip.sqrt_m2_minus_1() / w).atan();
+        let adhesive = 2.0 / PI * (self.a_sqrt_m2_minus_1(strip) / w).atan();
         adhesive - w / (2.0 * lambda) * (1.0 + self.waves.traction_fast(ax / a))
     }
 

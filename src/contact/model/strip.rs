@@ -10,6 +10,65 @@ use crate::error::{finite, Interval, Result};
 /// (six terms: truncation below `z^6 < 1e-18` relative).
 pub(crate) const SERIES_Z: f64 = 1e-3;
 
+/// From this `z = m - 1` on, the model's strip terms are computed from `abar` times
+/// the strip functions in the strip width `s = abar z` ([`ScaledStrip`]): at tiny
+/// contact sizes (`abar = 1e-257`, `m - 1 = 5e252`) `sqrt(z (2 + z))` overflows and
+/// `abar^2` underflows, while their product is a moderate number.
+pub(crate) const SCALED_Z: f64 = 1e6;
+
+/// `abar` times the strip functions at `z = m - 1 >= `[`SCALED_Z`], in the strip
+/// width `s = abar z` and the strip end `c = abar + s`: no product of a huge and a
+/// tiny number, no cancellation.
+///
+/// With `P = abar sqrt(m^2 - 1) = sqrt(s (2 abar + s))`, `L = ln m = ln1p(z)` and
+/// `acosh m = L + ln1p(P/c)` (`m + sqrt(m^2-1) = m (1 + P/c)`):
+///
+/// * `abar^2 H(z) = c P - abar^2 acosh m` ([`hertz_gap_fn`]);
+/// * `abar G(z) = P ln1p(P/c) - abar^2 L/(c + P)` ([`adhesive_gap_fn`];
+///   `c - P = abar^2/(c + P)`, so the two terms of `G`, each about `z ln z`, never
+///   cancel);
+/// * `abar A(z) = c acosh m - P` ([`adhesive_approach_fn`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct ScaledStrip {
+    a: f64,
+    c: f64,
+    p: f64,
+    ln_m: f64,
+    acosh_m: f64,
+}
+
+impl ScaledStrip {
+    /// At contact size `a > 0` and `z = m - 1 >= 0` (finite).
+    pub(crate) fn new(a: f64, z: f64) -> ScaledStrip {
+        let s = a * z;
+        let c = a + s;
+        let p = s.sqrt() * (2.0 * a + s).sqrt();
+        let ln_m = z.ln_1p();
+        let acosh_m = ln_m + (p / c).ln_1p();
+        ScaledStrip { a, c, p, ln_m, acosh_m }
+    }
+
+    /// `abar sqrt(m^2 - 1)`.
+    pub(crate) fn a_sqrt_m2_minus_1(&self) -> f64 {
+        self.p
+    }
+
+    /// `abar^2 H(z)`, `H` the Hertz gap function.
+    pub(crate) fn hertz_gap(&self) -> f64 {
+        self.c * self.p - self.a * (self.a * self.acosh_m)
+    }
+
+    /// `abar G(z)`, `G` the adhesive strip-gap function.
+    pub(crate) fn adhesive_gap(&self) -> f64 {
+        self.p * (self.p / self.c).ln_1p() - self.a / (self.c + self.p) * self.a * self.ln_m
+    }
+
+    /// `abar A(z)`, `A` the adhesive approach function.
+    pub(crate) fn adhesive_approach(&self) -> f64 {
+        self.c * self.acosh_m - self.p
+    }
+}
+
 /// The end of the adhesive strip, `m = c/a > 1`, stored as `m - 1`.
 ///
 /// As `lambda -> inf` the strip closes like `m - 1 ~ pi/(4 lambda^2 abar)`

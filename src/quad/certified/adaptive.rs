@@ -43,7 +43,7 @@ use super::cover::{cover_bound, CoverLimits, Covered};
 use super::legendre;
 use super::{HoloBall, IntegrationError, Limit, Mode};
 use crate::ball::{Ball, CBall, Mag};
-use crate::error::{Error, Result};
+use crate::error::{Error, Reached, Result};
 
 /// The degree ladder: Arb's (steps of about `2^(1/2)`: 1, 2, 4, 6, 8, 12, 16, 22, 32,
 /// ..., 2048) with a rung between each two (steps of about `2^(1/4)`), so that the
@@ -248,6 +248,9 @@ where
     let mut progress = Progress::new(f.stats.evaluations, lim.max_evaluations, a, b);
     let overdraft = lim.max_evaluations.saturating_add(lim.max_evaluations / 4 + 64);
     while let Some(piece) = stack.pop() {
+        // the installed time budget (crate::budget), between pieces: no model bounds
+        // the number of pieces in advance
+        crate::budget::check_elapsed("certified quadrature (adaptive bisection)", 0.0, Reached::Evaluations { count: f.stats.evaluations })?;
         f.stats.subintervals += 1;
         f.stats.max_depth = f.stats.max_depth.max(piece.depth);
         let reached = if f.stats.evaluations >= lim.max_evaluations {

@@ -7,38 +7,59 @@
 //!
 //! 1. **Start.** Tricomi's approximation `x_k ~ cos(pi (4k - 1)/(4n + 2))`
 //!    (DLMF 18.16.6 with the first correction term), refined by Newton's method in
-//!    f64.
-//! 2. **Refine.** Newton's method in MPFR, `x <- x - P_n(x)/P_n'(x)`, with the
-//!    precision doubled each step (quadratic convergence) up to the bits to certify
-//!    plus 8, and one more step there. `P_n` and `P_n'` come from the three-term
-//!    recurrence `(k+1) P_{k+1} = (2k+1) x P_k - k P_{k-1}` (DLMF 18.9.1) and
-//!    `(1 - x^2) P_n' = n (P_{n-1} - x P_n)` (DLMF 18.9.18), in floats (an estimate:
-//!    the next step proves).
-//! 3. **Certify.** `P_n` is evaluated in ball arithmetic at the two exact points
-//!    `x - delta` and `x + delta`. Opposite signs (balls that exclude zero) prove
-//!    a root in `[x - delta, x + delta]`. The `ceil(n/2)` non-negative roots are
-//!    all found this way in disjoint, ordered intervals (for odd `n` the root 0 is
-//!    exact), and `P_n` has exactly `n` roots, symmetric about 0, so every node
-//!    is enclosed. The weight `w = 2 (1 - x^2) / (n P_{n-1}(x))^2` (DLMF 3.5.19
-//!    with the identity above at a root) is evaluated in ball arithmetic on the
-//!    node's ball, so it encloses the true weight.
+//!    f64 and then in double-double (about 95 bits).
+//! 2. **Refine.** Newton's method in MPFR, `x <- x - P_n(x)/P_n'(x)`, the precision
+//!    about doubled each step, up to about half the bits to certify ([`newton_bits`]).
+//!    `P_n` and `P_{n-1}` come from the scaled monic recurrence `S_0 = 1`, `S_1 = 2x`,
+//!    `S_{k+1} = 2x S_k - g_k S_{k-1}`, `g_k = 4k^2/(4k^2 - 1)` (DLMF 18.9.1 with `S_k =
+//!    2^k P_k / kappa_k`, `kappa_k` the leading coefficient of `P_k`), two products and
+//!    a difference a step, and `P_n/P_n' = (1 - x^2) S_n / (n (2n/(2n-1) S_{n-1} - x
+//!    S_n))` (DLMF 18.9.18). All of this is an estimate: the next step proves.
+//! 3. **Certify.** One evaluation in ball arithmetic at the point `x` (an exact float,
+//!    Newton's iterate to about half the bits) gives balls containing `P_n(x)` and
+//!    `P_n'(x)`, and Legendre's equation `(1 - x^2) P_n'' = 2x P_n' - n(n+1) P_n` (DLMF
+//!    18.8.1) one containing `P_n''(x)`. `M_3 = P_n'''(1) >= |P_n'''|` on `[-1, 1]`
+//!    (`P_n^(k)` is `(2k-1)!!` times the Gegenbauer polynomial `C^(k+1/2)_(n-k)`, DLMF
+//!    18.9.19, and `|C^lambda_m(y)| <= C^lambda_m(1)` for `lambda > 0`, DLMF 18.14.4).
+//!    A last Newton step `x1 = x + delta` (a float) is taken in this arithmetic: by
+//!    Taylor's theorem with the remainders bounded through `M_3`, balls `A`, `D` and
+//!    `C` contain `P_n(x1)`, `P_n'(x1)` and `P_n''(x1)` (`certify_node`). Take `eps >=
+//!    |A|`, `d <= |D|`, `r >= 4 eps/d`, and `M = |C| + M_3 r >= |P_n''|` on `[x1 - r,
+//!    x1 + r]`. Taylor's theorem gives `P_n(x1 +- r) = P_n(x1) +- P_n'(x1) r + R`, `|R|
+//!    <= M r^2/2`. When `M r^2 <= 4 eps` (checked with upper bounds), `|P_n(x1) + R| <=
+//!    eps + 2 eps < 4 eps <= |P_n'(x1)| r`, so `P_n(x1 - r)`
+//!    and `P_n(x1 + r)` have opposite signs: a root lies in `(x1 - r, x1 + r)`. The
+//!    `ceil(n/2)` non-negative roots are all found this way in disjoint, ordered
+//!    intervals (for odd `n` the root 0 is exact), and `P_n` has exactly `n` roots,
+//!    symmetric about 0, so every node is enclosed. The weight `w = 2 / ((1 - y^2)
+//!    P_n'(y)^2)` (DLMF 3.5.19) at the root `y` is evaluated in ball arithmetic on the
+//!    node's ball with `P_n'(y)` in `D +- M r` (the mean value theorem), so it
+//!    encloses the true weight. Where the bound fails or leaves the node or the weight
+//!    wider than planned (not seen; the tests ask that it never does for the
+//!    integrator's degrees), the root is enclosed as before 2026-11-29 instead: by the
+//!    signs of `P_n` at `x +- 2^-target`, both evaluated in ball arithmetic, and the
+//!    weight from `P_n'` on that ball.
 //!
-//! The ball evaluations of `P_n` and `P_{n-1}` use the Fourier form (DLMF 18.5.11,
-//! `lambda = 1/2`): `P_m(cos theta) = sum_{k=0}^m c_k c_{m-k} cos((m - 2k) theta)`, `c_k
-//! = (1/2)_k / k!`, with `e^{i theta} = x + i (1 - x^2)^(1/2)` and the cosines the real
-//! parts of `w^m conj(w)^(2k)`, formed in complex discs ([`Disc`]). The coefficients are
-//! positive and sum to `P_m(1) = 1`, and a product of discs of modulus 1 adds their
-//! radii, so a radius grows about linearly in `m` (and as `m^2` times the node's
-//! radius, the Markov bound of `P_m'`): `2 log2 n + 24` guard bits suffice. The
-//! three-term recurrence in ball arithmetic, used before, grows radii by up to `1 +
-//! sqrt 2` a step and needed `2.56 n + 80` guard bits (1200 bits for a rule of degree
-//! 300 at 333 bits); the Fourier form made the first call of `int_0^1 1/(1+x^2)` about
-//! 1.5x faster at 333 and 3333 bits (`examples/first_call.rs`).
+//! The ball evaluations use the Fourier form (DLMF 18.5.11, `lambda = 1/2`): `P_n(cos
+//! theta) = sum_{k=0}^n c_k c_{n-k} cos((n - 2k) theta)`, `c_k = (1/2)_k / k!`, and its
+//! derivative in `theta`, `P_n'(cos theta) = sum_k c_k c_{n-k} (n - 2k) sin((n - 2k)
+//! theta) / sin theta`, with `e^{i theta} = x + i (1 - x^2)^(1/2)` and the cosines and
+//! sines the real and imaginary parts of `w^n conj(w)^(2k)`, formed in complex discs
+//! ([`Disc`]). The coefficients are positive and sum to `P_n(1) = 1`, and a product of
+//! discs of modulus 1 adds their radii, so a radius grows about linearly in `n`: `3
+//! log2 n + 16` guard bits suffice ([`precisions`]). The three-term recurrence in ball
+//! arithmetic grows radii by up to `1 + sqrt 2` a step and would need `1.28 n + 40`
+//! guard bits.
 //!
-//! Cost: `O(n)` operations a polynomial evaluation, a few evaluations a node, so
-//! `O(n^2)` a rule, once per `(n, prec)`: rules are cached for the life of the
-//! process ([`rule`]). C Arb builds its nodes faster at 64 to 333 bits (asymptotic
-//! starts and evaluations, `arb_hypgeom_legendre_p_ui_root`): see docs/quadrature.md.
+//! Cost: a node takes one Fourier evaluation at the certified precision (`n/2`
+//! complex products) and Newton steps of three MPFR operations per degree at
+//! precisions that about double up to half of it (none at all for `prec` up to about
+//! 100 bits, where double-double suffices). Before 2026-11-29 it took four or five
+//! MPFR Newton steps of five operations per degree up to the full precision and three
+//! Fourier evaluations: the first call of `int_0^8 sin(x + e^x)` at 333 bits took 3x
+//! the time. Rules are cached for the life of the process ([`rule`]). C Arb
+//! (`arb_hypgeom_legendre_p_ui_root`) uses asymptotic starts and evaluations: see
+//! docs/quadrature.md for the side-by-side first call.
 
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock};
@@ -47,7 +68,7 @@ use rug::float::Round;
 use rug::ops::AssignRound;
 use rug::{Assign, Float};
 
-use crate::ball::{Ball, Mag};
+use crate::ball::{Ball, Dd, Mag};
 use crate::error::{Error, Invariant, Result};
 
 /// A Gauss-Legendre rule on `[-1, 1]`: the non-negative nodes (in decreasing
@@ -81,26 +102,6 @@ pub(crate) fn rule(n: usize, prec: u32) -> Result<Arc<Rule>> {
     Ok(r)
 }
 
-/// `(P_n(x), P_{n-1}(x))` by the three-term recurrence, in MPFR at `x`'s precision.
-fn legendre_pair(n: usize, x: &Float) -> (Float, Float) {
-    let p = x.prec();
-    let mut prev = Float::with_val(p, 1);
-    let mut cur = x.clone();
-    let mut t = Float::new(p);
-    for k in 1..n {
-        // P_{k+1} = ((2k+1) x P_k - k P_{k-1}) / (k+1)
-        t.assign(&cur * x);
-        t *= (2 * k + 1) as u64;
-        prev *= k as u64;
-        t -= &prev;
-        t /= (k + 1) as u64;
-        std::mem::swap(&mut prev, &mut cur);
-        std::mem::swap(&mut cur, &mut t);
-    }
-    (cur, prev)
-}
-
-
 /// `(P_n(X), P_{n-1}(X))` in ball arithmetic (encloses the values for every point of
 /// `X`): the three-term recurrence, used before the Fourier form; the tests compare.
 #[cfg(test)]
@@ -127,39 +128,61 @@ fn fourier_coefficients(n: usize, prec: u32) -> Result<Vec<Ball>> {
     Ok(c)
 }
 
-/// `P_m(x)` for a ball `x` in `[-1, 1]` by the Fourier form (DLMF 18.5.11 with `lambda =
-/// 1/2`): `P_m(cos theta) = sum_{k=0}^m c_k c_{m-k} cos((m - 2k) theta)`, with `e^{i
-/// theta} = w = x + i (1 - x^2)^(1/2)`, `cos((m - 2k) theta) = Re(w^m conj(w)^(2k))`.
-/// Every coefficient is positive and every `|w^j| = 1`, so ball radii grow about
-/// linearly in `m` (the three-term recurrence in ball arithmetic grows them by up to
-/// `1 + sqrt 2` a step). `c` from [`fourier_coefficients`] (at least `m + 1` of them).
-fn legendre_fourier(m: usize, x: &Ball, cc: &[Ball]) -> Result<Ball> {
+/// The weights of the Fourier form of degree `n` and of its derivative: `t_k = 2 c_k
+/// c_{n-k}` and `u_k = (n - 2k) t_k` for `k < n/2`, and `t_{n/2} = c_{n/2}^2` (even `n`;
+/// its `u` is 0), from `c` of [`fourier_coefficients`].
+struct FourierWeights {
+    t: Vec<Ball>,
+    u: Vec<Ball>,
+}
+
+impl FourierWeights {
+    fn new(n: usize, c: &[Ball]) -> FourierWeights {
+        let mut t: Vec<Ball> = (0..n.div_ceil(2)).map(|k| c[k].mul(&c[n - k]).mul_pow2(1)).collect();
+        let u = t.iter().enumerate().map(|(k, tk)| tk.mul_i64((n - 2 * k) as i64)).collect();
+        if n % 2 == 0 {
+            t.push(c[n / 2].sqr());
+        }
+        FourierWeights { t, u }
+    }
+}
+
+/// `(P_n(x), P_n'(x))` for a ball `x` in `(-1, 1)` by the Fourier form (DLMF 18.5.11 with
+/// `lambda = 1/2`): `P_n(cos theta) = sum_{k=0}^n c_k c_{n-k} cos((n - 2k) theta)` and
+/// `P_n'(cos theta) = sum_k c_k c_{n-k} (n - 2k) sin((n - 2k) theta) / sin theta` (its
+/// derivative in `theta` over `-sin theta`), with `e^{i theta} = w = x + i (1 -
+/// x^2)^(1/2)` and `e^{i (n - 2k) theta} = w^n conj(w)^(2k)`. Every coefficient is
+/// positive and every `|w^j| = 1`, so ball radii grow about linearly in `n`. The terms
+/// `k` and `n - k` are equal and summed once, doubled in the weights.
+fn legendre_fourier(n: usize, x: &Ball, fw: &FourierWeights) -> Result<(Ball, Ball)> {
     let p = x.prec();
     let s = Ball::one(p).sub(&x.sqr()).sqrt()?;
     let w = Disc::from_balls(x, &s);
     let step = w.conj().mul(&w.conj());
-    let mut z = w.pow(m as u64);
-    // k and m - k give the same cosine: the terms k < m/2 twice (cc holds 2 c_k c_{m-k}),
-    // k = m/2 (m even) once
-    let mut sum = FourierSum::new(p);
+    let mut z = w.pow(n as u64);
+    let mut value = FourierSum::new(p);
+    let mut slope = FourierSum::new(p);
     let mut tmp = Disc::zero(p);
-    for term in cc.iter().take(m.div_ceil(2)) {
-        sum.add(term, &z);
-        tmp.assign_mul(&z, &step);
+    let mut scratch = Float::new(p);
+    for (t, u) in fw.t.iter().zip(&fw.u) {
+        value.add(t, &z.re, z.rad);
+        slope.add(u, &z.im, z.rad);
+        tmp.assign_mul(&z, &step, &mut scratch);
         std::mem::swap(&mut z, &mut tmp);
     }
-    if m % 2 == 0 {
-        sum.add(&cc[m / 2], &z);
+    if n % 2 == 0 {
+        value.add(&fw.t[n / 2], &z.re, z.rad);
     }
-    Ok(sum.ball())
+    Ok((value.ball(), slope.ball().div(&s)?))
 }
 
-/// `sum_k t_k Re(z_k)` accumulated in a float with a radius. Every `z_k` is a disc that
-/// encloses a number of modulus 1, so `|Re z_k| <= 1` and `|Re mid(z_k)| <= 1 + r_k`:
-/// a term adds `rad(t) (1 + r) + |mid(t)| r` (the ball and disc radii), `2^-p |mid(t)| (1
-/// + r)` (the product rounded to nearest, `u = 2^-p`) and `2^-p` times a bound of the
-/// new sum (the addition rounded); the sum is at most `bound`, the running `sum |t| (1 +
-/// r)`, up to the roundings, and `2 bound` covers those.
+/// `sum_k t_k v_k` accumulated in a float with a radius, `v_k` the real or imaginary
+/// part of a disc `z_k` that encloses a number of modulus 1, so `|v_k| <= 1` and `|mid
+/// v_k| <= 1 + r_k`: a term adds `rad(t) (1 + r) + |mid(t)| r` (the ball and disc
+/// radii), `2^-p |mid(t)| (1 + r)` (the product rounded to nearest, `u = 2^-p`) and
+/// `2^-p` times a bound of the new sum (the addition rounded); the sum is at most
+/// `bound`, the running `sum |t| (1 + r)`, up to the roundings, and `2 bound` covers
+/// those.
 struct FourierSum {
     mid: Float,
     prod: Float,
@@ -172,15 +195,15 @@ impl FourierSum {
         FourierSum { mid: Float::new(p), prod: Float::new(p), rad: Mag::ZERO, bound: Mag::ZERO }
     }
 
-    fn add(&mut self, t: &Ball, z: &Disc) {
+    fn add(&mut self, t: &Ball, v: &Float, r: Mag) {
         let p = self.mid.prec() as i64;
-        let one_r = Mag::from_f64(1.0).add(z.rad);
+        let one_r = Mag::from_f64(1.0).add(r);
         let t_mag = t.abs_upper_mag();
-        self.prod.assign(t.mid() * &z.re);
+        self.prod.assign(t.mid() * v);
         self.mid += &self.prod;
         let term_up = t_mag.mul(one_r);
         self.bound = self.bound.add(term_up);
-        let propagated = t.rad_mag().mul(one_r).add(t_mag.mul(z.rad));
+        let propagated = t.rad_mag().mul(one_r).add(t_mag.mul(r));
         let rounding = term_up.add(self.bound.mul_2exp(1)).mul_2exp(-p);
         self.rad = self.rad.add(propagated).add(rounding);
     }
@@ -190,16 +213,6 @@ impl FourierSum {
         b.add_error_mag(self.rad);
         b
     }
-}
-
-/// `2 c_k c_{m-k}` for `k < m/2` and `c_{m/2}^2` (even `m`): the weights of
-/// [`legendre_fourier`], from `c` of [`fourier_coefficients`].
-fn fourier_weights(m: usize, c: &[Ball]) -> Vec<Ball> {
-    let mut out: Vec<Ball> = (0..m.div_ceil(2)).map(|k| c[k].mul(&c[m - k]).mul_pow2(1)).collect();
-    if m % 2 == 0 {
-        out.push(c[m / 2].sqr());
-    }
-    out
 }
 
 /// A complex disc: the point `re + i im` (floats) and the radius `rad`. Every disc here
@@ -228,7 +241,8 @@ impl Disc {
 
     fn mul(&self, o: &Disc) -> Disc {
         let mut d = Disc::zero(self.re.prec());
-        d.assign_mul(self, o);
+        let mut scratch = Float::new(self.re.prec());
+        d.assign_mul(self, o, &mut scratch);
         d
     }
 
@@ -236,16 +250,16 @@ impl Disc {
     /// `a_m b_m` rounded to nearest, each part from two products and a sum, so that each
     /// part errs by at most `3 u |a_m| |b_m|` (`u = 2^-prec`): `2^(3 - prec) |a_m| |b_m|`
     /// covers both. `|a_m| <= 1 + r_a`, `|b_m| <= 1 + r_b` (the discs enclose numbers of
-    /// modulus 1).
-    fn assign_mul(&mut self, a: &Disc, b: &Disc) {
+    /// modulus 1). `t` is scratch space.
+    fn assign_mul(&mut self, a: &Disc, b: &Disc, t: &mut Float) {
         let p = self.re.prec();
         let (ma, mb) = (Mag::from_f64(1.0).add(a.rad), Mag::from_f64(1.0).add(b.rad));
         self.re.assign(&a.re * &b.re);
-        let t = Float::with_val(p, &a.im * &b.im);
-        self.re -= &t;
+        t.assign(&a.im * &b.im);
+        self.re -= &*t;
         self.im.assign(&a.re * &b.im);
-        let t = Float::with_val(p, &a.im * &b.re);
-        self.im += &t;
+        t.assign(&a.im * &b.re);
+        self.im += &*t;
         let rounding = ma.mul(mb).mul_2exp(3 - p as i64);
         self.rad = a.rad.mul(mb.add(b.rad)).add(ma.mul(b.rad)).add(rounding);
     }
@@ -267,9 +281,72 @@ impl Disc {
     }
 }
 
-/// Newton's method for the root near `x0` (f64 start), refined to `prec` bits.
-fn newton_root(n: usize, x0: f64, prec: u32) -> Float {
-    // f64 Newton first.
+/// The coefficients of the scaled monic recurrence `S_{k+1} = 2x S_k - g_k S_{k-1}`,
+/// `g_k = 4k^2/(4k^2 - 1)` (`g[0]` unused), and `2n/(2n - 1)`, in double-double and
+/// in MPFR at `prec` bits: estimates for Newton's method (the certificate does not
+/// use them).
+struct Recurrence {
+    n: usize,
+    g_dd: Vec<Dd>,
+    g: Vec<Float>,
+    c_dd: Dd,
+    c: Float,
+}
+
+impl Recurrence {
+    fn new(n: usize, prec: u32) -> Recurrence {
+        let ratio = |k: usize| (4.0 * (k * k) as f64, 4.0 * (k * k) as f64 - 1.0);
+        let g_dd = (0..n).map(|k| if k == 0 { Dd::from_f64(0.0) } else { Dd::from_f64(ratio(k).0) / Dd::from_f64(ratio(k).1) }).collect();
+        let g = (0..n)
+            .map(|k| if k == 0 { Float::new(prec) } else { Float::with_val(prec, ratio(k).0) / ratio(k).1 })
+            .collect();
+        let nf = n as f64;
+        Recurrence { n, g_dd, g, c_dd: Dd::from_f64(2.0 * nf) / Dd::from_f64(2.0 * nf - 1.0), c: Float::with_val(prec, 2.0 * nf) / (2.0 * nf - 1.0) }
+    }
+
+    /// The Newton correction `P_n(x)/P_n'(x)` in double-double.
+    fn step_dd(&self, x: Dd) -> Dd {
+        let x2 = x + x;
+        let (mut prev, mut cur) = (Dd::from_f64(1.0), x2);
+        for g in &self.g_dd[1..] {
+            let next = x2 * cur - *g * prev;
+            prev = cur;
+            cur = next;
+        }
+        let one_minus = Dd::from_f64(1.0) - x * x;
+        (one_minus * cur) / ((self.c_dd * prev - x * cur).mul_f64(self.n as f64))
+    }
+
+    /// One Newton step in MPFR at `x`'s precision: `x <- x - P_n(x)/P_n'(x)`.
+    fn step(&self, x: &mut Float) {
+        let q = x.prec();
+        let x2 = Float::with_val(q, &*x * 2u32);
+        let mut prev = Float::with_val(q, 1);
+        let mut cur = x2.clone();
+        let mut t = Float::new(q);
+        let mut u = Float::new(q);
+        for g in &self.g[1..] {
+            // two products and a difference: faster than one `mpfr_fmms` at these sizes
+            t.assign(&cur * &x2);
+            u.assign(g * &prev);
+            t -= &u;
+            std::mem::swap(&mut prev, &mut cur);
+            std::mem::swap(&mut cur, &mut t);
+        }
+        // (1 - x^2) S_n / (n (c S_{n-1} - x S_n))
+        t.assign(x.square_ref());
+        let one_minus = Float::with_val(q, 1) - &t;
+        let den = Float::with_val(q, prev.mul_sub_mul_ref(&self.c, x, &cur)) * self.n as u32;
+        let num = one_minus * &cur;
+        *x -= num / den;
+    }
+}
+
+/// The root of `P_n` near `x0` (Tricomi's start), by Newton's method in f64, in
+/// double-double and in MPFR with the precision about doubled a step, to about
+/// `prec` bits (an estimate: [`certify_node`] proves).
+fn newton_root(rec: &Recurrence, x0: f64, prec: u32) -> Float {
+    let n = rec.n;
     let mut x = x0;
     for _ in 0..8 {
         let (pn, pm) = legendre_pair_f64(n, x);
@@ -280,31 +357,24 @@ fn newton_root(n: usize, x0: f64, prec: u32) -> Float {
             break;
         }
     }
-    let mut q = 53u32;
-    let mut xf = Float::with_val(prec, x);
-    loop {
-        q = (2 * q).min(prec);
-        xf.set_prec_round(q, Round::Nearest);
-        let (pn, pm) = legendre_pair(n, &xf);
-        // d = n (P_{n-1} - x P_n) / (1 - x^2)
-        let mut num = Float::with_val(q, &xf * &pn);
-        num = Float::with_val(q, &pm - &num) * n as u64;
-        let one_minus = Float::with_val(q, 1) - Float::with_val(q, xf.square_ref());
-        let d = num / one_minus;
-        let step = pn / d;
-        xf -= step;
-        if q == prec {
-            break;
-        }
+    let mut xd = Dd::from_f64(x);
+    for _ in 0..2 {
+        xd = xd - rec.step_dd(xd);
     }
-    // One more step at full precision: the doubling ends one step short of it (the f64
-    // start next to 1 is good to fewer than 53 bits: P_76 at 768 bits kept 725 of 844
-    // without this step, too few to certify)
-    let (pn, pm) = legendre_pair(n, &xf);
-    let num = Float::with_val(prec, &pm - Float::with_val(prec, &xf * &pn)) * n as u64;
-    let one_minus = Float::with_val(prec, 1) - Float::with_val(prec, xf.square_ref());
-    let d = num / one_minus;
-    xf -= pn / d;
+    // about 95 correct bits now; a step from `a` correct bits gives about `2a -
+    // log2 n` (quadratic convergence, `P_n''/P_n'` up to about `n^2`)
+    let loss = 2 * (usize::BITS - n.leading_zeros()) + 4;
+    let mut xf = Float::with_val(prec.max(106), xd.hi);
+    xf += xd.lo;
+    let mut acc = 90u32;
+    while acc < prec {
+        let q = (2 * acc).saturating_sub(loss).min(prec + 8);
+        xf.set_prec_round(q, Round::Nearest);
+        rec.step(&mut xf);
+        acc = q.saturating_sub(8);
+    }
+    // `prec` bits, so that the certificate's precision holds `x` exactly
+    xf.set_prec_round(prec, Round::Nearest);
     xf
 }
 
@@ -338,40 +408,79 @@ fn recurrence_guard(n: usize) -> u32 {
     (1.28 * n as f64).ceil() as u32 + 40
 }
 
-/// Extra bits for the Fourier form ([`legendre_fourier`]): its radii grow about as
-/// `m^2` on a node's ball (the Markov bound `|P_m'| <= m (m + 1)/2` times the ball's
-/// radius) and as `m` from rounding.
-fn fourier_guard(n: usize) -> u32 {
-    2 * (usize::BITS - n.leading_zeros()) + 24
+/// The precisions of a rule of degree `n` for `prec`-bit nodes and weights: Newton's
+/// iterate to `target` bits, and the Fourier form evaluated at `ext` bits (`L = log2
+/// n`). The node's radius is then about `4 (2^-target + rad P_n(x) / |P_n'(x)|)`, the
+/// ball of `P_n(x)` about `n 2^-ext` wide; `P_n'(x)` is a sum of terms up to `n` over
+/// `sin theta >= 1/n`, about `n^3 2^-ext` wide against `|P_n'(x)| >= 0.8 n^(1/2)` at a
+/// root; and the weight's relative radius is that of `P_n'` plus about `|P_n''/P_n'|
+/// r <= n^2 r`. Both are about `2^-(prec + 8)`: rounded to `prec` bits, the nodes and
+/// weights lose nothing more (the test `every_node_is_certified_by_the_taylor_bound`
+/// checks the radii).
+fn precisions(n: usize, prec: u32) -> (u32, u32) {
+    let l = usize::BITS - n.leading_zeros();
+    (prec + 2 * l + 12, prec + 3 * l + 16)
+}
+
+/// The bits of Newton's iterate before the certificate's own Newton step: that step
+/// squares the error (times `|P_n''/(2 P_n')| <= n^2`), and the weight asks that `M_3
+/// delta^2/|P_n'| ~ 2^(5.5 L - 6) delta^2` stay below `2^-(prec + 6)`.
+fn newton_bits(n: usize, prec: u32) -> u32 {
+    let l = usize::BITS - n.leading_zeros();
+    (prec + 6 * l + 17) / 2
+}
+
+/// `P_n^(k)(1) = (n - k + 1) ... (n + k) / (2^k k!)`, rounded up: the largest `|P_n^(k)|`
+/// on `[-1, 1]` (`P_n^(k)` is `(2k-1)!!` times the Gegenbauer polynomial
+/// `C^(k+1/2)_(n-k)`, DLMF 18.9.19, and `|C^lambda_m| <= C^lambda_m(1)` there for
+/// `lambda > 0`, DLMF 18.14.4).
+fn derivative_bound_at_one(n: usize, k: usize) -> Mag {
+    let mut m = Mag::from_f64(1.0);
+    for j in 0..2 * k {
+        // a factor n + k - j <= 0 (n < k) makes the derivative 0: the bound 0 holds
+        m = m.mul(Mag::from_f64((n + k).saturating_sub(j) as f64));
+    }
+    for j in 1..=k {
+        m = m.div(Mag::from_f64((2 * j) as f64));
+    }
+    m
 }
 
 fn compute_rule(n: usize, prec: u32) -> Result<Rule> {
+    let mut fallbacks = 0;
+    build_rule(n, prec, &mut fallbacks)
+}
+
+/// [`compute_rule`], counting the nodes certified by the fallback.
+fn build_rule(n: usize, prec: u32, fallbacks: &mut usize) -> Result<Rule> {
     if n == 0 {
         return Err(Error::Internal { what: "Gauss-Legendre rule of degree 0".into() });
     }
     let half = n.div_ceil(2);
-    let wp = prec + 2 * (usize::BITS - n.leading_zeros()) + 16;
-    // Roots to `target` bits (Newton in MPFR), enclosed in balls of radius
-    // `2^-target`, `P_n` and `P_{n-1}` evaluated by the Fourier form at `ext` bits: the
-    // weight then still has about `wp` bits.
-    let guard = fourier_guard(n);
-    let target = wp + guard;
-    let ext = target + guard;
-    let c = fourier_coefficients(n, ext)?;
-    let (cc_n, cc_m) = (fourier_weights(n, &c), fourier_weights(n - 1, &c));
+    let (target, ext) = precisions(n, prec);
+    let fw = FourierWeights::new(n, &fourier_coefficients(n, ext)?);
+    let rec = Recurrence::new(n, target + 8);
     let mut nodes = Vec::with_capacity(half);
     let mut weights = Vec::with_capacity(half);
     let nf = n as f64;
     let mut prev_low: Option<Float> = None;
     for k in 1..=half {
         let exact_zero = n % 2 == 1 && k == half;
-        let node = if exact_zero {
-            Ball::zero(ext)
+        let (node, w) = if exact_zero {
+            let zero = Ball::zero(ext);
+            let (_, d) = legendre_fourier(n, &zero, &fw)?;
+            (zero, Ball::from_i64(2, ext).div(&d.sqr())?)
         } else {
             let theta = std::f64::consts::PI * (4.0 * k as f64 - 1.0) / (4.0 * nf + 2.0);
             let x0 = (1.0 - (nf - 1.0) / (8.0 * nf * nf * nf)) * theta.cos();
-            let x = newton_root(n, x0, target + 8);
-            certify_root(n, &x, ext, target, &cc_n)?
+            let x = newton_root(&rec, x0, newton_bits(n, prec));
+            match certify_node(n, &x, prec, &fw)? {
+                Some(nw) => nw,
+                None => {
+                    *fallbacks += 1;
+                    certify_node_by_signs(n, &newton_root(&rec, x0, target + 4), ext, target, &fw)?
+                }
+            }
         };
         // Disjoint and ordered (largest first), all inside (0, 1).
         let (lo, hi) = (node.lower(), node.upper());
@@ -384,19 +493,83 @@ fn compute_rule(n: usize, prec: u32) -> Result<Rule> {
             }
         }
         prev_low = Some(lo);
-        let pm = if n == 1 { Ball::one(ext) } else { legendre_fourier(n - 1, &node, &cc_m)? };
-        let one_minus = Ball::one(ext).sub(&node.sqr());
-        let den = pm.mul_i64(n as i64).sqr();
-        let w = one_minus.mul_pow2(1).div(&den)?;
         nodes.push(node.set_prec(prec));
         weights.push(w.set_prec(prec));
     }
     Ok(Rule { nodes, weights })
 }
 
-/// Encloses the root of `P_n` next to `x` by a sign change: a ball of radius about
-/// `2^-target`, `P_n` evaluated at `ext` bits.
-fn certify_root(n: usize, x: &Float, ext: u32, target: u32, cc: &[Ball]) -> Result<Ball> {
+/// The weight `2 / ((1 - y^2) P_n'(y)^2)` for every `y` in `node`, `slope` a ball that
+/// contains `P_n'(y)` for each of them.
+fn weight(node: &Ball, slope: &Ball) -> Result<Ball> {
+    let p = node.prec();
+    let one_minus = Ball::one(p).sub(&node.sqr());
+    Ball::from_i64(2, p).div(&one_minus.mul(&slope.sqr()))
+}
+
+/// The root of `P_n` next to `x` and its weight, from one evaluation of `P_n` and
+/// `P_n'` at the point `x`, and a Newton step from there (method block, step 3);
+/// `None` when the bound does not prove a root within `2^-(prec + 6)` of the new
+/// point or leaves the weight wider than `2^-(prec + 4)` relative (then
+/// [`certify_node_by_signs`]).
+fn certify_node(n: usize, x: &Float, prec: u32, fw: &FourierWeights) -> Result<Option<(Ball, Ball)>> {
+    let ext = precisions(n, prec).1;
+    let xb = Ball::from_float(x, ext);
+    // x exact, and inside (-1, 1), where the bounds through M_3 hold
+    if !xb.rad_mag().is_zero() || *x >= 1 || *x <= -1 {
+        return Ok(None);
+    }
+    let (value, slope) = legendre_fourier(n, &xb, fw)?;
+    // P_n''(x) from Legendre's equation (1 - x^2) P'' = 2x P' - n(n+1) P (DLMF 18.8.1),
+    // and M_3 >= |P_n'''| on [-1, 1]
+    let m3 = derivative_bound_at_one(n, 3);
+    let one_minus = Ball::one(ext).sub(&xb.sqr());
+    let curvature = xb.mul(&slope).mul_pow2(1).sub(&value.mul_i64((n * (n + 1)) as i64)).div(&one_minus)?;
+    // One Newton step x1 = x + delta, and Taylor's theorem from x to x1 with the
+    // remainders bounded by M_3: P(x1) in A + D delta +- (|P''(x)| + M_3 |delta|)
+    // delta^2/2, P'(x1) in D + P''(x) delta +- M_3 delta^2/2, P''(x1) in P''(x) +- M_3
+    // |delta|
+    let mut x1 = Float::with_val(ext, value.mid() / slope.mid());
+    x1 = Float::with_val(ext, x - &x1);
+    let xb1 = Ball::from_float(&x1, ext);
+    let delta = xb1.sub(&xb);
+    let dm = delta.abs_upper_mag();
+    let half_dm2 = dm.mul(dm).mul_2exp(-1);
+    let mut value = value.add(&slope.mul(&delta));
+    value.add_error_mag(curvature.abs_upper_mag().add(m3.mul(dm)).mul(half_dm2));
+    let mut slope = slope.add(&curvature.mul(&delta));
+    slope.add_error_mag(m3.mul(half_dm2));
+    let mut curvature = curvature;
+    curvature.add_error_mag(m3.mul(dm));
+    let xb = xb1;
+    // eps > 0 even when P_n(x1) is exactly 0, so that r > 0
+    let eps = value.abs_upper_mag().add(Mag::pow2(-2 * ext as i64));
+    let d = slope.abs_lower_mag();
+    if d.is_zero() {
+        return Ok(None);
+    }
+    let r = eps.mul_2exp(2).div(d);
+    // |P_n''| <= |P_n''(x1)| + M_3 r on [x1 - r, x1 + r]
+    let m = curvature.abs_upper_mag().add(m3.mul(r));
+    if !m.mul(r.mul(r)).le(&eps.mul_2exp(2)) || !r.le(&Mag::pow2(-(prec as i64) - 6)) {
+        return Ok(None);
+    }
+    let mut node = xb;
+    node.add_error_mag(r);
+    let mut slope_on_node = slope;
+    slope_on_node.add_error_mag(m.mul(r));
+    let w = weight(&node, &slope_on_node)?;
+    if !w.rad_mag().le(&w.abs_lower_mag().mul_2exp(-(prec as i64) - 4)) {
+        return Ok(None);
+    }
+    Ok(Some((node, w)))
+}
+
+/// Encloses the root of `P_n` next to `x` by a sign change (a ball of radius about
+/// `2^-target`, `P_n` evaluated at `ext` bits at both ends) and its weight from `P_n'`
+/// on that ball: the route before 2026-11-29, kept for a node where
+/// [`certify_node`]'s bound fails.
+fn certify_node_by_signs(n: usize, x: &Float, ext: u32, target: u32, fw: &FourierWeights) -> Result<(Ball, Ball)> {
     // delta starts at the target and grows if the signs cannot be decided (the
     // Newton iterate is then less accurate than expected).
     let mut delta_exp = -(target as i64);
@@ -406,11 +579,14 @@ fn certify_root(n: usize, x: &Float, ext: u32, target: u32, cc: &[Ball]) -> Resu
         lo.assign_round(x - &delta, Round::Down);
         let mut hi = Float::new(ext);
         hi.assign_round(x + &delta, Round::Up);
-        let plo = legendre_fourier(n, &Ball::from_float(&lo, ext), cc)?;
-        let phi = legendre_fourier(n, &Ball::from_float(&hi, ext), cc)?;
+        let (plo, _) = legendre_fourier(n, &Ball::from_float(&lo, ext), fw)?;
+        let (phi, _) = legendre_fourier(n, &Ball::from_float(&hi, ext), fw)?;
         if let (Some(a), Some(b)) = (strict_sign(&plo), strict_sign(&phi)) {
             if a != b {
-                return Ok(Ball::hull(&lo, &hi, ext));
+                let node = Ball::hull(&lo, &hi, ext);
+                let (_, slope) = legendre_fourier(n, &node, fw)?;
+                let w = weight(&node, &slope)?;
+                return Ok((node, w));
             }
         }
         delta_exp += 8;
@@ -425,7 +601,7 @@ mod tests {
     /// sum w_k x_k^(2j) = 2/(2j+1) for 2j <= 2n - 1.
     #[test]
     fn rules_integrate_even_monomials_exactly() {
-        for &n in &[1usize, 2, 3, 4, 7, 16, 33] {
+        for &n in &[1usize, 2, 3, 4, 7, 16, 33, 64, 101] {
             let r = rule(n, 128).unwrap();
             for j in 0..n {
                 let mut s = Ball::zero(128);
@@ -451,18 +627,60 @@ mod tests {
     }
 
     /// The Fourier form and the three-term recurrence (with its guard bits) enclose the
-    /// same values, and the Fourier form's balls are the narrower.
+    /// same values of `P_n` and `P_n' = n (P_{n-1} - x P_n)/(1 - x^2)`, and the Fourier
+    /// form's balls are the narrower.
     #[test]
     fn fourier_form_agrees_with_the_recurrence() {
         for &n in &[1usize, 2, 5, 30, 101] {
-            let c = fourier_weights(n, &fourier_coefficients(n, 200).unwrap());
-            for x in [0.0, 0.1, 0.5, 0.77, 0.999, 1.0] {
+            let fw = FourierWeights::new(n, &fourier_coefficients(n, 200).unwrap());
+            for x in [0.0, 0.1, 0.5, 0.77, 0.999] {
                 let xb = Ball::from_float(&Float::with_val(200, x), 200);
-                let f = legendre_fourier(n, &xb, &c).unwrap();
-                let xr = Ball::from_float(&Float::with_val(200 + recurrence_guard(n), x), 200 + recurrence_guard(n));
-                let (r, _) = legendre_pair_ball(n, &xr).unwrap();
+                let (f, fd) = legendre_fourier(n, &xb, &fw).unwrap();
+                let p = 200 + recurrence_guard(n);
+                let xr = Ball::from_float(&Float::with_val(p, x), p);
+                let (r, rm) = legendre_pair_ball(n, &xr).unwrap();
+                let rd = rm.sub(&xr.mul(&r)).mul_i64(n as i64).div(&Ball::one(p).sub(&xr.sqr())).unwrap();
                 assert!(f.overlaps(&r), "n {n} x {x}: {f:?} vs {r:?}");
+                assert!(fd.overlaps(&rd), "n {n} x {x}: P' {fd:?} vs {rd:?}");
                 assert!(f.rad_mag().le(&Mag::pow2(-180)), "n {n} x {x}: {:?}", f.rad_mag());
+                assert!(fd.rad_mag().le(&Mag::pow2(-170)), "n {n} x {x}: P' {:?}", fd.rad_mag());
+            }
+        }
+    }
+
+    /// Every node of the integrator's degrees (up to 512, its default cap) is certified
+    /// by the one evaluation of step 3 at 64, 333 and 1000 bits (and three degrees at
+    /// 3333), none by the fallback; the nodes and weights, rounded to the requested
+    /// bits, keep them.
+    #[test]
+    fn every_node_is_certified_by_the_taylor_bound() {
+        let all: Vec<usize> = crate::quad::certified::adaptive::DEGREES.iter().copied().filter(|&n| n <= 512).collect();
+        for (prec, degrees) in [(64u32, all.clone()), (333, all.clone()), (1000, all), (3333, vec![7, 108, 512])] {
+            for n in degrees {
+                let mut fallbacks = 0;
+                let r = build_rule(n, prec, &mut fallbacks).unwrap();
+                assert_eq!(fallbacks, 0, "n {n} at {prec} bits");
+                for (x, w) in r.nodes.iter().zip(&r.weights) {
+                    assert!(x.rad_mag().le(&Mag::pow2(1 - prec as i64)), "n {n} at {prec}: node radius {:?}", x.rad_mag());
+                    let rel = w.rad_mag().div(w.abs_lower_mag());
+                    assert!(rel.le(&Mag::pow2(2 - prec as i64)), "n {n} at {prec}: weight radius {:?}", rel);
+                }
+            }
+        }
+    }
+
+    /// The fallback (signs at `x +- 2^-target`) encloses the same root as step 3.
+    #[test]
+    fn the_fallback_encloses_the_same_nodes() {
+        for &n in &[2usize, 7, 38, 100] {
+            let prec = 200u32;
+            let (target, ext) = precisions(n, prec);
+            let fw = FourierWeights::new(n, &fourier_coefficients(n, ext).unwrap());
+            let rec = Recurrence::new(n, target + 8);
+            let r = rule(n, prec).unwrap();
+            for (k, (x, w)) in r.nodes.iter().zip(&r.weights).enumerate().filter(|(_, (x, _))| !x.mid().is_zero()) {
+                let (node, weight) = certify_node_by_signs(n, &newton_root(&rec, x.mid().to_f64(), target + 4), ext, target, &fw).unwrap();
+                assert!(node.overlaps(x) && weight.overlaps(w), "n {n} node {k}");
             }
         }
     }

@@ -75,9 +75,14 @@ use crate::error::{check_prec, Error, Result};
 use adaptive::{Counted, RunLimits, Stats};
 
 /// The default degree limit is Arb's `prec/2 + 60`, but at most this: a rule of
-/// degree `n` costs `O(n^2)` ball operations at `prec + 2.56 n` bits to enclose
-/// (seconds above 500 at 3333 bits), while bisection costs only evaluations.
-const DEFAULT_MAX_DEGREE_CAP: usize = 362;
+/// degree `n` costs `n^2/4` complex products at `prec + 3 log2 n + 16` bits to enclose
+/// (`legendre.rs`), paid once per process, while bisection costs evaluations on every
+/// call. At 3333 bits (2026-11-29, `1/(1+x^2)` on `[0, 1]`, `sqrt x` on `[1, 4]`, `e^(-x^2)`
+/// on `[0, 2]`, first call / warm): the cap 362 (before, when a rule took `prec + 2.56
+/// n` bits) 0.40 s / 46 ms, 0.46 s / 46 ms, 0.64 s / 92 ms; 512: 0.87 s / 15 ms, 0.77 s /
+/// 14 ms, 0.78 s / 50 ms; 608: 1.6 s / 7.5 ms, 2.5 s / 9.3 ms, 0.86 s / 56 ms (C Arb:
+/// 1.2 s / 14 ms, 1.7-2.2 s / 8.4-10.6 ms, 0.31-0.42 s / 21-26 ms).
+const DEFAULT_MAX_DEGREE_CAP: usize = 512;
 
 /// The limit that stopped an integration before its goal.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -128,7 +133,7 @@ impl Options {
     /// The defaults: relative goal = the requested precision, the default absolute
     /// tolerance for balls that contain 0 ([`Options::abs_tol`]), Arb's limits with
     /// evaluations and depth sized by the first working precision `w = prec + 20`
-    /// (`1000 w + w^2` evaluations, depth `2 w`, degree `prec/2 + 60` but at most 362), working precision up to `8 prec +
+    /// (`1000 w + w^2` evaluations, depth `2 w`, degree `prec/2 + 60` but at most 512), working precision up to `8 prec +
     /// 256` bits.
     pub fn new() -> Options {
         Options { goal_bits: None, abs_tol: None, relative_only: false, max_evaluations: None, max_depth: None, max_degree: None, max_working_prec: 0 }
@@ -585,6 +590,8 @@ where
     let mut zero_shift: i64 = 0;
     let mut zero_attempts = 0u32;
     for _attempt in 0..MAX_ATTEMPTS {
+        // the installed time budget (crate::budget), between attempts
+        crate::budget::check_elapsed("certified quadrature (attempts)", 0.0, crate::error::Reached::Evaluations { count: evaluations })?;
         let tol = tolerance(opts, goal, mag, l1).mul_2exp(tol_shift + zero_shift);
         let parts = builder(tol, wp, f)?;
         let n_parts = parts.iter().filter(|p| p.lo != p.hi).count().max(1) as u64;

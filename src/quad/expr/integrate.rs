@@ -5,6 +5,7 @@
 use super::decay::{tail_class, TailClass};
 use super::finite::integrate_finite;
 use super::oscillatory::{integrate_inverted, integrate_oscillatory};
+use super::substitute::sqrt_substituted;
 use super::Expr;
 use crate::ball::{Ball, Decimal};
 use crate::error::{Error, IntegrationError, Result};
@@ -149,6 +150,16 @@ pub fn integrate_range(
             Some(w) => integrate_weighted(g, &a.to_ball(ip), &b.to_ball(ip), w, prec, opts),
         },
         (End::Finite(a), End::Infinity) => {
+            // square roots vanishing at a: x = a + t^2 (`substitute.rs`)
+            if decay.is_none() && weight.is_none() {
+                if let Some(g) = sqrt_substituted(f, a.as_rational()) {
+                    if let Ok(r) = to_infinity(&g, &crate::Ball::zero(ip), None, prec, opts, 1.0) {
+                        if r.goal_met {
+                            return Ok(r);
+                        }
+                    }
+                }
+            }
             let a = a.to_ball(ip);
             match decay {
                 Some(d) => {

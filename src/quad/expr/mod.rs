@@ -90,6 +90,8 @@ mod limits;
 mod local;
 mod oscillatory;
 mod parse;
+mod removable;
+mod substitute;
 mod tree;
 
 #[cfg(test)]

@@ -170,16 +170,11 @@ fn write_decimal(f: &mut fmt::Formatter<'_>, q: &Rational) -> fmt::Result {
 }
 
 impl Expr {
-    /// The same function in a spelling that costs the certified integrator no more
-    /// than any other (issue 36, item 5), bottom-up: `1/cosh(u)^k` and `cosh(u)^-k` are
-    /// `sech(u)^k` (`sech` is enclosed tightly on wide boxes, `1/cosh` is not),
-    /// `exp(a) exp(b)` is `exp(a + b)` (one enclosure instead of a product of two), and
-    /// `a*a` is `a^2` (a square, not a product of two independent balls). Each rewrite
-    /// is an identity wherever either side is defined, so the integral is the same.
-    pub fn canonical(&self) -> Expr {
-        let b = |e: &Expr| Box::new(e.canonical());
-        let e = match self {
-            Expr::X | Expr::Pi | Expr::Number(_) => return self.clone(),
+    /// The same node with each child `c` replaced by `f(c)` (a leaf is cloned).
+    pub(crate) fn map_children(&self, mut f: impl FnMut(&Expr) -> Expr) -> Expr {
+        let mut b = |e: &Expr| Box::new(f(e));
+        match self {
+            Expr::X | Expr::Pi | Expr::Number(_) => self.clone(),
             Expr::Neg(a) => Expr::Neg(b(a)),
             Expr::Add(x, y) => Expr::Add(b(x), b(y)),
             Expr::Sub(x, y) => Expr::Sub(b(x), b(y)),
@@ -189,7 +184,20 @@ impl Expr {
             Expr::Pow(x, y) => Expr::Pow(b(x), b(y)),
             Expr::Call(f, a) => Expr::Call(*f, b(a)),
             Expr::BesselJ(n, a) => Expr::BesselJ(*n, b(a)),
-        };
+        }
+    }
+
+    /// The same function in a spelling that costs the certified integrator no more
+    /// than any other (issue 36, item 5), bottom-up: `1/cosh(u)^k` and `cosh(u)^-k` are
+    /// `sech(u)^k` (`sech` is enclosed tightly on wide boxes, `1/cosh` is not),
+    /// `exp(a) exp(b)` is `exp(a + b)` (one enclosure instead of a product of two), and
+    /// `a*a` is `a^2` (a square, not a product of two independent balls). Each rewrite
+    /// is an identity wherever either side is defined, so the integral is the same.
+    pub fn canonical(&self) -> Expr {
+        if matches!(self, Expr::X | Expr::Pi | Expr::Number(_)) {
+            return self.clone();
+        }
+        let e = self.map_children(Expr::canonical);
         match e {
             Expr::Div(num, den) => match *den {
                 Expr::Call(Function::Cosh, u) => Expr::Mul(num, Box::new(Expr::Call(Function::Sech, u))),

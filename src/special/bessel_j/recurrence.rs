@@ -63,6 +63,9 @@ pub fn bessel_j_sequence_dd(nmax: usize, x: Dd) -> Vec<Dd> {
         out[0] = Dd::ONE;
         return out;
     }
+    if x.hi.abs() < TINY_SEQUENCE_ARGUMENT {
+        return bessel_j_sequence_tiny(nmax, x);
+    }
     let ax = x.abs();
     let inv_x = ax.recip();
     let m = miller_start(nmax, ax.hi);
@@ -98,6 +101,38 @@ pub fn bessel_j_sequence_dd(nmax: usize, x: Dd) -> Vec<Dd> {
     for (n, v) in out.iter_mut().enumerate() {
         let scaled = *v * inv_norm;
         *v = if x.hi < 0.0 && n % 2 == 1 { -scaled } else { scaled };
+    }
+    out
+}
+
+/// Below this `|x|` [`bessel_j_sequence_dd`] sums three terms of the power series
+/// ([`bessel_j_sequence_tiny`]): there Miller's recurrence grows by `2n/|x|` a step,
+/// past the f64 range within one step at `|x| = 1e-100` (NaN values), `1/|x|` itself
+/// overflows at subnormal `x`, and its `J_0`, with an absolute error near `1e-30`,
+/// leaves no digit of `1 - J_0 ~ x^2/4` (the wave displacement's first term) below
+/// `|x| = 1e-15`.
+const TINY_SEQUENCE_ARGUMENT: f64 = 1e-8;
+
+/// `J_n(x) = (x/2)^n/n! (1 - h/(n+1) + h^2/(2 (n+1)(n+2)) - r)`, `h = (x/2)^2`
+/// [DLMF 10.2.2], for `|x| < 1e-8`: the series alternates with falling terms, so
+/// `0 <= r <= h^3/(6 (n+1)(n+2)(n+3)) < 2^-166`, under double-double's rounding.
+/// Orders whose `(x/2)^n/n!` underflows are 0.
+fn bessel_j_sequence_tiny(nmax: usize, x: Dd) -> Vec<Dd> {
+    let half = x.mul_f64(0.5);
+    let h = half * half;
+    let mut out = vec![Dd::ZERO; nmax + 1];
+    let mut lead = Dd::ONE; // (x/2)^n/n!
+    for (n, v) in out.iter_mut().enumerate() {
+        if n > 0 {
+            lead = lead * half / Dd::from_f64(n as f64);
+        }
+        if lead.hi == 0.0 {
+            break;
+        }
+        let (n1, n2) = (Dd::from_f64((n + 1) as f64), Dd::from_f64((n + 2) as f64));
+        let second = h / n1;
+        let third = second * h / n2.mul_f64(2.0);
+        *v = lead - lead * (second - third);
     }
     out
 }

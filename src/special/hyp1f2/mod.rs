@@ -144,6 +144,12 @@ fn model_phi_series(m: u64, s: &Ball, wp: u32) -> Result<Ball> {
         if n > 100_000_000 {
             return Err(Error::NoConvergence { function: "1F2 model family", terms: n as u64 });
         }
+        if n % 256 == 0 {
+            // the installed time budget (crate::budget): at large s the terms grow
+            // until n ~ sqrt(s) at a precision covering their cancellation (the wave
+            // series at x = 2.8e32010 spent 17 s in its first family, issue 37's scan)
+            crate::budget::check_elapsed("1F2 model family series, term by term", 0.0, crate::error::Reached::Terms { count: n as u64 })?;
+        }
     }
 }
 

@@ -304,6 +304,12 @@ pub(crate) fn series_2f1(a: &Float, b: &Float, c: &Float, z: &Ball, wp: u32) -> 
         if n > MAX_SERIES_TERMS {
             return Err(Error::NoConvergence { function: "hyp2f1", terms: n });
         }
+        if n % 64 == 0 {
+            // the installed time budget (crate::budget): the term count above is a
+            // lower bound of the work, not its length (2F1(24.1, -34.875; 1000001; 0.5)
+            // planned 65 560 guard bits and summed 5000 terms at 65 742 bits: 2 s)
+            crate::budget::check_elapsed("2F1 series, term by term", 0.0, crate::error::Reached::Terms { count: n })?;
+        }
     }
     let u = mag_pow2(-(wp as i64));
     let mut rad = tail;
@@ -343,6 +349,12 @@ pub(super) fn pow_exact_exponent(base: &Ball, e: &Float, wp: u32) -> Result<Ball
     if e.is_integer() && e.clone().abs() <= (1u64 << 20) {
         let n = e.to_f64().abs() as u64;
         let p = base.pow_u64(n);
+        if !p.is_finite() {
+            // past MPFR's exponent range (2^(2^30)): `(1 - z)^100001` at
+            // `1 - z = 1.3e14333` (issue 37's scan, which found it as a DivisionByZero
+            // of the reciprocal)
+            return Err(Error::Overflow { what: "(1 - z)^e in 2F1 (past the exponent range)".into() });
+        }
         return if e.is_sign_negative() { p.recip() } else { Ok(p) };
     }
     // A base longer than the working precision (`1 - z` exact at `z = 3e-29731`

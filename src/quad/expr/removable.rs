@@ -1,0 +1,270 @@
+//! Removable singular points of a quotient, `f = N / U` with `U` affine: `sin(x)/x`,
+//! `(exp(x) - 1)/x`, `sin(x - 1/2)/(x - 1/2)`. The integrand is then enclosed on every
+//! box, the point's included, and integrated as the analytic function it is, with no
+//! split and no map at the point (issue 40). Also `atan(1/u)` at an end of the range
+//! where `u` vanishes, replaced by the function equal to it on the segment
+//! ([`atan_reciprocals_rewritten`]).
+//!
+//! # Method
+//!
+//! Let `U = c0 + c1 x` (`c1 != 0`, rational) vanish at `p` in the range, and let `N`
+//! have no singular candidate in the range (`local.rs`: no division by, negative or
+//! fractional power of, `log` or `sqrt` of an affine subtree vanishing there).
+//!
+//! * **`N(p) = 0`.** The local class of `f` at `p` (`local.rs`, from a side where the
+//!   range extends) is `|f(p + sigma t)| <= C t^q` with `q >= 0`: `f` is bounded next to
+//!   `p`, so `N(p) = lim U(x) f(x) = 0` (`N` is continuous at `p`, `U(p) = 0`). A class
+//!   with `q < 0`, or none, leaves the point to the general route.
+//! * **The enclosure.** For a box `B` and `H` the smallest box containing `B` and `p`
+//!   (convex), every `z` in `B` has the segment `[p, z]` in `H`, and when `N` is
+//!   holomorphic on `H`, `f(z) = (N(z) - N(p)) / (c1 (z - p)) = (1/c1) int_0^1 N'(p + s
+//!   (z - p)) ds` lies in the closed convex hull of `N'(H) / c1`, so in the ball (a
+//!   rectangle, convex) that encloses `N'` on `H`, over `c1`. `N'` is the derivative
+//!   of the tree by the rules of calculus ([`derivative`]); `N` evaluated on `H` in the
+//!   integrator's holomorphic mode is finite only where `N` is holomorphic (its
+//!   branch cuts give non-finite balls), so that evaluation is the check. At `z = p`
+//!   the formula gives `N'(p)/c1`, the value of the extension.
+//! * **Which form.** Where `U(B)` excludes 0 the quotient `N(B) / U(B)` is used as it
+//!   is; where it contains 0 (next to `p`) the enclosure above. Both enclose `f` on
+//!   `B`, so the integrator's ellipse bound holds with either.
+
+use rug::Rational;
+
+use super::decay::const_rational;
+use super::local::{affine, local_class, singular_candidates};
+use super::tree::{Expr, Function};
+use super::MAX_BESSEL_ORDER;
+use crate::ball::{Ball, CBall, Decimal};
+use crate::quad::certified::HoloBall;
+
+/// `f = N / U` with a removable point `p` of `U` in the range (method block).
+pub(crate) struct Removable {
+    num: Expr,
+    den: Expr,
+    slope: Expr,
+    c1: Rational,
+    p: Rational,
+}
+
+impl Removable {
+    /// The point.
+    pub(crate) fn point(&self) -> &Rational {
+        &self.p
+    }
+
+    /// An enclosure of `f` on the ball `z` (method block).
+    pub(crate) fn eval(&self, z: &HoloBall) -> HoloBall {
+        let u = self.den.eval(z);
+        if !u.inner_ref().contains_zero() {
+            return &self.num.eval(z) / &u;
+        }
+        let prec = z.prec();
+        let p = Decimal::from_rational(self.p.clone()).to_ball(prec);
+        let inner = z.inner_ref();
+        let hull = CBall::new(union(inner.re(), &p), union(inner.im(), &Ball::zero(prec)));
+        let h = z.constant(hull);
+        if !self.num.eval(&h).is_finite() {
+            return z.constant(CBall::indeterminate(prec));
+        }
+        let recip = Decimal::from_rational(Rational::from(1) / &self.c1);
+        &self.slope.eval(&h) * &h.decimal(&recip)
+    }
+}
+
+/// The smallest ball containing both.
+fn union(a: &Ball, b: &Ball) -> Ball {
+    let (al, bl, au, bu) = (a.lower(), b.lower(), a.upper(), b.upper());
+    let lo = if al < bl { al } else { bl };
+    let hi = if au > bu { au } else { bu };
+    Ball::hull(&lo, &hi, a.prec().max(b.prec()))
+}
+
+/// The removable point of `f = N / U` on `[lo, hi]`, when `f` has this form, `U`'s root
+/// `p` lies in `[lo, hi]`, `N` has no singular candidate there, `N'` has a tree, and the
+/// local class at `p` proves `N(p) = 0` (method block). `None` otherwise.
+pub(crate) fn removable_point(f: &Expr, lo: &Rational, hi: &Rational) -> Option<Removable> {
+    let Expr::Div(num, den) = f else { return None };
+    let (c0, c1) = affine(den)?;
+    if c1 == 0 {
+        return None;
+    }
+    let p = Rational::from(-c0 / &c1);
+    if p < *lo || p > *hi {
+        return None;
+    }
+    let mut candidates = Vec::new();
+    singular_candidates(num, &mut candidates);
+    if candidates.iter().any(|q| q >= lo && q <= hi) {
+        return None;
+    }
+    let sigma = if p < *hi { 1 } else { -1 };
+    let delta = Rational::from((1, 1024));
+    let class = local_class(f, &p, sigma, &delta)?;
+    if class.power < 0 {
+        return None;
+    }
+    let slope = derivative(num)?;
+    Some(Removable { num: (**num).clone(), den: (**den).clone(), slope, c1, p })
+}
+
+fn number(q: i64) -> Expr {
+    Expr::Number(Decimal::from_rational(Rational::from(q)))
+}
+
+fn bx(e: Expr) -> Box<Expr> {
+    Box::new(e)
+}
+
+fn mul(a: Expr, b: Expr) -> Expr {
+    Expr::Mul(bx(a), bx(b))
+}
+
+/// The derivative in `x` of the tree, by the sum, product, quotient, power and chain
+/// rules and the derivatives of the functions (DLMF 4.14 and 4.34 for the
+/// trigonometric and hyperbolic ones, 10.6(i) for `J_n' = (J_{n-1} - J_{n+1})/2` and
+/// `J_0' = -J_1`). `None` for `J_n` of negative order or of the largest order.
+pub(crate) fn derivative(e: &Expr) -> Option<Expr> {
+    if !e.depends_on_x() {
+        return Some(number(0));
+    }
+    let d = |a: &Expr| derivative(a);
+    Some(match e {
+        Expr::X => number(1),
+        Expr::Pi | Expr::Number(_) => number(0),
+        Expr::Neg(a) => Expr::Neg(bx(d(a)?)),
+        Expr::Add(a, b) => Expr::Add(bx(d(a)?), bx(d(b)?)),
+        Expr::Sub(a, b) => Expr::Sub(bx(d(a)?), bx(d(b)?)),
+        Expr::Mul(a, b) => Expr::Add(bx(mul(d(a)?, (**b).clone())), bx(mul((**a).clone(), d(b)?))),
+        Expr::Div(a, b) => Expr::Div(
+            bx(Expr::Sub(bx(mul(d(a)?, (**b).clone())), bx(mul((**a).clone(), d(b)?)))),
+            bx(Expr::PowInt(b.clone(), 2)),
+        ),
+        Expr::PowInt(a, n) => mul(mul(number(*n), Expr::PowInt(a.clone(), n - 1)), d(a)?),
+        Expr::Pow(a, b) if !b.depends_on_x() => {
+            let b_minus_one = match const_rational(b) {
+                Some(r) => Expr::Number(Decimal::from_rational(r - 1u32)),
+                None => Expr::Sub(b.clone(), bx(number(1))),
+            };
+            mul(mul((**b).clone(), Expr::Pow(a.clone(), bx(b_minus_one))), d(a)?)
+        }
+        // a^b = exp(b log a): (a^b)' = a^b (b' log a + b a'/a)
+        Expr::Pow(a, b) => mul(
+            e.clone(),
+            Expr::Add(
+                bx(mul(d(b)?, Expr::Call(Function::Log, a.clone()))),
+                bx(Expr::Div(bx(mul((**b).clone(), d(a)?)), a.clone())),
+            ),
+        ),
+        Expr::Call(f, a) => {
+            let outer = match f {
+                Function::Sqrt => Expr::Div(bx(number(1)), bx(mul(number(2), e.clone()))),
+                Function::Exp => e.clone(),
+                Function::Log => Expr::Div(bx(number(1)), a.clone()),
+                Function::Sin => Expr::Call(Function::Cos, a.clone()),
+                Function::Cos => Expr::Neg(bx(Expr::Call(Function::Sin, a.clone()))),
+                Function::Tan => Expr::Add(bx(number(1)), bx(Expr::PowInt(bx(e.clone()), 2))),
+                Function::Sinh => Expr::Call(Function::Cosh, a.clone()),
+                Function::Cosh => Expr::Call(Function::Sinh, a.clone()),
+                Function::Tanh => Expr::Sub(bx(number(1)), bx(Expr::PowInt(bx(e.clone()), 2))),
+                Function::Sech => Expr::Neg(bx(mul(e.clone(), Expr::Call(Function::Tanh, a.clone())))),
+                Function::Atan => Expr::Div(bx(number(1)), bx(Expr::Add(bx(number(1)), bx(Expr::PowInt(a.clone(), 2))))),
+            };
+            mul(outer, d(a)?)
+        }
+        Expr::BesselJ(n, a) => {
+            if *n < 0 || (*n as u64) >= MAX_BESSEL_ORDER {
+                return None;
+            }
+            let outer = if *n == 0 {
+                Expr::Neg(bx(Expr::BesselJ(1, a.clone())))
+            } else {
+                Expr::Div(bx(Expr::Sub(bx(Expr::BesselJ(n - 1, a.clone())), bx(Expr::BesselJ(n + 1, a.clone())))), bx(number(2)))
+            };
+            mul(outer, d(a)?)
+        }
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The derivative's tree against a central difference in f64, at points where every
+    /// function is smooth.
+    #[test]
+    fn derivatives_match_central_differences() {
+        for text in [
+            "sin(x)", "exp(x) - 1", "x^3 - 2*x", "sqrt(1 + x)", "log(2 + x)", "tan(x)", "tanh(3*x)", "sech(x)^2", "atan(x^2)",
+            "besselj(0, x)", "besselj(3, 2*x)", "(1 + x)^(1/3)", "x^x", "sinh(x)*cosh(x)/(2 + x)", "cos(pi*x)", "1/(1+x^2)",
+        ] {
+            let e = Expr::parse(text).unwrap();
+            let de = derivative(&e).unwrap();
+            for x in [0.3, 0.7, 1.1] {
+                let h = 1e-5;
+                let fd = (e.eval_f64(x + h) - e.eval_f64(x - h)) / (2.0 * h);
+                let got = de.eval_f64(x);
+                assert!((got - fd).abs() <= 1e-7 * (1.0 + fd.abs()), "{text} at {x}: {got} vs {fd}");
+            }
+        }
+    }
+
+    #[test]
+    fn quotients_with_a_removable_point_are_recognised_and_others_not() {
+        let q = |s: &str| Rational::from(s.parse::<i64>().unwrap());
+        for (text, found) in [
+            ("sin(x)/x", true),
+            ("(exp(x)-1)/x", true),
+            ("sin(x-0.5)/(x-0.5)", true),
+            ("cos(x)/x", false),
+            ("1/x", false),
+            ("log(x)/x", false),
+            ("sin(x)/(x-3)", false),
+        ] {
+            let e = Expr::parse(text).unwrap().canonical();
+            assert_eq!(removable_point(&e, &q("-1"), &q("1")).is_some(), found, "{text}");
+        }
+    }
+}
+
+/// `f` with every `atan(1/u)` (`u` affine, not vanishing inside `(lo, hi)`) replaced by
+/// `s pi/2 - atan(u)`, `s` the sign of `u` on `(lo, hi)`: the two agree at every point
+/// of the open segment (for real `u > 0` both have the derivative `-1/(1 + u^2)` and
+/// tend to 0 as `u -> inf`; `u < 0` is the odd mirror), so the integral is the same,
+/// and the new integrand is analytic next to the segment where the old one jumps at
+/// `u = 0` (`atan(1/x)` on `[0, 1]`). `None` when there is nothing to replace.
+pub(crate) fn atan_reciprocals_rewritten(f: &Expr, lo: &Rational, hi: &Rational) -> Option<Expr> {
+    let mut changed = false;
+    let e = rewrite(f, lo, hi, &mut changed);
+    changed.then_some(e)
+}
+
+fn rewrite(e: &Expr, lo: &Rational, hi: &Rational, changed: &mut bool) -> Expr {
+    match e {
+        Expr::Call(Function::Atan, arg) => {
+            let u = match &**arg {
+                Expr::Div(one, u) if matches!(&**one, Expr::Number(d) if *d.as_rational() == 1) => Some(u),
+                Expr::PowInt(u, -1) => Some(u),
+                _ => None,
+            };
+            if let Some((u, (c0, c1))) = u.and_then(|u| affine(u).map(|c| (u, c))) {
+                let at = |x: &Rational| Rational::from(&c0 + Rational::from(&c1 * x));
+                let (ulo, uhi) = (at(lo), at(hi));
+                let sign = if ulo >= 0 && uhi >= 0 && (ulo > 0 || uhi > 0) {
+                    1
+                } else if ulo <= 0 && uhi <= 0 && (ulo < 0 || uhi < 0) {
+                    -1
+                } else {
+                    0
+                };
+                if sign != 0 {
+                    *changed = true;
+                    let half_pi = Expr::Div(bx(Expr::Pi), bx(number(2)));
+                    let half_pi = if sign > 0 { half_pi } else { Expr::Neg(bx(half_pi)) };
+                    return Expr::Sub(bx(half_pi), bx(Expr::Call(Function::Atan, u.clone())));
+                }
+            }
+            e.map_children(|a| rewrite(a, lo, hi, changed))
+        }
+        _ => e.map_children(|a| rewrite(a, lo, hi, changed)),
+    }
+}
