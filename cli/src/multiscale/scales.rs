@@ -207,35 +207,49 @@ fn opt(x: Option<f64>) -> String {
     x.filter(|v| v.is_finite()).map_or(String::new(), |v| v.to_string())
 }
 
+/// The columns every cycle has, in both CSVs.
+const MEASURED: &str = "cells,steps_per_leg,w,w_d,cavitated_fraction,max_intervals,pull_off,model_w,model_w_d,model_valid";
+
+/// A cycle's [`MEASURED`] cells.
+fn measured(c: &ScaleCycle) -> String {
+    [
+        c.cells.to_string(),
+        c.steps_per_leg.to_string(),
+        opt(c.w),
+        opt(c.w_d),
+        c.cavitated_fraction.to_string(),
+        c.max_intervals.to_string(),
+        opt(c.pull_off),
+        opt(c.model.map(|m| m.w)),
+        opt(c.model.map(|m| m.w_d)),
+        c.model.map_or(String::new(), |m| m.valid.to_string()),
+    ]
+    .join(",")
+}
+
+/// A cycle's error as a quoted CSV cell.
+fn error_cell(c: &ScaleCycle) -> String {
+    format!("\"{}\"", c.error.as_deref().unwrap_or("").replace('"', "'"))
+}
+
 fn rows_csv(rows: &[ScalesRow]) -> String {
-    let mut s = String::from(
-        "hurst,lambda,scales,cells,steps_per_leg,w,w_d,w_smooth,w_sum_of_singles,w_d_sum_of_singles,cavitated_fraction,max_intervals,pull_off,model_w,model_w_d,model_valid,model_valid_fraction,traction_estimate,seconds,error\n",
-    );
+    let mut s = format!("hurst,lambda,scales,{MEASURED},w_smooth,w_sum_of_singles,w_d_sum_of_singles,model_valid_fraction,traction_estimate,seconds,error\n");
     for r in rows {
         let c = &r.profile;
         let _ = writeln!(
             s,
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\"{}\"",
+            "{},{},{},{},{},{},{},{},{},{},{}",
             r.hurst,
             r.lambda,
             r.scales,
-            c.cells,
-            c.steps_per_leg,
-            opt(c.w),
-            opt(c.w_d),
+            measured(c),
             opt(r.w_smooth),
             opt(r.w_sum_of_singles),
             opt(r.w_d_sum_of_singles),
-            c.cavitated_fraction,
-            c.max_intervals,
-            opt(c.pull_off),
-            opt(c.model.map(|m| m.w)),
-            opt(c.model.map(|m| m.w_d)),
-            c.model.map_or(String::new(), |m| m.valid.to_string()),
             opt(c.model.map(|m| m.valid_fraction)),
             c.traction_estimate,
             c.seconds,
-            c.error.as_deref().unwrap_or("").replace('"', "'")
+            error_cell(c)
         );
     }
     s
@@ -250,29 +264,11 @@ fn role_name(r: &CycleRole) -> String {
 }
 
 fn cycles_csv(cycles: &[ScaleCycle]) -> String {
-    let mut s = String::from("index,lambda,waves,roles,cells,steps_per_leg,half_width,w,w_d,cavitated_fraction,max_intervals,pull_off,model_w,model_w_d,model_valid,seconds,error\n");
+    let mut s = format!("index,lambda,waves,roles,half_width,{MEASURED},seconds,error\n");
     for c in cycles {
         let waves = c.waves.iter().map(|(a, b)| format!("{a}:{b}")).collect::<Vec<_>>().join(" ");
         let roles = c.roles.iter().map(role_name).collect::<Vec<_>>().join("; ");
-        let _ = writeln!(
-            s,
-            "{},{},{waves},{roles},{},{},{},{},{},{},{},{},{},{},{},{},\"{}\"",
-            c.index,
-            c.lambda,
-            c.cells,
-            c.steps_per_leg,
-            c.half_width,
-            opt(c.w),
-            opt(c.w_d),
-            c.cavitated_fraction,
-            c.max_intervals,
-            opt(c.pull_off),
-            opt(c.model.map(|m| m.w)),
-            opt(c.model.map(|m| m.w_d)),
-            c.model.map_or(String::new(), |m| m.valid.to_string()),
-            c.seconds,
-            c.error.as_deref().unwrap_or("").replace('"', "'")
-        );
+        let _ = writeln!(s, "{},{},{waves},{roles},{},{},{},{}", c.index, c.lambda, c.half_width, measured(c), c.seconds, error_cell(c));
     }
     s
 }
