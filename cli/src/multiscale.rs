@@ -9,6 +9,9 @@
 //! `envelope.json`, `envelope.md` (the table of docs/multiscale.md: per profile, the
 //! worst ratio over lambda), `envelope.svg` (the ratios against lambda) and
 //! `envelope-wave.svg` (the wave part `w(a)` of one profile against its envelopes).
+//!
+//! `maugis multiscale scales` / `merge` (`multiscale/scales.rs`): W and cavitation
+//! against the number of scales, with the numerical solver, sharded.
 
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -21,6 +24,8 @@ use maugis::contact::curve::load_area_curve;
 use maugis::contact::model::Params;
 use maugis::contact::multiscale::{envelope_constants, envelope_curve_options, wave_part, EnvelopeRow, EnvelopeStudy};
 use maugis::contact::profile::WavyProfile;
+
+mod scales;
 
 use crate::args::{self, short};
 use crate::curve::progress;
@@ -40,6 +45,15 @@ pub struct MultiscaleArgs {
 pub enum Study {
     /// Envelope constants of Weierstrass profiles and the model's largest excursion outside them.
     Envelope(EnvelopeArgs),
+    /// W and cavitation against the number of scales: solver cycles of Weierstrass
+    /// profiles of 1..N scales, the single scales and the model beside them (sharded).
+    Scales(scales::ScalesArgs),
+    /// Merge the output directories of `maugis multiscale scales --shard s/n` runs (or
+    /// redraw one whole study's tables and figure from its scales.json).
+    Merge(scales::ScalesMergeArgs),
+    /// The transitional lambda* against the number of scales: the lambda below which the
+    /// solver's roughness-induced W falls under a fraction of the JKR limit's.
+    Transition(scales::TransitionArgs),
 }
 
 /// Output format.
@@ -92,6 +106,9 @@ pub struct EnvelopeArgs {
 pub fn run(a: MultiscaleArgs) -> Result<(), String> {
     match a.study {
         Study::Envelope(e) => run_envelope(e),
+        Study::Scales(s) => scales::run_scales(s),
+        Study::Merge(m) => scales::run_merge(m),
+        Study::Transition(t) => scales::run_transition(t),
     }
 }
 

@@ -141,7 +141,7 @@ fn axis_points(s: &str) -> Result<usize, String> {
 }
 
 /// `s/n` with `1 <= s <= n`.
-fn shard(s: &str) -> Result<(usize, usize), String> {
+pub(crate) fn shard(s: &str) -> Result<(usize, usize), String> {
     let (a, b) = s.split_once('/').ok_or_else(|| format!("'{s}' is not of the form s/n (e.g. 2/8)"))?;
     let parse = |t: &str| t.trim().parse::<usize>().map_err(|_| format!("'{s}' is not of the form s/n (e.g. 2/8)"));
     let (a, b) = (parse(a)?, parse(b)?);

@@ -54,6 +54,37 @@
 //! This is not [`Cycle::stiff_work`], the work `oint Lbar dDelta` of the
 //! stiff-machine cycle from out of contact back to out of contact (12.02 against
 //! W = 4.51 at lambda = 6, amax = 6, Fig. 4c roughness).
+//!
+//! # Along the legs, for cavitated cycles
+//!
+//! Ordering by `abar` fails once the contact splits: a rough profile of many
+//! scales holds up to two dozen contact intervals at once, the legs' loads at
+//! one `abar` differ by whole units, and the walk by `abar` jumps between
+//! branches (W came out 0 for a 4-scale profile at lambda = 3 that dissipates
+//! plainly). [`closed_cycle_along_legs`] reads the same closed cycle off the
+//! legs in the order the simulation visited them, which is an order along the
+//! branches whatever the contact's shape:
+//!
+//! * unloading: the largest contact (the last loading state), then the
+//!   unloading leg's states in contact, from the state of largest controlled
+//!   value (the largest contact, unless it lies on a falling branch: the
+//!   library re-bases its cycle the same way), walked as above (running minimum of
+//!   the controlled variable, a jump at each local minimum to the first later
+//!   state at its level), to the end of unloading;
+//! * reloading: the reloading leg (then the loading leg above where it
+//!   rejoined), from its state of least controlled value (the end of
+//!   unloading, met again from below), walked by the running maximum to the
+//!   level unloading started at;
+//! * W is the work of the machine around that closed polygon in the
+//!   `(Delta, Lbar)` plane, `oint Lbar dDelta` (exact on its straight
+//!   segments): the energy the cycle dissipates, since the body returns to
+//!   the state it left. It needs no single-valued curve.
+//!
+//! On a cycle with one contact interval throughout, the two readings agree
+//! (`solver/tests/it/dissipation.rs`). The jump targets are interpolated
+//! between the two leg states around the level, which is accurate to one
+//! approach step; the grid study of `docs/multiscale.md` measures what that
+//! costs.
 
 use maugis::contact::paths::{
     loops_and_dissipation, Control, Dissipation, Driver, HysteresisLoop, PathNode,
@@ -344,4 +375,127 @@ pub fn cycle_dissipation(
         load_control: closed_cycle(cycle, solver_datum, Driver::load())?,
         displacement_control,
     })
+}
+
+/// The closed in-contact cycle read along the legs (module docs, "Along the
+/// legs"), for cycles whose contact splits.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LegCycle {
+    /// The controlled variable.
+    pub control: Control,
+    /// The datum `x_d` of displacement control (1 under load control).
+    pub datum: f64,
+    /// The unloading path, from the state of largest controlled value (the
+    /// largest contact, unless that lies on a falling branch).
+    pub unloading: Vec<PathNode>,
+    /// The end of unloading (pull-off under load control).
+    pub end: PathNode,
+    /// The unloading leg ran out of states in contact before a turning point:
+    /// the true end may lie beyond it.
+    pub end_at_edge: bool,
+    /// The reloading path, from the reloading leg's state of least controlled
+    /// value up to the level unloading started at.
+    pub reloading: Vec<PathNode>,
+    /// Reloading stopped at a maximum with no later state at its level: the
+    /// cycle does not close and `work` is not W.
+    pub reloading_truncated: bool,
+    /// `|Delta|` between the end of unloading and the start of reloading
+    /// (the same state, met from both sides; its size shows how well the legs
+    /// resolve it).
+    pub start_gap: f64,
+    /// W: `oint Lbar dDelta` around the closed cycle (units of `dgamma l_h`).
+    pub work: f64,
+    /// Fraction of the cycle's nodes with more than one contact interval.
+    pub cavitated_fraction: f64,
+}
+
+/// The closed in-contact cycle of `cycle` under `driver`, read along the legs
+/// (module docs). `solver_datum` as for [`closed_cycle`].
+///
+/// Errors as [`closed_cycle`]; also fewer than two unloading states in contact,
+/// or an empty reloading leg (the unloading leg held no contact).
+pub fn closed_cycle_along_legs(cycle: &Cycle, solver_datum: f64, driver: Driver) -> Result<LegCycle> {
+    finite(solver_datum, "the solver datum")?;
+    in_range(solver_datum, "the solver datum", Interval::above(0.0))?;
+    let node = |s: &State| -> Result<PathNode> {
+        finite(s.abar, "a state's contact half-width")?;
+        finite(s.load, "a state's load")?;
+        finite(s.approach, "a state's approach")?;
+        Ok(PathNode {
+            abar: s.abar,
+            load: s.load,
+            approach: approach_on_model_datum(s.approach, s.load, solver_datum),
+            valid: s.contact_intervals() <= 1,
+        })
+    };
+    let y = |p: &PathNode| driver.value((p.load, p.approach));
+    // Unloading: the largest contact, then the leg while in contact; walked
+    // backwards over the reversed list (the walk's `-1` is the running minimum).
+    let mut unload_states: Vec<PathNode> = Vec::new();
+    for s in cycle.loading.last().into_iter().chain(cycle.unloading.iter().take_while(|s| s.abar > 0.0)) {
+        unload_states.push(node(s)?);
+    }
+    count_in_range(unload_states.len(), "the unloading leg's states in contact (the cycle needs 2)", 2, usize::MAX)?;
+    // The cycle turns at the largest controlled value: the largest contact
+    // unless it lies on a falling branch (as the library re-bases its cycle,
+    // `ControlPaths::cycle_unloading`).
+    let top = (0..unload_states.len()).fold(0, |best, i| if y(&unload_states[i]) > y(&unload_states[best]) { i } else { best });
+    unload_states.drain(..top);
+    let top_level = y(&unload_states[0]);
+    unload_states.reverse();
+    let n = unload_states.len();
+    let unloading = walk(driver, &unload_states, unload_states[n - 1], true, n as isize - 2, -1);
+    let (end, end_at_edge) = match unloading.stopped {
+        Some(e) => (e, false),
+        None => (unloading.path[unloading.path.len() - 1], true),
+    };
+    // Reloading: the reloading leg, then the loading leg above its last approach.
+    let mut reload_states: Vec<PathNode> = Vec::new();
+    for s in cycle.reloading.iter().filter(|s| s.abar > 0.0) {
+        reload_states.push(node(s)?);
+    }
+    let leg_len = reload_states.len();
+    count_in_range(leg_len, "the reloading leg's states in contact (the cycle needs 1)", 1, usize::MAX)?;
+    let last_approach = cycle.reloading.last().map_or(f64::NEG_INFINITY, |s| s.approach);
+    for s in cycle.loading.iter().filter(|s| s.abar > 0.0 && s.approach > last_approach + 0.5 * cycle.step) {
+        reload_states.push(node(s)?);
+    }
+    let i0 = (0..leg_len).min_by(|&i, &j| y(&reload_states[i]).total_cmp(&y(&reload_states[j]))).unwrap_or(0);
+    let reloading = walk(driver, &reload_states, reload_states[i0], true, i0 as isize + 1, 1);
+    // It closes where it reaches the level the cycle turned at (a stop at a
+    // maximum there is the top itself); the loading leg beyond is cut off.
+    let closes_at = top_level - 1e-9 * top_level.abs().max(1.0);
+    let reloading_truncated = reloading.stopped.is_some_and(|p| y(&p) < closes_at);
+    let (unloading, mut reloading) = (unloading.path, reloading.path);
+    if let Some(k) = reloading.iter().position(|p| y(p) >= closes_at).filter(|&k| k > 0) {
+        let last = interpolate(driver, reloading[k - 1], reloading[k], top_level);
+        reloading.truncate(k);
+        reloading.push(last);
+    }
+    let start_gap = (reloading[0].approach - end.approach).abs();
+    // oint Lbar dDelta: unloading, then reloading, closed back to the top.
+    let polygon: Vec<&PathNode> = unloading.iter().chain(&reloading).chain(unloading.first()).collect();
+    let work = polygon.windows(2).map(|w| 0.5 * (w[0].load + w[1].load) * (w[1].approach - w[0].approach)).sum();
+    let cavitated = unloading.iter().chain(&reloading).filter(|p| !p.valid).count();
+    Ok(LegCycle {
+        control: driver.control,
+        datum: driver.ln_datum.exp(),
+        cavitated_fraction: cavitated as f64 / (unloading.len() + reloading.len()) as f64,
+        unloading,
+        end,
+        end_at_edge,
+        reloading,
+        reloading_truncated,
+        start_gap,
+        work,
+    })
+}
+
+/// [`closed_cycle_along_legs`] under load control and under displacement
+/// control at `displacement_datum` (model convention, as
+/// [`cycle_dissipation`]): `(load control, displacement control)`.
+pub fn cycle_dissipation_along_legs(cycle: &Cycle, solver_datum: f64, displacement_datum: f64) -> Result<(LegCycle, LegCycle)> {
+    let mut d = closed_cycle_along_legs(cycle, solver_datum, Driver::displacement(displacement_datum)?)?;
+    d.datum = displacement_datum;
+    Ok((closed_cycle_along_legs(cycle, solver_datum, Driver::load())?, d))
 }

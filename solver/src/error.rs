@@ -76,6 +76,15 @@ pub enum SolverError {
         /// The number of waves of the grid's base profile.
         waves: usize,
     },
+    /// The closed in-contact cycle read along the legs does not close: reloading
+    /// stops at a maximum with no later state at its level
+    /// ([`crate::dissipation::LegCycle::reloading_truncated`]).
+    CycleOpen {
+        /// Under load control.
+        load_control: bool,
+        /// Under displacement control.
+        displacement_control: bool,
+    },
     /// A shard `shard/of` that does not exist (1-based, `1 <= shard <= of`).
     BadShard {
         /// The shard asked for.
@@ -277,6 +286,15 @@ impl fmt::Display for SolverError {
             SolverError::MapManyWaves { waves } => write!(
                 f,
                 "the solver map runs one wave's cycles, but the grid's profile has {waves} waves: map it with the model (without --solver), or run maugis simulate per profile"
+            ),
+            SolverError::CycleOpen { load_control, displacement_control } => write!(
+                f,
+                "the closed cycle does not close (reloading stops at a maximum with no later state at its level) under {}: raise amax or the steps per leg",
+                match (load_control, displacement_control) {
+                    (true, true) => "load and displacement control",
+                    (true, false) => "load control",
+                    _ => "displacement control",
+                }
             ),
             SolverError::BadShard { shard, of } => write!(f, "shard must be s/n with 1 <= s <= n (got {shard}/{of})"),
             SolverError::Merge { fault } => write!(f, "cannot merge the shards: {fault}"),

@@ -31,6 +31,9 @@
 //!   parallel with the `parallel` feature);
 //! * [`transition`]: lambda*, below which the roughness-induced dissipation
 //!   vanishes, by bisection in lambda with a grid uncertainty;
+//! * [`scales`]: W and cavitation against the number of scales of a
+//!   Weierstrass profile, with the single scales and the model beside them
+//!   (sharded, merged exactly);
 //! * [`run::simulate`]: one cycle from `(lambda, alpha, beta)`, set up as
 //!   `maugis simulate` and the Python package run it.
 //!
@@ -55,6 +58,7 @@ pub mod path;
 pub mod profile;
 pub mod profile_file;
 pub mod run;
+pub mod scales;
 pub mod transition;
 
 pub use error::{MergeFault, Result, SolverError, TableFault};

@@ -158,14 +158,21 @@ impl Transition {
     /// bracket in `ln lambda`, plus the shift between the two resolutions when
     /// the refined search ran (without it, the bisection part only).
     pub fn relative_uncertainty(&self) -> Option<f64> {
-        let best = self.refined.as_ref().unwrap_or(&self.search);
-        let (lo, hi) = best.bracket?;
-        let shift = match &self.refined {
-            Some(r) => (r.lambda_star?.ln() - self.search.lambda_star?.ln()).abs(),
-            None => 0.0,
-        };
-        Some(0.5 * (hi / lo).ln() + shift)
+        relative_uncertainty(&self.search, self.refined.as_ref())
     }
+}
+
+/// The relative uncertainty of `lambda*` from a search and its refined
+/// repetition (module docs): half the final bracket in `ln lambda`, plus the
+/// shift between the two resolutions when the refined search ran.
+pub fn relative_uncertainty(search: &Search, refined: Option<&Search>) -> Option<f64> {
+    let best = refined.unwrap_or(search);
+    let (lo, hi) = best.bracket?;
+    let shift = match refined {
+        Some(r) => (r.lambda_star?.ln() - search.lambda_star?.ln()).abs(),
+        None => 0.0,
+    };
+    Some(0.5 * (hi / lo).ln() + shift)
 }
 
 /// The model's W (load control) at [`JKR_LAMBDA`].
@@ -215,11 +222,10 @@ pub fn search(
     progress: &mut dyn FnMut(&Evaluation),
 ) -> Result<Search> {
     spec.check()?;
-    let mut evaluations = Vec::new();
-    let mut eval = |lambda: f64, evaluations: &mut Vec<Evaluation>| -> Result<f64> {
+    let mut eval = |lambda: f64| -> Result<Evaluation> {
         let r = resolution_at(lambda);
         let key = (lambda.to_bits(), r.cells, r.steps_per_leg);
-        let e = match cache.get(&key) {
+        Ok(match cache.get(&key) {
             Some(e) => *e,
             None => {
                 let e = evaluate(spec, lambda, r)?;
@@ -227,19 +233,37 @@ pub fn search(
                 cache.insert(key, e);
                 e
             }
-        };
-        evaluations.push(e);
-        Ok(e.excess())
+        })
     };
-    let (l0, l1) = (spec.lambda_min.ln(), spec.lambda_max.ln());
-    let lambdas: Vec<f64> = match range {
+    let lambdas = match range {
         Some((lo, hi)) => vec![lo, hi],
-        None => (0..spec.scan).map(|i| (l0 + (l1 - l0) * i as f64 / (spec.scan - 1) as f64).exp()).collect(),
+        None => scan_lambdas(spec.lambda_min, spec.lambda_max, spec.scan),
     };
+    search_with(&lambdas, spec.rel_tol, threshold, &mut eval)
+}
+
+/// `n` log-spaced values from `lo` to `hi`.
+pub fn scan_lambdas(lo: f64, hi: f64, n: usize) -> Vec<f64> {
+    let (l0, l1) = (lo.ln(), hi.ln());
+    (0..n).map(|i| (l0 + (l1 - l0) * i as f64 / (n.max(2) - 1) as f64).exp()).collect()
+}
+
+/// The search of [`search`] over the scan `lambdas` (increasing) with any
+/// evaluation of the excess: the first scan point above `threshold` and the
+/// one before it bracket `lambda*`, bisected in `ln lambda` until the
+/// bracket's ratio is below `1 + rel_tol` (module docs). The profiles of many
+/// scales (`crate::scales`) search with their own cycles through it.
+pub fn search_with(lambdas: &[f64], rel_tol: f64, threshold: f64, eval: &mut dyn FnMut(f64) -> Result<Evaluation>) -> Result<Search> {
+    finite(rel_tol, "rel_tol")?;
+    in_range(rel_tol, "rel_tol", Interval::above(0.0))?;
+    count_in_range(lambdas.len(), "scan points", 2, usize::MAX)?;
+    let mut evaluations = Vec::new();
     let mut first_above = None;
     let mut non_monotone = false;
     for (i, &lambda) in lambdas.iter().enumerate() {
-        let above = eval(lambda, &mut evaluations)? > threshold;
+        let e = eval(lambda)?;
+        evaluations.push(e);
+        let above = e.excess() > threshold;
         match (first_above, above) {
             (None, true) => first_above = Some(i),
             (Some(_), false) => non_monotone = true,
@@ -252,9 +276,11 @@ pub fn search(
         Some(i) => i,
     };
     let (mut lo, mut hi) = (lambdas[i - 1], lambdas[i]);
-    while hi / lo > 1.0 + spec.rel_tol {
+    while hi / lo > 1.0 + rel_tol {
         let mid = (lo * hi).sqrt();
-        if eval(mid, &mut evaluations)? > threshold {
+        let e = eval(mid)?;
+        evaluations.push(e);
+        if e.excess() > threshold {
             hi = mid;
         } else {
             lo = mid;

@@ -1,4 +1,5 @@
-//! `maugis multiscale envelope` (issue 39, item 1): a small study writes its CSV, JSON,
+//! `maugis multiscale envelope` (issue 39, item 1), `scales`, `merge` and `transition`
+//! (items 2 and 3): a small study writes its CSV, JSON,
 //! Markdown table and two plots that render with their legends; bad input exits with
 //! 2 and writes nothing.
 
@@ -67,4 +68,71 @@ fn bad_input_exits_2_and_writes_nothing() {
         assert!(!out.exists(), "{tag}: wrote {}", out.display());
         assert!(!err.trim().is_empty(), "{tag}: no message");
     }
+}
+
+/// `maugis multiscale scales` (items 2 and 3): one scale at lambda = 1 (two
+/// cycles, the smooth cylinder and the wave), as two shards merged; the
+/// merged files, the tables and the plot with its legend; a study reusing it
+/// runs nothing and writes the same rows.
+#[test]
+fn a_sharded_scales_study_merges_into_its_tables_and_plot() {
+    let base = ["multiscale", "scales", "--max-scales", "1", "--hurst", "0.5", "--lambda", "1"];
+    let (s1, s2, whole, again) = (scratch("s1"), scratch("s2"), scratch("whole"), scratch("again"));
+    for (shard, dir) in [("1/2", &s1), ("2/2", &s2)] {
+        let o = maugis(&[&base[..], &["--shard", shard, "--out", dir.to_str().unwrap()]].concat());
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        assert!(dir.join("scales.json").exists() && !dir.join("scales.csv").exists(), "a shard writes its JSON only");
+    }
+    let o = maugis(&["multiscale", "merge", s1.to_str().unwrap(), s2.to_str().unwrap(), "--out", whole.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let csv = std::fs::read_to_string(whole.join("scales.csv")).unwrap();
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 1, "{csv}");
+    let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let w: f64 = rows[0][col("w")].parse().unwrap();
+    let sum: f64 = rows[0][col("w_sum_of_singles")].parse().unwrap();
+    assert!(w > 0.2 && w == sum, "one scale: W {w}, the sum of singles {sum}");
+    assert_eq!(std::fs::read_to_string(whole.join("cycles.csv")).unwrap().lines().count(), 3);
+    let md = std::fs::read_to_string(whole.join("scales.md")).unwrap();
+    assert!(md.contains("| 1 |") && md.contains("smallest N cavitating"), "{md}");
+    let plot = render::check_svg(&whole.join("scales.svg"));
+    for label in ["solver W, H = 0.5", "sum of the single scales", "model W"] {
+        assert!(plot.entries().any(|e| e.label.starts_with(label)), "plot legend: no entry {label}");
+    }
+    // Reusing the merged study runs no cycle and gives the same rows.
+    let o = maugis(&[&base[..], &["--reuse", whole.to_str().unwrap(), "--out", again.to_str().unwrap()]].concat());
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let rows_again = std::fs::read_to_string(again.join("scales.csv")).unwrap();
+    assert_eq!(rows_again, csv);
+    for d in [s1, s2, whole, again] {
+        let _ = std::fs::remove_dir_all(d);
+    }
+}
+
+#[test]
+fn bad_scales_input_exits_2_and_writes_nothing() {
+    let s1 = scratch("lonely");
+    let o = maugis(&["multiscale", "scales", "--max-scales", "1", "--hurst", "0.5", "--lambda", "1", "--shard", "1/2", "--out", s1.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    for (tag, args) in [
+        ("gamma", vec!["multiscale", "scales", "--gamma", "1"]),
+        ("hurst", vec!["multiscale", "scales", "--hurst", "2"]),
+        ("scales", vec!["multiscale", "scales", "--max-scales", "0"]),
+        ("shard", vec!["multiscale", "scales", "--shard", "3/2"]),
+        ("lambda", vec!["multiscale", "scales", "--lambda", "-1"]),
+        ("merge-missing", vec!["multiscale", "merge", s1.to_str().unwrap()]),
+        ("merge-none", vec!["multiscale", "merge", "/nonexistent-maugis-dir"]),
+        ("transition-scales", vec!["multiscale", "transition", "--max-scales", "2", "--scales", "3"]),
+        ("transition-range", vec!["multiscale", "transition", "--lambda-min", "3", "--lambda-max", "1"]),
+    ] {
+        let out = scratch(tag);
+        let o = maugis(&[&args[..], &["--out", out.to_str().unwrap()]].concat());
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{tag}: {err}");
+        assert!(!out.exists(), "{tag}: wrote {}", out.display());
+        assert!(!err.trim().is_empty(), "{tag}: no message");
+    }
+    let _ = std::fs::remove_dir_all(s1);
 }

@@ -24,5 +24,6 @@ mod no_contact;
 mod periodic_jkr;
 mod profile_table;
 mod rough_profiles;
+mod scales;
 mod tamaas_reference;
 mod transition;
