@@ -446,16 +446,22 @@ pub fn run_study<P: Fn(&ScaleCycle) + Sync>(spec: ScalesSpec, shard: Option<(usi
 }
 
 /// Whether a cycle of `earlier` was run as `spec` would run it: the same
-/// amplitude scale, amax, resolution rule, model points and law (the wavelength
-/// ratio, Hurst exponents and lambdas may differ: the cycle is keyed by its own
-/// `lambda` and waves).
+/// first wavelength (it sets the smooth cylinder's resolution), amax,
+/// resolution rule, model points and law (the wavelength ratio, Hurst
+/// exponents and lambdas may differ: the cycle is keyed by its own `lambda`
+/// and waves).
 fn same_setup(spec: &ScalesSpec, earlier: &ScalesSpec) -> bool {
-    spec.amax == earlier.amax && spec.resolution == earlier.resolution && spec.model_points == earlier.model_points && spec.law == earlier.law
+    // The first wavelength too: the smooth cylinder's resolution follows it.
+    spec.beta == earlier.beta
+        && spec.amax == earlier.amax
+        && spec.resolution == earlier.resolution
+        && spec.model_points == earlier.model_points
+        && spec.law == earlier.law
 }
 
 /// [`run_study`], taking each solver cycle that one of `earlier` studies
-/// already ran with the same setup (the same `lambda` and waves; the same amax,
-/// resolution rule, model points and law)
+/// already ran with the same setup (the same `lambda` and waves; the same first
+/// wavelength, amax, resolution rule, model points and law)
 /// from it instead of running it again (its index and roles renumbered for
 /// this study, the model recomputed, which is cheap beside the solver): a
 /// study of more scales extends one of fewer.
