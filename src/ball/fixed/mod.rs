@@ -25,8 +25,10 @@
 //! 2. **Tables.** `t = k_1 2^-8 + ... + k_v 2^(-8 v) + s` with `k_j` the next eight
 //!    bits of `t` and `s < 2^(-8 v)`, `v <= 3` levels chosen per `L` by the cost in
 //!    multiplications. `e^(k 2^(-8 j))`, `sin(k 2^(-8 j))`, `cos(k 2^(-8 j))` are
-//!    tabulated for `k < 256`, computed once per `L` with MPFR at `F + 128` bits and
-//!    truncated (error below 1.01 ulp; counted as 2).
+//!    tabulated for `k < 256`, computed once per `L` (the exponential's apart from the
+//!    sine's and cosine's, at the first call that needs each) as powers of the step in
+//!    MPFR at `F + 128` bits and truncated (error below 1.01 ulp; counted as 2;
+//!    [`exp_level`]).
 //! 3. **Taylor series** in `s`, by Horner's rule, to the least order whose tail is
 //!    below one ulp (`e^s`: tail `<= 2 s^(N+1)/(N+1)!`; `sin s / s` and `cos s`:
 //!    alternating, the tail below the first omitted term). Each Horner step
@@ -61,7 +63,6 @@ mod limbs;
 use std::cmp::Ordering;
 use std::sync::OnceLock;
 
-use rug::float::Round;
 use rug::Float;
 
 use super::mag::raw_parts;
@@ -80,21 +81,28 @@ const TAB_BITS: u32 = 8;
 const TAB_LEN: usize = 1 << TAB_BITS;
 const MAX_LEVELS: usize = 3;
 
-/// The tables and Horner divisors for one number of limbs `L`.
-struct Tables {
+/// The tables and Horner divisors of `exp` for one number of limbs `L`.
+struct ExpTables {
     /// Level `j` (from 1): `floor(e^(k 2^(-8 j)) 2^F)`, `L` limbs per entry, `k < 256`.
     exp: Vec<Vec<u64>>,
-    /// The same for `sin` and `cos`.
-    sin: Vec<Vec<u64>>,
-    cos: Vec<Vec<u64>>,
-    /// `floor(ln2 2^(F+64))`, `floor(pi/2 2^(F+64))`: `L + 1` limbs.
+    /// `floor(ln2 2^(F+64))`: `L + 1` limbs.
     ln2: Vec<u64>,
-    half_pi: Vec<u64>,
-    /// Levels used by `exp` and by `sin`/`cos` (each chosen by cost).
+    /// Levels used by `exp` (chosen by cost).
     exp_levels: usize,
-    trig_levels: usize,
     /// The Horner divisors of `e^s` to `s^N`, outermost first: `N, ..., 1`.
     exp_div: Vec<limbs::Divisor>,
+}
+
+/// The same for `sin` and `cos`, built apart: an integrand with `exp` only never pays
+/// for them (the tables are most of a first call at 333 bits).
+struct TrigTables {
+    /// Level `j` (from 1): `floor(sin(k 2^(-8 j)) 2^F)`, `floor(cos(..) 2^F)`.
+    sin: Vec<Vec<u64>>,
+    cos: Vec<Vec<u64>>,
+    /// `floor(pi/2 2^(F+64))`: `L + 1` limbs.
+    half_pi: Vec<u64>,
+    /// Levels used by `sin`/`cos` (chosen by cost).
+    trig_levels: usize,
     /// The terms `y^j`, `j = 1, 2, ...`, of `sin s / s` and `cos s` in `y = s^2`.
     trig_terms: Vec<TrigTerm>,
     /// The error bound of `sin_cos_fixed` in ulps (module docs, step 4), from the orders.
@@ -164,16 +172,19 @@ fn trig_terms(n_sin: u64, n_cos: u64, levels: usize) -> (Vec<TrigTerm>, f64) {
     ((terms), (a_s.max(a_c) + 3.0).ceil() + 1.0)
 }
 
-static TABLES: [OnceLock<Tables>; MAX_LIMBS + 1] = [const { OnceLock::new() }; MAX_LIMBS + 1];
+static EXP_TABLES: [OnceLock<ExpTables>; MAX_LIMBS + 1] = [const { OnceLock::new() }; MAX_LIMBS + 1];
+static TRIG_TABLES: [OnceLock<TrigTables>; MAX_LIMBS + 1] = [const { OnceLock::new() }; MAX_LIMBS + 1];
 
-/// `floor(v 2^shift)` as exactly `len` little-endian limbs (`v >= 0`, the result fits).
+/// `floor(v 2^shift)` as exactly `len` little-endian limbs (`v >= 0` finite, the result
+/// fits), read off `v`'s significand without an integer conversion.
 fn fixed_limbs(v: &Float, shift: i32, len: usize) -> Vec<u64> {
-    let scaled = Float::with_val(v.prec(), v << shift);
-    let i = scaled.to_integer_round(Round::Down).map(|(i, _)| i).unwrap_or_default();
-    let mut d: Vec<u64> = i.to_digits(rug::integer::Order::Lsf);
-    assert!(d.len() <= len, "table entry does not fit");
-    d.resize(len, 0);
-    d
+    if v.is_zero() {
+        return vec![0; len];
+    }
+    let (d, e) = raw_parts(v);
+    // v = D 2^(e - 64 |d|), D the significand's limbs as an integer
+    let w = limbs::shifted(d, e - 64 * d.len() as i64 + shift as i64, len).expect("table entry does not fit");
+    w[..len].to_vec()
 }
 
 /// `log2(n!)`, rounded down (f64 sums, then a margin).
@@ -198,78 +209,86 @@ fn trig_order(f: u32, b: u32, extra: u64) -> u64 {
         .unwrap_or(1)
 }
 
-fn tables(l: usize) -> &'static Tables {
-    TABLES[l].get_or_init(|| {
+/// The entries `k = 0..255` of table level `level` of the working format with `f`
+/// fractional bits. They are powers of the level's step `t = 2^-(8 level)`:
+/// `e^{kt} = e^{(k-1)t} e^t`, and `(cos kt, sin kt)` the previous pair rotated by
+/// `(cos t, sin t)`, in MPFR at `p = f + 128` bits rounded to nearest: each of the at
+/// most 255 steps adds a relative error of a few `2^-p` (a rotation keeps the norm, so
+/// errors add), in all below `2^(12 - p) = 2^-(f + 116)`, far below the table's unit
+/// `2^-f`: the floor is off by at most one unit, as with one MPFR call per entry (the 2
+/// ulps of `trig_terms`), at a fraction of the cost. The products go into temporaries
+/// allocated once.
+fn exp_level(f: u32, level: u32, l: usize) -> Vec<u64> {
+    let p = f + 128;
+    let step = Float::with_val(p, 1) >> (TAB_BITS * level);
+    let e_step = Float::with_val(p, step.exp_ref());
+    let mut ev = Float::with_val(p, 1);
+    let mut out = Vec::with_capacity(TAB_LEN * l);
+    for k in 0..TAB_LEN {
+        if k > 0 {
+            ev *= &e_step;
+        }
+        out.extend(fixed_limbs(&ev, f as i32, l));
+    }
+    out
+}
+
+/// The sine and cosine entries of one level (see [`exp_level`]).
+fn trig_level(f: u32, level: u32, l: usize) -> (Vec<u64>, Vec<u64>) {
+    use rug::Assign;
+    let p = f + 128;
+    let step = Float::with_val(p, 1) >> (TAB_BITS * level);
+    let (s_step, c_step) = step.sin_cos(Float::new(p));
+    let (mut sv, mut cv) = (Float::new(p), Float::with_val(p, 1));
+    let (mut t1, mut t2) = (Float::new(p), Float::new(p));
+    let (mut sn, mut cs) = (Vec::with_capacity(TAB_LEN * l), Vec::with_capacity(TAB_LEN * l));
+    for k in 0..TAB_LEN {
+        if k > 0 {
+            // (s, c) <- (s C + c S, c C - s S), each product rounded, then the sum
+            t1.assign(&sv * &c_step);
+            t2.assign(&cv * &s_step);
+            let new_s = Float::with_val(p, &t1 + &t2);
+            t1.assign(&cv * &c_step);
+            t2.assign(&sv * &s_step);
+            cv.assign(&t1 - &t2);
+            sv = new_s;
+        }
+        sn.extend(fixed_limbs(&sv, f as i32, l));
+        cs.extend(fixed_limbs(&cv, f as i32, l));
+    }
+    (sn, cs)
+}
+
+fn exp_tables(l: usize) -> &'static ExpTables {
+    EXP_TABLES[l].get_or_init(|| {
         let f = 64 * l as u32 - 2;
         let p = f + 128;
         // levels by cost in full multiplications (a division counts half of one):
-        // exp: one per level and per order; sin/cos: four per extra level, two per order
+        // one per level and per order
         let exp_levels = (1..=MAX_LEVELS).min_by_key(|&v| 2 * v as u64 + 3 * exp_order(f, TAB_BITS * v as u32)).unwrap_or(1);
+        let exp = (1..=exp_levels as u32).map(|level| exp_level(f, level, l)).collect();
+        let ln2 = fixed_limbs(&Float::with_val(p, rug::float::Constant::Log2), f as i32 + 64, l + 1);
+        let be = TAB_BITS * exp_levels as u32;
+        ExpTables { exp, ln2, exp_levels, exp_div: (1..=exp_order(f, be)).rev().map(limbs::Divisor::new).collect() }
+    })
+}
+
+fn trig_tables(l: usize) -> &'static TrigTables {
+    TRIG_TABLES[l].get_or_init(|| {
+        let f = 64 * l as u32 - 2;
+        let p = f + 128;
+        // levels by cost in full multiplications: four per extra level, two per order
         let trig_levels = (1..=MAX_LEVELS)
             .min_by_key(|&v| {
                 let b = TAB_BITS * v as u32;
                 8 * v as u64 + 4 * trig_order(f, b, 1).max(trig_order(f, b, 0))
             })
             .unwrap_or(1);
-        let mut exp = Vec::new();
-        let mut sin = Vec::new();
-        let mut cos = Vec::new();
-        // Only the levels the kernels read (exp: `exp_levels`, sin/cos: `trig_levels`).
-        // The entries k = 1..255 of a level are powers of its step `t = 2^-(8 level)`:
-        // `e^{kt} = e^{(k-1)t} e^t`, and `(cos kt, sin kt)` the previous pair rotated by
-        // `(cos t, sin t)`, in MPFR at `p = f + 128` bits rounded to nearest: each of the
-        // at most 255 steps adds a relative error of a few `2^-p` (a rotation keeps the
-        // norm, so errors add), in all below `2^(12 - p) = 2^-(f + 116)`, far below the
-        // table's unit `2^-f`: the floor is off by at most one unit, as with one MPFR
-        // call per entry (the 2 ulps of `trig_terms`), at a fraction of the cost (the
-        // first call of a kernel at a new limb count builds its tables).
-        for level in 1..=exp_levels.max(trig_levels) as u32 {
-            let step = Float::with_val(p, 1) >> (TAB_BITS * level);
-            let (mut e, mut sn, mut cs) = (Vec::new(), Vec::new(), Vec::new());
-            let e_step = Float::with_val(p, step.exp_ref());
-            let (s_step, c_step) = step.clone().sin_cos(Float::new(p));
-            let (mut ev, mut sv, mut cv) = (Float::with_val(p, 1), Float::new(p), Float::with_val(p, 1));
-            for k in 0..TAB_LEN {
-                if k > 0 {
-                    ev *= &e_step;
-                    let ns = Float::with_val(p, &sv * &c_step) + Float::with_val(p, &cv * &s_step);
-                    let nc = Float::with_val(p, &cv * &c_step) - Float::with_val(p, &sv * &s_step);
-                    (sv, cv) = (ns, nc);
-                }
-                if level as usize <= exp_levels {
-                    e.extend(fixed_limbs(&ev, f as i32, l));
-                }
-                if level as usize <= trig_levels {
-                    sn.extend(fixed_limbs(&sv, f as i32, l));
-                    cs.extend(fixed_limbs(&cv, f as i32, l));
-                }
-            }
-            if level as usize <= exp_levels {
-                exp.push(e);
-            }
-            if level as usize <= trig_levels {
-                sin.push(sn);
-                cos.push(cs);
-            }
-        }
-        let ln2 = fixed_limbs(&Float::with_val(p, rug::float::Constant::Log2), f as i32 + 64, l + 1);
+        let (sin, cos) = (1..=trig_levels as u32).map(|level| trig_level(f, level, l)).unzip();
         let half_pi = fixed_limbs(&(Float::with_val(p, rug::float::Constant::Pi) >> 1), f as i32 + 64, l + 1);
-        let divisors = |n: u64, d: fn(u64) -> u64| (1..=n).rev().map(|j| limbs::Divisor::new(d(j))).collect();
-
-        let (be, bt) = (TAB_BITS * exp_levels as u32, TAB_BITS * trig_levels as u32);
+        let bt = TAB_BITS * trig_levels as u32;
         let (trig_terms, trig_ulps) = trig_terms(trig_order(f, bt, 1), trig_order(f, bt, 0), trig_levels);
-        Tables {
-            exp,
-            sin,
-            cos,
-            ln2,
-            half_pi,
-            exp_levels,
-            trig_levels,
-            exp_div: divisors(exp_order(f, be), |j| j),
-            trig_terms,
-            trig_ulps,
-        }
+        TrigTables { sin, cos, half_pi, trig_levels, trig_terms, trig_ulps }
     })
 }
 
@@ -440,7 +459,7 @@ fn exp_fixed<const L: usize>(m: &Float) -> Option<([u64; L], i64)> {
     if mf.abs() >= (1u64 << 20) as f64 {
         return None;
     }
-    let tab = tables(L);
+    let tab = exp_tables(L);
     let ym = argument::<L>(m)?;
     let negative = m.is_sign_negative();
     let mut n = (mf / std::f64::consts::LN_2).floor() as i64;
@@ -495,7 +514,7 @@ fn sin_cos_kernel<const L: usize>(m: &Float, wp: u32, want: Want) -> Option<((Fl
     let f = 64 * L as i64 - 2;
     let rounded = |x: &[u64; L], neg: bool| {
         let (y, ord) = to_float(x, -f, wp, neg);
-        let e = bound(&y, ord, tables(L).trig_ulps, -f);
+        let e = bound(&y, ord, trig_tables(L).trig_ulps, -f);
         (y, e)
     };
     let cos = (want == Want::Both).then(|| rounded(&cos_mag, cos_neg));
@@ -512,7 +531,7 @@ fn sin_cos_fixed<const L: usize>(m: &Float) -> Option<([u64; L], bool, [u64; L],
     if mf >= (1u64 << 20) as f64 || mf < 1.0 / 65536.0 {
         return None;
     }
-    let tab = tables(L);
+    let tab = trig_tables(L);
     let ym = argument::<L>(m)?;
     let mut n = (mf.abs() / std::f64::consts::FRAC_PI_2).round() as u64;
     let mut reduced = None;
@@ -690,7 +709,7 @@ mod tests {
                 let (vs, vc) = Float::with_val(1500, &m).sin_cos(Float::new(1500));
                 let us = ulps(vs - exact(&sm, -f, sn), -f);
                 let uc = ulps(vc - exact(&cm, -f, cn), -f);
-                let b = tables(L).trig_ulps;
+                let b = trig_tables(L).trig_ulps;
                 assert!(us <= b && uc <= b, "sin/cos {m}, L = {L}: {us}, {uc} ulps of {b}");
                 worst_trig = worst_trig.max(us).max(uc);
             }
@@ -701,8 +720,8 @@ mod tests {
     #[test]
     fn fixed_point_results_are_within_their_ulp_bounds() {
         for l in 1..=MAX_LIMBS {
-            let b = tables(l).trig_ulps;
-            eprintln!("L = {l}: trig levels {}, terms {}, bound {b} ulps", tables(l).trig_levels, tables(l).trig_terms.len());
+            let b = trig_tables(l).trig_ulps;
+            eprintln!("L = {l}: trig levels {}, terms {}, bound {b} ulps", trig_tables(l).trig_levels, trig_tables(l).trig_terms.len());
             assert!(b <= 64.0, "the sine/cosine bound {b} ulps at L = {l} exceeds the 64 the guard bits allow for");
         }
         for (we, wt) in [raw_errors::<1>(), raw_errors::<2>(), raw_errors::<3>(), raw_errors::<6>(), raw_errors::<8>()] {
