@@ -27,7 +27,7 @@
 //!    multiplications. `e^(k 2^(-8 j))`, `sin(k 2^(-8 j))`, `cos(k 2^(-8 j))` are
 //!    tabulated for `k < 256`, computed once per `L` (the exponential's apart from the
 //!    sine's and cosine's, at the first call that needs each) as powers of the step in
-//!    MPFR at `F + 128` bits and truncated (error below 1.01 ulp; counted as 2;
+//!    MPFR at `F + 40` bits and truncated (error below 1.01 ulp; counted as 2;
 //!    [`exp_level`]).
 //! 3. **Taylor series** in `s`, by Horner's rule, to the least order whose tail is
 //!    below one ulp (`e^s`: tail `<= 2 s^(N+1)/(N+1)!`; `sin s / s` and `cos s`:
@@ -58,7 +58,7 @@
 //! (an absolute error bound would cost relative bits there; MPFR's are correctly
 //! rounded), and on targets whose GMP limb is not 64 bits.
 
-mod limbs;
+pub(crate) mod limbs;
 
 use std::cmp::Ordering;
 use std::sync::OnceLock;
@@ -75,6 +75,10 @@ const GUARD: u32 = 24;
 /// Largest working precision served here.
 #[allow(dead_code)]
 pub(crate) const MAX_FIXED_PREC: u32 = 64 * MAX_LIMBS as u32 - 2 - GUARD;
+
+/// Guard bits of the MPFR arithmetic that builds the tables ([`exp_level`]); the
+/// constants `ln 2` and `pi/2`, stored with `F + 64` bits, are computed at `F + 128`.
+const TABLE_GUARD: u32 = 40;
 
 /// Table index bits per level (256 entries), and the most levels.
 const TAB_BITS: u32 = 8;
@@ -212,14 +216,14 @@ fn trig_order(f: u32, b: u32, extra: u64) -> u64 {
 /// The entries `k = 0..255` of table level `level` of the working format with `f`
 /// fractional bits. They are powers of the level's step `t = 2^-(8 level)`:
 /// `e^{kt} = e^{(k-1)t} e^t`, and `(cos kt, sin kt)` the previous pair rotated by
-/// `(cos t, sin t)`, in MPFR at `p = f + 128` bits rounded to nearest: each of the at
+/// `(cos t, sin t)`, in MPFR at `p = f + 40` bits ([`TABLE_GUARD`]) rounded to nearest: each of the at
 /// most 255 steps adds a relative error of a few `2^-p` (a rotation keeps the norm, so
-/// errors add), in all below `2^(12 - p) = 2^-(f + 116)`, far below the table's unit
+/// errors add), in all below `2^(12 - p) = 2^-(f + 28)`, far below the table's unit
 /// `2^-f`: the floor is off by at most one unit, as with one MPFR call per entry (the 2
 /// ulps of `trig_terms`), at a fraction of the cost. The products go into temporaries
 /// allocated once.
 fn exp_level(f: u32, level: u32, l: usize) -> Vec<u64> {
-    let p = f + 128;
+    let p = f + TABLE_GUARD;
     let step = Float::with_val(p, 1) >> (TAB_BITS * level);
     let e_step = Float::with_val(p, step.exp_ref());
     let mut ev = Float::with_val(p, 1);
@@ -236,7 +240,7 @@ fn exp_level(f: u32, level: u32, l: usize) -> Vec<u64> {
 /// The sine and cosine entries of one level (see [`exp_level`]).
 fn trig_level(f: u32, level: u32, l: usize) -> (Vec<u64>, Vec<u64>) {
     use rug::Assign;
-    let p = f + 128;
+    let p = f + TABLE_GUARD;
     let step = Float::with_val(p, 1) >> (TAB_BITS * level);
     let (s_step, c_step) = step.sin_cos(Float::new(p));
     let (mut sv, mut cv) = (Float::new(p), Float::with_val(p, 1));
@@ -309,6 +313,51 @@ fn approx_abs(m: &Float) -> f64 {
     }
     // 2^shift for |shift| < 1023, from its bits
     top * f64::from_bits(((1023 + shift) as u64) << 52)
+}
+
+/// The number of limbs `L` whose Q2 format has at least `bits` fractional bits,
+/// `None` above [`limbs::MAX_LIMBS`] (or where a GMP limb is not 64 bits).
+pub(crate) fn limbs_for_bits(bits: u32) -> Option<usize> {
+    let l = (bits + 2).div_ceil(64) as usize;
+    (l <= MAX_LIMBS && cfg!(target_pointer_width = "64")).then_some(l.max(1))
+}
+
+/// `v 2^e` in the signed Q2 format of `L` limbs, the magnitude truncated (an error below
+/// one ulp `2^-(64 L - 2)`); `None` when `|v| 2^e >= 4` or `v` is not finite.
+pub(crate) fn to_signed<const L: usize>(v: &Float, e: i64) -> Option<limbs::Signed<L>> {
+    if v.is_zero() {
+        return Some(limbs::Signed::ZERO);
+    }
+    if !v.is_finite() {
+        return None;
+    }
+    let (d, ve) = raw_parts(v);
+    let w = limbs::shifted(d, ve - 64 * d.len() as i64 + 64 * L as i64 - 2 + e, L)?;
+    // below 4: `shifted` refuses a value that does not fit in `L` limbs
+    let mut mag = [0u64; L];
+    mag.copy_from_slice(&w[..L]);
+    Some(limbs::Signed { mag, neg: v.is_sign_negative() })
+}
+
+/// `floor(|v| 2^(F + e))` as the `l` limbs of a Q2 magnitude (`F = 64 l - 2`), an error
+/// below one ulp; `None` when `|v| 2^e >= 4` or `v` is not finite.
+pub(crate) fn to_magnitude(v: &Float, e: i64, l: usize) -> Option<Vec<u64>> {
+    if v.is_zero() {
+        return Some(vec![0; l]);
+    }
+    if !v.is_finite() || l > MAX_LIMBS {
+        return None;
+    }
+    let (d, ve) = raw_parts(v);
+    let w = limbs::shifted(d, ve - 64 * d.len() as i64 + 64 * l as i64 - 2 + e, l)?;
+    Some(w[..l].to_vec())
+}
+
+/// A signed Q2 value as an exact float (precision `64 L`).
+pub(crate) fn from_signed<const L: usize>(x: &limbs::Signed<L>) -> Float {
+    let (y, ord) = to_float(&x.mag, -(64 * L as i64 - 2), 64 * L as u32, x.neg);
+    debug_assert_eq!(ord, Ordering::Equal);
+    y
 }
 
 /// `X 2^e` rounded to nearest at `prec` bits, with MPFR's ternary value.
@@ -727,6 +776,43 @@ mod tests {
         for (we, wt) in [raw_errors::<1>(), raw_errors::<2>(), raw_errors::<3>(), raw_errors::<6>(), raw_errors::<8>()] {
             eprintln!("worst: exp {we:.2} ulps, sin/cos {wt:.2} ulps");
             assert!(we > EXP_ULPS / 16.0 && wt > 1.0, "worst errors {we}, {wt} ulps: the bounds are far too loose");
+        }
+    }
+
+    /// Every table entry is the floor of its value times `2^F` or one unit below or
+    /// above (the 2 ulps the bounds count), against one MPFR call per entry at 1500 bits;
+    /// the constants are exact floors.
+    #[test]
+    fn table_entries_are_within_one_unit_of_their_floors() {
+        let floor_of = |v: Float, shift: i64, len: usize| -> rug::Integer {
+            let i = (v << shift as i32).floor().to_integer().unwrap();
+            assert!(i.significant_bits() as usize <= 64 * len);
+            i
+        };
+        for l in 1..=MAX_LIMBS {
+            let f = 64 * l as i64 - 2;
+            let (et, tt) = (exp_tables(l), trig_tables(l));
+            let digits = |x: &[u64]| rug::Integer::from_digits(x, rug::integer::Order::Lsf);
+            for (j, level) in et.exp.iter().enumerate() {
+                for k in 0..TAB_LEN {
+                    let a = Float::with_val(1500, k) >> (TAB_BITS * (j as u32 + 1));
+                    let want = floor_of(Float::with_val(1500, a.exp_ref()), f, l);
+                    let diff = (digits(&level[k * l..(k + 1) * l]) - want).abs();
+                    assert!(diff <= 1, "exp L = {l} level {} k = {k}: {diff}", j + 1);
+                }
+            }
+            for (j, (sl, cl)) in tt.sin.iter().zip(&tt.cos).enumerate() {
+                for k in 0..TAB_LEN {
+                    let a = Float::with_val(1500, k) >> (TAB_BITS * (j as u32 + 1));
+                    let (sv, cv) = a.sin_cos(Float::new(1500));
+                    for (tab, v, what) in [(sl, sv, "sin"), (cl, cv, "cos")] {
+                        let diff = (digits(&tab[k * l..(k + 1) * l]) - floor_of(v, f, l)).abs();
+                        assert!(diff <= 1, "{what} L = {l} level {} k = {k}: {diff}", j + 1);
+                    }
+                }
+            }
+            assert_eq!(digits(&et.ln2), floor_of(Float::with_val(1500, rug::float::Constant::Log2), f + 64, l + 1));
+            assert_eq!(digits(&tt.half_pi), floor_of(Float::with_val(1500, rug::float::Constant::Pi) >> 1, f + 64, l + 1));
         }
     }
 
