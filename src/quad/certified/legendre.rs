@@ -68,7 +68,7 @@ use rug::float::Round;
 use rug::ops::AssignRound;
 use rug::{Assign, Float};
 
-use crate::ball::fixed::{self, limbs::Signed};
+use crate::ball::fixed::{self, limbs::Signed, limbs::MAX_LIMBS};
 use crate::ball::{Ball, Dd, Mag};
 use crate::error::{Error, Invariant, Result};
 
@@ -432,17 +432,76 @@ struct Recurrence {
     g: Vec<Float>,
     c_dd: Dd,
     c: Float,
+    /// `g_k` as Q2 magnitudes of `MAX_LIMBS` limbs, concatenated (a format of `L` limbs
+    /// reads the top `L` of each), for [`Recurrence::step_fixed`].
+    g_fixed: Vec<u64>,
+    /// `S_k 2^-scale < 1/2` for `k <= n` (`|S_k| <= (pi k)^(1/2)` up to a few percent:
+    /// `S_k = 4^k (k!)^2 / (2k)! P_k`, DLMF 5.11.7, `|P_k| <= 1`).
+    scale: i64,
 }
 
 impl Recurrence {
     fn new(n: usize, prec: u32) -> Recurrence {
         let ratio = |k: usize| (4.0 * (k * k) as f64, 4.0 * (k * k) as f64 - 1.0);
         let g_dd = (0..n).map(|k| if k == 0 { Dd::from_f64(0.0) } else { Dd::from_f64(ratio(k).0) / Dd::from_f64(ratio(k).1) }).collect();
-        let g = (0..n)
+        let g: Vec<Float> = (0..n)
             .map(|k| if k == 0 { Float::new(prec) } else { Float::with_val(prec, ratio(k).0) / ratio(k).1 })
             .collect();
         let nf = n as f64;
-        Recurrence { n, g_dd, g, c_dd: Dd::from_f64(2.0 * nf) / Dd::from_f64(2.0 * nf - 1.0), c: Float::with_val(prec, 2.0 * nf) / (2.0 * nf - 1.0) }
+        let g_fixed = g.iter().flat_map(|gk: &Float| fixed::to_magnitude(gk, 0, MAX_LIMBS).unwrap_or_else(|| vec![0; MAX_LIMBS])).collect();
+        let scale = ((std::f64::consts::PI * nf).sqrt() * 1.1 + 1.0).log2().ceil() as i64 + 1;
+        Recurrence {
+            n,
+            g_dd,
+            g,
+            c_dd: Dd::from_f64(2.0 * nf) / Dd::from_f64(2.0 * nf - 1.0),
+            c: Float::with_val(prec, 2.0 * nf) / (2.0 * nf - 1.0),
+            g_fixed,
+            scale,
+        }
+    }
+
+    /// [`Recurrence::step`] with the recurrence in the signed fixed-point format of
+    /// `crate::ball::fixed` (`L` limbs, at least `scale + log2 n + 8` bits beyond `x`'s
+    /// precision for the truncations and the scaling): `None` where that needs more
+    /// than `MAX_LIMBS` limbs or `x` does not fit. An estimate, as the MPFR step.
+    fn step_fixed(&self, x: &mut Float) -> Option<()> {
+        let bits = x.prec() + self.scale as u32 + (usize::BITS - self.n.leading_zeros()) + 8;
+        match fixed::limbs_for_bits(bits)? {
+            1 => self.step_fixed_l::<1>(x),
+            2 => self.step_fixed_l::<2>(x),
+            3 => self.step_fixed_l::<3>(x),
+            4 => self.step_fixed_l::<4>(x),
+            5 => self.step_fixed_l::<5>(x),
+            6 => self.step_fixed_l::<6>(x),
+            7 => self.step_fixed_l::<7>(x),
+            _ => self.step_fixed_l::<8>(x),
+        }
+    }
+
+    fn step_fixed_l<const L: usize>(&self, x: &mut Float) -> Option<()> {
+        let x2 = fixed::to_signed::<L>(x, 1)?;
+        let mut prev = fixed::to_signed::<L>(&Float::with_val(64, 1), -self.scale)?;
+        let mut cur = x2.mul(&prev);
+        for k in 1..self.n {
+            let mut g = Signed::<L> { mag: [0; L], neg: false };
+            g.mag.copy_from_slice(&self.g_fixed[k * MAX_LIMBS + MAX_LIMBS - L..(k + 1) * MAX_LIMBS]);
+            let next = x2.mul(&cur).sub(&g.mul(&prev));
+            prev = cur;
+            cur = next;
+        }
+        self.correct(x, &fixed::from_signed(&cur), &fixed::from_signed(&prev));
+        Some(())
+    }
+
+    /// `x <- x - P_n(x)/P_n'(x)` from `S_n` and `S_{n-1}` (or the same times one power
+    /// of two): `(1 - x^2) S_n / (n (c S_{n-1} - x S_n))`.
+    fn correct(&self, x: &mut Float, cur: &Float, prev: &Float) {
+        let q = x.prec();
+        let one_minus = Float::with_val(q, 1) - Float::with_val(q, x.square_ref());
+        let den = Float::with_val(q, prev.mul_sub_mul_ref(&self.c, x, cur)) * self.n as u32;
+        let num = one_minus * cur;
+        *x -= num / den;
     }
 
     /// The Newton correction `P_n(x)/P_n'(x)` in double-double.
@@ -460,6 +519,9 @@ impl Recurrence {
 
     /// One Newton step in MPFR at `x`'s precision: `x <- x - P_n(x)/P_n'(x)`.
     fn step(&self, x: &mut Float) {
+        if self.step_fixed(x).is_some() {
+            return;
+        }
         let q = x.prec();
         let x2 = Float::with_val(q, &*x * 2u32);
         let mut prev = Float::with_val(q, 1);
@@ -474,12 +536,7 @@ impl Recurrence {
             std::mem::swap(&mut prev, &mut cur);
             std::mem::swap(&mut cur, &mut t);
         }
-        // (1 - x^2) S_n / (n (c S_{n-1} - x S_n))
-        t.assign(x.square_ref());
-        let one_minus = Float::with_val(q, 1) - &t;
-        let den = Float::with_val(q, prev.mul_sub_mul_ref(&self.c, x, &cur)) * self.n as u32;
-        let num = one_minus * &cur;
-        *x -= num / den;
+        self.correct(x, &cur, &prev);
     }
 }
 
@@ -785,6 +842,35 @@ mod tests {
                 assert!(fd.overlaps(&rd), "n {n} x {x}: P' {fd:?} vs {rd:?}");
                 assert!(f.rad_mag().le(&Mag::pow2(-180)), "n {n} x {x}: {:?}", f.rad_mag());
                 assert!(fd.rad_mag().le(&Mag::pow2(-170)), "n {n} x {x}: P' {:?}", fd.rad_mag());
+            }
+        }
+    }
+
+    /// Newton's step with the recurrence in fixed point lands where the MPFR step does,
+    /// to within `2^-(q - 16)` at `q` bits, for degrees up to 2048 (where the scaling
+    /// `2^-scale` of `S_k` must hold).
+    #[test]
+    fn fixed_point_newton_step_agrees_with_mpfr() {
+        for &n in &[2usize, 7, 108, 512, 2048] {
+            let rec = Recurrence::new(n, 600);
+            let theta = std::f64::consts::PI * 3.0 / (4.0 * n as f64 + 2.0);
+            for q in [120u32, 200, 300, 440] {
+                let x0 = Float::with_val(q, theta.cos() * (1.0 - 1e-9));
+                let (mut a, mut b) = (x0.clone(), x0.clone());
+                assert!(rec.step_fixed(&mut a).is_some(), "n {n} q {q}: not served");
+                // the MPFR step (step_fixed declines at no precision this test uses)
+                let mut prev = Float::with_val(q, 1);
+                let x2 = Float::with_val(q, &b * 2u32);
+                let mut cur = x2.clone();
+                for g in &rec.g[1..] {
+                    let next = Float::with_val(q, &cur * &x2) - Float::with_val(q, g * &prev);
+                    prev = cur;
+                    cur = next;
+                }
+                rec.correct(&mut b, &cur, &prev);
+                let d = Float::with_val(q, &a - &b).abs();
+                assert!(d <= Float::with_val(q, 1) >> (q as i32 - 16), "n {n} q {q}: {d}");
+                assert!(a != x0, "n {n} q {q}: no step taken");
             }
         }
     }
