@@ -222,7 +222,13 @@ fn trig_order(f: u32, b: u32, extra: u64) -> u64 {
 /// `2^-f`: the floor is off by at most one unit, as with one MPFR call per entry (the 2
 /// ulps of `trig_terms`), at a fraction of the cost. The products go into temporaries
 /// allocated once.
+///
+/// Below `MAX_LIMBS` limbs the powers are formed in the fixed-point format of
+/// `MAX_LIMBS` limbs instead ([`level_fixed`]) and each entry is its top `L` limbs.
 fn exp_level(f: u32, level: u32, l: usize) -> Vec<u64> {
+    if l < MAX_LIMBS {
+        return level_fixed(level, l, false).0;
+    }
     let p = f + TABLE_GUARD;
     let step = Float::with_val(p, 1) >> (TAB_BITS * level);
     let e_step = Float::with_val(p, step.exp_ref());
@@ -240,6 +246,10 @@ fn exp_level(f: u32, level: u32, l: usize) -> Vec<u64> {
 /// The sine and cosine entries of one level (see [`exp_level`]).
 fn trig_level(f: u32, level: u32, l: usize) -> (Vec<u64>, Vec<u64>) {
     use rug::Assign;
+    if l < MAX_LIMBS {
+        let (_, sn, cs) = level_fixed(level, l, true);
+        return (sn, cs);
+    }
     let p = f + TABLE_GUARD;
     let step = Float::with_val(p, 1) >> (TAB_BITS * level);
     let (s_step, c_step) = step.sin_cos(Float::new(p));
@@ -261,6 +271,46 @@ fn trig_level(f: u32, level: u32, l: usize) -> (Vec<u64>, Vec<u64>) {
         cs.extend(fixed_limbs(&cv, f as i32, l));
     }
     (sn, cs)
+}
+
+/// The entries of one level for `L < MAX_LIMBS` limbs: `e^{kt}`, `sin kt`, `cos kt`,
+/// `t = 2^-(8 level)`, as powers of the step (from MPFR at `64 W + 40` bits, `W =
+/// MAX_LIMBS`, truncated) formed in the signed format of `W` limbs (`u = 2^-(64 W -
+/// 2)`), then cut to their top `L` limbs, which is the floor at `L` limbs of the
+/// `W`-limb value (`F_W - F_L = 64 (W - L)`). Errors: the step is off by less than `u`
+/// per part; a product truncates by less than `1.01 u` (two per part of a rotation);
+/// `e^{kt} < e` and the rotations keep the norm near 1, so after `k <= 255` steps the
+/// error is at most `255 (e u + 1.01 u + e u) e < 2^12 u`, and with `W - L >= 1` that is
+/// below `2^-52` units of the `L`-limb format: the cut entry is the floor of the true
+/// value or one unit off, as the MPFR build's. `trig` asks for the sines and cosines
+/// (the last two vectors), otherwise the exponentials (the first).
+fn level_fixed(level: u32, l: usize, trig: bool) -> (Vec<u64>, Vec<u64>, Vec<u64>) {
+    const W: usize = MAX_LIMBS;
+    let p = 64 * W as u32 + TABLE_GUARD;
+    let step = Float::with_val(p, 1) >> (TAB_BITS * level);
+    let e_step = to_signed::<W>(&Float::with_val(p, step.exp_ref()), 0).expect("e^t < 4");
+    let (s_step, c_step) = step.sin_cos(Float::new(p));
+    let (ss, cs) = (to_signed::<W>(&s_step, 0).expect("sin t < 4"), to_signed::<W>(&c_step, 0).expect("cos t < 4"));
+    let one = limbs::Signed::<W> { mag: limbs::one::<W>(), neg: false };
+    let (mut ev, mut sv, mut cv) = (one, limbs::Signed::<W>::ZERO, one);
+    let (mut e_out, mut s_out, mut c_out) = (Vec::with_capacity(TAB_LEN * l), Vec::with_capacity(TAB_LEN * l), Vec::with_capacity(TAB_LEN * l));
+    for k in 0..TAB_LEN {
+        if trig {
+            if k > 0 {
+                let ns = sv.mul(&cs).add(&cv.mul(&ss));
+                cv = cv.mul(&cs).sub(&sv.mul(&ss));
+                sv = ns;
+            }
+            s_out.extend_from_slice(&sv.mag[W - l..]);
+            c_out.extend_from_slice(&cv.mag[W - l..]);
+        } else {
+            if k > 0 {
+                ev = ev.mul(&e_step);
+            }
+            e_out.extend_from_slice(&ev.mag[W - l..]);
+        }
+    }
+    (e_out, s_out, c_out)
 }
 
 fn exp_tables(l: usize) -> &'static ExpTables {
