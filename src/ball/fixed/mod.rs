@@ -224,7 +224,7 @@ fn trig_order(f: u32, b: u32, extra: u64) -> u64 {
 /// allocated once.
 ///
 /// Below `MAX_LIMBS` limbs the powers are formed in the fixed-point format of
-/// `MAX_LIMBS` limbs instead ([`level_fixed`]) and each entry is its top `L` limbs.
+/// `L + 1` limbs instead ([`level_fixed`]) and each entry is its top `L` limbs.
 fn exp_level(f: u32, level: u32, l: usize) -> Vec<u64> {
     if l < MAX_LIMBS {
         return level_fixed(level, l, false).0;
@@ -274,8 +274,8 @@ fn trig_level(f: u32, level: u32, l: usize) -> (Vec<u64>, Vec<u64>) {
 }
 
 /// The entries of one level for `L < MAX_LIMBS` limbs: `e^{kt}`, `sin kt`, `cos kt`,
-/// `t = 2^-(8 level)`, as powers of the step (from MPFR at `64 W + 40` bits, `W =
-/// MAX_LIMBS`, truncated) formed in the signed format of `W` limbs (`u = 2^-(64 W -
+/// `t = 2^-(8 level)`, as powers of the step (from MPFR at `64 W + 40` bits, `W = L +
+/// 1`, truncated) formed in the signed format of `W` limbs (`u = 2^-(64 W -
 /// 2)`), then cut to their top `L` limbs, which is the floor at `L` limbs of the
 /// `W`-limb value (`F_W - F_L = 64 (W - L)`). Errors: the step is off by less than `u`
 /// per part; a product truncates by less than `1.01 u` (two per part of a rotation);
@@ -285,7 +285,20 @@ fn trig_level(f: u32, level: u32, l: usize) -> (Vec<u64>, Vec<u64>) {
 /// value or one unit off, as the MPFR build's. `trig` asks for the sines and cosines
 /// (the last two vectors), otherwise the exponentials (the first).
 fn level_fixed(level: u32, l: usize, trig: bool) -> (Vec<u64>, Vec<u64>, Vec<u64>) {
-    const W: usize = MAX_LIMBS;
+    match l {
+        1 => level_fixed_w::<2>(level, l, trig),
+        2 => level_fixed_w::<3>(level, l, trig),
+        3 => level_fixed_w::<4>(level, l, trig),
+        4 => level_fixed_w::<5>(level, l, trig),
+        5 => level_fixed_w::<6>(level, l, trig),
+        6 => level_fixed_w::<7>(level, l, trig),
+        _ => level_fixed_w::<8>(level, l, trig),
+    }
+}
+
+/// [`level_fixed`] in the format of `W > L` limbs.
+fn level_fixed_w<const W: usize>(level: u32, l: usize, trig: bool) -> (Vec<u64>, Vec<u64>, Vec<u64>) {
+    debug_assert!(W > l);
     let p = 64 * W as u32 + TABLE_GUARD;
     let step = Float::with_val(p, 1) >> (TAB_BITS * level);
     let e_step = to_signed::<W>(&Float::with_val(p, step.exp_ref()), 0).expect("e^t < 4");
