@@ -278,10 +278,12 @@ fn trig_level(f: u32, level: u32, l: usize) -> (Vec<u64>, Vec<u64>) {
 /// 1`, truncated) formed in the signed format of `W` limbs (`u = 2^-(64 W -
 /// 2)`), then cut to their top `L` limbs, which is the floor at `L` limbs of the
 /// `W`-limb value (`F_W - F_L = 64 (W - L)`). Errors: the step is off by less than `u`
-/// per part; a product truncates by less than `1.01 u` (two per part of a rotation);
-/// `e^{kt} < e` and the rotations keep the norm near 1, so after `k <= 255` steps the
-/// error is at most `255 (e u + 1.01 u + e u) e < 2^12 u`, and with `W - L >= 1` that is
-/// below `2^-52` units of the `L`-limb format: the cut entry is the floor of the true
+/// per part; a product truncates by less than `1.01 u`; a rotation `(c + i s)(C + i
+/// S)` takes Gauss's three products `cC`, `sS`, `(c + s)(C + S)` (all below 2.3), so
+/// its parts err by less than `2.02 u` and `3.03 u`; `e^{kt} < e` and the rotations
+/// keep the norm near 1, so after `k <= 255` steps the error is at most `255 (e u +
+/// 4.3 u + e u) e < 2^13 u`, and with `W - L >= 1` that is
+/// below `2^-51` units of the `L`-limb format: the cut entry is the floor of the true
 /// value or one unit off, as the MPFR build's. `trig` asks for the sines and cosines
 /// (the last two vectors), otherwise the exponentials (the first).
 fn level_fixed(level: u32, l: usize, trig: bool) -> (Vec<u64>, Vec<u64>, Vec<u64>) {
@@ -304,15 +306,18 @@ fn level_fixed_w<const W: usize>(level: u32, l: usize, trig: bool) -> (Vec<u64>,
     let e_step = to_signed::<W>(&Float::with_val(p, step.exp_ref()), 0).expect("e^t < 4");
     let (s_step, c_step) = step.sin_cos(Float::new(p));
     let (ss, cs) = (to_signed::<W>(&s_step, 0).expect("sin t < 4"), to_signed::<W>(&c_step, 0).expect("cos t < 4"));
+    let cs_ss = cs.add(&ss);
     let one = limbs::Signed::<W> { mag: limbs::one::<W>(), neg: false };
     let (mut ev, mut sv, mut cv) = (one, limbs::Signed::<W>::ZERO, one);
     let (mut e_out, mut s_out, mut c_out) = (Vec::with_capacity(TAB_LEN * l), Vec::with_capacity(TAB_LEN * l), Vec::with_capacity(TAB_LEN * l));
     for k in 0..TAB_LEN {
         if trig {
             if k > 0 {
-                let ns = sv.mul(&cs).add(&cv.mul(&ss));
-                cv = cv.mul(&cs).sub(&sv.mul(&ss));
-                sv = ns;
+                // (c + i s)(C + i S) by Gauss's three products
+                let (p1, p2) = (cv.mul(&cs), sv.mul(&ss));
+                let p3 = cv.add(&sv).mul(&cs_ss);
+                cv = p1.sub(&p2);
+                sv = p3.sub(&p1).sub(&p2);
             }
             s_out.extend_from_slice(&sv.mag[W - l..]);
             c_out.extend_from_slice(&cv.mag[W - l..]);
