@@ -14,9 +14,11 @@
 //!   [`crate::ball::eval_at_decimals`] at tighter input balls, the MP wave
 //!   quadrature's outer nodes, the certified quadrature's bisection and attempts,
 //!   the pFq series every 64 terms, the 1F2 model family's series every 256 terms,
-//!   the wave series every term, the model's f64 strip-root scan every 64
-//!   samples), the time spent plus an estimate of the next
-//!   iteration (the last one's time, scaled with the precision) is compared with
+//!   the wave series every term, the wave's Bessel form (Eq. 11a) before its
+//!   `J_n` sequence and every 4096 terms of its sums, the model's f64
+//!   strip-root scan every 64 samples), the time spent plus an estimate of the
+//!   next iteration (a Ziv round: the last one's time times the precision ratio
+//!   to the power 1.5) is compared with
 //!   the budget; past it the loop stops with [`Error::BudgetSpent`], which names
 //!   the time spent and what was reached ([`Reached`]).
 //! * **One MPFR Gamma** (no loop to interrupt) is refused with
