@@ -176,11 +176,14 @@ fn too_expensive(terms: u64, per_term: f64, limit: f64) -> Error {
 
 pub(crate) fn series_2f1(a: &Float, b: &Float, c: &Float, z: &Ball, wp: u32) -> Result<Ball> {
     let wp = wp.max(MIN_SERIES_PREC);
+    let deg = terminating_degree(a, b);
     // `z` rounded into its ball at `wp` bits: every term multiplies by its
     // midpoint, and a decimal `z` tightened to 54 000 bits cost that length a
-    // term (the radius is carried by the perturbation bound below)
-    let z = &z.at_most_prec(wp);
-    let deg = terminating_degree(a, b);
+    // term (the radius is carried by the perturbation bound below); kept as
+    // given when the rounded ball would reach `|z| = 1` (`w = 1 - 10^-6020`
+    // after Pfaff: the series' own refusal then names its term count)
+    let rounded = z.at_most_prec(wp);
+    let z = if deg.is_some() || (rounded.upper() < 1 && rounded.lower() > -1) { &rounded } else { z };
     if let Some(m) = nonpos_degree(c) {
         if deg.map_or(true, |d| d > m) {
             return Err(pole_error(c));
