@@ -311,7 +311,7 @@ pub(crate) fn series_2f1(a: &Float, b: &Float, c: &Float, z: &Ball, wp: u32) -> 
         if n > MAX_SERIES_TERMS {
             return Err(Error::NoConvergence { function: "hyp2f1", terms: n });
         }
-        if n % 64 == 0 {
+        if n % crate::budget::TERMS_BETWEEN_CHECKS == 0 {
             // the installed time budget (crate::budget): the term count above is a
             // lower bound of the work, not its length (2F1(24.1, -34.875; 1000001; 0.5)
             // planned 65 560 guard bits and summed 5000 terms at 65 742 bits: 2 s)
