@@ -390,6 +390,17 @@ impl Ball {
         Ball { mid, rad }
     }
 
+    /// The same ball with its midpoint rounded to `prec` bits when it is longer
+    /// (an exact input of 54 000 bits holding a short value, or a decimal ball
+    /// tightened that far, costs its whole length in every product: issue 37).
+    pub fn at_most_prec(&self, prec: u32) -> Ball {
+        if self.mid.prec() > prec {
+            self.set_prec(prec)
+        } else {
+            self.clone()
+        }
+    }
+
     /// [`Error::BallOutOfRange`] for this ball as the argument `arg`.
     pub fn out_of_range(&self, arg: &'static str, allowed: crate::error::Interval) -> crate::Error {
         crate::Error::BallOutOfRange {
