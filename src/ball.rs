@@ -41,7 +41,7 @@ mod decimal;
 mod dd_bounded;
 mod double_double;
 mod elementary;
-mod fixed;
+pub(crate) mod fixed;
 mod functions;
 pub(crate) use double_double::{two_prod, two_sum};
 mod lanes;
