@@ -6,7 +6,9 @@
    goal = prec, absolute tolerance 2^-prec, the default limits.
 
    cc -O2 -o arb_first_call reference/arb_first_call.c -lflint-arb -lflint -lmpfr -lgmp
-   ./arb_first_call ID PREC             (run by reference/bench_first_call.sh) */
+   ./arb_first_call ID PREC             (run by reference/bench_first_call.sh)
+   FIRST_CALL_ONLY=1 ./arb_first_call ID PREC   the first call only
+                                        (reference/instructions_first_call.sh) */
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -66,6 +68,12 @@ int main(int argc, char **argv)
     acb_calc_integrate(s, in->f, NULL, a, b, prec, tol, opt, prec);
     first = now() - t0;
     first_evals = evals;
+    if (getenv("FIRST_CALL_ONLY") != NULL)
+    {
+        /* the first call alone (as examples/first_call.rs), for instruction counts */
+        printf("%s\t%ld\t%.2f\n", in->id, (long) prec, 1e3 * first);
+        return 0;
+    }
     t0 = now();
     while (calls < 3 || now() - t0 < 0.3)
     {

@@ -30,6 +30,13 @@ CASES = [
     ("-224", "1.2925e2", "26.13864079447547e18828", "9.09851582217487e-117", "mpmath"),
     # a = -101, b = 1.1e-192, c = 1.0e-79, z = -17: 8.7 s (exact rationals of 1600-bit midpoints)
     ("-101", "1.1033944959127793e-192", "0." + "0" * 77 + "10158649451346211", "-17", "mpmath"),
+    # issue 37's scan: the cost model planned 65 560 guard bits (an unconverged
+    # Euler simulation read as |f|), the direct series then ran 5000 terms at 65 742
+    # bits (2 s, then TooExpensive under a 0.1 s budget)
+    ("24.1", "-34.875", "1000001", "0.5", "mpmath"),
+    # issue 37's scan: c's decimal ball tightened to 54 000 bits, then ln, exp and
+    # the series at that length (0.15 s at 157 bits)
+    ("3", "10000", "2.304347624789777e1", "-4.25e1", "mpmath"),
 ]
 
 

@@ -41,7 +41,7 @@ mod decimal;
 mod dd_bounded;
 mod double_double;
 mod elementary;
-mod fixed;
+pub(crate) mod fixed;
 mod functions;
 pub(crate) use double_double::{two_prod, two_sum};
 mod lanes;
@@ -388,6 +388,17 @@ impl Ball {
         let ord = mid.set_prec_round(prec, Round::Nearest);
         let rad = self.rad.add(rounding_error(&mid, ord));
         Ball { mid, rad }
+    }
+
+    /// The same ball with its midpoint rounded to `prec` bits when it is longer
+    /// (an exact input of 54 000 bits holding a short value, or a decimal ball
+    /// tightened that far, costs its whole length in every product: issue 37).
+    pub fn at_most_prec(&self, prec: u32) -> Ball {
+        if self.mid.prec() > prec {
+            self.set_prec(prec)
+        } else {
+            self.clone()
+        }
     }
 
     /// [`Error::BallOutOfRange`] for this ball as the argument `arg`.

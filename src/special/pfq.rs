@@ -234,7 +234,7 @@ pub(crate) fn pfq_series(a: &[Ball], b: &[Ball], z: &Ball, wp: u32) -> Result<Se
         if n > MAX_SERIES_TERMS {
             return Err(Error::NoConvergence { function: "pFq", terms: n });
         }
-        if n % 64 == 0 {
+        if n % crate::budget::TERMS_BETWEEN_CHECKS == 0 {
             // the installed time budget (crate::budget): the cost model counts terms
             // at the working precision, but a parameter held exactly at 10^5 bits
             // (1e31099 typed) makes every term cost that precision, and the tail bound

@@ -2,7 +2,11 @@
 //! 8, ... bits, meets its goal, contains its reference, and more bits never give fewer
 //! digits (`accuracy(2p) >= min(accuracy(p), 2p)`; for the two zero integrals, the
 //! radius never grows). The default tier sweeps 2 ..= 128 bits, the long tier
-//! (`./dev test --long`) 2 ..= 4096, `MAUGIS_SWEEP_TOP=N` 2 ..= N.
+//! (`./dev test --long`) 2 ..= 4096, `MAUGIS_SWEEP_TOP=N` 2 ..= N; `MAUGIS_SWEEP_FROM=P`
+//! starts at P bits (a partial run of the top levels: each level is still compared with
+//! the one below it, from 2P on), `MAUGIS_SWEEP_SKIP=id,id` leaves integrals out. Each
+//! integral's time and verdict per precision go to stderr (`--nocapture` shows them), so
+//! a long run shows where it is.
 //!
 //! The list: the 13 integrals of `reference/data/integrals_singular.csv`
 //! (`reference/generate_finite_singular.py`; issue 40's table among them), the 15 of
@@ -74,8 +78,12 @@ const KNOWN: [(&str, u32); 0] = [];
 fn more_bits_never_give_a_worse_ball() {
     // MAUGIS_SWEEP_TOP=N sets the top precision by hand (a partial long run)
     let top = std::env::var("MAUGIS_SWEEP_TOP").ok().and_then(|v| v.parse().ok()).unwrap_or(tier::pick(128u32, 4096));
+    let from: u32 = std::env::var("MAUGIS_SWEEP_FROM").ok().and_then(|v| v.parse().ok()).unwrap_or(2);
     let cases = cases();
     assert!(cases.len() >= 30, "{}", cases.len());
+    // MAUGIS_SWEEP_SKIP=id,id,... leaves integrals out (a partial long run)
+    let skip: Vec<String> = std::env::var("MAUGIS_SWEEP_SKIP").map(|v| v.split(',').map(str::to_string).collect()).unwrap_or_default();
+    let cases: Vec<Case> = cases.into_iter().filter(|c| !skip.contains(&c.id)).collect();
     let mut failures = Vec::new();
     let mut known = Vec::new();
     for c in &cases {
@@ -91,11 +99,14 @@ fn more_bits_never_give_a_worse_ball() {
             want.add_error_mag(maugis::ball::Mag::from_float_up(&ulp));
         }
         let mut prev: Option<(u32, f64, maugis::ball::Mag)> = None;
-        let mut prec = 2u32;
+        let mut prec = from.max(2).next_power_of_two();
         while prec <= top {
             let label = format!("{} ({} on [{}, {}]) at {prec} bits", c.id, c.expr, c.a, c.b);
             let before = failures.len();
-            match integrate_range(&f, &a, &b, None, None, prec, &Options::new()) {
+            let started = std::time::Instant::now();
+            let result = integrate_range(&f, &a, &b, None, None, prec, &Options::new());
+            let seconds = started.elapsed().as_secs_f64();
+            match result {
                 Err(e) => failures.push(format!("{label}: error {e}")),
                 Ok(r) => {
                     if !r.goal_met {
@@ -118,6 +129,8 @@ fn more_bits_never_give_a_worse_ball() {
                     prev = Some((prec, acc, rad));
                 }
             }
+            let verdict = if failures.len() == before { "ok".to_string() } else { format!("FAIL {}", failures[before..].join("; ")) };
+            eprintln!("sweep: {label}: {seconds:.3} s: {verdict}");
             if known_from.is_some_and(|p| prec >= p) {
                 if failures.len() == before {
                     failures.push(format!("{label}: listed in KNOWN but passes: remove it from the list"));

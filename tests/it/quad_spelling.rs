@@ -25,6 +25,7 @@ fn spellings_cost_within_twice_the_best() {
             assert!(r1.goal_met && r2.goal_met, "{best} / {other} at {prec}: {:?} {:?}", r1.value, r2.value);
             assert!(r1.real().overlaps(r2.real()), "{best} / {other} at {prec}");
             let (e1, e2) = (r1.evaluations, r2.evaluations);
+            eprintln!("spelling at {prec} bits: {best}: {e1} evaluations; {other}: {e2}");
             assert!(e2 <= 2 * e1 && e1 <= 2 * e2, "{best}: {e1} evaluations, {other}: {e2} at {prec} bits");
         }
     }

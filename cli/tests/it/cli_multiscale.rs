@@ -136,3 +136,46 @@ fn bad_scales_input_exits_2_and_writes_nothing() {
     }
     let _ = std::fs::remove_dir_all(s1);
 }
+
+fn docs() -> PathBuf {
+    std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs")
+}
+
+/// The committed studies behind docs/multiscale.md (items 2 and 4): in every
+/// `docs/multiscale/*` folder holding a `scales.json`, `maugis multiscale merge`
+/// rewrites the CSVs, the tables and the plot byte for byte (the figures are
+/// drawn from the committed data, not edited by hand), and every W row of the
+/// page's answer tables is a row of one of those tables.
+#[test]
+fn the_committed_scales_studies_are_what_merge_writes() {
+    let dirs: Vec<PathBuf> = {
+        let mut v: Vec<PathBuf> = std::fs::read_dir(docs().join("multiscale"))
+            .expect("docs/multiscale")
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| p.join("scales.json").exists())
+            .collect();
+        v.sort();
+        v
+    };
+    assert!(dirs.len() >= 2, "no committed scales studies: {dirs:?}");
+    let mut tables = String::new();
+    for dir in &dirs {
+        let out = scratch("committed");
+        let o = maugis(&["multiscale", "merge", dir.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+        assert!(o.status.success(), "{}: {}", dir.display(), String::from_utf8_lossy(&o.stderr));
+        for name in ["scales.csv", "cycles.csv", "scales.md", "scales.svg"] {
+            let fresh = std::fs::read(out.join(name)).unwrap();
+            let committed = std::fs::read(dir.join(name)).unwrap_or_default();
+            assert!(fresh == committed, "{}/{name} is stale: redraw with `maugis multiscale merge {0} --out <tmp>` and copy it back", dir.display());
+        }
+        tables.push_str(&std::fs::read_to_string(dir.join("scales.md")).unwrap());
+        let _ = std::fs::remove_dir_all(out);
+    }
+    let page = std::fs::read_to_string(docs().join("multiscale.md")).unwrap();
+    let answer = page.split("### The answer").nth(1).and_then(|s| s.split("## 3.").next()).expect("section 2's answer");
+    let w_rows: Vec<&str> = answer.lines().filter(|l| l.starts_with("| ") && l.contains(" / ")).collect();
+    assert!(w_rows.len() >= 10, "the answer's W tables: {w_rows:?}");
+    for row in w_rows {
+        assert!(tables.lines().any(|l| l == row), "docs/multiscale.md row not in any committed scales.md: {row}");
+    }
+}

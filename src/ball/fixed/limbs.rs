@@ -155,6 +155,43 @@ pub(crate) fn ge(x: &[u64], y: &[u64]) -> bool {
     true
 }
 
+/// A signed Q2 value `(-1)^neg X 2^-F`, `X < 2^(64 L)`: the magnitude as above and a
+/// sign. [`Signed::mul`] errs by less than `1 + 2^-57` ulps (toward zero), [`Signed::add`]
+/// and [`Signed::sub`] are exact; the caller keeps every magnitude below 4.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Signed<const L: usize> {
+    pub(crate) mag: [u64; L],
+    pub(crate) neg: bool,
+}
+
+impl<const L: usize> Signed<L> {
+    pub(crate) const ZERO: Signed<L> = Signed { mag: [0; L], neg: false };
+
+    /// The product (a truncated [`mul`] of the magnitudes).
+    #[inline]
+    pub(crate) fn mul(&self, o: &Signed<L>) -> Signed<L> {
+        Signed { mag: mul(&self.mag, &o.mag), neg: self.neg != o.neg }
+    }
+
+    /// The exact sum.
+    #[inline]
+    pub(crate) fn add(&self, o: &Signed<L>) -> Signed<L> {
+        if self.neg == o.neg {
+            Signed { mag: add(&self.mag, &o.mag), neg: self.neg }
+        } else if ge(&self.mag, &o.mag) {
+            Signed { mag: sub(&self.mag, &o.mag), neg: self.neg }
+        } else {
+            Signed { mag: sub(&o.mag, &self.mag), neg: o.neg }
+        }
+    }
+
+    /// The exact difference.
+    #[inline]
+    pub(crate) fn sub(&self, o: &Signed<L>) -> Signed<L> {
+        self.add(&Signed { mag: o.mag, neg: !o.neg })
+    }
+}
+
 /// A wide value: `L + 1` limbs of which only the first `L + 1` entries are used.
 pub(crate) type Wide = [u64; MAX_LIMBS + 1];
 

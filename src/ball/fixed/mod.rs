@@ -25,8 +25,10 @@
 //! 2. **Tables.** `t = k_1 2^-8 + ... + k_v 2^(-8 v) + s` with `k_j` the next eight
 //!    bits of `t` and `s < 2^(-8 v)`, `v <= 3` levels chosen per `L` by the cost in
 //!    multiplications. `e^(k 2^(-8 j))`, `sin(k 2^(-8 j))`, `cos(k 2^(-8 j))` are
-//!    tabulated for `k < 256`, computed once per `L` with MPFR at `F + 128` bits and
-//!    truncated (error below 1.01 ulp; counted as 2).
+//!    tabulated for `k < 256`, computed once per `L` (the exponential's apart from the
+//!    sine's and cosine's, at the first call that needs each) as powers of the step in
+//!    MPFR at `F + 40` bits and truncated (error below 1.01 ulp; counted as 2;
+//!    [`exp_level`]).
 //! 3. **Taylor series** in `s`, by Horner's rule, to the least order whose tail is
 //!    below one ulp (`e^s`: tail `<= 2 s^(N+1)/(N+1)!`; `sin s / s` and `cos s`:
 //!    alternating, the tail below the first omitted term). Each Horner step
@@ -56,12 +58,11 @@
 //! (an absolute error bound would cost relative bits there; MPFR's are correctly
 //! rounded), and on targets whose GMP limb is not 64 bits.
 
-mod limbs;
+pub(crate) mod limbs;
 
 use std::cmp::Ordering;
 use std::sync::OnceLock;
 
-use rug::float::Round;
 use rug::Float;
 
 use super::mag::raw_parts;
@@ -75,26 +76,37 @@ const GUARD: u32 = 24;
 #[allow(dead_code)]
 pub(crate) const MAX_FIXED_PREC: u32 = 64 * MAX_LIMBS as u32 - 2 - GUARD;
 
+/// Guard bits of the MPFR arithmetic that builds the tables ([`exp_level`]); the
+/// constants `ln 2` and `pi/2`, stored with `F + 64` bits, are computed at `F + 128`.
+const TABLE_GUARD: u32 = 40;
+
 /// Table index bits per level (256 entries), and the most levels.
 const TAB_BITS: u32 = 8;
 const TAB_LEN: usize = 1 << TAB_BITS;
 const MAX_LEVELS: usize = 3;
 
-/// The tables and Horner divisors for one number of limbs `L`.
-struct Tables {
+/// The tables and Horner divisors of `exp` for one number of limbs `L`.
+struct ExpTables {
     /// Level `j` (from 1): `floor(e^(k 2^(-8 j)) 2^F)`, `L` limbs per entry, `k < 256`.
     exp: Vec<Vec<u64>>,
-    /// The same for `sin` and `cos`.
-    sin: Vec<Vec<u64>>,
-    cos: Vec<Vec<u64>>,
-    /// `floor(ln2 2^(F+64))`, `floor(pi/2 2^(F+64))`: `L + 1` limbs.
+    /// `floor(ln2 2^(F+64))`: `L + 1` limbs.
     ln2: Vec<u64>,
-    half_pi: Vec<u64>,
-    /// Levels used by `exp` and by `sin`/`cos` (each chosen by cost).
+    /// Levels used by `exp` (chosen by cost).
     exp_levels: usize,
-    trig_levels: usize,
     /// The Horner divisors of `e^s` to `s^N`, outermost first: `N, ..., 1`.
     exp_div: Vec<limbs::Divisor>,
+}
+
+/// The same for `sin` and `cos`, built apart: an integrand with `exp` only never pays
+/// for them (the tables are most of a first call at 333 bits).
+struct TrigTables {
+    /// Level `j` (from 1): `floor(sin(k 2^(-8 j)) 2^F)`, `floor(cos(..) 2^F)`.
+    sin: Vec<Vec<u64>>,
+    cos: Vec<Vec<u64>>,
+    /// `floor(pi/2 2^(F+64))`: `L + 1` limbs.
+    half_pi: Vec<u64>,
+    /// Levels used by `sin`/`cos` (chosen by cost).
+    trig_levels: usize,
     /// The terms `y^j`, `j = 1, 2, ...`, of `sin s / s` and `cos s` in `y = s^2`.
     trig_terms: Vec<TrigTerm>,
     /// The error bound of `sin_cos_fixed` in ulps (module docs, step 4), from the orders.
@@ -164,16 +176,19 @@ fn trig_terms(n_sin: u64, n_cos: u64, levels: usize) -> (Vec<TrigTerm>, f64) {
     ((terms), (a_s.max(a_c) + 3.0).ceil() + 1.0)
 }
 
-static TABLES: [OnceLock<Tables>; MAX_LIMBS + 1] = [const { OnceLock::new() }; MAX_LIMBS + 1];
+static EXP_TABLES: [OnceLock<ExpTables>; MAX_LIMBS + 1] = [const { OnceLock::new() }; MAX_LIMBS + 1];
+static TRIG_TABLES: [OnceLock<TrigTables>; MAX_LIMBS + 1] = [const { OnceLock::new() }; MAX_LIMBS + 1];
 
-/// `floor(v 2^shift)` as exactly `len` little-endian limbs (`v >= 0`, the result fits).
+/// `floor(v 2^shift)` as exactly `len` little-endian limbs (`v >= 0` finite, the result
+/// fits), read off `v`'s significand without an integer conversion.
 fn fixed_limbs(v: &Float, shift: i32, len: usize) -> Vec<u64> {
-    let scaled = Float::with_val(v.prec(), v << shift);
-    let i = scaled.to_integer_round(Round::Down).map(|(i, _)| i).unwrap_or_default();
-    let mut d: Vec<u64> = i.to_digits(rug::integer::Order::Lsf);
-    assert!(d.len() <= len, "table entry does not fit");
-    d.resize(len, 0);
-    d
+    if v.is_zero() {
+        return vec![0; len];
+    }
+    let (d, e) = raw_parts(v);
+    // v = D 2^(e - 64 |d|), D the significand's limbs as an integer
+    let w = limbs::shifted(d, e - 64 * d.len() as i64 + shift as i64, len).expect("table entry does not fit");
+    w[..len].to_vec()
 }
 
 /// `log2(n!)`, rounded down (f64 sums, then a margin).
@@ -198,78 +213,154 @@ fn trig_order(f: u32, b: u32, extra: u64) -> u64 {
         .unwrap_or(1)
 }
 
-fn tables(l: usize) -> &'static Tables {
-    TABLES[l].get_or_init(|| {
+/// The entries `k = 0..255` of table level `level` of the working format with `f`
+/// fractional bits. They are powers of the level's step `t = 2^-(8 level)`:
+/// `e^{kt} = e^{(k-1)t} e^t`, and `(cos kt, sin kt)` the previous pair rotated by
+/// `(cos t, sin t)`, in MPFR at `p = f + 40` bits ([`TABLE_GUARD`]) rounded to nearest: each of the at
+/// most 255 steps adds a relative error of a few `2^-p` (a rotation keeps the norm, so
+/// errors add), in all below `2^(12 - p) = 2^-(f + 28)`, far below the table's unit
+/// `2^-f`: the floor is off by at most one unit, as with one MPFR call per entry (the 2
+/// ulps of `trig_terms`), at a fraction of the cost. The products go into temporaries
+/// allocated once.
+///
+/// Below `MAX_LIMBS` limbs the powers are formed in the fixed-point format of
+/// `L + 1` limbs instead ([`level_fixed`]) and each entry is its top `L` limbs.
+fn exp_level(f: u32, level: u32, l: usize) -> Vec<u64> {
+    if l < MAX_LIMBS {
+        return level_fixed(level, l, false).0;
+    }
+    let p = f + TABLE_GUARD;
+    let step = Float::with_val(p, 1) >> (TAB_BITS * level);
+    let e_step = Float::with_val(p, step.exp_ref());
+    let mut ev = Float::with_val(p, 1);
+    let mut out = Vec::with_capacity(TAB_LEN * l);
+    for k in 0..TAB_LEN {
+        if k > 0 {
+            ev *= &e_step;
+        }
+        out.extend(fixed_limbs(&ev, f as i32, l));
+    }
+    out
+}
+
+/// The sine and cosine entries of one level (see [`exp_level`]).
+fn trig_level(f: u32, level: u32, l: usize) -> (Vec<u64>, Vec<u64>) {
+    use rug::Assign;
+    if l < MAX_LIMBS {
+        let (_, sn, cs) = level_fixed(level, l, true);
+        return (sn, cs);
+    }
+    let p = f + TABLE_GUARD;
+    let step = Float::with_val(p, 1) >> (TAB_BITS * level);
+    let (s_step, c_step) = step.sin_cos(Float::new(p));
+    let (mut sv, mut cv) = (Float::new(p), Float::with_val(p, 1));
+    let (mut t1, mut t2) = (Float::new(p), Float::new(p));
+    let (mut sn, mut cs) = (Vec::with_capacity(TAB_LEN * l), Vec::with_capacity(TAB_LEN * l));
+    for k in 0..TAB_LEN {
+        if k > 0 {
+            // (s, c) <- (s C + c S, c C - s S), each product rounded, then the sum
+            t1.assign(&sv * &c_step);
+            t2.assign(&cv * &s_step);
+            let new_s = Float::with_val(p, &t1 + &t2);
+            t1.assign(&cv * &c_step);
+            t2.assign(&sv * &s_step);
+            cv.assign(&t1 - &t2);
+            sv = new_s;
+        }
+        sn.extend(fixed_limbs(&sv, f as i32, l));
+        cs.extend(fixed_limbs(&cv, f as i32, l));
+    }
+    (sn, cs)
+}
+
+/// The entries of one level for `L < MAX_LIMBS` limbs: `e^{kt}`, `sin kt`, `cos kt`,
+/// `t = 2^-(8 level)`, as powers of the step (from MPFR at `64 W + 40` bits, `W = L +
+/// 1`, truncated) formed in the signed format of `W` limbs (`u = 2^-(64 W -
+/// 2)`), then cut to their top `L` limbs, which is the floor at `L` limbs of the
+/// `W`-limb value (`F_W - F_L = 64 (W - L)`). Errors: the step is off by less than `u`
+/// per part; a product truncates by less than `1.01 u`; a rotation `(c + i s)(C + i
+/// S)` takes Gauss's three products `cC`, `sS`, `(c + s)(C + S)` (all below 2.3), so
+/// its parts err by less than `2.02 u` and `3.03 u`; `e^{kt} < e` and the rotations
+/// keep the norm near 1, so after `k <= 255` steps the error is at most `255 (e u +
+/// 4.3 u + e u) e < 2^13 u`, and with `W - L >= 1` that is
+/// below `2^-51` units of the `L`-limb format: the cut entry is the floor of the true
+/// value or one unit off, as the MPFR build's. `trig` asks for the sines and cosines
+/// (the last two vectors), otherwise the exponentials (the first).
+fn level_fixed(level: u32, l: usize, trig: bool) -> (Vec<u64>, Vec<u64>, Vec<u64>) {
+    match l {
+        1 => level_fixed_w::<2>(level, l, trig),
+        2 => level_fixed_w::<3>(level, l, trig),
+        3 => level_fixed_w::<4>(level, l, trig),
+        4 => level_fixed_w::<5>(level, l, trig),
+        5 => level_fixed_w::<6>(level, l, trig),
+        6 => level_fixed_w::<7>(level, l, trig),
+        _ => level_fixed_w::<8>(level, l, trig),
+    }
+}
+
+/// [`level_fixed`] in the format of `W > L` limbs.
+fn level_fixed_w<const W: usize>(level: u32, l: usize, trig: bool) -> (Vec<u64>, Vec<u64>, Vec<u64>) {
+    debug_assert!(W > l);
+    let p = 64 * W as u32 + TABLE_GUARD;
+    let step = Float::with_val(p, 1) >> (TAB_BITS * level);
+    let e_step = to_signed::<W>(&Float::with_val(p, step.exp_ref()), 0).expect("e^t < 4");
+    let (s_step, c_step) = step.sin_cos(Float::new(p));
+    let (ss, cs) = (to_signed::<W>(&s_step, 0).expect("sin t < 4"), to_signed::<W>(&c_step, 0).expect("cos t < 4"));
+    let cs_ss = cs.add(&ss);
+    let one = limbs::Signed::<W> { mag: limbs::one::<W>(), neg: false };
+    let (mut ev, mut sv, mut cv) = (one, limbs::Signed::<W>::ZERO, one);
+    let (mut e_out, mut s_out, mut c_out) = (Vec::with_capacity(TAB_LEN * l), Vec::with_capacity(TAB_LEN * l), Vec::with_capacity(TAB_LEN * l));
+    for k in 0..TAB_LEN {
+        if trig {
+            if k > 0 {
+                // (c + i s)(C + i S) by Gauss's three products
+                let (p1, p2) = (cv.mul(&cs), sv.mul(&ss));
+                let p3 = cv.add(&sv).mul(&cs_ss);
+                cv = p1.sub(&p2);
+                sv = p3.sub(&p1).sub(&p2);
+            }
+            s_out.extend_from_slice(&sv.mag[W - l..]);
+            c_out.extend_from_slice(&cv.mag[W - l..]);
+        } else {
+            if k > 0 {
+                ev = ev.mul(&e_step);
+            }
+            e_out.extend_from_slice(&ev.mag[W - l..]);
+        }
+    }
+    (e_out, s_out, c_out)
+}
+
+fn exp_tables(l: usize) -> &'static ExpTables {
+    EXP_TABLES[l].get_or_init(|| {
         let f = 64 * l as u32 - 2;
         let p = f + 128;
         // levels by cost in full multiplications (a division counts half of one):
-        // exp: one per level and per order; sin/cos: four per extra level, two per order
+        // one per level and per order
         let exp_levels = (1..=MAX_LEVELS).min_by_key(|&v| 2 * v as u64 + 3 * exp_order(f, TAB_BITS * v as u32)).unwrap_or(1);
+        let exp = (1..=exp_levels as u32).map(|level| exp_level(f, level, l)).collect();
+        let ln2 = fixed_limbs(&Float::with_val(p, rug::float::Constant::Log2), f as i32 + 64, l + 1);
+        let be = TAB_BITS * exp_levels as u32;
+        ExpTables { exp, ln2, exp_levels, exp_div: (1..=exp_order(f, be)).rev().map(limbs::Divisor::new).collect() }
+    })
+}
+
+fn trig_tables(l: usize) -> &'static TrigTables {
+    TRIG_TABLES[l].get_or_init(|| {
+        let f = 64 * l as u32 - 2;
+        let p = f + 128;
+        // levels by cost in full multiplications: four per extra level, two per order
         let trig_levels = (1..=MAX_LEVELS)
             .min_by_key(|&v| {
                 let b = TAB_BITS * v as u32;
                 8 * v as u64 + 4 * trig_order(f, b, 1).max(trig_order(f, b, 0))
             })
             .unwrap_or(1);
-        let mut exp = Vec::new();
-        let mut sin = Vec::new();
-        let mut cos = Vec::new();
-        // Only the levels the kernels read (exp: `exp_levels`, sin/cos: `trig_levels`).
-        // The entries k = 1..255 of a level are powers of its step `t = 2^-(8 level)`:
-        // `e^{kt} = e^{(k-1)t} e^t`, and `(cos kt, sin kt)` the previous pair rotated by
-        // `(cos t, sin t)`, in MPFR at `p = f + 128` bits rounded to nearest: each of the
-        // at most 255 steps adds a relative error of a few `2^-p` (a rotation keeps the
-        // norm, so errors add), in all below `2^(12 - p) = 2^-(f + 116)`, far below the
-        // table's unit `2^-f`: the floor is off by at most one unit, as with one MPFR
-        // call per entry (the 2 ulps of `trig_terms`), at a fraction of the cost (the
-        // first call of a kernel at a new limb count builds its tables).
-        for level in 1..=exp_levels.max(trig_levels) as u32 {
-            let step = Float::with_val(p, 1) >> (TAB_BITS * level);
-            let (mut e, mut sn, mut cs) = (Vec::new(), Vec::new(), Vec::new());
-            let e_step = Float::with_val(p, step.exp_ref());
-            let (s_step, c_step) = step.clone().sin_cos(Float::new(p));
-            let (mut ev, mut sv, mut cv) = (Float::with_val(p, 1), Float::new(p), Float::with_val(p, 1));
-            for k in 0..TAB_LEN {
-                if k > 0 {
-                    ev *= &e_step;
-                    let ns = Float::with_val(p, &sv * &c_step) + Float::with_val(p, &cv * &s_step);
-                    let nc = Float::with_val(p, &cv * &c_step) - Float::with_val(p, &sv * &s_step);
-                    (sv, cv) = (ns, nc);
-                }
-                if level as usize <= exp_levels {
-                    e.extend(fixed_limbs(&ev, f as i32, l));
-                }
-                if level as usize <= trig_levels {
-                    sn.extend(fixed_limbs(&sv, f as i32, l));
-                    cs.extend(fixed_limbs(&cv, f as i32, l));
-                }
-            }
-            if level as usize <= exp_levels {
-                exp.push(e);
-            }
-            if level as usize <= trig_levels {
-                sin.push(sn);
-                cos.push(cs);
-            }
-        }
-        let ln2 = fixed_limbs(&Float::with_val(p, rug::float::Constant::Log2), f as i32 + 64, l + 1);
+        let (sin, cos) = (1..=trig_levels as u32).map(|level| trig_level(f, level, l)).unzip();
         let half_pi = fixed_limbs(&(Float::with_val(p, rug::float::Constant::Pi) >> 1), f as i32 + 64, l + 1);
-        let divisors = |n: u64, d: fn(u64) -> u64| (1..=n).rev().map(|j| limbs::Divisor::new(d(j))).collect();
-
-        let (be, bt) = (TAB_BITS * exp_levels as u32, TAB_BITS * trig_levels as u32);
+        let bt = TAB_BITS * trig_levels as u32;
         let (trig_terms, trig_ulps) = trig_terms(trig_order(f, bt, 1), trig_order(f, bt, 0), trig_levels);
-        Tables {
-            exp,
-            sin,
-            cos,
-            ln2,
-            half_pi,
-            exp_levels,
-            trig_levels,
-            exp_div: divisors(exp_order(f, be), |j| j),
-            trig_terms,
-            trig_ulps,
-        }
+        TrigTables { sin, cos, half_pi, trig_levels, trig_terms, trig_ulps }
     })
 }
 
@@ -290,6 +381,51 @@ fn approx_abs(m: &Float) -> f64 {
     }
     // 2^shift for |shift| < 1023, from its bits
     top * f64::from_bits(((1023 + shift) as u64) << 52)
+}
+
+/// The number of limbs `L` whose Q2 format has at least `bits` fractional bits,
+/// `None` above [`limbs::MAX_LIMBS`] (or where a GMP limb is not 64 bits).
+pub(crate) fn limbs_for_bits(bits: u32) -> Option<usize> {
+    let l = (bits + 2).div_ceil(64) as usize;
+    (l <= MAX_LIMBS && cfg!(target_pointer_width = "64")).then_some(l.max(1))
+}
+
+/// `v 2^e` in the signed Q2 format of `L` limbs, the magnitude truncated (an error below
+/// one ulp `2^-(64 L - 2)`); `None` when `|v| 2^e >= 4` or `v` is not finite.
+pub(crate) fn to_signed<const L: usize>(v: &Float, e: i64) -> Option<limbs::Signed<L>> {
+    if v.is_zero() {
+        return Some(limbs::Signed::ZERO);
+    }
+    if !v.is_finite() {
+        return None;
+    }
+    let (d, ve) = raw_parts(v);
+    let w = limbs::shifted(d, ve - 64 * d.len() as i64 + 64 * L as i64 - 2 + e, L)?;
+    // below 4: `shifted` refuses a value that does not fit in `L` limbs
+    let mut mag = [0u64; L];
+    mag.copy_from_slice(&w[..L]);
+    Some(limbs::Signed { mag, neg: v.is_sign_negative() })
+}
+
+/// `floor(|v| 2^(F + e))` as the `l` limbs of a Q2 magnitude (`F = 64 l - 2`), an error
+/// below one ulp; `None` when `|v| 2^e >= 4` or `v` is not finite.
+pub(crate) fn to_magnitude(v: &Float, e: i64, l: usize) -> Option<Vec<u64>> {
+    if v.is_zero() {
+        return Some(vec![0; l]);
+    }
+    if !v.is_finite() || l > MAX_LIMBS {
+        return None;
+    }
+    let (d, ve) = raw_parts(v);
+    let w = limbs::shifted(d, ve - 64 * d.len() as i64 + 64 * l as i64 - 2 + e, l)?;
+    Some(w[..l].to_vec())
+}
+
+/// A signed Q2 value as an exact float (precision `64 L`).
+pub(crate) fn from_signed<const L: usize>(x: &limbs::Signed<L>) -> Float {
+    let (y, ord) = to_float(&x.mag, -(64 * L as i64 - 2), 64 * L as u32, x.neg);
+    debug_assert_eq!(ord, Ordering::Equal);
+    y
 }
 
 /// `X 2^e` rounded to nearest at `prec` bits, with MPFR's ternary value.
@@ -440,7 +576,7 @@ fn exp_fixed<const L: usize>(m: &Float) -> Option<([u64; L], i64)> {
     if mf.abs() >= (1u64 << 20) as f64 {
         return None;
     }
-    let tab = tables(L);
+    let tab = exp_tables(L);
     let ym = argument::<L>(m)?;
     let negative = m.is_sign_negative();
     let mut n = (mf / std::f64::consts::LN_2).floor() as i64;
@@ -495,7 +631,7 @@ fn sin_cos_kernel<const L: usize>(m: &Float, wp: u32, want: Want) -> Option<((Fl
     let f = 64 * L as i64 - 2;
     let rounded = |x: &[u64; L], neg: bool| {
         let (y, ord) = to_float(x, -f, wp, neg);
-        let e = bound(&y, ord, tables(L).trig_ulps, -f);
+        let e = bound(&y, ord, trig_tables(L).trig_ulps, -f);
         (y, e)
     };
     let cos = (want == Want::Both).then(|| rounded(&cos_mag, cos_neg));
@@ -512,7 +648,7 @@ fn sin_cos_fixed<const L: usize>(m: &Float) -> Option<([u64; L], bool, [u64; L],
     if mf >= (1u64 << 20) as f64 || mf < 1.0 / 65536.0 {
         return None;
     }
-    let tab = tables(L);
+    let tab = trig_tables(L);
     let ym = argument::<L>(m)?;
     let mut n = (mf.abs() / std::f64::consts::FRAC_PI_2).round() as u64;
     let mut reduced = None;
@@ -690,7 +826,7 @@ mod tests {
                 let (vs, vc) = Float::with_val(1500, &m).sin_cos(Float::new(1500));
                 let us = ulps(vs - exact(&sm, -f, sn), -f);
                 let uc = ulps(vc - exact(&cm, -f, cn), -f);
-                let b = tables(L).trig_ulps;
+                let b = trig_tables(L).trig_ulps;
                 assert!(us <= b && uc <= b, "sin/cos {m}, L = {L}: {us}, {uc} ulps of {b}");
                 worst_trig = worst_trig.max(us).max(uc);
             }
@@ -701,13 +837,50 @@ mod tests {
     #[test]
     fn fixed_point_results_are_within_their_ulp_bounds() {
         for l in 1..=MAX_LIMBS {
-            let b = tables(l).trig_ulps;
-            eprintln!("L = {l}: trig levels {}, terms {}, bound {b} ulps", tables(l).trig_levels, tables(l).trig_terms.len());
+            let b = trig_tables(l).trig_ulps;
+            eprintln!("L = {l}: trig levels {}, terms {}, bound {b} ulps", trig_tables(l).trig_levels, trig_tables(l).trig_terms.len());
             assert!(b <= 64.0, "the sine/cosine bound {b} ulps at L = {l} exceeds the 64 the guard bits allow for");
         }
         for (we, wt) in [raw_errors::<1>(), raw_errors::<2>(), raw_errors::<3>(), raw_errors::<6>(), raw_errors::<8>()] {
             eprintln!("worst: exp {we:.2} ulps, sin/cos {wt:.2} ulps");
             assert!(we > EXP_ULPS / 16.0 && wt > 1.0, "worst errors {we}, {wt} ulps: the bounds are far too loose");
+        }
+    }
+
+    /// Every table entry is the floor of its value times `2^F` or one unit below or
+    /// above (the 2 ulps the bounds count), against one MPFR call per entry at 1500 bits;
+    /// the constants are exact floors.
+    #[test]
+    fn table_entries_are_within_one_unit_of_their_floors() {
+        let floor_of = |v: Float, shift: i64, len: usize| -> rug::Integer {
+            let i = (v << shift as i32).floor().to_integer().unwrap();
+            assert!(i.significant_bits() as usize <= 64 * len);
+            i
+        };
+        for l in 1..=MAX_LIMBS {
+            let f = 64 * l as i64 - 2;
+            let (et, tt) = (exp_tables(l), trig_tables(l));
+            let digits = |x: &[u64]| rug::Integer::from_digits(x, rug::integer::Order::Lsf);
+            for (j, level) in et.exp.iter().enumerate() {
+                for k in 0..TAB_LEN {
+                    let a = Float::with_val(1500, k) >> (TAB_BITS * (j as u32 + 1));
+                    let want = floor_of(Float::with_val(1500, a.exp_ref()), f, l);
+                    let diff = (digits(&level[k * l..(k + 1) * l]) - want).abs();
+                    assert!(diff <= 1, "exp L = {l} level {} k = {k}: {diff}", j + 1);
+                }
+            }
+            for (j, (sl, cl)) in tt.sin.iter().zip(&tt.cos).enumerate() {
+                for k in 0..TAB_LEN {
+                    let a = Float::with_val(1500, k) >> (TAB_BITS * (j as u32 + 1));
+                    let (sv, cv) = a.sin_cos(Float::new(1500));
+                    for (tab, v, what) in [(sl, sv, "sin"), (cl, cv, "cos")] {
+                        let diff = (digits(&tab[k * l..(k + 1) * l]) - floor_of(v, f, l)).abs();
+                        assert!(diff <= 1, "{what} L = {l} level {} k = {k}: {diff}", j + 1);
+                    }
+                }
+            }
+            assert_eq!(digits(&et.ln2), floor_of(Float::with_val(1500, rug::float::Constant::Log2), f + 64, l + 1));
+            assert_eq!(digits(&tt.half_pi), floor_of(Float::with_val(1500, rug::float::Constant::Pi) >> 1, f + 64, l + 1));
         }
     }
 

@@ -205,6 +205,7 @@ fn wave_series_wp(kind: SeriesKind, g: &WaveGeometry, kmax: u64, wp: u32) -> Res
     let family = hyp1f2_model_family(k_top, &g.s, wp)?;
     let mut k: u64 = 0;
     loop {
+        let term_start = std::time::Instant::now();
         let kk = u32::try_from(k).map_err(|_| kmax_error(k))?;
         let f12 = match family.get(kk as usize) {
             Some(f) => f.clone(),
@@ -227,8 +228,9 @@ fn wave_series_wp(kind: SeriesKind, g: &WaveGeometry, kmax: u64, wp: u32) -> Res
         }
         // the terms past the family's reach cost a Meijer and a 1F2 series each:
         // the call's time budget, every term (one term took 0.2 s at x = 2.8e32010,
-        // issue 37's scan; the check costs a clock read)
-        crate::budget::check_elapsed("the wave series (Eq. 11b/12) term by term", 0.0, Reached::Terms { count: k + 1 })?;
+        // issue 37's scan; the check costs a clock read), with this term's time as
+        // the next one's estimate (at zero, a 60 ms term began at 0.1 s under load)
+        crate::budget::check_elapsed("the wave series (Eq. 11b/12) term by term", crate::budget::since(term_start), Reached::Terms { count: k + 1 })?;
         // Early stop: the rest of the partial sum (k+1..=kmax) is bounded by the tail
         // (checked every 4th term: the bound itself costs a few ball operations).
         let tail = if k % 4 == 3 { series_tail(kind, g, k + 1)? } else { None };

@@ -144,7 +144,7 @@ fn model_phi_series(m: u64, s: &Ball, wp: u32) -> Result<Ball> {
         if n > 100_000_000 {
             return Err(Error::NoConvergence { function: "1F2 model family", terms: n as u64 });
         }
-        if n % 256 == 0 {
+        if n as u64 % crate::budget::TERMS_BETWEEN_CHECKS == 0 {
             // the installed time budget (crate::budget): at large s the terms grow
             // until n ~ sqrt(s) at a precision covering their cancellation (the wave
             // series at x = 2.8e32010 spent 17 s in its first family, issue 37's scan)

@@ -120,11 +120,17 @@ impl Sim {
 /// `x` in f64 for the cost model, a non-zero `x` below the f64 range kept
 /// non-zero (`2F1(4e-8201, 1; 1e-191; w)` is not the terminating `2F1(0, ...)`:
 /// read as 0, the simulation chose the direct series at `w = 1 - 2^-71`, which
-/// ran its 5 million terms).
+/// ran its 5 million terms), and one above it kept finite (`c = 3.4e29217` read
+/// as infinite made the ratio of `2F1(a, c-b; c; w)` `inf/inf`: the simulation
+/// failed and the plan took a connection formula whose series in `1/(1-z)`
+/// needs `c` terms, refused as TooExpensive where Pfaff's series ends after one).
 fn est(x: &Float) -> f64 {
     let v = x.to_f64();
+    let sign = if x.is_sign_negative() { -1.0 } else { 1.0 };
     if v == 0.0 && !x.is_zero() {
-        f64::MIN_POSITIVE.copysign(if x.is_sign_negative() { -1.0 } else { 1.0 })
+        f64::MIN_POSITIVE.copysign(sign)
+    } else if v.is_infinite() && x.is_finite() {
+        f64::MAX.copysign(sign)
     } else {
         v
     }
@@ -160,11 +166,14 @@ pub(super) fn simulate(p: [f64; 2], q: [f64; 2], x: f64, bits: f64, cap: u64) ->
             break;
         }
         let nf = n as f64;
-        let den = (q[0] + nf) * (q[1] + nf);
-        if den == 0.0 {
+        if (q[0] + nf) * (q[1] + nf) == 0.0 {
             return None;
         }
-        let r = (p[0] + nf) * (p[1] + nf) / den * x;
+        // as two quotients, in the pairing that stays finite (parameters near
+        // f64::MAX: `c - b` over `c`)
+        let pair = |i: usize| (p[i] + nf) / (q[0] + nf) * ((p[1 - i] + nf) / (q[1] + nf));
+        let r1 = pair(0);
+        let r = if r1.is_finite() { r1 } else { pair(1) } * x;
         t *= r;
         n += 1;
         if !t.is_finite() {
@@ -293,13 +302,16 @@ pub(super) fn small_z_choice(af: f64, bf: f64, cf: f64, caf: f64, cbf: f64, zf: 
         cands.push((Algorithm::PfaffSwapped, [caf, bf], w, PREFACTOR_COST_TERMS, -bf * l1z));
     }
     let sims: Vec<Option<Sim>> = cands.iter().map(|c| simulate(c.1, [cf, 1.0], c.2, bits, SIM_CAP)).collect();
-    // All candidates sum the same f: take log2|f| from the run with the least
-    // cancellation (an f64 sum says nothing once ~50 bits cancel), then charge every
-    // candidate log2(sum |t| * prefactor / |f|).
+    // All candidates sum the same f: take log2|f| from the converged run with the
+    // least cancellation (an f64 sum says nothing once ~50 bits cancel), then charge
+    // every candidate log2(sum |t| * prefactor / |f|). A run cut at the cap gives
+    // only a partial sum: `2F1(24.1, -34.875; 1000001; 1/2)`'s Euler series (terms
+    // growing to `n ~ 5e5`, prefactor `2^-1000012`) read as log2|f| = -65 000 made
+    // the two-term direct series plan 65 560 guard bits (issue 37's scan).
     let mut log2_f = f64::NAN;
     let mut least = f64::INFINITY;
     for (c, sim) in cands.iter().zip(&sims) {
-        if let Some(sim) = sim {
+        if let Some(sim) = sim.as_ref().filter(|s| s.converged) {
             if sim.log2_val.is_finite() && sim.lost() < least {
                 least = sim.lost();
                 log2_f = sim.log2_val + c.4;

@@ -375,8 +375,7 @@ fn series_pair(alpha: &Ball, big: &Ball, gamma: &Ball, euler: (Ball, Ball), one_
         // a base longer than the working precision (`1 - u` at `u = 1/(1 - z)`,
         // `z = -1.7e30833`: about 10^5 bits) is rounded into its ball first: `ln` at
         // its own length took 0.4 s (issue 37's scan), for the same enclosure at `wp`
-        let base = if one_minus_u.prec() > wp { one_minus_u.set_prec(wp) } else { one_minus_u.clone() };
-        let pre = base.pow(one_minus_c)?;
+        let pre = one_minus_u.at_most_prec(wp).pow(one_minus_c)?;
         return Ok(pre.mul(&series_zoned(&ga, &alt, gamma, u, wp)?));
     }
     series_zoned(alpha, big, gamma, u, wp)
@@ -407,6 +406,9 @@ pub(crate) fn hyp2f1_large_param(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32
         let omu = z.neg().mul(&u);
         let e1 = (b.neg().add_i64(1), a.sub(&c).add_i64(1));
         let e2 = (b.sub(&c).add_i64(1), a.neg().add_i64(1));
+        // the powers at `wp` bits (`1 - z` of a decimal tightened to 54 000 bits:
+        // `ln` and `exp` at that length, issue 37's scan)
+        let omz = omz.at_most_prec(wp);
         let t1 = g1.mul(&omz.pow(&a.neg())?).mul(&series_pair(&a, &cb, &ab.add_i64(1), e1, &omc, &u, &omu, wp)?);
         let t2 = g2.mul(&omz.pow(&b.neg())?).mul(&series_pair(&ca, &b, &ba.add_i64(1), e2, &omc, &u, &omu, wp)?);
         return Ok(t1.add(&t2));
@@ -420,7 +422,7 @@ pub(crate) fn hyp2f1_large_param(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32
         let e3 = (b.sub(&c).add_i64(1), a.sub(&c).add_i64(1));
         let e4 = (b.neg().add_i64(1), a.neg().add_i64(1));
         let t1 = g3.mul(&series_pair(&a, &b, &neg_s.add_i64(1), e3, &omc, &u, &z, wp)?);
-        let t2 = g4.mul(&u.pow(&s)?).mul(&series_pair(&ca, &cb, &s.add_i64(1), e4, &omc, &u, &z, wp)?);
+        let t2 = g4.mul(&u.at_most_prec(wp).pow(&s)?).mul(&series_pair(&ca, &cb, &s.add_i64(1), e4, &omc, &u, &z, wp)?);
         return Ok(t1.add(&t2));
     }
     Err(Error::precondition("large-parameter 2F1 route needs z < 0 or 0 < z < 1"))

@@ -200,7 +200,7 @@ pub(super) fn log_series(aa: &Float, bb: &Float, m: u64, u: &Ball, wp: u32) -> R
         if n > MAX_SERIES_TERMS {
             return Err(Error::NoConvergence { function: "hyp2f1 (logarithmic series)", terms: n });
         }
-        if n % 64 == 0 {
+        if n % crate::budget::TERMS_BETWEEN_CHECKS == 0 {
             // the installed time budget (crate::budget): with c = 2e32632 the terms
             // grew for 13 s before the sum overflowed (issue 37's scan)
             crate::budget::check_elapsed("2F1 logarithmic series, term by term", 0.0, crate::error::Reached::Terms { count: n })?;

@@ -177,6 +177,13 @@ fn too_expensive(terms: u64, per_term: f64, limit: f64) -> Error {
 pub(crate) fn series_2f1(a: &Float, b: &Float, c: &Float, z: &Ball, wp: u32) -> Result<Ball> {
     let wp = wp.max(MIN_SERIES_PREC);
     let deg = terminating_degree(a, b);
+    // `z` rounded into its ball at `wp` bits: every term multiplies by its
+    // midpoint, and a decimal `z` tightened to 54 000 bits cost that length a
+    // term (the radius is carried by the perturbation bound below); kept as
+    // given when the rounded ball would reach `|z| = 1` (`w = 1 - 10^-6020`
+    // after Pfaff: the series' own refusal then names its term count)
+    let rounded = z.at_most_prec(wp);
+    let z = if deg.is_some() || (rounded.upper() < 1 && rounded.lower() > -1) { &rounded } else { z };
     if let Some(m) = nonpos_degree(c) {
         if deg.map_or(true, |d| d > m) {
             return Err(pole_error(c));
@@ -304,7 +311,7 @@ pub(crate) fn series_2f1(a: &Float, b: &Float, c: &Float, z: &Ball, wp: u32) -> 
         if n > MAX_SERIES_TERMS {
             return Err(Error::NoConvergence { function: "hyp2f1", terms: n });
         }
-        if n % 64 == 0 {
+        if n % crate::budget::TERMS_BETWEEN_CHECKS == 0 {
             // the installed time budget (crate::budget): the term count above is a
             // lower bound of the work, not its length (2F1(24.1, -34.875; 1000001; 0.5)
             // planned 65 560 guard bits and summed 5000 terms at 65 742 bits: 2 s)
@@ -361,6 +368,10 @@ pub(super) fn pow_exact_exponent(base: &Ball, e: &Float, wp: u32) -> Result<Ball
     // holds about 98 000 bits) is rounded into its ball first: `ln` at the
     // base's own length took 0.5 s (issue 37's scan), and the answer is the
     // same enclosure at `wp` bits.
-    let base = if base.mid().prec() > wp { base.set_prec(wp) } else { base.clone() };
-    base.pow(&xball(e, wp))
+    let base = base.at_most_prec(wp);
+    // Likewise the exponent (`c - a - b` exact at `a = -1e-23409` holds 78 000
+    // bits, and `exp` ran at 175 060 bits: 0.1 s a call, issue 37's scan): `ln`
+    // of the base carries a relative error of `2^-wp` already, so `e` rounded to
+    // `wp` bits widens `e ln(base)` by as much again, which the Ziv loop sees.
+    base.pow(&Ball::from_float(e, wp.max(2)))
 }
