@@ -31,6 +31,12 @@ mod profile;
 mod simulate;
 mod sweep;
 
+/// The fuzz targets' reproducible inputs (`eval::fuzz`), shared with the library's
+/// and the solver's targets.
+#[cfg(test)]
+#[path = "../../tests/it/common/fuzz_inputs.rs"]
+mod fuzz_inputs;
+
 use clap::{Parser, Subcommand};
 
 #[derive(Parser)]

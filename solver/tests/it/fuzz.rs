@@ -1,5 +1,6 @@
 //! No public entry point of the solver panics, on any input: fuzzing on the
-//! stable toolchain with bolero's random engine (issue 26, item 5; the
+//! stable toolchain with bolero's structured generators, driven by a seeded byte
+//! stream (`tests/it/common/fuzz_inputs.rs`; issue 26, item 5; the
 //! library's targets are in the workspace's `tests/it/fuzz.rs`, this file follows
 //! their style).
 //!
@@ -11,9 +12,9 @@
 //! run at the smallest grids (64 and 128 cells) and 2-4 steps per leg, so each
 //! input is cheap; the validation paths see every size.
 //!
-//! `cargo test` runs each target for bolero's default of 1 s (about 200
-//! simulation inputs, 300 000 building-block inputs). A campaign, with a time
-//! per target (or `BOLERO_RANDOM_ITERATIONS` for a count):
+//! `./dev test` runs 250 inputs a target (`--long`: 1000, the same 250 first),
+//! the same inputs on every run. A campaign, with a time per target (or
+//! `BOLERO_RANDOM_ITERATIONS` for a count):
 //!
 //! ```text
 //! BOLERO_RANDOM_TEST_TIME_MS=600000 cargo test --features maugis/gmp-no-check -p maugis-solver --test it fuzz:: -- --nocapture
@@ -31,8 +32,10 @@
 
 #[path = "../../../tests/it/common/fuzz_real.rs"]
 mod fuzz_real;
+#[path = "../../../tests/it/common/fuzz_inputs.rs"]
+mod fuzz_inputs;
 
-use bolero::check;
+use fuzz_inputs::check;
 use maugis_solver::contact::State;
 use maugis_solver::elastic::HalfPlane;
 use maugis_solver::grid::Grid;
@@ -122,13 +125,13 @@ fn finite_state(s: &State) -> bool {
 
 #[test]
 fn profile_table_from_text() {
-    check!().for_each(|bytes| {
+    check().for_each(|bytes| {
         let text = String::from_utf8_lossy(bytes);
         if let Ok(t) = ProfileTable::parse(&text) {
             assert!(t.x().iter().chain(t.h()).all(|v| v.is_finite()), "{text:?}");
         }
     });
-    check!().with_type::<(Vec<u64>, u64, [u64; 3])>().for_each(|(rows, span, probes)| {
+    check().with_type::<(Vec<u64>, u64, [u64; 3])>().for_each(|(rows, span, probes)| {
         let text = table_text(rows, real(*span).abs());
         if let Ok(t) = ProfileTable::parse(&text) {
             for &p in probes {
@@ -143,7 +146,7 @@ fn profile_table_from_text() {
 
 #[test]
 fn building_blocks() {
-    check!().with_type::<[u64; 5]>().for_each(|bits| {
+    check().with_type::<[u64; 5]>().for_each(|bits| {
         let cells = size(bits[0], &CELLS);
         let half_width = real(bits[1]);
         if let Ok(g) = Grid::new(cells, half_width) {
@@ -174,7 +177,7 @@ fn building_blocks() {
 #[test]
 fn simulation_spec_and_options() {
     let simulated = std::sync::atomic::AtomicUsize::new(0);
-    check!().with_type::<([u64; 8], Vec<u64>)>().for_each(|(bits, rows)| {
+    check().with_type::<([u64; 8], Vec<u64>)>().for_each(|(bits, rows)| {
         // small grids and a few steps simulate cheaply; other sizes exercise validation
         let cells = if bits[4] % 4 == 0 { size(bits[4] >> 2, &CELLS) } else { SMALL_CELLS[(bits[4] >> 2) as usize % 2] };
         let steps = if bits[5] % 4 == 0 { size(bits[5] >> 2, &STEPS) } else { 2 + (bits[5] >> 2) as usize % 3 };
