@@ -85,6 +85,15 @@ pub enum SolverError {
         /// Under displacement control.
         displacement_control: bool,
     },
+    /// The model's closed cycle does not close
+    /// ([`maugis::contact::paths::ControlPaths::reloading_truncated`]): its W
+    /// is not measured.
+    ModelCycleOpen {
+        /// Under load control.
+        load_control: bool,
+        /// Under displacement control.
+        displacement_control: bool,
+    },
     /// A shard `shard/of` that does not exist (1-based, `1 <= shard <= of`).
     BadShard {
         /// The shard asked for.
@@ -290,11 +299,12 @@ impl fmt::Display for SolverError {
             SolverError::CycleOpen { load_control, displacement_control } => write!(
                 f,
                 "the closed cycle does not close (reloading stops at a maximum with no later state at its level) under {}: raise amax or the steps per leg",
-                match (load_control, displacement_control) {
-                    (true, true) => "load and displacement control",
-                    (true, false) => "load control",
-                    _ => "displacement control",
-                }
+                controls(*load_control, *displacement_control)
+            ),
+            SolverError::ModelCycleOpen { load_control, displacement_control } => write!(
+                f,
+                "the model's closed cycle does not close (reloading stops at a maximum with no later curve point at its level) under {}: its W is not measured; change amax or the model's curve points",
+                controls(*load_control, *displacement_control)
             ),
             SolverError::BadShard { shard, of } => write!(f, "shard must be s/n with 1 <= s <= n (got {shard}/{of})"),
             SolverError::Merge { fault } => write!(f, "cannot merge the shards: {fault}"),
@@ -362,5 +372,14 @@ pub(crate) fn count_in_range(n: usize, arg: &'static str, min: usize, max: usize
         Ok(n)
     } else {
         Err(SolverError::CountOutOfRange { arg, value: n, min, max })
+    }
+}
+
+/// The controls named by a pair of flags (load, displacement).
+fn controls(load_control: bool, displacement_control: bool) -> &'static str {
+    match (load_control, displacement_control) {
+        (true, true) => "load and displacement control",
+        (true, false) => "load control",
+        _ => "displacement control",
     }
 }

@@ -366,6 +366,11 @@ pub fn with_model(spec: &ScalesSpec, mut cycle: ScaleCycle) -> ScaleCycle {
 /// The model's W, W_d and validity on `params`' profile.
 fn model_cycle(params: Params, spec: &ScalesSpec, beta_min: f64) -> Result<ModelCycle> {
     let c = load_area_curve(params, CurveOptions { amax: spec.amax, points: model_points(spec, beta_min), ..CurveOptions::default() })?;
+    // A cycle that does not close has no W (its zero is no measurement).
+    let (load_open, disp_open) = (c.load_control.reloading_truncated, c.displacement_control.reloading_truncated);
+    if load_open || disp_open {
+        return Err(SolverError::ModelCycleOpen { load_control: load_open, displacement_control: disp_open });
+    }
     let closed_valid = |p: &maugis::contact::paths::ControlPaths| {
         p.reloading.iter().chain(&p.unloading).chain(&p.cycle_unloading).all(|n| n.valid) && p.dissipation.invalid == 0.0
     };

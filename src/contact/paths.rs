@@ -202,6 +202,14 @@ pub struct ControlPaths {
     /// control value, and this is its unloading path (from that state).
     #[cfg_attr(feature = "serde", serde(default))]
     pub cycle_unloading: Vec<PathNode>,
+    /// The closed cycle does not close: reloading from the end of unloading
+    /// stops at a maximum with no later grid state at its level, both up to the
+    /// largest contact and up to the grid's largest control value. There is then
+    /// no cycle: `loops` is empty and `dissipation` is zero because nothing was
+    /// measured, not because the contact dissipates nothing (more curve points
+    /// or another `amax` may close it).
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub reloading_truncated: bool,
     /// The hysteresis loops, by increasing control variable.
     pub loops: Vec<HysteresisLoop>,
     /// Their dissipation.
@@ -444,6 +452,7 @@ pub fn control_paths(params: Params, pts: &[CurvePoint], control: Driver) -> Res
         reloading,
         reloading_jumps,
         cycle_unloading,
+        reloading_truncated,
         loops,
         dissipation,
     })

@@ -343,6 +343,7 @@ fn a_cycle_whose_largest_contact_is_on_a_falling_branch_still_closes() {
     assert!(last.load < top, "the grid ends on a falling branch ({} < {top})", last.load);
     for cp in [&curve.load_control, &curve.displacement_control] {
         assert!(!cp.cycle_unloading.is_empty(), "{:?}: the cycle is re-based", cp.control);
+        assert!(!cp.reloading_truncated, "{:?}: the re-based cycle closes", cp.control);
         assert!(cp.dissipation.total > 0.0 && !cp.loops.is_empty(), "{:?}: W = {}", cp.control, cp.dissipation.total);
         // the cycle's two paths start and end at the same states
         let (u, r) = (&cp.cycle_unloading, &cp.reloading);
@@ -353,4 +354,24 @@ fn a_cycle_whose_largest_contact_is_on_a_falling_branch_still_closes() {
     assert!(curve.load_control.loops.iter().all(|l| l.dissipation > 0.0));
     let one = maugis::contact::curve::load_area_curve(maugis::contact::model::Params::new(3.0, 2.0 * std::f64::consts::SQRT_2 / 8.0, 9.0 / 8.0).unwrap(), Default::default()).unwrap();
     assert!(one.load_control.cycle_unloading.is_empty() && one.displacement_control.cycle_unloading.is_empty());
+}
+
+/// A closed cycle that does not close says so (`reloading_truncated`) instead
+/// of reporting W = 0 as a measurement: the 6-scale Weierstrass profile at
+/// lambda = 3 and 2730 points (docs/multiscale.md, "Noticed along the way":
+/// its reloading stops at a maximum both below the largest contact and below
+/// the grid's largest load). With 600 points the same profile's cycle closes.
+#[test]
+fn a_cycle_that_does_not_close_says_so() {
+    use maugis::contact::profile::WavyProfile;
+    let profile = WavyProfile::weierstrass(2.0 * std::f64::consts::SQRT_2 / 8.0, 9.0 / 8.0, 6, 2.0, 0.5).unwrap();
+    let params = maugis::contact::model::Params::with_profile(3.0, profile).unwrap();
+    let curve = |points: usize| maugis::contact::curve::load_area_curve(params, maugis::contact::curve::CurveOptions { amax: 6.0, points, ..Default::default() }).unwrap();
+    let open = curve(2730);
+    for cp in [&open.load_control, &open.displacement_control] {
+        assert!(cp.reloading_truncated, "{:?}: the cycle does not close", cp.control);
+        assert!(cp.loops.is_empty() && cp.dissipation.total == 0.0, "{:?}: no loops are measured on an open cycle", cp.control);
+    }
+    let closed = curve(600);
+    assert!(!closed.load_control.reloading_truncated && closed.load_control.dissipation.total > 0.0);
 }
