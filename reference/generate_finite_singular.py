@@ -50,6 +50,12 @@ INTEGRALS = [
      lambda: +mp.pi, lambda: mpmath.quad(lambda x: 1 / mpmath.sqrt(x * (1 - x)), [0, 0.5, 1])),
     ("sinc_mid", "int_0^1 sin(x-1/2)/(x-1/2) dx = 2 Si(1/2) (removable point inside)", "sin(x-0.5)/(x-0.5)", "0", "1",
      lambda: 2 * mpmath.si(mpf(1) / 2), lambda: mpmath.quad(lambda x: mpmath.sinc(x - mpf(1) / 2), [0, 0.5, 1])),
+    # removable points that need the local classes of 1 - e^g and 1 - cos g, and a
+    # quotient by a square (issue 40 follow-up)
+    ("one_minus_expm_over_x", "int_0^1 (1-exp(-x))/x dx = Ein(1) = gamma + E1(1)", "(1-exp(-x))/x", "0", "1",
+     lambda: mp.euler + mpmath.e1(1), lambda: mpmath.quad(lambda x: -mpmath.expm1(-x) / x, [0, 1])),
+    ("one_minus_cos_over_x2", "int_0^1 (1-cos(x))/x^2 dx = Si(1) + cos(1) - 1", "(1-cos(x))/x^2", "0", "1",
+     lambda: mpmath.si(1) + mpmath.cos(1) - 1, lambda: mpmath.quad(lambda x: 2 * mpmath.sin(x / 2) ** 2 / x ** 2, [0, 1])),
     # issue 40's table: a narrow peak on a long range (refused at 2 bits before), and a
     # shifted Lorentzian to infinity (a radius of 125 at 8 to 53 bits with a declared decay)
     ("lorentz_narrow", "int_1^10000 1/((x-5)^2+0.01) dx = 10 (atan(99950) + atan(40))", "1/((x-5)^2+0.01)", "1", "10000",

@@ -24,6 +24,12 @@
 //!   integrator's holomorphic mode is finite only where `N` is holomorphic (its
 //!   branch cuts give non-finite balls), so that evaluation is the check. At `z = p`
 //!   the formula gives `N'(p)/c1`, the value of the extension.
+//! * **`U^k`** (`k <= 4`, `(1 - cos x)/x^2`). The class `q >= 0` of `f = N/U^k` at `p`
+//!   shows `N = O(t^k)`, so `N` (holomorphic at `p`) and its first `k - 1` derivatives
+//!   vanish there, and Taylor's formula with integral remainder gives `f(z) = (c1^k
+//!   (k-1)!)^-1 int_0^1 (1 - s)^{k-1} N^(k)(p + s (z - p)) ds`: a weighted mean (the
+//!   weight's integral is `1/k`) of `N^(k)` on `H`, so `f(z)` lies in the ball of
+//!   `N^(k)(H)` times `1/(c1^k k!)`.
 //! * **Which form.** Where `U(B)` excludes 0 the quotient `N(B) / U(B)` is used as it
 //!   is; where it contains 0 (next to `p`) the enclosure above. Both enclose `f` on
 //!   `B`, so the integrator's ellipse bound holds with either.
@@ -41,8 +47,10 @@ use crate::quad::certified::HoloBall;
 pub(crate) struct Removable {
     num: Expr,
     den: Expr,
+    /// `N^(k)`, `k` the power of `U` in the denominator.
     slope: Expr,
-    c1: Rational,
+    /// `1 / (c1^k k!)`.
+    scale: Rational,
     p: Rational,
 }
 
@@ -66,7 +74,7 @@ impl Removable {
         if !self.num.eval(&h).is_finite() {
             return z.constant(CBall::indeterminate(prec));
         }
-        let recip = Decimal::from_rational(Rational::from(1) / &self.c1);
+        let recip = Decimal::from_rational(self.scale.clone());
         &self.slope.eval(&h) * &h.decimal(&recip)
     }
 }
@@ -84,7 +92,12 @@ fn union(a: &Ball, b: &Ball) -> Ball {
 /// local class at `p` proves `N(p) = 0` (method block). `None` otherwise.
 pub(crate) fn removable_point(f: &Expr, lo: &Rational, hi: &Rational) -> Option<Removable> {
     let Expr::Div(num, den) = f else { return None };
-    let (c0, c1) = affine(den)?;
+    // U or U^k (1 <= k <= 4)
+    let (base, k) = match &**den {
+        Expr::PowInt(b, k) if (1..=4).contains(k) => (&**b, *k as u32),
+        other => (other, 1),
+    };
+    let (c0, c1) = affine(base)?;
     if c1 == 0 {
         return None;
     }
@@ -103,8 +116,16 @@ pub(crate) fn removable_point(f: &Expr, lo: &Rational, hi: &Rational) -> Option<
     if class.power < 0 {
         return None;
     }
-    let slope = derivative(num)?;
-    Some(Removable { num: (**num).clone(), den: (**den).clone(), slope, c1, p })
+    if class.power < 0 {
+        return None;
+    }
+    let mut slope = (**num).clone();
+    for _ in 0..k {
+        slope = derivative(&slope)?;
+    }
+    let fact: u32 = (1..=k).product();
+    let scale = Rational::from(1) / (Rational::from(rug::ops::Pow::pow(&c1, k)) * fact);
+    Some(Removable { num: (**num).clone(), den: (**den).clone(), slope, scale, p })
 }
 
 fn number(q: i64) -> Expr {
