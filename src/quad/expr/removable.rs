@@ -30,6 +30,24 @@
 //!   (k-1)!)^-1 int_0^1 (1 - s)^{k-1} N^(k)(p + s (z - p)) ds`: a weighted mean (the
 //!   weight's integral is `1/k`) of `N^(k)` on `H`, so `f(z)` lies in the ball of
 //!   `N^(k)(H)` times `1/(c1^k k!)`.
+//! * **Cancellation of higher order, proven exactly.** The local class sees one order of
+//!   cancellation per rule (`e^g - 1 = O(g)`), not two: for `(e^x - 1 - x)/x^2` it finds
+//!   `N = O(t)` and the class `q = -1`, which proves nothing. When the class does not
+//!   give `q >= 0`, the vanishing of `N, N', ..., N^(k-1)` at `p` is checked instead by
+//!   evaluating their trees at the rational `p` in exact rational arithmetic
+//!   ([`exact_at`]): `x` is `p`, the literals are the rationals they denote (a decimal is
+//!   held exactly), `+ - * /` and integer powers are exact (a division by 0 gives no
+//!   value), and a function gives a value only at an argument where it is a known
+//!   rational: `exp(0) = cos(0) = cosh(0) = sech(0) = J_0(0) = 1`, `sin(0) = tan(0) =
+//!   sinh(0) = tanh(0) = atan(0) = J_n(0) = 0` (`n >= 1`), `log(1) = 0`; anything else
+//!   (`pi`, `sqrt`, a general power, another argument) gives no value and the rule does
+//!   not apply. Each value is then the exact value of `N^(j)(p)`, so `N^(j)(p) = 0` for
+//!   `j < k` is a proof, and Taylor's formula above applies with `N` holomorphic on `H`
+//!   (checked by the evaluation on `H`, as before). `(e^x - 1 - x)/x^2` (`N(0) = e^0 - 1
+//!   = 0`, `N'(0) = e^0 - 1 = 0`, enclosure `e^H / 2`) and `(cos x - 1 + x^2/2)/x^4`
+//!   (`N^(j)(0) = 0` for `j <= 3`, enclosure `cos(H)/24`) are found so; `(e^x - 1)/x^2`
+//!   (`N'(0) = 1`) is not, and stays a pole (`NotIntegrable` naming the point, from
+//!   its local class `q = -1`).
 //! * **Which form.** Where `U(B)` excludes 0 the quotient `N(B) / U(B)` is used as it
 //!   is; where it contains 0 (next to `p`) the enclosure above. Both enclose `f` on
 //!   `B`, so the integrator's ellipse bound holds with either.
@@ -112,20 +130,64 @@ pub(crate) fn removable_point(f: &Expr, lo: &Rational, hi: &Rational) -> Option<
     }
     let sigma = if p < *hi { 1 } else { -1 };
     let delta = Rational::from((1, 1024));
-    let class = local_class(f, &p, sigma, &delta)?;
-    if class.power < 0 {
-        return None;
-    }
-    if class.power < 0 {
-        return None;
-    }
+    // N(p) = ... = N^(k-1)(p) = 0: by the local class (q >= 0), or exactly (method block)
+    let bounded = local_class(f, &p, sigma, &delta).is_some_and(|c| c.power >= 0);
     let mut slope = (**num).clone();
     for _ in 0..k {
+        if !bounded && exact_at(&slope, &p).is_none_or(|v| v != 0) {
+            return None;
+        }
         slope = derivative(&slope)?;
     }
     let fact: u32 = (1..=k).product();
     let scale = Rational::from(1) / (Rational::from(rug::ops::Pow::pow(&c1, k)) * fact);
     Some(Removable { num: (**num).clone(), den: (**den).clone(), slope, scale, p })
+}
+
+/// The exact value of `e` at `x = p`, when rational arithmetic and the functions' known
+/// rational values (`exp(0) = 1`, `sin(0) = 0`, `log(1) = 0`, ...) give it; `None`
+/// otherwise, and at a division by 0 (method block).
+pub(crate) fn exact_at(e: &Expr, p: &Rational) -> Option<Rational> {
+    let v = |a: &Expr| exact_at(a, p);
+    Some(match e {
+        Expr::X => p.clone(),
+        Expr::Number(d) => d.as_rational().clone(),
+        Expr::Pi | Expr::Pow(..) => return None,
+        Expr::Neg(a) => -v(a)?,
+        Expr::Add(a, b) => v(a)? + v(b)?,
+        Expr::Sub(a, b) => v(a)? - v(b)?,
+        Expr::Mul(a, b) => v(a)? * v(b)?,
+        Expr::Div(a, b) => {
+            let d = v(b)?;
+            if d == 0 {
+                return None;
+            }
+            v(a)? / d
+        }
+        Expr::PowInt(a, n) => {
+            let b = v(a)?;
+            if (*n < 0 && b == 0) || n.unsigned_abs() > 64 {
+                return None;
+            }
+            let m = rug::ops::Pow::pow(b, n.unsigned_abs() as u32);
+            if *n < 0 { m.recip() } else { m }
+        }
+        Expr::Call(f, a) => {
+            let u = v(a)?;
+            match f {
+                Function::Log if u == 1 => Rational::new(),
+                Function::Exp | Function::Cos | Function::Cosh | Function::Sech if u == 0 => Rational::from(1),
+                Function::Sin | Function::Tan | Function::Sinh | Function::Tanh | Function::Atan if u == 0 => Rational::new(),
+                _ => return None,
+            }
+        }
+        Expr::BesselJ(n, a) => {
+            if v(a)? != 0 {
+                return None;
+            }
+            Rational::from(i32::from(*n == 0))
+        }
+    })
 }
 
 fn number(q: i64) -> Expr {
@@ -160,6 +222,9 @@ pub(crate) fn derivative(e: &Expr) -> Option<Expr> {
             bx(Expr::Sub(bx(mul(d(a)?, (**b).clone())), bx(mul((**a).clone(), d(b)?)))),
             bx(Expr::PowInt(b.clone(), 2)),
         ),
+        // a^0 = 1 and a^1 = a, so that no a^-1 (a pole where a = 0) enters the derivative
+        Expr::PowInt(_, 0) => number(0),
+        Expr::PowInt(a, 1) => d(a)?,
         Expr::PowInt(a, n) => mul(mul(number(*n), Expr::PowInt(a.clone(), n - 1)), d(a)?),
         Expr::Pow(a, b) if !b.depends_on_x() => {
             let b_minus_one = match const_rational(b) {
@@ -240,6 +305,12 @@ mod tests {
             ("1/x", false),
             ("log(x)/x", false),
             ("sin(x)/(x-3)", false),
+            ("(exp(x)-1-x)/x^2", true),
+            ("(cos(x)-1+x^2/2)/x^4", true),
+            ("(exp(x)-1)/x^2", false),
+            ("(exp(x)-1-x)/x^3", false),
+            ("(exp(x-1)-x)/(x-1)^2", true),
+            ("sin(x)/x^2", false),
         ] {
             let e = Expr::parse(text).unwrap().canonical();
             assert_eq!(removable_point(&e, &q("-1"), &q("1")).is_some(), found, "{text}");
