@@ -34,15 +34,18 @@
 //!   cancellation per rule (`e^g - 1 = O(g)`), not two: for `(e^x - 1 - x)/x^2` it finds
 //!   `N = O(t)` and the class `q = -1`, which proves nothing. When the class does not
 //!   give `q >= 0`, the vanishing of `N, N', ..., N^(k-1)` at `p` is checked instead by
-//!   evaluating their trees at the rational `p` in exact rational arithmetic
-//!   ([`exact_at`]): `x` is `p`, the literals are the rationals they denote (a decimal is
-//!   held exactly), `+ - * /` and integer powers are exact (a division by 0 gives no
-//!   value), and a function gives a value only at an argument where it is a known
-//!   rational: `exp(0) = cos(0) = cosh(0) = sech(0) = J_0(0) = 1`, `sin(0) = tan(0) =
-//!   sinh(0) = tanh(0) = atan(0) = J_n(0) = 0` (`n >= 1`), `log(1) = 0`; anything else
-//!   (`pi`, `sqrt`, a general power, another argument) gives no value and the rule does
-//!   not apply. Each value is then the exact value of `N^(j)(p)`, so `N^(j)(p) = 0` for
-//!   `j < k` is a proof, and Taylor's formula above applies with `N` holomorphic on `H`
+//!   evaluating their trees at the rational `p` exactly ([`exact_at`]), in the ring
+//!   `Q[pi]` of polynomials in `pi` with rational coefficients: `x` is `p`, the literals
+//!   are the rationals they denote (a decimal is held exactly), `pi` is `pi`, `+ - *`
+//!   and integer powers are exact, a division only by a nonzero rational; a function
+//!   gives a value only at a rational argument where its value is a known rational:
+//!   `exp(0) = cos(0) = cosh(0) = sech(0) = J_0(0) = 1`, `sin(0) = tan(0) = sinh(0) =
+//!   tanh(0) = atan(0) = J_n(0) = 0` (`n != 0`), `log(1) = 0`; anything else (`sqrt`, a
+//!   general power, another argument) gives no value and the rule does not apply. As
+//!   `pi` is transcendental (Lindemann), an element of `Q[pi]` is 0 exactly when all its
+//!   coefficients are. Each value is then the exact value of `N^(j)(p)`, so `N^(j)(p) =
+//!   0` for `j < k` is a proof (`(sin(pi x) - pi x)/x^3`: `N'(0) = pi cos 0 - pi = 0`),
+//!   and Taylor's formula above applies with `N` holomorphic on `H`
 //!   (checked by the evaluation on `H`, as before). `(e^x - 1 - x)/x^2` (`N(0) = e^0 - 1
 //!   = 0`, `N'(0) = e^0 - 1 = 0`, enclosure `e^H / 2`) and `(cos x - 1 + x^2/2)/x^4`
 //!   (`N^(j)(0) = 0` for `j <= 3`, enclosure `cos(H)/24`) are found so; `(e^x - 1)/x^2`
@@ -134,7 +137,7 @@ pub(crate) fn removable_point(f: &Expr, lo: &Rational, hi: &Rational) -> Option<
     let bounded = local_class(f, &p, sigma, &delta).is_some_and(|c| c.power >= 0);
     let mut slope = (**num).clone();
     for _ in 0..k {
-        if !bounded && exact_at(&slope, &p).is_none_or(|v| v != 0) {
+        if !bounded && !exact_at(&slope, &p).is_some_and(|v| v.is_zero()) {
             return None;
         }
         slope = derivative(&slope)?;
@@ -144,48 +147,109 @@ pub(crate) fn removable_point(f: &Expr, lo: &Rational, hi: &Rational) -> Option<
     Some(Removable { num: (**num).clone(), den: (**den).clone(), slope, scale, p })
 }
 
-/// The exact value of `e` at `x = p`, when rational arithmetic and the functions' known
-/// rational values (`exp(0) = 1`, `sin(0) = 0`, `log(1) = 0`, ...) give it; `None`
-/// otherwise, and at a division by 0 (method block).
-pub(crate) fn exact_at(e: &Expr, p: &Rational) -> Option<Rational> {
+/// A polynomial in `pi` with rational coefficients (index = power of `pi`), no
+/// trailing zeros: since `pi` is transcendental (Lindemann), it is 0 exactly when it
+/// has no coefficients, and a rational exactly when it has at most one.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct PiPoly(Vec<Rational>);
+
+impl PiPoly {
+    fn trimmed(mut c: Vec<Rational>) -> PiPoly {
+        while c.last().is_some_and(|x| *x == 0) {
+            c.pop();
+        }
+        PiPoly(c)
+    }
+
+    fn rational(q: Rational) -> PiPoly {
+        PiPoly::trimmed(vec![q])
+    }
+
+    /// Whether the value is 0.
+    pub(crate) fn is_zero(&self) -> bool {
+        self.0.is_empty()
+    }
+
+    /// The value when it is rational.
+    fn as_rational(&self) -> Option<Rational> {
+        match self.0.len() {
+            0 => Some(Rational::new()),
+            1 => Some(self.0[0].clone()),
+            _ => None,
+        }
+    }
+
+    fn add(&self, o: &PiPoly, sign: i32) -> PiPoly {
+        let n = self.0.len().max(o.0.len());
+        let at = |v: &Vec<Rational>, i: usize| v.get(i).cloned().unwrap_or_default();
+        PiPoly::trimmed((0..n).map(|i| at(&self.0, i) + at(&o.0, i) * sign).collect())
+    }
+
+    fn mul(&self, o: &PiPoly) -> PiPoly {
+        if self.is_zero() || o.is_zero() {
+            return PiPoly(Vec::new());
+        }
+        let mut c = vec![Rational::new(); self.0.len() + o.0.len() - 1];
+        for (i, a) in self.0.iter().enumerate() {
+            for (j, b) in o.0.iter().enumerate() {
+                c[i + j] += Rational::from(a * b);
+            }
+        }
+        PiPoly::trimmed(c)
+    }
+}
+
+/// The exact value of `e` at `x = p`, a polynomial in `pi` with rational coefficients,
+/// when exact arithmetic and the functions' known rational values (`exp(0) = 1`,
+/// `sin(0) = 0`, `log(1) = 0`, ...) give it; `None` otherwise, at a division by 0 and
+/// at a division by a non-rational value (method block).
+pub(crate) fn exact_at(e: &Expr, p: &Rational) -> Option<PiPoly> {
     let v = |a: &Expr| exact_at(a, p);
+    let q = PiPoly::rational;
     Some(match e {
-        Expr::X => p.clone(),
-        Expr::Number(d) => d.as_rational().clone(),
-        Expr::Pi | Expr::Pow(..) => return None,
-        Expr::Neg(a) => -v(a)?,
-        Expr::Add(a, b) => v(a)? + v(b)?,
-        Expr::Sub(a, b) => v(a)? - v(b)?,
-        Expr::Mul(a, b) => v(a)? * v(b)?,
+        Expr::X => q(p.clone()),
+        Expr::Number(d) => q(d.as_rational().clone()),
+        Expr::Pi => PiPoly(vec![Rational::new(), Rational::from(1)]),
+        Expr::Pow(..) => return None,
+        Expr::Neg(a) => PiPoly(Vec::new()).add(&v(a)?, -1),
+        Expr::Add(a, b) => v(a)?.add(&v(b)?, 1),
+        Expr::Sub(a, b) => v(a)?.add(&v(b)?, -1),
+        Expr::Mul(a, b) => v(a)?.mul(&v(b)?),
         Expr::Div(a, b) => {
-            let d = v(b)?;
+            let d = v(b)?.as_rational()?;
             if d == 0 {
                 return None;
             }
-            v(a)? / d
+            v(a)?.mul(&q(d.recip()))
         }
         Expr::PowInt(a, n) => {
             let b = v(a)?;
-            if (*n < 0 && b == 0) || n.unsigned_abs() > 64 {
+            if n.unsigned_abs() > 64 {
                 return None;
             }
-            let m = rug::ops::Pow::pow(b, n.unsigned_abs() as u32);
-            if *n < 0 { m.recip() } else { m }
+            if *n < 0 {
+                let r = b.as_rational()?;
+                if r == 0 {
+                    return None;
+                }
+                return Some(q(rug::ops::Pow::pow(r, n.unsigned_abs() as u32).recip()));
+            }
+            (0..*n).fold(q(Rational::from(1)), |acc, _| acc.mul(&b))
         }
         Expr::Call(f, a) => {
-            let u = v(a)?;
+            let u = v(a)?.as_rational()?;
             match f {
-                Function::Log if u == 1 => Rational::new(),
-                Function::Exp | Function::Cos | Function::Cosh | Function::Sech if u == 0 => Rational::from(1),
-                Function::Sin | Function::Tan | Function::Sinh | Function::Tanh | Function::Atan if u == 0 => Rational::new(),
+                Function::Log if u == 1 => q(Rational::new()),
+                Function::Exp | Function::Cos | Function::Cosh | Function::Sech if u == 0 => q(Rational::from(1)),
+                Function::Sin | Function::Tan | Function::Sinh | Function::Tanh | Function::Atan if u == 0 => q(Rational::new()),
                 _ => return None,
             }
         }
         Expr::BesselJ(n, a) => {
-            if v(a)? != 0 {
+            if !v(a)?.is_zero() {
                 return None;
             }
-            Rational::from(i32::from(*n == 0))
+            q(Rational::from(i32::from(*n == 0)))
         }
     })
 }
@@ -198,8 +262,49 @@ fn bx(e: Expr) -> Box<Expr> {
     Box::new(e)
 }
 
+fn is_number(e: &Expr, q: i64) -> bool {
+    matches!(e, Expr::Number(d) if *d.as_rational() == q)
+}
+
+/// `a b`, folded where a factor is 0 or 1 (exact identities; keeps the trees of
+/// repeated derivatives small).
 fn mul(a: Expr, b: Expr) -> Expr {
-    Expr::Mul(bx(a), bx(b))
+    if is_number(&a, 0) || is_number(&b, 0) {
+        number(0)
+    } else if is_number(&a, 1) {
+        b
+    } else if is_number(&b, 1) {
+        a
+    } else {
+        Expr::Mul(bx(a), bx(b))
+    }
+}
+
+/// `a + b`, folded where a term is 0.
+fn add(a: Expr, b: Expr) -> Expr {
+    if is_number(&a, 0) {
+        b
+    } else if is_number(&b, 0) {
+        a
+    } else {
+        Expr::Add(bx(a), bx(b))
+    }
+}
+
+/// `a - b`, folded where a term is 0.
+fn sub(a: Expr, b: Expr) -> Expr {
+    if is_number(&b, 0) {
+        a
+    } else if is_number(&a, 0) {
+        neg(b)
+    } else {
+        Expr::Sub(bx(a), bx(b))
+    }
+}
+
+/// `-a`, folded where `a` is 0.
+fn neg(a: Expr) -> Expr {
+    if is_number(&a, 0) { a } else { Expr::Neg(bx(a)) }
 }
 
 /// The derivative in `x` of the tree, by the sum, product, quotient, power and chain
@@ -214,14 +319,13 @@ pub(crate) fn derivative(e: &Expr) -> Option<Expr> {
     Some(match e {
         Expr::X => number(1),
         Expr::Pi | Expr::Number(_) => number(0),
-        Expr::Neg(a) => Expr::Neg(bx(d(a)?)),
-        Expr::Add(a, b) => Expr::Add(bx(d(a)?), bx(d(b)?)),
-        Expr::Sub(a, b) => Expr::Sub(bx(d(a)?), bx(d(b)?)),
-        Expr::Mul(a, b) => Expr::Add(bx(mul(d(a)?, (**b).clone())), bx(mul((**a).clone(), d(b)?))),
-        Expr::Div(a, b) => Expr::Div(
-            bx(Expr::Sub(bx(mul(d(a)?, (**b).clone())), bx(mul((**a).clone(), d(b)?)))),
-            bx(Expr::PowInt(b.clone(), 2)),
-        ),
+        Expr::Neg(a) => neg(d(a)?),
+        Expr::Add(a, b) => add(d(a)?, d(b)?),
+        Expr::Sub(a, b) => sub(d(a)?, d(b)?),
+        Expr::Mul(a, b) => add(mul(d(a)?, (**b).clone()), mul((**a).clone(), d(b)?)),
+        // a constant denominator: (a / b)' = a' / b
+        Expr::Div(a, b) if !b.depends_on_x() => Expr::Div(bx(d(a)?), b.clone()),
+        Expr::Div(a, b) => Expr::Div(bx(sub(mul(d(a)?, (**b).clone()), mul((**a).clone(), d(b)?))), bx(Expr::PowInt(b.clone(), 2))),
         // a^0 = 1 and a^1 = a, so that no a^-1 (a pole where a = 0) enters the derivative
         Expr::PowInt(_, 0) => number(0),
         Expr::PowInt(a, 1) => d(a)?,
@@ -310,6 +414,8 @@ mod tests {
             ("(exp(x)-1)/x^2", false),
             ("(exp(x)-1-x)/x^3", false),
             ("(exp(x-1)-x)/(x-1)^2", true),
+            ("(sin(pi*x)-pi*x)/x^3", true),
+            ("(sin(pi*x)-x)/x^3", false),
             ("sin(x)/x^2", false),
         ] {
             let e = Expr::parse(text).unwrap().canonical();
