@@ -91,6 +91,10 @@ INTEGRALS = [
     ("sin_pi_taylor2_over_x3", "int_0^1 (sin(pi x)-pi x)/x^3 dx = sum_{n>=1} (-1)^n pi^(2n+1) / ((2n+1)! (2n-1))",
      "(sin(pi*x)-pi*x)/x^3", "0", "1", lambda: sin_pi_taylor2_series(),
      lambda: mpmath.quad(lambda x: (mpmath.sin(mp.pi * x) - mp.pi * x) / x ** 3 if x > mpf(1) / 100 else -mp.pi ** 3 / 6 + mp.pi ** 5 * x ** 2 / 120 - mp.pi ** 7 * x ** 4 / 5040, [0, 1])),
+    # by parts, then u = sqrt(1+x): 3/2 - sqrt(2) - log((1 + sqrt(2))/2)
+    ("sqrt_taylor2_over_x2", "int_0^1 (sqrt(1+x)-1-x/2)/x^2 dx = 3/2 - sqrt(2) - log((1+sqrt(2))/2)",
+     "(sqrt(1+x)-1-x/2)/x^2", "0", "1", lambda: mpf(3) / 2 - mpmath.sqrt(2) - mpmath.log((1 + mpmath.sqrt(2)) / 2),
+     lambda: mpmath.quad(lambda x: (mpmath.sqrt(1 + x) - 1 - x / 2) / x ** 2 if x > mpf(1) / 10000 else -mpf(1) / 8 + x / 16 - 5 * x ** 2 / 128, [0, 1])),
     # issue 40's table: a narrow peak on a long range (refused at 2 bits before), and a
     # shifted Lorentzian to infinity (a radius of 125 at 8 to 53 bits with a declared decay)
     ("lorentz_narrow", "int_1^10000 1/((x-5)^2+0.01) dx = 10 (atan(99950) + atan(40))", "1/((x-5)^2+0.01)", "1", "10000",

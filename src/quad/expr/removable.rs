@@ -40,8 +40,9 @@
 //!   and integer powers are exact, a division only by a nonzero rational; a function
 //!   gives a value only at a rational argument where its value is a known rational:
 //!   `exp(0) = cos(0) = cosh(0) = sech(0) = J_0(0) = 1`, `sin(0) = tan(0) = sinh(0) =
-//!   tanh(0) = atan(0) = J_n(0) = 0` (`n != 0`), `log(1) = 0`; anything else (`sqrt`, a
-//!   general power, another argument) gives no value and the rule does not apply. As
+//!   tanh(0) = atan(0) = J_n(0) = 0` (`n != 0`), `log(1) = 0`, `sqrt(r^2) = r` (`r > 0`
+//!   rational, the principal root), `1^b = 1` (`b` constant, the principal branch);
+//!   anything else gives no value and the rule does not apply. As
 //!   `pi` is transcendental (Lindemann), an element of `Q[pi]` is 0 exactly when all its
 //!   coefficients are. Each value is then the exact value of `N^(j)(p)`, so `N^(j)(p) =
 //!   0` for `j < k` is a proof (`(sin(pi x) - pi x)/x^3`: `N'(0) = pi cos 0 - pi = 0`),
@@ -210,6 +211,8 @@ pub(crate) fn exact_at(e: &Expr, p: &Rational) -> Option<PiPoly> {
         Expr::X => q(p.clone()),
         Expr::Number(d) => q(d.as_rational().clone()),
         Expr::Pi => PiPoly(vec![Rational::new(), Rational::from(1)]),
+        // the principal branch: 1^b = e^{b Log 1} = 1
+        Expr::Pow(a, b) if !b.depends_on_x() && v(a)?.as_rational()? == 1 => q(Rational::from(1)),
         Expr::Pow(..) => return None,
         Expr::Neg(a) => PiPoly(Vec::new()).add(&v(a)?, -1),
         Expr::Add(a, b) => v(a)?.add(&v(b)?, 1),
@@ -240,6 +243,10 @@ pub(crate) fn exact_at(e: &Expr, p: &Rational) -> Option<PiPoly> {
             let u = v(a)?.as_rational()?;
             match f {
                 Function::Log if u == 1 => q(Rational::new()),
+                // the square of a nonzero rational: its positive root (the principal one)
+                Function::Sqrt if u > 0 && u.numer().is_perfect_square() && u.denom().is_perfect_square() => {
+                    q(Rational::from((u.numer().clone().sqrt(), u.denom().clone().sqrt())))
+                }
                 Function::Exp | Function::Cos | Function::Cosh | Function::Sech if u == 0 => q(Rational::from(1)),
                 Function::Sin | Function::Tan | Function::Sinh | Function::Tanh | Function::Atan if u == 0 => q(Rational::new()),
                 _ => return None,
@@ -416,6 +423,9 @@ mod tests {
             ("(exp(x-1)-x)/(x-1)^2", true),
             ("(sin(pi*x)-pi*x)/x^3", true),
             ("(sin(pi*x)-x)/x^3", false),
+            ("(sqrt(4+x)-2-x/4)/x^2", true),
+            ("((1+x/2)^(1/3)-1-x/6)/x^2", true),
+            ("(sqrt(4+x)-2)/x^2", false),
             ("sin(x)/x^2", false),
         ] {
             let e = Expr::parse(text).unwrap().canonical();
