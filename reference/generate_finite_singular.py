@@ -25,6 +25,28 @@ OUT = os.path.join(HERE, "data", "integrals_singular.csv")
 OUT_DIGITS = 400
 CHECK_DPS = 30
 
+def series(term, n):
+    """sum_{m>=n} term(m), summed until a term is below 10^-(dps+10) (the terms fall
+    factorially)."""
+    total = mpf(0)
+    while True:
+        t = term(n)
+        total += t
+        if abs(t) < mpf(10) ** -(mp.dps + 10):
+            return total
+        n += 1
+
+
+def cos_taylor4_series():
+    """sum_{n>=2} (-1)^n / ((2n)! (2n-3))."""
+    return series(lambda n: mpf(-1) ** n / (mpmath.factorial(2 * n) * (2 * n - 3)), 2)
+
+
+def sin_pi_taylor2_series():
+    """sum_{n>=1} (-1)^n pi^(2n+1) / ((2n+1)! (2n-1))."""
+    return series(lambda n: mpf(-1) ** n * mp.pi ** (2 * n + 1) / (mpmath.factorial(2 * n + 1) * (2 * n - 1)), 1)
+
+
 INTEGRALS = [
     ("sinc_sym", "int_-1^1 sin(x)/x dx = 2 Si(1)", "sin(x)/x", "-1", "1",
      lambda: 2 * mpmath.si(1), lambda: mpmath.quad(lambda x: mpmath.sinc(x), [-1, 0, 1])),
@@ -50,6 +72,29 @@ INTEGRALS = [
      lambda: +mp.pi, lambda: mpmath.quad(lambda x: 1 / mpmath.sqrt(x * (1 - x)), [0, 0.5, 1])),
     ("sinc_mid", "int_0^1 sin(x-1/2)/(x-1/2) dx = 2 Si(1/2) (removable point inside)", "sin(x-0.5)/(x-0.5)", "0", "1",
      lambda: 2 * mpmath.si(mpf(1) / 2), lambda: mpmath.quad(lambda x: mpmath.sinc(x - mpf(1) / 2), [0, 0.5, 1])),
+    # removable points that need the local classes of 1 - e^g and 1 - cos g, and a
+    # quotient by a square (issue 40 follow-up)
+    ("one_minus_expm_over_x", "int_0^1 (1-exp(-x))/x dx = Ein(1) = gamma + E1(1)", "(1-exp(-x))/x", "0", "1",
+     lambda: mp.euler + mpmath.e1(1), lambda: mpmath.quad(lambda x: -mpmath.expm1(-x) / x, [0, 1])),
+    ("one_minus_cos_over_x2", "int_0^1 (1-cos(x))/x^2 dx = Si(1) + cos(1) - 1", "(1-cos(x))/x^2", "0", "1",
+     lambda: mpmath.si(1) + mpmath.cos(1) - 1, lambda: mpmath.quad(lambda x: 2 * mpmath.sin(x / 2) ** 2 / x ** 2, [0, 1])),
+    # removable points with two, four and three orders of cancellation, found by the
+    # exact values of N, N', ... at the point (quad/expr/removable.rs); the first by parts,
+    # int (e^x-1-x)/x^2 = [-(e^x-1-x)/x]_0^1 + int_0^1 (e^x-1)/x, the second by its
+    # Taylor series term by term, sum_{n>=2} (-1)^n / ((2n)! (2n-3)), the third likewise
+    ("expm1_minus_x_over_x2", "int_0^1 (exp(x)-1-x)/x^2 dx = 2 - e + Ei(1) - gamma", "(exp(x)-1-x)/x^2", "0", "1",
+     lambda: 2 - mp.e + mpmath.ei(1) - mp.euler,
+     lambda: mpmath.quad(lambda x: (mpmath.expm1(x) - x) / x ** 2 if x > mpf(10) ** -4 else mpf(1) / 2 + x / 6 + x ** 2 / 24, [0, 1])),
+    ("cos_taylor4_over_x4", "int_0^1 (cos(x)-1+x^2/2)/x^4 dx = sum_{n>=2} (-1)^n / ((2n)! (2n-3))", "(cos(x)-1+x^2/2)/x^4", "0", "1",
+     lambda: cos_taylor4_series(),
+     lambda: mpmath.quad(lambda x: (mpmath.cos(x) - 1 + x ** 2 / 2) / x ** 4 if x > mpf(1) / 100 else mpf(1) / 24 - x ** 2 / 720 + x ** 4 / 40320, [0, 1])),
+    ("sin_pi_taylor2_over_x3", "int_0^1 (sin(pi x)-pi x)/x^3 dx = sum_{n>=1} (-1)^n pi^(2n+1) / ((2n+1)! (2n-1))",
+     "(sin(pi*x)-pi*x)/x^3", "0", "1", lambda: sin_pi_taylor2_series(),
+     lambda: mpmath.quad(lambda x: (mpmath.sin(mp.pi * x) - mp.pi * x) / x ** 3 if x > mpf(1) / 100 else -mp.pi ** 3 / 6 + mp.pi ** 5 * x ** 2 / 120 - mp.pi ** 7 * x ** 4 / 5040, [0, 1])),
+    # by parts, then u = sqrt(1+x): 3/2 - sqrt(2) - log((1 + sqrt(2))/2)
+    ("sqrt_taylor2_over_x2", "int_0^1 (sqrt(1+x)-1-x/2)/x^2 dx = 3/2 - sqrt(2) - log((1+sqrt(2))/2)",
+     "(sqrt(1+x)-1-x/2)/x^2", "0", "1", lambda: mpf(3) / 2 - mpmath.sqrt(2) - mpmath.log((1 + mpmath.sqrt(2)) / 2),
+     lambda: mpmath.quad(lambda x: (mpmath.sqrt(1 + x) - 1 - x / 2) / x ** 2 if x > mpf(1) / 10000 else -mpf(1) / 8 + x / 16 - 5 * x ** 2 / 128, [0, 1])),
     # issue 40's table: a narrow peak on a long range (refused at 2 bits before), and a
     # shifted Lorentzian to infinity (a radius of 125 at 8 to 53 bits with a declared decay)
     ("lorentz_narrow", "int_1^10000 1/((x-5)^2+0.01) dx = 10 (atan(99950) + atan(40))", "1/((x-5)^2+0.01)", "1", "10000",

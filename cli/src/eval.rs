@@ -425,12 +425,12 @@ fn opt_decimal(obj: &Map<String, Value>, name: &str) -> Req<Option<Decimal>> {
 /// "weight": {"alpha": AL, "beta": BE, "log": K}, "decay": {"rate": C | "power": P, "bound": M}}`.
 fn evaluate_integral(obj: &Map<String, Value>, id: &Value, prec: u32) -> Req<Value> {
     let f = match obj.get("f") {
-        Some(Value::String(s)) => Expr::parse(s)?,
+        Some(Value::String(s)) => profile::timed(profile::ARGS, || parsed_expr(s))?,
         Some(other) => return Err(BadRequest::new(format!("\"f\" must be the integrand as a string, got {other}"))),
         None => return Err(BadRequest::new("missing argument \"f\" (the integrand in x, e.g. \"exp(-x^2)\")")),
     };
-    let a = End::parse(&arg_text(obj, "a")?)?;
-    let b = End::parse(&arg_text(obj, "b")?)?;
+    let a = profile::timed(profile::ARGS, || End::parse(&arg_text(obj, "a")?).map_err(BadRequest::from))?;
+    let b = profile::timed(profile::ARGS, || End::parse(&arg_text(obj, "b")?).map_err(BadRequest::from))?;
     let weight = match sub_object(obj, "weight", &["alpha", "beta", "log"])? {
         None => None,
         Some(w) => Some(WeightSpec {
@@ -451,17 +451,47 @@ fn evaluate_integral(obj: &Map<String, Value>, id: &Value, prec: u32) -> Req<Val
         }
     };
     let r = integrate_range(&f, &a, &b, weight.as_ref(), decay.as_ref(), prec, &Options::new())?;
-    let mut resp = json!({"id": id});
-    for (key, value) in ball_fields(&r, prec) {
-        resp[key] = Value::String(value);
+    Ok(profile::timed(profile::RESPONSE, || {
+        let mut resp = json!({"id": id});
+        for (key, value) in ball_fields(&r, prec) {
+            resp[key] = Value::String(value);
+        }
+        resp["prec"] = json!(prec);
+        resp["evaluations"] = json!(r.evaluations);
+        if let Some(note) = shortfall(&r) {
+            resp["goal_met"] = json!(false);
+            resp["warning"] = Value::String(note);
+        }
+        resp
+    }))
+}
+
+/// Parsed integrands kept by their text, so that a stream of requests on the same
+/// integrand parses it once (the parse was about 17 000 instructions, half of `eval`'s
+/// own cost of a small integral's request). At most this many are kept; the cache is
+/// emptied when full (a stream of distinct integrands parses each, as before).
+const EXPR_CACHE_SIZE: usize = 64;
+
+/// The integrand `text` parsed, from the cache when it was seen before.
+fn parsed_expr(text: &str) -> Req<std::rc::Rc<Expr>> {
+    use std::cell::RefCell;
+    use std::collections::HashMap;
+    use std::rc::Rc;
+    thread_local! {
+        static EXPRS: RefCell<HashMap<String, Rc<Expr>>> = RefCell::new(HashMap::new());
     }
-    resp["prec"] = json!(prec);
-    resp["evaluations"] = json!(r.evaluations);
-    if let Some(note) = shortfall(&r) {
-        resp["goal_met"] = json!(false);
-        resp["warning"] = Value::String(note);
+    if let Some(e) = EXPRS.with(|c| c.borrow().get(text).cloned()) {
+        return Ok(e);
     }
-    Ok(resp)
+    let e = Rc::new(Expr::parse(text)?);
+    EXPRS.with(|c| {
+        let mut c = c.borrow_mut();
+        if c.len() >= EXPR_CACHE_SIZE {
+            c.clear();
+        }
+        c.insert(text.to_owned(), e.clone());
+    });
+    Ok(e)
 }
 
 /// [`evaluate`], its time less the argument and response stages charged to

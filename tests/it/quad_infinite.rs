@@ -49,6 +49,13 @@ fn absolutely_integrable_tails_need_no_declaration() {
     check(&["exp_over_1px", "x2_gauss", "lorentz_half", "x_exp_sin", "gauss_left", "sech2", "rsqrt_cube", "exp_sqrt"], &[64, 333]);
 }
 
+/// A removable point or a `log` at `a` before an exponential tail: `[a, R]` by the
+/// finite route, which finds them.
+#[test]
+fn removable_points_before_a_decaying_tail() {
+    check(&["exp_sinc", "exp_log", "exp_one_minus_cos"], &[64, 333]);
+}
+
 #[test]
 fn oscillatory_tails_by_contour_rotation() {
     check(&["cos_lorentz", "j0", "hankel_k0.5", "hankel_k1", "hankel_k5"], &[64, 333]);

@@ -37,7 +37,23 @@ fn table_integrals_are_certified_at_every_precision() {
 
 #[test]
 fn poles_are_typed_errors_that_name_the_point() {
-    for (text, point) in [("1/x", 0.0), ("1/(x-0.5)", 0.5), ("x^(-2)", 0.0), ("1/(1-x)", 1.0)] {
+    // a quotient by a square whose numerator does not vanish there: a double pole, not
+    // the removable point of `(1 - cos x)/x^2`; a numerator whose derivatives vanish to
+    // one order less than the power (`(e^x - 1)/x^2`, `(e^x - 1 - x)/x^3`): a simple
+    // pole, not the removable points of `(e^x - 1 - x)/x^2` and `(cos x - 1 + x^2/2)/x^4`
+    for (text, point) in [
+        ("1/x", 0.0),
+        ("1/(x-0.5)", 0.5),
+        ("x^(-2)", 0.0),
+        ("1/(1-x)", 1.0),
+        ("1/x^2", 0.0),
+        ("(1-cos(x))/(2*x-1)^2", 0.5),
+        ("sin(x)/x^2", 0.0),
+        ("(exp(x)-1)/x^2", 0.0),
+        ("(exp(x)-1-x)/x^3", 0.0),
+        ("(cos(x)-1+x^2/2)/x^5", 0.0),
+        ("(exp(x-1)-x)/(x-1)^3", 1.0),
+    ] {
         let e = Expr::parse(text).unwrap();
         match integrate_range(&e, &End::parse("0").unwrap(), &End::parse("1").unwrap(), None, None, 64, &Options::new()) {
             Err(maugis::Error::Integration(IntegrationError::NotIntegrable { near, .. })) => {

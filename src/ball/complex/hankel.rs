@@ -49,6 +49,10 @@ use rug::Float;
 use super::CBall;
 use crate::ball::{Ball, Mag};
 
+/// A rectangle whose radius exceeds `2^-WIDE_BOX_LOG2 min |w|` gets the magnitude
+/// bound of the sum instead of the sum in ball arithmetic ([`CBall::hankel1_wide`]).
+const WIDE_BOX_LOG2: i64 = 16;
+
 /// Most terms of the expansion.
 const MAX_TERMS: u64 = 100_000;
 
@@ -67,10 +71,19 @@ impl CBall {
         }
         let rho_f = rho.to_float();
         let below_axis = !self.im().lower().is_sign_positive() && !self.im().lower().is_zero();
-        let mu = Ball::from_i64(4, p).mul(&Ball::from_i64(m as i64, p).sqr());
+        if !self.rad_mag().le(&rho.mul_2exp(-WIDE_BOX_LOG2)) {
+            return self.hankel1_wide(n, m, rho, below_axis);
+        }
         let inv = self.recip();
+        // 4 n^2 (n <= 2^20 in any use; checked)
+        let Some(mu) = (m as i64).checked_mul(4 * m as i64) else { return CBall::indeterminate(p) };
         let mut sum = CBall::one(p);
         let mut term = CBall::one(p);
+        // the term k is about |a_k| rho^-k <= 2^-drop below the sum (about 1), so it is
+        // formed at p - drop + 16 bits: the absolute error of the sum stays about 2^-p
+        // (every rounding is in the term's radius), at a fraction of the cost
+        let mut inv_k = inv.clone();
+        let mut prec_k = p;
         // |a_k| rho^-k, as a rigorous upper bound in a 64-bit ball
         let mut a_abs = Ball::one(64);
         let rho_b = Ball::from_float(&rho_f, 64);
@@ -78,10 +91,10 @@ impl CBall {
         let mut last = Mag::inf();
         let mut k: u64 = 1;
         let bound = loop {
-            // a_k from a_{k-1}
-            let odd = Ball::from_i64((2 * k - 1) as i64, p).sqr();
-            let factor = mu.sub(&odd).div(&Ball::from_i64(8 * k as i64, p)).unwrap_or_else(|_| Ball::zero(p));
-            let factor64 = factor.set_prec(64);
+            // a_k = a_{k-1} (4 n^2 - (2k-1)^2) / (8k)
+            let Some(num) = (2 * k as i64 - 1).checked_mul(2 * k as i64 - 1).map(|o| mu - o) else { return CBall::indeterminate(p) };
+            let den = 8 * k as i64;
+            let factor64 = Ball::from_i64(num, 64).div_i64(den).unwrap_or_else(|_| Ball::zero(64));
             a_abs = a_abs.mul(&factor64).div(&rho_b).unwrap_or_else(|_| Ball::from_float(&Float::with_val(64, rug::float::Special::Infinity), 64));
             let a_up = a_abs.abs_upper_mag();
             // bound after the terms 0..k-1: l = k
@@ -90,21 +103,66 @@ impl CBall {
                 break b;
             }
             last = a_up;
-            term = term.mul(&inv).mul_i().mul_real(&factor);
+            let drop = (-a_up.log2()).floor();
+            let want = if drop.is_finite() && drop > 0.0 { (p as f64 - drop + 16.0).max(64.0) as u32 } else { p };
+            if want + 32 <= prec_k {
+                prec_k = want;
+                inv_k = inv.set_prec(prec_k);
+            }
+            let t = term.set_prec(prec_k).mul(&inv_k).mul_i().mul_i64(num);
+            term = div_int(&t, den);
             sum = sum.add(&term);
             k += 1;
         };
         sum.add_error_mag(bound);
+        self.hankel1_from_sum(n, m, &sum)
+    }
+
+    /// `(2/(pi w))^(1/2) e^{i omega} sum` (`omega = w - n pi/2 - pi/4`), `m = |n|`.
+    fn hankel1_from_sum(&self, n: i64, m: u64, sum: &CBall) -> CBall {
+        let p = self.prec();
         let pi = Ball::pi(p);
         let pref = CBall::from_real(Ball::from_i64(2, p)).div(&self.mul_real(&pi)).sqrt();
         let shift = pi.mul(&Ball::from_ratio(2 * m as i64 + 1, 4, p));
         let phase = self.sub(&CBall::from_real(shift)).mul_i().exp();
-        let v = pref.mul(&phase).mul(&sum);
+        let v = pref.mul(&phase).mul(sum);
         if n < 0 && m % 2 == 1 {
             v.neg()
         } else {
             v
         }
+    }
+
+    /// [`CBall::hankel1_large`] on a wide rectangle (radius above `2^-WIDE_BOX_LOG2`
+    /// times `rho = min |w|`): the sum is enclosed by `1 + disc(sum_{1 <= k < l} |a_k|
+    /// rho^-k + |R_l|)`, `l = max(|n|, 1)`, the bound of DLMF 10.17.14-15 (module docs)
+    /// for every `w` of the rectangle. Its relative width is about `|4n^2 - 1| / (8
+    /// rho)`, where ball arithmetic over the rectangle would multiply the rectangle's
+    /// relative width by about `1 + sqrt 2 |rad/w|` at each of ~`2 rho` terms: the
+    /// integrator's ellipse bounds need the magnitude, not digits.
+    fn hankel1_wide(&self, n: i64, m: u64, rho: Mag, below_axis: bool) -> CBall {
+        let p = self.prec();
+        let l = m.max(1);
+        let rho_b = Ball::from_float(&rho.to_float(), 64);
+        let mu = Ball::from_i64(4, 64).mul(&Ball::from_i64(m as i64, 64).sqr());
+        let mut a_abs = Ball::one(64);
+        let mut rest = Mag::ZERO;
+        for k in 1..=l {
+            let odd = Ball::from_i64((2 * k - 1) as i64, 64).sqr();
+            let Ok(f) = mu.sub(&odd).div(&Ball::from_i64(8 * k as i64, 64)) else { return CBall::indeterminate(p) };
+            let Ok(next) = a_abs.mul(&f).div(&rho_b) else { return CBall::indeterminate(p) };
+            a_abs = next;
+            if k < l {
+                rest = rest.add(a_abs.abs_upper_mag());
+            }
+        }
+        rest = rest.add(remainder_bound(m, l, a_abs.abs_upper_mag(), rho, below_axis));
+        if !rest.is_finite() {
+            return CBall::indeterminate(p);
+        }
+        let mut sum = CBall::one(p);
+        sum.add_error_mag(rest);
+        self.hankel1_from_sum(n, m, &sum)
     }
 
     /// An upper bound of `|sum_{k<l} i^k a_k(n) w^-k + R_l(w)| = |(pi w/2)^(1/2) e^{-i
@@ -174,6 +232,14 @@ impl CBall {
     }
 }
 
+/// `z / n` for a nonzero integer `n`.
+fn div_int(z: &CBall, n: i64) -> CBall {
+    match (z.re().div_i64(n), z.im().div_i64(n)) {
+        (Ok(a), Ok(b)) => CBall::new(a, b),
+        _ => CBall::indeterminate(z.prec()),
+    }
+}
+
 /// `2 |a_l| V(t^-l) exp(|n^2 - 1/4| V(t^-1))` (DLMF 10.17.14) from `a_rho = |a_l(n)|
 /// rho^-l` (an upper bound), with the variations of DLMF 10.17.15: `rho^-l` and
 /// `rho^-1` for `0 <= ph w <= pi`, `chi(l) rho^-l` and `chi(1) rho^-1 = (pi/2) rho^-1`
@@ -214,6 +280,25 @@ mod tests {
                     if x as f64 > 0.35 * (p as f64 + 40.0) {
                         assert!(h.re().rad_mag().le(&Mag::pow2(-(p as i64) + 8)), "n {n} x {x} p {p}: {:?}", h.re());
                     }
+                }
+            }
+        }
+    }
+
+    /// On a wide rectangle (the magnitude bound of the sum) the enclosure contains the
+    /// narrow evaluations at points of the rectangle, corners included.
+    #[test]
+    fn wide_rectangle_contains_its_points() {
+        let p = 128;
+        for n in [0i64, 1, -2, 5] {
+            for (re, im, r) in [(100.0, 20.0, 5.0), (60.0, -3.0, 2.0), (300.0, 0.0, 40.0)] {
+                let b = CBall::new(Ball::with_mag(Float::with_val(p, re), Mag::from_f64(r)), Ball::with_mag(Float::with_val(p, im), Mag::from_f64(r)));
+                let h = b.hankel1_large(n);
+                assert!(h.is_finite(), "n {n} {re}+{im}i +- {r}");
+                for (dx, dy) in [(0.0, 0.0), (r, r), (-r, r), (r, -r), (-r, -r), (0.3 * r, -0.7 * r)] {
+                    let w = CBall::from_f64s(re + dx, im + dy, p);
+                    let v = w.hankel1_large(n);
+                    assert!(h.re().contains(v.re().mid()) && h.im().contains(v.im().mid()), "n {n} at {}+{}i: {v:?} not in {h:?}", re + dx, im + dy);
                 }
             }
         }

@@ -432,37 +432,7 @@ impl Ctx {
     }
 }
 
-/// The exact rational value of a constant subtree built from decimals with `+ - * /`
-/// and integer powers, if it is one.
-pub(crate) fn const_rational(e: &Expr) -> Option<Rational> {
-    Some(match e {
-        Expr::Number(d) => d.as_rational().clone(),
-        Expr::Neg(a) => Rational::from(-const_rational(a)?),
-        Expr::Add(a, b) => Rational::from(const_rational(a)? + const_rational(b)?),
-        Expr::Sub(a, b) => Rational::from(const_rational(a)? - const_rational(b)?),
-        Expr::Mul(a, b) => Rational::from(const_rational(a)? * const_rational(b)?),
-        Expr::Div(a, b) => {
-            let d = const_rational(b)?;
-            if d == 0 {
-                return None;
-            }
-            Rational::from(const_rational(a)? / d)
-        }
-        Expr::PowInt(a, n) if n.unsigned_abs() <= 64 => {
-            let base = const_rational(a)?;
-            if base == 0 && *n < 0 {
-                return None;
-            }
-            let p = Rational::from(rug::ops::Pow::pow(&base, n.unsigned_abs() as u32));
-            if *n < 0 {
-                p.recip()
-            } else {
-                p
-            }
-        }
-        _ => return None,
-    })
-}
+pub(crate) use super::tree::const_rational;
 
 /// The class of `f` at `+inf` for the radius `2^log2_r`.
 pub(crate) fn class_at(f: &Expr, log2_r: u32) -> Option<Class> {

@@ -3,7 +3,8 @@
 //! `maugis.integrate`.
 
 use super::decay::{tail_class, TailClass};
-use super::finite::integrate_finite;
+use super::finite::{integrate_finite, sum_to_goal};
+use super::local::singular_candidates;
 use super::oscillatory::{integrate_inverted, integrate_oscillatory};
 use super::substitute::sqrt_substituted;
 use super::Expr;
@@ -222,6 +223,21 @@ fn to_infinity(f: &Expr, a: &crate::Ball, weight: Option<&Weight>, prec: u32, op
     }
     match class {
         TailClass::Decays { decay, from } => {
+            // a singular candidate in [a, from] (`exp(-x) sin(x)/x` from 0): [a, from]
+            // by the finite route, which finds removable and endpoint singularities
+            if weight.is_none() && a.is_exact() && from.is_exact() && from.upper() > a.upper() {
+                if let (Some(ar), Some(fr)) = (a.mid().to_rational(), from.mid().to_rational()) {
+                    let mut candidates = Vec::new();
+                    singular_candidates(f, &mut candidates);
+                    if candidates.iter().any(|p| *p >= ar && *p <= fr) {
+                        return sum_to_goal(prec, opts, |goal, o| {
+                            let finite = integrate_finite(f, &ar, &fr, goal + 64, goal, o)?;
+                            let tail = integrate_to_infinity(|x: &_| f.eval(x), &from, None, &decay, goal, o)?;
+                            Ok(vec![finite, tail])
+                        });
+                    }
+                }
+            }
             let g = |x: &_| f.eval(x);
             integrate_to_infinity_from(g, a, weight, &decay, &from, prec, opts)
         }

@@ -25,7 +25,10 @@
 //! * `g -> 0` (`q > 0`, `|g| <= G`): `f(g) = g (f(w)/w)` with `f(w)/w` in `[1 - G^2/6,
 //!   1]` (sin), `[1 - G^2/3, 1]` (tanh, atan), `[1, sinh G/G]` (sinh), `[1, tan G/G]`
 //!   (tan, `G < pi/2`), from their alternating or positive Taylor series; `e^g - 1 = g
-//!   (e^w - 1)/w` with `(e^w - 1)/w` in `[(1 - e^-G)/G, (e^G - 1)/G]` (it increases);
+//!   (e^w - 1)/w` with `(e^w - 1)/w` in `[(1 - e^-G)/G, (e^G - 1)/G]` (it increases),
+//!   and `1 - e^g` its negative; `cos g - 1 = -g^2 (1 - cos w)/w^2` with `(1 - cos
+//!   w)/w^2` in `[1/2 - G^2/24, 1/2]` (`G^2 <= 12`: alternating series with decreasing
+//!   terms), and `1 - cos g` its negative;
 //!   `J_n(g) = g^n h(w)`, `|h(w) 2^n n! - 1| <= e^{G^2/4} - 1` (DLMF 10.2.2: the ratio of
 //!   the series' terms to its first is at most `(G^2/4)^k/k!`).
 //! * `sin, cos, tanh, atan, besselj` of any real `g`: `[-1, 1]` (`[-pi/2, pi/2]`).
@@ -232,6 +235,36 @@ impl Ctx {
         }
     }
 
+    /// `e^g - 1 = g (e^w - 1)/w` with `(e^w - 1)/w` in `[(1 - e^-G)/G, (e^G - 1)/G]`, and
+    /// `cos g - 1 = -g^2 (1 - cos w)/w^2` with `(1 - cos w)/w^2` in `[1/2 - G^2/24, 1/2]`
+    /// (alternating series with decreasing terms for `G^2 <= 12`), for `g -> 0` (`q >
+    /// 0`, `|g| <= G`; module docs). `None` otherwise.
+    fn minus_one(&self, fun: Function, g: &Expr) -> Option<Local> {
+        let g = self.class(g)?;
+        if g.power <= 0 {
+            return None;
+        }
+        let big_g = Ball::from_float(&self.range(&g)?.abs_upper(), P);
+        match fun {
+            Function::Exp => {
+                let lo = Ball::one(P).sub(&big_g.neg().exp().ok()?).div(&big_g).ok()?;
+                let hi = big_g.exp().ok()?.sub(&Ball::one(P)).div(&big_g).ok()?;
+                Some(Local { coef: g.coef.mul(&hull(&lo, &hi)), power: g.power })
+            }
+            Function::Cos => {
+                let g2 = big_g.sqr();
+                if !(g2.upper() <= 12) {
+                    return None;
+                }
+                let half = Ball::one(P).mul_pow2(-1);
+                let lo = half.sub(&g2.div_i64(24).ok()?);
+                let ratio = hull(&lo, &half);
+                Some(Local { coef: g.coef.mul(&g.coef).mul(&ratio).neg(), power: Rational::from(&g.power * 2u32) })
+            }
+            _ => None,
+        }
+    }
+
     fn class(&self, e: &Expr) -> Option<Local> {
         if let Some((c0, c1)) = affine(e) {
             let at_p = Rational::from(&c0 + Rational::from(&c1 * &self.p));
@@ -258,16 +291,15 @@ impl Ctx {
             }
             Expr::Add(a, b) => self.add(self.class(a)?, self.class(b)?),
             Expr::Sub(a, b) => {
-                // e^g - 1 with g -> 0
-                if let (Expr::Call(Function::Exp, g), Some(c)) = (&**a, const_rational(b)) {
-                    if c == 1 {
-                        let g = self.class(g)?;
-                        if g.power > 0 {
-                            let big_g = Ball::from_float(&self.range(&g)?.abs_upper(), P);
-                            let lo = Ball::one(P).sub(&big_g.neg().exp().ok()?).div(&big_g).ok()?;
-                            let hi = big_g.exp().ok()?.sub(&Ball::one(P)).div(&big_g).ok()?;
-                            return Some(Local { coef: g.coef.mul(&hull(&lo, &hi)), power: g.power });
-                        }
+                // e^g - 1, cos g - 1 with g -> 0, and 1 - e^g, 1 - cos g (negated)
+                let (call, one, sign) = match (const_rational(a), const_rational(b)) {
+                    (_, Some(c)) if c == 1 => (&**a, true, 1),
+                    (Some(c), _) if c == 1 => (&**b, true, -1),
+                    _ => (&**a, false, 1),
+                };
+                if let (Expr::Call(fun @ (Function::Exp | Function::Cos), g), true) = (call, one) {
+                    if let Some(c) = self.minus_one(*fun, g) {
+                        return Some(if sign < 0 { Local { coef: c.coef.neg(), ..c } } else { c });
                     }
                 }
                 let h = self.class(b)?;
@@ -362,6 +394,12 @@ pub(crate) fn singular_candidates(f: &Expr, out: &mut Vec<Rational>) {
     match f {
         Expr::Div(a, b) => {
             push(b);
+            // a positive power of an affine subtree divided by: its zero
+            if let Expr::PowInt(base, n) = &**b {
+                if *n > 0 {
+                    push(base);
+                }
+            }
             singular_candidates(a, out);
             singular_candidates(b, out);
         }

@@ -8,40 +8,49 @@
 //! phi` affine in `x` (`w` an exact rational, `w != 0`; `phi` any real constant). The
 //! other factors form `g`.
 //!
-//! *The class of `g` in a sector.* On `Omega_T = {z : Re z >= T, |ph z| <= pi/4}` (`T =
-//! 2^j`), `g` gets a class `g(z) = z^q u(z)`, `u(z)` in a complex ball `D`, by rules that
-//! also prove `g` holomorphic on `Omega_T` (every point of `Omega_T` has `|z| >= T` and
-//! `|ph z| <= pi/4`): `z` (`q = 1, D = 1`); a constant; `-g`, `g h` (`z^a z^b = z^{a+b}`
-//! for the principal powers), `1/h` (`D_h` off 0: `h` has no zero), integer powers; `g +
-//! h` with `q_g >= q_h`: `D = D_g + D_h disc(0, T^{q_h - q_g})`; `g^r` for a real constant
-//! `r` (`sqrt` is `r = 1/2`) when `|q| pi/4 + sup |ph D| < pi`: then `Log g = q Log z +
-//! Log u` (the right side has imaginary part in `(-pi, pi)`), `g` never meets the cut,
-//! and `g^r = z^{q r} u^r`; any function of a `g` with `q <= 0` (bounded: `g` in `D
-//! disc(0, T^q)`, or in `D` when `q = 0`): that function of the ball, when finite.
+//! *The class of `g` in a sector.* On `Omega = {z : Re z >= T, |ph z| <= theta}` (`T`
+//! an exact integer, `theta <= pi/2` below), `g` gets a class `g(z) = z^q u(z)`, `u(z)`
+//! in a complex ball `D`, by rules that also prove `g` holomorphic on `Omega` (every
+//! point of `Omega` has `|z| >= T` and `|ph z| <= theta`): `z` (`q = 1, D = 1`); a
+//! constant; `-g`, `g h` (`z^a z^b = z^{a+b}` for the principal powers), `1/h` (`D_h`
+//! off 0: `h` has no zero), integer powers; `g + h` with `q_g >= q_h`: `D = D_g + D_h
+//! disc(0, T^{q_h - q_g})`; `g^r` for a real constant `r` (`sqrt` is `r = 1/2`) when
+//! `|q| theta + sup |ph D| < pi`: then `Log g = q Log z + Log u` (the right side has
+//! imaginary part in `(-pi, pi)`), `g` never meets the cut, and `g^r = z^{q r} u^r`; any
+//! function of a `g` with `q <= 0` (bounded: `g` in `D disc(0, T^q)`, or in `D` when `q
+//! = 0`): that function of the ball, when finite.
 //!
 //! *Contour rotation.* Split at `T`: `int_a^T f` is an ordinary certified integral. For
 //! the tail, `sin(w x + phi) = (e^{i phi} e^{i w x} - e^{-i phi} e^{-i w x})/(2i)` (and
 //! `cos` alike), and `J_n(w x) = (H_n^(1)(w x) + H_n^(2)(w x))/2`. Each term
 //! `int_T^inf g(x) E(x) dx` with `|E(z)| <= K |z|^e e^{-s Im z}` (`s = +-w`: `E = e^{i w
-//! z}`, `e = 0`; `E = H^(1)(w z)`, `e = -1/2`) is moved to the ray `z = T + r (1 + i)`,
-//! `r >= 0` (or `1 - i` for the terms that decay below the axis), inside `Omega_T`:
+//! z}`, `e = 0`; `E = H^(1)(w z)`, `e = -1/2`) is moved to the ray `z = T + r d`, `d = c
+//! + i`, `r >= 0` (or `d = c - i` for the terms that decay below the axis), inside
+//! `Omega` with `theta = atan(1/c)` (`pi/2` for `c = 0`):
 //!
 //! ```text
-//! int_T^inf g(x) E(x) dx = (1 + i) int_0^inf g(T + r(1+i)) E(T + r(1+i)) dr.
+//! int_T^inf g(x) E(x) dx = d int_0^inf g(T + r d) E(T + r d) dr.
 //! ```
 //!
-//! Proof: Cauchy's theorem on the parallelogram `T, X, X + R(1+i), T + R(1+i)` (all in
-//! `Omega_T`, where `g E` is holomorphic). On the far side `|g E| <= |D| K |z|^{q+e}
-//! e^{-|s| R}` over a length `X - T`: `-> 0` as `R -> inf`. On the side from `X`, `|g E|
-//! <= |D| K X^{q+e} e^{-|s| r}`, whose integral `<= sqrt 2 |D| K X^{q+e}/|s| -> 0` as `X ->
-//! inf` because `q + e < 0` (checked: the integral is then at most conditionally
-//! convergent on the real axis, and converges). On the ray, `|integrand| <= sqrt 2 |D|
-//! K T^{q+e} e^{-|s| r}`: an exponential decay, which the certified integrator cuts
-//! with its closed-form tail ([`Decay::exponential`]). For the Hankel terms `K =
-//! (2/(pi |w|))^(1/2)` times a bound of Hankel's sum with its remainder
-//! ([`CBall::hankel1_large`]), and `T` is taken with `|w| T >= 0.35 (goal + 40)`, where
-//! the expansion reaches the goal. `H^(1)` is evaluated on the ray by Hankel's expansion
-//! with its error bound (`ball/complex/hankel.rs`).
+//! The slope `c` is the least of `0, 1/64, 1/8, 1/2, 1` for which `g` has a class on
+//! that sector (fractional powers of `z^q` need `|q| theta < pi`): on the ray `E` turns
+//! `c |w|` radians while it decays by `e^{-|w|}`, so the vertical ray (`c = 0`) carries no
+//! oscillation at all and takes the fewest evaluations.
+//!
+//! Proof: Cauchy's theorem on the parallelogram `T, X, X + R d, T + R d` (all in
+//! `Omega`, where `g E` is holomorphic: `Re z >= T` and `0 <= ph z <= theta` there). On
+//! the far side (`Im z = R`) `|g E| <= |D| K |z|^{q+e} e^{-|s| R}` over a length `X - T`:
+//! `-> 0` as `R -> inf`. On the side from `X`, `|z| >= Re z >= X` and `|g E| <= |D| K
+//! X^{q+e} e^{-|s| r}`, whose integral `<= |d| |D| K X^{q+e}/|s| -> 0` as `X -> inf`
+//! because `q + e < 0` (checked: the integral is then at most conditionally convergent
+//! on the real axis, and converges). On the ray, `|integrand| <= |d| |D| K T^{q+e}
+//! e^{-|s| r}`: an exponential decay, which the certified integrator cuts with its
+//! closed-form tail ([`Decay::exponential`]). For the Hankel terms `K = (2/(pi
+//! |w|))^(1/2)` times a bound of Hankel's sum with its remainder
+//! ([`CBall::hankel_sum_bound`], valid for `-pi/2 <= ph(w z) <= pi`, which contains
+//! the sector), and `T` is taken with `|w| T >= 3 * 0.35 (goal + 60)`, three times where
+//! the expansion first reaches the goal (`T_OVER_HANKEL`). `H^(1)` is evaluated on the
+//! ray by Hankel's expansion with its error bound (`ball/complex/hankel.rs`).
 //!
 //! The pieces are certified balls; their sum is checked against the goal and the pieces
 //! redone with more bits when it misses.
@@ -153,6 +162,8 @@ struct ZClass {
 
 struct ZCtx {
     t: Ball,
+    /// An upper bound of the sector's half-angle `theta` (`|ph z| <= theta`).
+    angle: Ball,
     /// The class must hold on all of `|z| >= T` (every argument): no fractional powers.
     full: bool,
 }
@@ -265,9 +276,9 @@ impl ZCtx {
         if !log_u.is_finite() {
             return None;
         }
-        // |q| pi/4 + sup |ph u| < pi
+        // |q| theta + sup |ph u| < pi
         let arg = Ball::from_float(&log_u.im().abs_upper(), P);
-        let spread = Ball::pi(P).mul(&rat(&Rational::from(g.q.clone().abs()))).mul_pow2(-2).add(&arg);
+        let spread = self.angle.mul(&rat(&Rational::from(g.q.clone().abs()))).add(&arg);
         if !(spread.upper() < Ball::pi(P).lower()) {
             return None;
         }
@@ -283,6 +294,14 @@ struct Term {
     side: i64,
 }
 
+/// `T` is taken this many times beyond the least `|w| T = 0.35 (goal + 60)` at which
+/// Hankel's expansion reaches the goal: there the expansion needs about `2 |w| T`
+/// terms and the rays most of the time; at three times, about a fifth of the terms
+/// (`x J_0(k x)/(x^2+1)^(3/2)`, `k = 1/2, 1, 5`, at 333 bits: 0.37-0.54 s at factor 1,
+/// 0.26-0.29 s at 3, 0.24-0.27 s at 4, 0.24-0.27 s at 6, where `int J_0` and `int J_1
+/// / sqrt x` take longer; CPU time, 2026-11-29).
+const T_OVER_HANKEL: f64 = 3.0;
+
 /// Largest `j` tried for `T = 2^j`.
 const MAX_LOG2_T: u32 = 40;
 
@@ -296,32 +315,37 @@ pub(crate) fn integrate_oscillatory(f: &Expr, a: &Ball, prec: u32, opts: &Option
     };
     let w_abs = Rational::from(w.clone().abs());
     let w_ball = rat(&w_abs);
-    // T: past a, and for Hankel's expansion |w| T >= 0.35 (goal + 40)
+    // T: past a, and for Hankel's expansion |w| T >= 3 * 0.35 (goal + 60): the least
+    // t 2^(j-3) >= need with 2^(j-1) < need <= 2^j, t in 5..=8 (not just a power of 2:
+    // the finite part [a, T] is up to 37% shorter)
     let mut j = 1u32;
     let a_up = a.upper().to_f64();
-    let need = if hankel_n.is_some() { 0.35 * (prec as f64 + 60.0) / w_abs.to_f64() } else { 0.0 };
-    while j < MAX_LOG2_T && ((1u64 << j) as f64) < (a_up + 1.0).max(need) {
+    let need = if hankel_n.is_some() { T_OVER_HANKEL * 0.35 * (prec as f64 + 60.0) / w_abs.to_f64() } else { 0.0 };
+    let need = (a_up + 1.0).max(need);
+    while j < MAX_LOG2_T && ((1u64 << j) as f64) < need {
         j += 1;
     }
+    let t0 = if j >= 3 { (5u64..=8).map(|t| t << (j - 3)).find(|&t| t as f64 >= need).unwrap_or(1 << j) } else { 1 << j };
     let mut found = None;
-    for jj in j..MAX_LOG2_T {
-        let ctx = ZCtx { t: Ball::from_float(&(Float::with_val(P, 1) << jj), P), full: false };
-        if let Some(c) = ctx.class(&g) {
-            found = Some((jj, ctx, c));
-            break;
-        }
-        if jj > j + 12 {
-            break;
+    'search: for jj in 0..=12u32 {
+        let t = Float::with_val(P, t0) << jj;
+        for slope in RAY_SLOPES {
+            let c = Rational::from(slope);
+            let ctx = ZCtx { t: Ball::from_float(&t, P), angle: sector_angle(&c), full: false };
+            if let Some(class) = ctx.class(&g) {
+                found = Some((j + jj, ctx, class, c));
+                break 'search;
+            }
         }
     }
-    let (j, ctx, class) = found?;
+    let (j, ctx, class, slope) = found?;
     let e = if hankel_n.is_some() { Rational::from((-1, 2)) } else { Rational::new() };
     let qe = Rational::from(&class.q + &e);
     if qe >= 0 {
         return None;
     }
     let t = ctx.t.clone();
-    // the bound of |g E| on the ray: sqrt 2 |D| K T^{q+e}
+    // the bound of |g E| on the ray: |c + i| |D| K T^{q+e}
     let k_factor = match hankel_n {
         None => Ball::one(P),
         Some(n) => {
@@ -330,18 +354,39 @@ pub(crate) fn integrate_oscillatory(f: &Expr, a: &Ball, prec: u32, opts: &Option
             Ball::from_i64(2, P).div(&Ball::pi(P).mul(&w_ball)).ok()?.sqrt().ok()?.mul(&Ball::from_float(&sum.to_float(), P))
         }
     };
-    let bound = Ball::from_i64(2, P).sqrt().ok()?.mul(&Ball::from_float(&class.d.abs_upper_mag().to_float(), P)).mul(&k_factor).mul(&ctx.t_pow(&qe)?);
+    let dir_abs = rat(&Rational::from(&slope * &slope)).add(&Ball::one(P)).sqrt().ok()?;
+    let bound = dir_abs.mul(&Ball::from_float(&class.d.abs_upper_mag().to_float(), P)).mul(&k_factor).mul(&ctx.t_pow(&qe)?);
     let bound = Ball::from_float(&bound.upper(), P);
     let rate = Ball::from_float(&w_ball.lower(), P);
     let decay = match Decay::exponential(rate, bound) {
         Ok(d) => d,
         Err(e) => return Some(Err(e)),
     };
-    Some(run(f, &g, &kernel, a, &t, j, &decay, prec, opts))
+    Some(run(f, &g, &kernel, a, &t, &slope, j, &decay, prec, opts))
+}
+
+/// The slopes `c` of the rays `T + r (c +- i)` tried, steepest first: on a steeper ray
+/// the kernel oscillates less per unit of decay (`e^{i w z}` turns `c w` radians while
+/// it decays by `e^{-w}`; on the vertical ray it does not turn at all), and the ray
+/// integral takes fewer evaluations. A steeper ray needs the class of `g` on a wider
+/// sector (`theta = atan(1/c)`), which fractional powers may not allow.
+const RAY_SLOPES: [(i64, i64); 5] = [(0, 1), (1, 64), (1, 8), (1, 2), (1, 1)];
+
+/// An upper bound of `theta = atan(1/c)`, the half-angle of the sector that contains
+/// every ray `T + r (c +- i)` and the region between it and the real axis (`pi/2` for
+/// `c = 0`).
+fn sector_angle(c: &Rational) -> Ball {
+    let half_pi = Ball::pi(P).mul_pow2(-1);
+    if *c == 0 {
+        return half_pi;
+    }
+    // atan(1/c) = pi/2 - atan(c)
+    let at = rat(c).atan();
+    Ball::from_float(&half_pi.sub(&at).upper(), P)
 }
 
 #[allow(clippy::too_many_arguments)]
-fn run(f: &Expr, g: &Expr, kernel: &Kernel, a: &Ball, t: &Ball, _j: u32, decay: &Decay, prec: u32, opts: &Options) -> Result<Integral> {
+fn run(f: &Expr, g: &Expr, kernel: &Kernel, a: &Ball, t: &Ball, slope: &Rational, _j: u32, decay: &Decay, prec: u32, opts: &Options) -> Result<Integral> {
     let wp = prec + 30;
     // the tail terms and their coefficients
     let half = CBall::from_real(Ball::one(wp).mul_pow2(-1));
@@ -371,9 +416,10 @@ fn run(f: &Expr, g: &Expr, kernel: &Kernel, a: &Ball, t: &Ball, _j: u32, decay: 
             let side = term.side;
             let tt = t.clone();
             let kern = kernel.clone();
+            let slope = Decimal::from_rational(slope.clone());
             let ray = move |s: &HoloBall| -> HoloBall {
                 let p = s.prec();
-                let dir = s.constant(CBall::new(Ball::one(p), Ball::from_i64(side, p)));
+                let dir = s.constant(CBall::new(slope.to_ball(p), Ball::from_i64(side, p)));
                 let z = s * &dir + s.real(tt.set_prec(p));
                 let gz = g.eval(&z);
                 let ez = match &kern {
@@ -419,7 +465,7 @@ pub(crate) fn integrate_inverted(f: &Expr, a: &Ball, prec: u32, opts: &Options) 
         if ((1u64 << j) as f64) < a_up + 1.0 {
             continue;
         }
-        let ctx = ZCtx { t: Ball::from_float(&(Float::with_val(P, 1) << j), P), full: true };
+        let ctx = ZCtx { t: Ball::from_float(&(Float::with_val(P, 1) << j), P), angle: Ball::pi(P), full: true };
         if let Some(c) = ctx.class(f) {
             found = Some((j, c));
             break;

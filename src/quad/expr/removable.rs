@@ -24,6 +24,34 @@
 //!   integrator's holomorphic mode is finite only where `N` is holomorphic (its
 //!   branch cuts give non-finite balls), so that evaluation is the check. At `z = p`
 //!   the formula gives `N'(p)/c1`, the value of the extension.
+//! * **`U^k`** (`k <= 4`, `(1 - cos x)/x^2`). The class `q >= 0` of `f = N/U^k` at `p`
+//!   shows `N = O(t^k)`, so `N` (holomorphic at `p`) and its first `k - 1` derivatives
+//!   vanish there, and Taylor's formula with integral remainder gives `f(z) = (c1^k
+//!   (k-1)!)^-1 int_0^1 (1 - s)^{k-1} N^(k)(p + s (z - p)) ds`: a weighted mean (the
+//!   weight's integral is `1/k`) of `N^(k)` on `H`, so `f(z)` lies in the ball of
+//!   `N^(k)(H)` times `1/(c1^k k!)`.
+//! * **Cancellation of higher order, proven exactly.** The local class sees one order of
+//!   cancellation per rule (`e^g - 1 = O(g)`), not two: for `(e^x - 1 - x)/x^2` it finds
+//!   `N = O(t)` and the class `q = -1`, which proves nothing. When the class does not
+//!   give `q >= 0`, the vanishing of `N, N', ..., N^(k-1)` at `p` is checked instead by
+//!   evaluating their trees at the rational `p` exactly ([`exact_at`]), in the ring
+//!   `Q[pi]` of polynomials in `pi` with rational coefficients: `x` is `p`, the literals
+//!   are the rationals they denote (a decimal is held exactly), `pi` is `pi`, `+ - *`
+//!   and integer powers are exact, a division only by a nonzero rational; a function
+//!   gives a value only at a rational argument where its value is a known rational:
+//!   `exp(0) = cos(0) = cosh(0) = sech(0) = J_0(0) = 1`, `sin(0) = tan(0) = sinh(0) =
+//!   tanh(0) = atan(0) = J_n(0) = 0` (`n != 0`), `log(1) = 0`, `sqrt(r^2) = r` (`r > 0`
+//!   rational, the principal root), `1^b = 1` (`b` constant, the principal branch);
+//!   anything else gives no value and the rule does not apply. As
+//!   `pi` is transcendental (Lindemann), an element of `Q[pi]` is 0 exactly when all its
+//!   coefficients are. Each value is then the exact value of `N^(j)(p)`, so `N^(j)(p) =
+//!   0` for `j < k` is a proof (`(sin(pi x) - pi x)/x^3`: `N'(0) = pi cos 0 - pi = 0`),
+//!   and Taylor's formula above applies with `N` holomorphic on `H`
+//!   (checked by the evaluation on `H`, as before). `(e^x - 1 - x)/x^2` (`N(0) = e^0 - 1
+//!   = 0`, `N'(0) = e^0 - 1 = 0`, enclosure `e^H / 2`) and `(cos x - 1 + x^2/2)/x^4`
+//!   (`N^(j)(0) = 0` for `j <= 3`, enclosure `cos(H)/24`) are found so; `(e^x - 1)/x^2`
+//!   (`N'(0) = 1`) is not, and stays a pole (`NotIntegrable` naming the point, from
+//!   its local class `q = -1`).
 //! * **Which form.** Where `U(B)` excludes 0 the quotient `N(B) / U(B)` is used as it
 //!   is; where it contains 0 (next to `p`) the enclosure above. Both enclose `f` on
 //!   `B`, so the integrator's ellipse bound holds with either.
@@ -41,8 +69,10 @@ use crate::quad::certified::HoloBall;
 pub(crate) struct Removable {
     num: Expr,
     den: Expr,
+    /// `N^(k)`, `k` the power of `U` in the denominator.
     slope: Expr,
-    c1: Rational,
+    /// `1 / (c1^k k!)`.
+    scale: Rational,
     p: Rational,
 }
 
@@ -66,7 +96,7 @@ impl Removable {
         if !self.num.eval(&h).is_finite() {
             return z.constant(CBall::indeterminate(prec));
         }
-        let recip = Decimal::from_rational(Rational::from(1) / &self.c1);
+        let recip = Decimal::from_rational(self.scale.clone());
         &self.slope.eval(&h) * &h.decimal(&recip)
     }
 }
@@ -84,7 +114,12 @@ fn union(a: &Ball, b: &Ball) -> Ball {
 /// local class at `p` proves `N(p) = 0` (method block). `None` otherwise.
 pub(crate) fn removable_point(f: &Expr, lo: &Rational, hi: &Rational) -> Option<Removable> {
     let Expr::Div(num, den) = f else { return None };
-    let (c0, c1) = affine(den)?;
+    // U or U^k (1 <= k <= 4)
+    let (base, k) = match &**den {
+        Expr::PowInt(b, k) if (1..=4).contains(k) => (&**b, *k as u32),
+        other => (other, 1),
+    };
+    let (c0, c1) = affine(base)?;
     if c1 == 0 {
         return None;
     }
@@ -99,12 +134,131 @@ pub(crate) fn removable_point(f: &Expr, lo: &Rational, hi: &Rational) -> Option<
     }
     let sigma = if p < *hi { 1 } else { -1 };
     let delta = Rational::from((1, 1024));
-    let class = local_class(f, &p, sigma, &delta)?;
-    if class.power < 0 {
-        return None;
+    // N(p) = ... = N^(k-1)(p) = 0: by the local class (q >= 0), or exactly (method block)
+    let bounded = local_class(f, &p, sigma, &delta).is_some_and(|c| c.power >= 0);
+    let mut slope = (**num).clone();
+    for _ in 0..k {
+        if !bounded && !exact_at(&slope, &p).is_some_and(|v| v.is_zero()) {
+            return None;
+        }
+        slope = derivative(&slope)?;
     }
-    let slope = derivative(num)?;
-    Some(Removable { num: (**num).clone(), den: (**den).clone(), slope, c1, p })
+    let fact: u32 = (1..=k).product();
+    let scale = Rational::from(1) / (Rational::from(rug::ops::Pow::pow(&c1, k)) * fact);
+    Some(Removable { num: (**num).clone(), den: (**den).clone(), slope, scale, p })
+}
+
+/// A polynomial in `pi` with rational coefficients (index = power of `pi`), no
+/// trailing zeros: since `pi` is transcendental (Lindemann), it is 0 exactly when it
+/// has no coefficients, and a rational exactly when it has at most one.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct PiPoly(Vec<Rational>);
+
+impl PiPoly {
+    fn trimmed(mut c: Vec<Rational>) -> PiPoly {
+        while c.last().is_some_and(|x| *x == 0) {
+            c.pop();
+        }
+        PiPoly(c)
+    }
+
+    fn rational(q: Rational) -> PiPoly {
+        PiPoly::trimmed(vec![q])
+    }
+
+    /// Whether the value is 0.
+    pub(crate) fn is_zero(&self) -> bool {
+        self.0.is_empty()
+    }
+
+    /// The value when it is rational.
+    fn as_rational(&self) -> Option<Rational> {
+        match self.0.len() {
+            0 => Some(Rational::new()),
+            1 => Some(self.0[0].clone()),
+            _ => None,
+        }
+    }
+
+    fn add(&self, o: &PiPoly, sign: i32) -> PiPoly {
+        let n = self.0.len().max(o.0.len());
+        let at = |v: &Vec<Rational>, i: usize| v.get(i).cloned().unwrap_or_default();
+        PiPoly::trimmed((0..n).map(|i| at(&self.0, i) + at(&o.0, i) * sign).collect())
+    }
+
+    fn mul(&self, o: &PiPoly) -> PiPoly {
+        if self.is_zero() || o.is_zero() {
+            return PiPoly(Vec::new());
+        }
+        let mut c = vec![Rational::new(); self.0.len() + o.0.len() - 1];
+        for (i, a) in self.0.iter().enumerate() {
+            for (j, b) in o.0.iter().enumerate() {
+                c[i + j] += Rational::from(a * b);
+            }
+        }
+        PiPoly::trimmed(c)
+    }
+}
+
+/// The exact value of `e` at `x = p`, a polynomial in `pi` with rational coefficients,
+/// when exact arithmetic and the functions' known rational values (`exp(0) = 1`,
+/// `sin(0) = 0`, `log(1) = 0`, ...) give it; `None` otherwise, at a division by 0 and
+/// at a division by a non-rational value (method block).
+pub(crate) fn exact_at(e: &Expr, p: &Rational) -> Option<PiPoly> {
+    let v = |a: &Expr| exact_at(a, p);
+    let q = PiPoly::rational;
+    Some(match e {
+        Expr::X => q(p.clone()),
+        Expr::Number(d) => q(d.as_rational().clone()),
+        Expr::Pi => PiPoly(vec![Rational::new(), Rational::from(1)]),
+        // the principal branch: 1^b = e^{b Log 1} = 1
+        Expr::Pow(a, b) if !b.depends_on_x() && v(a)?.as_rational()? == 1 => q(Rational::from(1)),
+        Expr::Pow(..) => return None,
+        Expr::Neg(a) => PiPoly(Vec::new()).add(&v(a)?, -1),
+        Expr::Add(a, b) => v(a)?.add(&v(b)?, 1),
+        Expr::Sub(a, b) => v(a)?.add(&v(b)?, -1),
+        Expr::Mul(a, b) => v(a)?.mul(&v(b)?),
+        Expr::Div(a, b) => {
+            let d = v(b)?.as_rational()?;
+            if d == 0 {
+                return None;
+            }
+            v(a)?.mul(&q(d.recip()))
+        }
+        Expr::PowInt(a, n) => {
+            let b = v(a)?;
+            if n.unsigned_abs() > 64 {
+                return None;
+            }
+            if *n < 0 {
+                let r = b.as_rational()?;
+                if r == 0 {
+                    return None;
+                }
+                return Some(q(rug::ops::Pow::pow(r, n.unsigned_abs() as u32).recip()));
+            }
+            (0..*n).fold(q(Rational::from(1)), |acc, _| acc.mul(&b))
+        }
+        Expr::Call(f, a) => {
+            let u = v(a)?.as_rational()?;
+            match f {
+                Function::Log if u == 1 => q(Rational::new()),
+                // the square of a nonzero rational: its positive root (the principal one)
+                Function::Sqrt if u > 0 && u.numer().is_perfect_square() && u.denom().is_perfect_square() => {
+                    q(Rational::from((u.numer().clone().sqrt(), u.denom().clone().sqrt())))
+                }
+                Function::Exp | Function::Cos | Function::Cosh | Function::Sech if u == 0 => q(Rational::from(1)),
+                Function::Sin | Function::Tan | Function::Sinh | Function::Tanh | Function::Atan if u == 0 => q(Rational::new()),
+                _ => return None,
+            }
+        }
+        Expr::BesselJ(n, a) => {
+            if !v(a)?.is_zero() {
+                return None;
+            }
+            q(Rational::from(i32::from(*n == 0)))
+        }
+    })
 }
 
 fn number(q: i64) -> Expr {
@@ -115,8 +269,49 @@ fn bx(e: Expr) -> Box<Expr> {
     Box::new(e)
 }
 
+fn is_number(e: &Expr, q: i64) -> bool {
+    matches!(e, Expr::Number(d) if *d.as_rational() == q)
+}
+
+/// `a b`, folded where a factor is 0 or 1 (exact identities; keeps the trees of
+/// repeated derivatives small).
 fn mul(a: Expr, b: Expr) -> Expr {
-    Expr::Mul(bx(a), bx(b))
+    if is_number(&a, 0) || is_number(&b, 0) {
+        number(0)
+    } else if is_number(&a, 1) {
+        b
+    } else if is_number(&b, 1) {
+        a
+    } else {
+        Expr::Mul(bx(a), bx(b))
+    }
+}
+
+/// `a + b`, folded where a term is 0.
+fn add(a: Expr, b: Expr) -> Expr {
+    if is_number(&a, 0) {
+        b
+    } else if is_number(&b, 0) {
+        a
+    } else {
+        Expr::Add(bx(a), bx(b))
+    }
+}
+
+/// `a - b`, folded where a term is 0.
+fn sub(a: Expr, b: Expr) -> Expr {
+    if is_number(&b, 0) {
+        a
+    } else if is_number(&a, 0) {
+        neg(b)
+    } else {
+        Expr::Sub(bx(a), bx(b))
+    }
+}
+
+/// `-a`, folded where `a` is 0.
+fn neg(a: Expr) -> Expr {
+    if is_number(&a, 0) { a } else { Expr::Neg(bx(a)) }
 }
 
 /// The derivative in `x` of the tree, by the sum, product, quotient, power and chain
@@ -131,14 +326,16 @@ pub(crate) fn derivative(e: &Expr) -> Option<Expr> {
     Some(match e {
         Expr::X => number(1),
         Expr::Pi | Expr::Number(_) => number(0),
-        Expr::Neg(a) => Expr::Neg(bx(d(a)?)),
-        Expr::Add(a, b) => Expr::Add(bx(d(a)?), bx(d(b)?)),
-        Expr::Sub(a, b) => Expr::Sub(bx(d(a)?), bx(d(b)?)),
-        Expr::Mul(a, b) => Expr::Add(bx(mul(d(a)?, (**b).clone())), bx(mul((**a).clone(), d(b)?))),
-        Expr::Div(a, b) => Expr::Div(
-            bx(Expr::Sub(bx(mul(d(a)?, (**b).clone())), bx(mul((**a).clone(), d(b)?)))),
-            bx(Expr::PowInt(b.clone(), 2)),
-        ),
+        Expr::Neg(a) => neg(d(a)?),
+        Expr::Add(a, b) => add(d(a)?, d(b)?),
+        Expr::Sub(a, b) => sub(d(a)?, d(b)?),
+        Expr::Mul(a, b) => add(mul(d(a)?, (**b).clone()), mul((**a).clone(), d(b)?)),
+        // a constant denominator: (a / b)' = a' / b
+        Expr::Div(a, b) if !b.depends_on_x() => Expr::Div(bx(d(a)?), b.clone()),
+        Expr::Div(a, b) => Expr::Div(bx(sub(mul(d(a)?, (**b).clone()), mul((**a).clone(), d(b)?))), bx(Expr::PowInt(b.clone(), 2))),
+        // a^0 = 1 and a^1 = a, so that no a^-1 (a pole where a = 0) enters the derivative
+        Expr::PowInt(_, 0) => number(0),
+        Expr::PowInt(a, 1) => d(a)?,
         Expr::PowInt(a, n) => mul(mul(number(*n), Expr::PowInt(a.clone(), n - 1)), d(a)?),
         Expr::Pow(a, b) if !b.depends_on_x() => {
             let b_minus_one = match const_rational(b) {
@@ -219,6 +416,17 @@ mod tests {
             ("1/x", false),
             ("log(x)/x", false),
             ("sin(x)/(x-3)", false),
+            ("(exp(x)-1-x)/x^2", true),
+            ("(cos(x)-1+x^2/2)/x^4", true),
+            ("(exp(x)-1)/x^2", false),
+            ("(exp(x)-1-x)/x^3", false),
+            ("(exp(x-1)-x)/(x-1)^2", true),
+            ("(sin(pi*x)-pi*x)/x^3", true),
+            ("(sin(pi*x)-x)/x^3", false),
+            ("(sqrt(4+x)-2-x/4)/x^2", true),
+            ("((1+x/2)^(1/3)-1-x/6)/x^2", true),
+            ("(sqrt(4+x)-2)/x^2", false),
+            ("sin(x)/x^2", false),
         ] {
             let e = Expr::parse(text).unwrap().canonical();
             assert_eq!(removable_point(&e, &q("-1"), &q("1")).is_some(), found, "{text}");
