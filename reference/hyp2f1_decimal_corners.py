@@ -37,6 +37,10 @@ CASES = [
     # issue 37's scan: c's decimal ball tightened to 54 000 bits, then ln, exp and
     # the series at that length (0.15 s at 157 bits)
     ("3", "10000", "2.304347624789777e1", "-4.25e1", "mpmath"),
+    # issue 37's scan (seed 2): the logarithmic case after Pfaff (b - a = 83) with
+    # z's decimal ball tightened to 58 000 bits: u = 1/(1-z), ln u and the series
+    # at that length, 150 ms of CPU at 150 bits (refused under a 0.1 s budget)
+    ("-245.25", "-162.25", "112.5", "-181.625e25051", "mpmath"),
 ]
 
 

@@ -88,3 +88,29 @@ fn long_parameters_that_answer_are_certified_at_the_asked_precision() {
         assert!(lo.overlaps(&hi), "({a}, {b}; {c}; {z}): {lo:?} vs {hi:?}");
     }
 }
+
+#[test]
+fn the_logarithmic_case_after_pfaff_answers_within_a_tenth_of_a_second() {
+    // issue 37's scan (seed 2): b - a = 83 makes the function after Pfaff the
+    // logarithmic 1-w case, with u = 1/(1-z) = 5.5e-25054. z's decimal ball,
+    // tightened to 58 000 bits, reached u, ln u and every term: 150 ms of CPU at
+    // 150 bits, refused under a 100 ms budget. Rounded into their balls at the
+    // working precision they cost about 1 ms of CPU: the budget is 100 times that,
+    // so a loaded machine does not decide this test, a return of the long operands does.
+    use maugis::registry::{self, Answer, Arg};
+    let rows = common::load("hyp2f1_decimal_corners");
+    let row = rows.iter().find(|r| r["z"] == "-181.625e25051").expect("the scan's row");
+    let r = Float::with_val(400, Float::parse(&row["value"]).unwrap());
+    let h = registry::function("hyp2f1").unwrap();
+    let args: Vec<Arg<maugis::ball::Decimal>> =
+        ["a", "b", "c", "z"].iter().map(|k| Arg::Real(maugis::ball::Decimal::parse(&row[*k]).unwrap())).collect();
+    for prec in [53, 150, 256] {
+        let budget = maugis::budget::Budget::from_millis(100).unwrap();
+        match h.eval_mp_with_budget(&args, prec, budget) {
+            Ok(Answer::Ball(ball)) => {
+                assert!(common::contains_40_digit_ref(&ball, &r) && ball.meets_rel(prec), "at {prec}: {ball:?} vs {}", row["value"]);
+            }
+            other => panic!("at {prec} bits: {other:?}"),
+        }
+    }
+}

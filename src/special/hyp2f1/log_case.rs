@@ -28,7 +28,7 @@
 use rug::float::Round;
 use rug::Float;
 
-use super::series::{abs_upper_precise, first_positive_index, negligible, negligible_scaled, ratio_bound, TailFactor};
+use super::series::{abs_upper_precise, first_positive_index, negligible, negligible_scaled, ratio_bound, rounded_inside_unit, TailFactor};
 use super::{one, MAX_LOG_M, MIN_SERIES_PREC};
 use crate::ball::{Ball, MAG_PREC};
 use crate::error::{Error, Interval, Result};
@@ -48,6 +48,10 @@ pub(crate) fn hyp2f1_connection_log(a: &Float, b: &Float, c: &Float, z: &Float, 
 
 /// The logarithmic 1-x formula at the ball `u = 1 - x`, `0 < u < 1`.
 pub(super) fn log_core(a: &Float, b: &Float, c: &Float, u: &Ball, wp: u32) -> Result<Ball> {
+    // `u` at `wp` bits where it stays in (0, 1): `ln u` and every term multiply
+    // by it (a decimal `z` tightened to 58 000 bits, issue 37's scan)
+    let rounded = rounded_inside_unit(u, wp);
+    let u = rounded.as_ref().unwrap_or(u);
     let ca = exact_sub(c, a);
     let cb = exact_sub(c, b);
     let s = exact_sub(&ca, b);
