@@ -5,7 +5,8 @@ that issue 23h's driver (tests/it/fuzz.rs `registry_mp_slow_scan`) found slow
 Usage:  python3 reference/hyp2f1_decimal_corners.py
 Writes reference/data/hyp2f1_decimal_corners.csv: a,b,c,z,value,how where `how`
 is `mpmath` (mpmath.hyp2f1 from the decimal strings at 600 and 900 bits, kept iff
-they agree to 45 digits) or `sum` (a terminating series, a or b a non-positive
+they agree to 45 digits), `pfaff` (for z < 0: Pfaff's series in w = z/(z-1) summed
+term by term at 600 and 900 bits, with the same test) or `sum` (a terminating series, a or b a non-positive
 integer, summed term by term in mpmath from the decimal strings at 4000 and 8000
 bits, kept iff they agree to 45 digits; mpmath.hyp2f1 gives up on it). 40
 significant digits are printed.
@@ -41,6 +42,13 @@ CASES = [
     # z's decimal ball tightened to 58 000 bits: u = 1/(1-z), ln u and the series
     # at that length, 150 ms of CPU at 150 bits (refused under a 0.1 s budget)
     ("-245.25", "-162.25", "112.5", "-181.625e25051", "mpmath"),
+    # issue 37's scan: c past the f64 range and z < -1 (Pfaff's c - b holds 97 000
+    # bits, radius 2^31464 at 65 536 input bits): refused TooExpensive (Euler's
+    # polynomial of degree 2^96800 for the majorant), then PrecisionExhausted
+    # (the majorant's d/db bound M(B+1) is 2^31464 times the value)
+    # (mpmath.hyp2f1 runs for minutes at this c: the Pfaff series, term by term)
+    ("-1e-23409", "22.96", "3.4e29217", "-8", "pfaff"),
+    ("1.5", "22.96", "3.4e29217", "-8", "pfaff"),
 ]
 
 
@@ -55,8 +63,26 @@ def poly_sum(a, b, c, z):
     return s
 
 
+def pfaff_sum(a, b, c, z):
+    """(1-z)^-a 2F1(a, c-b; c; w), w = z/(z-1) in (0, 1), summed term by term
+    until a term is below 2^-(prec+64) of the sum with the term ratio below
+    (1 + w)/2 (then the tail is below twice that term)."""
+    a, b, c, z = (mpf(x) for x in (a, b, c, z))
+    w = z / (z - 1)
+    t = s = mpf(1)
+    n = 0
+    while True:
+        r = (a + n) * (c - b + n) / ((c + n) * (n + 1)) * w
+        t *= r
+        s += t
+        n += 1
+        if abs(r) < (1 + w) / 2 and abs(t) < abs(s) * mpf(2) ** -(mp.prec + 64):
+            break
+    return (1 - z) ** (-a) * s
+
+
 def value(a, b, c, z, how):
-    f = poly_sum if how == "sum" else mpmath.hyp2f1
+    f = {"sum": poly_sum, "pfaff": pfaff_sum}.get(how, mpmath.hyp2f1)
     bits = (4000, 8000) if how == "sum" else (600, 900)
     vals = []
     for p in bits:

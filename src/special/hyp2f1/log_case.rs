@@ -110,6 +110,11 @@ pub(super) fn finite_sum(a: &Float, b: &Float, m: u64, u: &Ball, wp: u32) -> Res
         let den = Ball::from_i64((ni + 1) * (ni + 1 - m as i64), wp);
         t = t.mul(&ab.add_i64(ni)).mul(&bb.add_i64(ni)).mul(u).div(&den)?;
         s = s.add(&t);
+        if (n + 1) % crate::budget::TERMS_BETWEEN_CHECKS == 0 {
+            // `m` up to MAX_LOG_M terms: `2F1(100000, 1; 23.07; -4.75e7327)` at 6
+            // bits ran 1.5 s of CPU here before the next check (issue 37's scan, seed 2)
+            crate::budget::check_elapsed("2F1 logarithmic case, finite sum", 0.0, crate::error::Reached::Terms { count: n + 1 })?;
+        }
     }
     Ok(s)
 }
