@@ -74,6 +74,10 @@ const MAJORANT_MAX_WP: u32 = 4096;
 /// Extra bits of the ball arithmetic around the midpoint evaluation.
 const BALL_GUARD: u32 = 32;
 
+/// Below `z = -FAR_NEGATIVE` the ball path tries the connection formula in
+/// `1/(1-z)` (at most 1/3) before Pfaff.
+const FAR_NEGATIVE: f64 = 2.0;
+
 /// [`Error::BallOutOfRange`] for the ball `x` named `arg`.
 fn ball_outside(arg: &'static str, x: &Ball, allowed: Interval) -> Error {
     Error::BallOutOfRange { arg, lower: x.lower().to_f64(), upper: x.upper().to_f64(), allowed }
@@ -122,6 +126,20 @@ pub fn hyp2f1_ball_mp(a: &Ball, b: &Ball, c: &Ball, z: &Ball, prec: u32) -> Resu
     }
     if z.lower() > -0.75 && z.upper() < 1 {
         return direct_ball(a, b, c, z, wp);
+    }
+    if z.upper() < -FAR_NEGATIVE {
+        // The connection formula in `u = 1/(1-z)` over the balls (the
+        // large-parameter route's formula, `large_param.rs`, valid for any
+        // parameters): Pfaff's `w = 1 - u` is next to 1 there, where the
+        // majorant's derivative grows like `(1-R)^(C-A-B-1)` and no input
+        // precision pins the value: `2F1(26.13, 38; 1.5; -1.0875e16464)` was
+        // refused PrecisionExhausted at 65 536 input bits (issue 37's scan, about
+        // 20 of 20 000 inputs a seed). On an error (an integer inside `b - a`, a
+        // Gamma pole) Pfaff below.
+        let loss = large_param_loss(a.mid().to_f64(), b.mid().to_f64(), c.mid().to_f64(), z.mid().to_f64());
+        if let Ok(r) = ziv_ball_inputs(prec, DEFAULT_GUARD_BITS + loss, None, |wp| hyp2f1_large_param(a, b, c, z, wp)) {
+            return Ok(r);
+        }
     }
     if z.upper() < -0.5 {
         // Pfaff: (1-z)^{-a} 2F1(a, c-b; c; w), w = z/(z-1) = -z/(1-z).

@@ -356,6 +356,9 @@ pub(crate) fn series_zoned(p1: &Ball, p2: &Ball, q: &Ball, x: &Ball, wp: u32) ->
         if n > MAX_TERMS {
             return Err(Error::NoConvergence { function: "hyp2f1 (large-parameter route)", terms: n });
         }
+        if n % crate::budget::TERMS_BETWEEN_CHECKS == 0 {
+            crate::budget::check_elapsed("2F1 connection series (large-parameter route)", 0.0, crate::error::Reached::Terms { count: n })?;
+        }
     }
 }
 
