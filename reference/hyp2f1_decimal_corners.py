@@ -53,6 +53,10 @@ CASES = [
     # to 1 made the majorant's bound useless (PrecisionExhausted at 65 536 input bits)
     ("2.6132634054252314e1", "38", "1.5", "-10.875e16463", "mpmath"),
     ("22.873558852592893", "98.25", "39", "-197.625e5243", "mpmath"),
+    # issue 37's scan: polynomials (a = -9, -2) with b of 10^20000 and more held at
+    # 65 536 bits; the majorant's d/db bound M(B+1) was 2^9500 times the value
+    ("-9", "0.000000000000000004647996797235006e21871", "24.310973118189104e-26855", "-50.125", "sum"),
+    ("-2", "27.70450403676515e20239", "22.60653980638881e-20850", "-2.1425e2", "sum"),
 ]
 
 

@@ -22,7 +22,9 @@
 //!   likewise for `b`. Where `a > 0` over its ball, `|d/da (a)_n| <= (A)_n n / a_lo`
 //!   gives also `sup |d/da 2F1| <= (R / a_lo) dM/dR`, and the smaller is taken
 //!   (likewise for `b`): at a parameter of `10^29217` the first is the majorant
-//!   itself, the second `10^-29217` times it. `|d/dc (1/(c)_n)| <= n / ((C)_n C)` gives
+//!   itself, the second `10^-29217` times it. A terminating series of degree `d`
+//!   (the other parameter an exact `-d`) has only `k < d`, so the same holds
+//!   with `-(b_hi + d - 1)` in place of `b_lo` when that is positive. `|d/dc (1/(c)_n)| <= n / ((C)_n C)` gives
 //!   `sup |d/dc 2F1| <= (R/C) dM/dR`, and `sup |d/dz 2F1| <= dM/dR =
 //!   (A B / C) 2F1(A+1, B+1; C+1; R)` [DLMF 15.5.1]. By the mean value theorem
 //!   `|F(x) - F(mid)| <= sum_i sup|d_i F| rad_i`, added to the certified ball at
@@ -337,7 +339,7 @@ fn direct_ball(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32) -> Result<Ball> 
     let x = if terminating { Float::with_val(rr.prec(), -&rr) } else { rr.clone() };
     let mut err = Mag::ZERO;
     // dM/dR = (A B / C) 2F1(A+1, B+1; C+1; R), when a radius needs it
-    let needs_d_r = !c.is_exact() || !z.is_exact() || [a, b].iter().any(|x| !x.is_exact() && x.lower() > 0);
+    let needs_d_r = !c.is_exact() || !z.is_exact() || [a, b].iter().any(|x| !x.is_exact());
     let d_r = if needs_d_r {
         let c1 = Float::with_val_round(c_lo.prec().max(64), &c_lo + 1u32, Round::Down).0;
         Some(majorant(&pa1, &pb1, &c1, &x)?.mul(Mag::from_float_up(&aa)).mul(Mag::from_float_up(&bb)).div(Mag::from_float_down(&c_lo)))
@@ -349,10 +351,23 @@ fn direct_ball(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32) -> Result<Ball> 
     // `c`): at `b` of 97 000 bits held at 65 536 (`c - b` after Pfaff of a
     // decimal `c = 3.4e29217`, radius `2^31464`) the first is `2^31464` times the
     // value, the second `2^-65536` (issue 37's scan: PrecisionExhausted before)
-    let param_err = |p: &Ball, shifted: Mag| -> Mag {
+    // With a terminating series of degree `d` (the other parameter an exact `-d`)
+    // only `k < d` enter, so `p` with `p + d - 1 < 0` over its ball has
+    // `|p + k| >= -(p_hi + d - 1)` there: the same bound with that distance
+    // (`2F1(-1, 1.9e22735; 5e-309; -7) = 1 + 7 b / c`: PrecisionExhausted before).
+    let degree = deg_a.or(deg_b);
+    let distance = |p: &Ball| -> Option<Float> {
         let lo = p.lower();
-        match &d_r {
-            Some(d) if lo > 0 => {
+        if lo > 0 {
+            return Some(lo.clone());
+        }
+        let d = degree?;
+        let top = Float::with_val_round(p.upper().prec().max(64), p.upper() + d.saturating_sub(1), Round::Up).0;
+        (top < 0).then(|| -top)
+    };
+    let param_err = |p: &Ball, shifted: Mag| -> Mag {
+        match (&d_r, distance(p)) {
+            (Some(d), Some(lo)) => {
                 let sharp = d.mul(Mag::from_float_up(&rr)).div(Mag::from_float_down(&lo));
                 if sharp.le(&shifted) {
                     sharp
