@@ -1,6 +1,6 @@
 //! f64 J_n over issue 8's domain (n <= 60, x <= 150, uniform, integer n, fixed
 //! seed): time per value of `bessel_j` and `bessel_j_bounded` (wall clock and
-//! this thread's CPU time, from /proc/thread-self/schedstat on Linux), per
+//! this thread's CPU time, `maugis::budget::thread_cpu_seconds`), per
 //! native method, the share that fell back to MP, and the worst relative
 //! error against the certified 128-bit value on every point.
 //! `cargo run --release --example bessel_f64 [points]`
@@ -8,6 +8,7 @@
 //! The points are those of `reference/bench_scipy.py --bessel` (same generator,
 //! same seed), so the two outputs compare side by side.
 
+use maugis::budget::thread_cpu_seconds;
 use std::time::Instant;
 
 use maugis::special::bessel_j::{bessel_j, bessel_j_bounded, bessel_j_mp, choose_native, NativeMethod};
@@ -29,22 +30,14 @@ fn points(count: usize) -> Vec<(i64, f64)> {
         .collect()
 }
 
-/// This thread's CPU time in seconds (0 where /proc is not available).
-fn cpu_seconds() -> f64 {
-    std::fs::read_to_string("/proc/thread-self/schedstat")
-        .ok()
-        .and_then(|s| s.split_whitespace().next().and_then(|v| v.parse::<f64>().ok()))
-        .map_or(0.0, |ns| ns * 1e-9)
-}
-
 /// Best of `reps` runs: (wall us, cpu us) per value.
 fn time_per_value<F: FnMut() -> f64>(count: usize, reps: usize, mut f: F) -> (f64, f64, f64) {
     let (mut wall, mut cpu, mut acc) = (f64::INFINITY, f64::INFINITY, 0.0);
     for _ in 0..reps {
-        let (t0, c0) = (Instant::now(), cpu_seconds());
+        let (t0, c0) = (Instant::now(), thread_cpu_seconds());
         acc += f();
         wall = wall.min(t0.elapsed().as_secs_f64());
-        cpu = cpu.min(cpu_seconds() - c0);
+        cpu = cpu.min(thread_cpu_seconds() - c0);
     }
     (wall * 1e6 / count as f64, cpu * 1e6 / count as f64, acc)
 }

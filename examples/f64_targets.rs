@@ -22,6 +22,7 @@
 //!
 //! `cargo run --release --example f64_targets --features maugis/gmp-no-check`
 
+use maugis::budget::thread_cpu_seconds;
 use maugis::contact::displacement::{du_wave_bounded, u_wave_bounded};
 use maugis::special::hyp1f2::hyp1f2_bounded;
 use maugis::special::{fallback_counts, meijer_g};
@@ -33,26 +34,17 @@ mod meijer_domain;
 #[path = "../benches/common/wave_domain.rs"]
 mod wave_domain;
 
-/// The calling thread's CPU time in ns.
-fn thread_cpu_ns() -> f64 {
-    let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
-    // SAFETY: `ts` is a valid, writable timespec; the clock id is a constant Linux knows.
-    let rc = unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut ts) };
-    assert_eq!(rc, 0, "clock_gettime(CLOCK_THREAD_CPUTIME_ID) failed");
-    ts.tv_sec as f64 * 1e9 + ts.tv_nsec as f64
-}
-
 /// CPU time per call of `f` in us: the fastest of 40 batches of `calls`.
 fn per_call(calls: usize, mut f: impl FnMut() -> f64) -> f64 {
     let mut best = f64::INFINITY;
     for _ in 0..40 {
-        let t = thread_cpu_ns();
+        let t = thread_cpu_seconds() * 1e9;
         let mut s = 0.0;
         for _ in 0..calls {
             s += f();
         }
         black_box(s);
-        best = best.min((thread_cpu_ns() - t) * 1e-3 / calls as f64);
+        best = best.min(((thread_cpu_seconds() * 1e9) - t) * 1e-3 / calls as f64);
     }
     best
 }

@@ -1,16 +1,13 @@
 //! Thread CPU time per value of `hyp1f2_bounded(1/2; k+1, k+3/2; -s^2)` over
 //! issue 23's table: `k` in {0, 1, 2, 5, 10, 50, 200, 1000}, 64 values of `s` in
 //! `(0, 35]` per `k` (the same points as the criterion group `hyp1f2_f64_per_k`),
-//! with the MP fallbacks counted. CPU time (from `/proc/thread-self/schedstat`)
+//! with the MP fallbacks counted. CPU time (`maugis::budget::thread_cpu_seconds`)
 //! rather than wall time, since the machine is shared.
 //!
 //! `cargo run --release --example hyp1f2_f64_cpu`
 
+use maugis::budget::thread_cpu_seconds;
 use maugis::special::hyp1f2::hyp1f2_bounded;
-
-fn cpu_ns() -> f64 {
-    std::fs::read_to_string("/proc/thread-self/schedstat").unwrap().split_whitespace().next().unwrap().parse().unwrap()
-}
 
 fn main() {
     let ss: Vec<f64> = (1..=64).map(|i| 35.0 * ((i as f64 * 0.618_033_988_749_895).fract()).max(1.0 / 64.0)).collect();
@@ -24,14 +21,14 @@ fn main() {
             let b = hyp1f2_bounded(0.5, k + 1.0, k + 1.5, -s * s).unwrap();
             worst = worst.max(b.err / b.value.abs());
         }
-        let t0 = cpu_ns();
+        let t0 = thread_cpu_seconds() * 1e9;
         let mut acc = 0.0;
         for _ in 0..reps {
             for &s in &ss {
                 acc += hyp1f2_bounded(0.5, k + 1.0, k + 1.5, std::hint::black_box(-s * s)).unwrap().value;
             }
         }
-        let us = (cpu_ns() - t0) / (reps * ss.len()) as f64 * 1e-3;
+        let us = ((thread_cpu_seconds() * 1e9) - t0) / (reps * ss.len()) as f64 * 1e-3;
         total += us;
         println!("{k},{us:.3},{worst:.2e}{}", if acc.is_nan() { " nan" } else { "" });
     }

@@ -6,16 +6,9 @@
 //! CPU time (CLOCK_THREAD_CPUTIME_ID): on the shared 2-core machine wall times
 //! swing severalfold with the other builds' load.
 //! `cargo run --release --example hyp2f1_large_grid --features maugis/gmp-no-check`
+use maugis::budget::thread_cpu_seconds;
 use maugis::ball::{eval_at_decimals, Decimal};
 use maugis::special::hyp2f1::hyp2f1_ball_mp;
-
-/// The calling thread's CPU time in seconds.
-fn cpu_seconds() -> f64 {
-    let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
-    // SAFETY: clock_gettime writes the timespec it is given.
-    unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut ts) };
-    ts.tv_sec as f64 + ts.tv_nsec as f64 * 1e-9
-}
 
 fn main() {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/reference/data/hyp2f1_large_param.csv");
@@ -26,14 +19,14 @@ fn main() {
         for r in &rows {
             let d: Vec<Decimal> = r.iter().map(|s| Decimal::parse(s).unwrap()).collect();
             let call = || eval_at_decimals(&d, prec, |x| hyp2f1_ball_mp(&x[0], &x[1], &x[2], &x[3], prec));
-            let t = cpu_seconds();
+            let t = thread_cpu_seconds();
             let first = call();
-            let first_t = cpu_seconds() - t;
+            let first_t = thread_cpu_seconds() - t;
             let mut best = f64::INFINITY;
             for _ in 0..5 {
-                let t = cpu_seconds();
+                let t = thread_cpu_seconds();
                 let _ = call();
-                best = best.min(cpu_seconds() - t);
+                best = best.min(thread_cpu_seconds() - t);
             }
             if first.is_err() {
                 errors += 1;

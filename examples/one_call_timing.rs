@@ -3,6 +3,7 @@
 //! Prints the answer or the refusal, the wall time and the thread's CPU time
 //! (issue 37's slow-input scan; on the shared machine the wall time swings with
 //! the other builds' load, the CPU time much less).
+use maugis::budget::thread_cpu_seconds;
 use maugis::ball::Decimal;
 use maugis::registry::{self, Arg, ParamKind};
 
@@ -25,16 +26,9 @@ fn main() {
         })
         .collect();
     for round in 0..2 {
-        let (t0, c0) = (std::time::Instant::now(), cpu_seconds());
+        let (t0, c0) = (std::time::Instant::now(), thread_cpu_seconds());
         let r = f.eval_mp_with_budget(&args, prec, budget);
-        println!("round {round}: {:.4} s (CPU {:.4} s): {r:?}", t0.elapsed().as_secs_f64(), cpu_seconds() - c0);
+        println!("round {round}: {:.4} s (CPU {:.4} s): {r:?}", t0.elapsed().as_secs_f64(), thread_cpu_seconds() - c0);
     }
 }
 
-/// The calling thread's CPU time in seconds.
-fn cpu_seconds() -> f64 {
-    let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
-    // SAFETY: clock_gettime writes the timespec it is given.
-    unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut ts) };
-    ts.tv_sec as f64 + ts.tv_nsec as f64 * 1e-9
-}

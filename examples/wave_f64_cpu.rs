@@ -4,7 +4,7 @@
 //! scratch (`u_wave_bounded`) and with the contact precomputed
 //! (`WaveBessel::eval_bounded`, `WaveBessel::eval`, and the batch
 //! `WaveBessel::eval_bounded_into` over the 64 points). Thread CPU time from
-//! `clock_gettime(CLOCK_THREAD_CPUTIME_ID)` (Linux), so that a loaded machine inflates it
+//! `maugis::budget::thread_cpu_seconds` (Linux), so that a loaded machine inflates it
 //! less than wall time; criterion's `wave_f64_domain` group gives wall times.
 //!
 //!     cargo run --release --example wave_f64_cpu [s|p|g|v<a>]    (s: scratch only, p: precomputed only,
@@ -13,30 +13,9 @@
 //!     du_wave_bounded at contact size a, for callgrind)
 
 use maugis::contact::displacement::bounded::wave_scratch_misses;
+use maugis::budget::thread_cpu_seconds;
 use maugis::contact::displacement::{du_wave, du_wave_bounded, u_wave, u_wave_bounded, WaveBessel};
-/// `struct timespec` of Linux on 64-bit targets.
-#[repr(C)]
-struct Timespec {
-    tv_sec: i64,
-    tv_nsec: i64,
-}
 
-extern "C" {
-    fn clock_gettime(clock: i32, tp: *mut Timespec) -> i32;
-}
-
-/// Linux's `CLOCK_THREAD_CPUTIME_ID`.
-const CLOCK_THREAD_CPUTIME_ID: i32 = 3;
-
-/// Thread CPU time in ns (`clock_gettime(CLOCK_THREAD_CPUTIME_ID)`: exact to the
-/// ns, where /proc/thread-self/schedstat moves only at scheduler events).
-fn cpu_ns() -> f64 {
-    let mut t = Timespec { tv_sec: 0, tv_nsec: 0 };
-    // SAFETY: `t` is a valid, writable timespec; the clock id is a constant Linux defines.
-    let rc = unsafe { clock_gettime(CLOCK_THREAD_CPUTIME_ID, &mut t) };
-    assert_eq!(rc, 0, "clock_gettime(CLOCK_THREAD_CPUTIME_ID) failed");
-    t.tv_sec as f64 * 1e9 + t.tv_nsec as f64
-}
 /// `g`: thread CPU time per value of `u_wave_bounded` and of `du_wave_bounded`
 /// from scratch at each point of the model-domain grid (`zeta = 9/8`, `a` from
 /// 0.5 to 6 in steps of 1/4, `x/a` in {1, 1 + ulp, 1.001, 1.01, 1.1, 1.5, 2, 2.5, 3}),
@@ -59,11 +38,11 @@ fn grid() {
         for (which, t) in times.iter_mut().enumerate() {
             let call = |x: f64| if which == 0 { u_wave_bounded(a, 1.125, 1.0, x) } else { du_wave_bounded(a, 1.125, 1.0, x) };
             s += call(x).unwrap().err;
-            let t0 = cpu_ns();
+            let t0 = thread_cpu_seconds() * 1e9;
             for _ in 0..reps {
                 s += call(std::hint::black_box(x)).unwrap().value;
             }
-            t.push((cpu_ns() - t0) / reps as f64 * 1e-3);
+            t.push(((thread_cpu_seconds() * 1e9) - t0) / reps as f64 * 1e-3);
         }
     }
     for (name, t) in ["u_wave_bounded", "du_wave_bounded"].iter().zip(times.iter_mut()) {
@@ -107,29 +86,29 @@ fn main() {
     for &a in &[1.0, 3.0, 6.0] {
         let xs: Vec<f64> = (0..64).map(|i| a * (1.0 + 2.0 * (i as f64 * 0.754877666246693).fract())).collect();
         if mode != "p" {
-            let t0 = cpu_ns();
+            let t0 = thread_cpu_seconds() * 1e9;
             for _ in 0..15000 { for &x in &xs { s += u_wave(a, 1.125, 1.0, x).unwrap(); } }
-            println!("a={a} scratch u_wave {:.3} us/value (CPU)", (cpu_ns() - t0) / 960000.0 * 1e-3);
-            let t0 = cpu_ns();
+            println!("a={a} scratch u_wave {:.3} us/value (CPU)", ((thread_cpu_seconds() * 1e9) - t0) / 960000.0 * 1e-3);
+            let t0 = thread_cpu_seconds() * 1e9;
             for _ in 0..15000 { for &x in &xs { s += du_wave(a, 1.125, 1.0, x).unwrap(); } }
-            println!("a={a} scratch du_wave {:.3} us/value (CPU)", (cpu_ns() - t0) / 960000.0 * 1e-3);
-            let t0 = cpu_ns();
+            println!("a={a} scratch du_wave {:.3} us/value (CPU)", ((thread_cpu_seconds() * 1e9) - t0) / 960000.0 * 1e-3);
+            let t0 = thread_cpu_seconds() * 1e9;
             for _ in 0..1500 { for &x in &xs { s += u_wave_bounded(a, 1.125, 1.0, x).unwrap().value; } }
-            println!("a={a} scratch bounded {:.3} us/value (CPU)", (cpu_ns() - t0) / 96000.0 * 1e-3);
+            println!("a={a} scratch bounded {:.3} us/value (CPU)", ((thread_cpu_seconds() * 1e9) - t0) / 96000.0 * 1e-3);
         }
         if mode != "s" {
             let wb = WaveBessel::new(a, 1.125, 1.0).unwrap();
             wb.eval_bounded(a).unwrap();
-            let t0 = cpu_ns();
+            let t0 = thread_cpu_seconds() * 1e9;
             for _ in 0..20000 { for &x in &xs { let r = wb.eval_bounded(x).unwrap(); s += r.0.value + r.0.err; } }
-            println!("a={a} precomp bounded {:.3} us/value (CPU)", (cpu_ns() - t0) / 1280000.0 * 1e-3);
-            let t0 = cpu_ns();
+            println!("a={a} precomp bounded {:.3} us/value (CPU)", ((thread_cpu_seconds() * 1e9) - t0) / 1280000.0 * 1e-3);
+            let t0 = thread_cpu_seconds() * 1e9;
             for _ in 0..20000 { for &x in &xs { let r = wb.eval(x).unwrap(); s += r.0; } }
-            println!("a={a} precomp estimate {:.3} us/value (CPU)", (cpu_ns() - t0) / 1280000.0 * 1e-3);
+            println!("a={a} precomp estimate {:.3} us/value (CPU)", ((thread_cpu_seconds() * 1e9) - t0) / 1280000.0 * 1e-3);
             let mut out = wb.eval_bounded_many(&xs).unwrap();
-            let t0 = cpu_ns();
+            let t0 = thread_cpu_seconds() * 1e9;
             for _ in 0..20000 { wb.eval_bounded_into(&xs, &mut out).unwrap(); s += out[7].0.value; }
-            println!("a={a} precomp bounded, batch of 64 {:.3} us/value (CPU)", (cpu_ns() - t0) / 1280000.0 * 1e-3);
+            println!("a={a} precomp bounded, batch of 64 {:.3} us/value (CPU)", ((thread_cpu_seconds() * 1e9) - t0) / 1280000.0 * 1e-3);
         }
     }
     if s == 0.1 { println!("{s}"); }

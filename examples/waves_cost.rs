@@ -7,16 +7,10 @@
 //!
 //! The criterion group `waves` of `benches/solver.rs` times the same curves in wall time.
 
+use maugis::budget::thread_cpu_seconds;
 use maugis::contact::curve::{load_area_curve, CurveOptions};
 use maugis::contact::model::Params;
 use maugis::contact::profile::WavyProfile;
-
-fn cpu_seconds() -> f64 {
-    let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
-    // SAFETY: clock_gettime writes the timespec it is given.
-    unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut ts) };
-    ts.tv_sec as f64 + ts.tv_nsec as f64 * 1e-9
-}
 
 /// Median thread CPU time of one 600-state curve, computed on this thread.
 fn median_curve_seconds(p: Params, reps: usize) -> f64 {
@@ -24,10 +18,10 @@ fn median_curve_seconds(p: Params, reps: usize) -> f64 {
     let mut t: Vec<f64> = (0..reps)
         .map(|_| {
             pool.install(|| {
-                let t0 = cpu_seconds();
+                let t0 = thread_cpu_seconds();
                 let c = load_area_curve(p, CurveOptions::default()).expect("curve");
                 assert_eq!(c.points.len(), 600);
-                cpu_seconds() - t0
+                thread_cpu_seconds() - t0
             })
         })
         .collect();

@@ -211,6 +211,27 @@ pub(crate) fn check_elapsed(function: &'static str, next_seconds: f64, reached: 
     Ok(())
 }
 
+/// The calling thread's CPU time in seconds (`clock_gettime` with
+/// `CLOCK_THREAD_CPUTIME_ID`, nanosecond resolution). A measuring aid: on a
+/// shared machine a call's wall time grows with the other processes' load, its
+/// thread CPU time much less. The budget itself counts wall time (what a caller
+/// waits). Used by the timing examples and the slow-input scan (tests/it/fuzz.rs).
+///
+/// ```
+/// let t0 = maugis::budget::thread_cpu_seconds();
+/// let spent = maugis::budget::thread_cpu_seconds() - t0;
+/// assert!(spent >= 0.0);
+/// ```
+#[cfg(unix)]
+pub fn thread_cpu_seconds() -> f64 {
+    let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
+    // SAFETY: `ts` is a valid, writable timespec, and the clock id is one POSIX
+    // defines; the call writes nothing else. It fails (EINVAL) only for an
+    // unknown clock, which this one is not.
+    unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut ts) };
+    ts.tv_sec as f64 + ts.tv_nsec as f64 * 1e-9
+}
+
 /// Seconds since `t` (for the next-iteration estimates of the loops).
 pub(crate) fn since(t: Instant) -> f64 {
     t.elapsed().as_secs_f64()

@@ -22,6 +22,7 @@ mod fuzz_real;
 #[path = "common/fuzz_inputs.rs"]
 mod fuzz_inputs;
 
+use maugis::budget::thread_cpu_seconds;
 use fuzz_inputs::check;
 use maugis::ball::Decimal;
 use maugis::contact::curve::{load_area_curve, state, CurveOptions};
@@ -305,14 +306,6 @@ fn registry_mp_budget_scan() {
     watchdog.join().unwrap();
     assert!(wrong.is_empty(), "refusals neither about the input nor about time:\n{}", wrong.join("\n"));
     assert!(too_slow.is_empty(), "calls over the scan's limit:\n{}", too_slow.join("\n"));
-}
-
-/// The calling thread's CPU time in seconds (CLOCK_THREAD_CPUTIME_ID).
-fn thread_cpu_seconds() -> f64 {
-    let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
-    // SAFETY: clock_gettime writes the timespec it is given.
-    unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut ts) };
-    ts.tv_sec as f64 + ts.tv_nsec as f64 * 1e-9
 }
 
 /// Whether a refusal is about the input as typed: outside the domain, an edge

@@ -19,7 +19,12 @@
 //!   positive series `M(A, B; C; R) = 2F1(A, B; C; R)`. Its coefficients are
 //!   polynomials in `A` with non-negative coefficients, so `M` is convex and
 //!   increasing in `A`: `sup |d/da 2F1| <= dM/dA (A) <= M(A+1) - M(A) <= M(A+1)`;
-//!   likewise for `b`. `|d/dc (1/(c)_n)| <= n / ((C)_n C)` gives
+//!   likewise for `b`. Where `a > 0` over its ball, `|d/da (a)_n| <= (A)_n n / a_lo`
+//!   gives also `sup |d/da 2F1| <= (R / a_lo) dM/dR`, and the smaller is taken
+//!   (likewise for `b`): at a parameter of `10^29217` the first is the majorant
+//!   itself, the second `10^-29217` times it. A terminating series of degree `d`
+//!   (the other parameter an exact `-d`) has only `k < d`, so the same holds
+//!   with `-(b_hi + d - 1)` in place of `b_lo` when that is positive. `|d/dc (1/(c)_n)| <= n / ((C)_n C)` gives
 //!   `sup |d/dc 2F1| <= (R/C) dM/dR`, and `sup |d/dz 2F1| <= dM/dR =
 //!   (A B / C) 2F1(A+1, B+1; C+1; R)` [DLMF 15.5.1]. By the mean value theorem
 //!   `|F(x) - F(mid)| <= sum_i sup|d_i F| rad_i`, added to the certified ball at
@@ -71,6 +76,10 @@ const MAJORANT_MAX_WP: u32 = 4096;
 /// Extra bits of the ball arithmetic around the midpoint evaluation.
 const BALL_GUARD: u32 = 32;
 
+/// Below `z = -FAR_NEGATIVE` the ball path tries the connection formula in
+/// `1/(1-z)` (at most 1/3) before Pfaff.
+const FAR_NEGATIVE: f64 = 2.0;
+
 /// [`Error::BallOutOfRange`] for the ball `x` named `arg`.
 fn ball_outside(arg: &'static str, x: &Ball, allowed: Interval) -> Error {
     Error::BallOutOfRange { arg, lower: x.lower().to_f64(), upper: x.upper().to_f64(), allowed }
@@ -120,6 +129,20 @@ pub fn hyp2f1_ball_mp(a: &Ball, b: &Ball, c: &Ball, z: &Ball, prec: u32) -> Resu
     if z.lower() > -0.75 && z.upper() < 1 {
         return direct_ball(a, b, c, z, wp);
     }
+    if z.upper() < -FAR_NEGATIVE {
+        // The connection formula in `u = 1/(1-z)` over the balls (the
+        // large-parameter route's formula, `large_param.rs`, valid for any
+        // parameters): Pfaff's `w = 1 - u` is next to 1 there, where the
+        // majorant's derivative grows like `(1-R)^(C-A-B-1)` and no input
+        // precision pins the value: `2F1(26.13, 38; 1.5; -1.0875e16464)` was
+        // refused PrecisionExhausted at 65 536 input bits (issue 37's scan, about
+        // 20 of 20 000 inputs a seed). On an error (an integer inside `b - a`, a
+        // Gamma pole) Pfaff below.
+        let loss = large_param_loss(a.mid().to_f64(), b.mid().to_f64(), c.mid().to_f64(), z.mid().to_f64());
+        if let Ok(r) = ziv_ball_inputs(prec, DEFAULT_GUARD_BITS + loss, None, |wp| hyp2f1_large_param(a, b, c, z, wp)) {
+            return Ok(r);
+        }
+    }
     if z.upper() < -0.5 {
         // Pfaff: (1-z)^{-a} 2F1(a, c-b; c; w), w = z/(z-1) = -z/(1-z).
         let omz = Ball::one(wp).sub(z);
@@ -157,7 +180,19 @@ fn large_param_ball(a: &Ball, b: &Ball, c: &Ball, z: &Ball, prec: u32) -> Option
     }
     let loss = if af.abs() >= bf.abs() { large_param_loss(bf, af, cf, zf) } else { large_param_loss(af, bf, cf, zf) };
     let guard = DEFAULT_GUARD_BITS + loss;
-    let r = ziv_ball_inputs(prec, guard, None, |wp| hyp2f1_large_param(a, b, c, z, wp));
+    // Input balls too wide for `prec` bits after the planned loss (the decimal
+    // path's first round holds its decimals at `prec + 64` bits; each term's
+    // input perturbation is bounded against the sum of `|t_n|`, which the
+    // cancelling series exceeds by the loss): one round, whose ball the decimal
+    // loop reads to tighten its inputs. A second round at more working
+    // precision would shrink nothing (`2F1(-47.3, 1e6; 12.9; -0.05)` at 256
+    // bits ran rounds at 561, 866, then 561 bits on tighter inputs).
+    let input_bits = [a, b, c, z].iter().map(|x| x.rel_accuracy_bits()).fold(f64::INFINITY, f64::min);
+    let r = if input_bits < f64::from(prec) + f64::from(loss) {
+        crate::budget::ensure(|| hyp2f1_large_param(a, b, c, z, prec.saturating_add(guard).min(crate::special::MAX_WORKING_PREC)))
+    } else {
+        ziv_ball_inputs(prec, guard, None, |wp| hyp2f1_large_param(a, b, c, z, wp))
+    };
     r.ok().map(Ok)
 }
 
@@ -303,19 +338,54 @@ fn direct_ball(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32) -> Result<Ball> 
     let (pa1, pb1) = (shift(a, &aa), shift(b, &bb));
     let x = if terminating { Float::with_val(rr.prec(), -&rr) } else { rr.clone() };
     let mut err = Mag::ZERO;
+    // dM/dR = (A B / C) 2F1(A+1, B+1; C+1; R), when a radius needs it
+    let needs_d_r = !c.is_exact() || !z.is_exact() || [a, b].iter().any(|x| !x.is_exact());
+    let d_r = if needs_d_r {
+        let c1 = Float::with_val_round(c_lo.prec().max(64), &c_lo + 1u32, Round::Down).0;
+        Some(majorant(&pa1, &pb1, &c1, &x)?.mul(Mag::from_float_up(&aa)).mul(Mag::from_float_up(&bb)).div(Mag::from_float_down(&c_lo)))
+    } else {
+        None
+    };
+    // `d/da`: `M(A+1) - M(A) <= M(A+1)`, or for `a > 0` over its ball, where
+    // `|d/da (a)_n| <= (A)_n n / a_lo`, the sharper `(R / a_lo) dM/dR` (as for
+    // `c`): at `b` of 97 000 bits held at 65 536 (`c - b` after Pfaff of a
+    // decimal `c = 3.4e29217`, radius `2^31464`) the first is `2^31464` times the
+    // value, the second `2^-65536` (issue 37's scan: PrecisionExhausted before)
+    // With a terminating series of degree `d` (the other parameter an exact `-d`)
+    // only `k < d` enter, so `p` with `p + d - 1 < 0` over its ball has
+    // `|p + k| >= -(p_hi + d - 1)` there: the same bound with that distance
+    // (`2F1(-1, 1.9e22735; 5e-309; -7) = 1 + 7 b / c`: PrecisionExhausted before).
+    let degree = deg_a.or(deg_b);
+    let distance = |p: &Ball| -> Option<Float> {
+        let lo = p.lower();
+        if lo > 0 {
+            return Some(lo.clone());
+        }
+        let d = degree?;
+        let top = Float::with_val_round(p.upper().prec().max(64), p.upper() + d.saturating_sub(1), Round::Up).0;
+        (top < 0).then(|| -top)
+    };
+    let param_err = |p: &Ball, shifted: Mag| -> Mag {
+        match (&d_r, distance(p)) {
+            (Some(d), Some(lo)) => {
+                let sharp = d.mul(Mag::from_float_up(&rr)).div(Mag::from_float_down(&lo));
+                if sharp.le(&shifted) {
+                    sharp
+                } else {
+                    shifted
+                }
+            }
+            _ => shifted,
+        }
+        .mul(p.rad_mag())
+    };
     if !a.is_exact() {
-        err = err.add(majorant(&pa1, &pb, &c_lo, &x)?.mul(a.rad_mag()));
+        err = err.add(param_err(a, majorant(&pa1, &pb, &c_lo, &x)?));
     }
     if !b.is_exact() {
-        err = err.add(majorant(&pa, &pb1, &c_lo, &x)?.mul(b.rad_mag()));
+        err = err.add(param_err(b, majorant(&pa, &pb1, &c_lo, &x)?));
     }
-    if !c.is_exact() || !z.is_exact() {
-        // dM/dR = (A B / C) 2F1(A+1, B+1; C+1; R)
-        let c1 = Float::with_val_round(c_lo.prec().max(64), &c_lo + 1u32, Round::Down).0;
-        let d_r = majorant(&pa1, &pb1, &c1, &x)?
-            .mul(Mag::from_float_up(&aa))
-            .mul(Mag::from_float_up(&bb))
-            .div(Mag::from_float_down(&c_lo));
+    if let Some(d_r) = d_r {
         if !z.is_exact() {
             err = err.add(d_r.mul(z.rad_mag()));
         }

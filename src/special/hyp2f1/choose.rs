@@ -32,7 +32,7 @@ use super::large_param::{hyp2f1_large_param, large_param_cheaper, large_param_lo
 use super::log_case::hyp2f1_connection_log;
 use super::polynomial::hyp2f1_polynomial;
 use super::transform::{hyp2f1_direct, hyp2f1_euler, hyp2f1_pfaff};
-use super::{one, terminating_degree, DIRECT_RADIUS};
+use super::{one, terminating_degree, DIRECT_RADIUS, MAX_LOG_M};
 use crate::ball::Ball;
 use crate::error::Result;
 use crate::special::gamma::{lgamma_est, xball};
@@ -231,10 +231,23 @@ pub(super) fn series_estimate(p1: f64, p2: f64, q: f64, u: f64, bits: f64) -> (f
 /// estimated bits lost by the chosen one.
 pub(super) fn near_one_choice(a: &Float, b: &Float, c: &Float, s: &Float, x: f64, u: f64, bits: f64) -> (bool, f64) {
     let (af, bf, cf) = (est(a), est(b), est(c));
+    // `c - a` and `c - b` formed exactly, then estimated: past the f64 range
+    // `est` clamps to f64::MAX, and `cf - bf` was 0 at `c = 3.4e29217`,
+    // `b = c - 22.96` (Pfaff's `c - b`), so the connection's series
+    // `2F1(c - a, 22.96; 1 + s; u)` looked empty where it runs to about `c`
+    // terms (refused TooExpensive, issue 37's scan; the direct series ends at once)
+    let (caf, cbf) = (est(&exact_sub(c, a)), est(&exact_sub(c, b)));
     let lg2 = |v: f64| lgamma_est(v) / LN_2;
-    let (n_conn, log2_big, fixed) = if s.is_integer() {
+    let (n_conn, log2_big, fixed) = if (s.is_integer() && s.clone().abs() > MAX_LOG_M) || !s.to_f64().is_finite() {
+        // no connection: the logarithmic formula refuses such an integer `m`
+        // (OutOfRange), and `Gamma(+-s)` past the f64 range overflows. The
+        // majorant of a decimal `c = 3.4e29217` has `s` about `-2^96800`, which the
+        // estimates below read as a connection of 0 terms: the direct series of
+        // 195 terms lost to Euler's polynomial of degree 2^96800 (TooExpensive)
+        (f64::INFINITY, 0.0, 0.0)
+    } else if s.is_integer() {
         let m = s.to_f64();
-        let (pa, pb, mm, shift) = if m >= 0.0 { (af, bf, m, 0.0) } else { (cf - af, cf - bf, -m, m * u.log2()) };
+        let (pa, pb, mm, shift) = if m >= 0.0 { (af, bf, m, 0.0) } else { (caf, cbf, -m, m * u.log2()) };
         let (nl, sl) = match simulate_converged([pa + mm, pb + mm], [mm + 1.0, 1.0], u, bits, SIM_CAP) {
             Some(sim) => (sim.terms, sim.log2_abs),
             None => (f64::INFINITY, 0.0),
@@ -245,8 +258,8 @@ pub(super) fn near_one_choice(a: &Float, b: &Float, c: &Float, s: &Float, x: f64
     } else {
         let sf = est(s);
         let (n1, l1) = series_estimate(af, bf, 1.0 - sf, u, bits);
-        let (n2, l2) = series_estimate(cf - af, cf - bf, 1.0 + sf, u, bits);
-        let t1 = lg2(cf) + lg2(sf) - lg2(cf - af) - lg2(cf - bf) + l1;
+        let (n2, l2) = series_estimate(caf, cbf, 1.0 + sf, u, bits);
+        let t1 = lg2(cf) + lg2(sf) - lg2(caf) - lg2(cbf) + l1;
         let t2 = lg2(cf) + lg2(-sf) - lg2(af) - lg2(bf) + sf * u.log2() + l2;
         (n1 + n2, t1.max(t2), GAMMA_COST_TERMS)
     };
@@ -352,6 +365,10 @@ pub(super) fn large_param_plan(a: &Float, b: &Float, c: &Float, z: &Float, wp: u
     (!pole && !integer).then_some((Algorithm::LargeParam, lost))
 }
 
+/// Largest degree of Euler's terminating form (`c - a` or `c - b` a non-positive
+/// integer, `0 < z < 1`) taken without comparing it with the direct series.
+const EULER_DEGREE_ALWAYS: u64 = 4096;
+
 /// The algorithm and an estimate of the bits it loses (first Ziv guard).
 pub(super) fn plan(a: &Float, b: &Float, c: &Float, z: &Float, wp: u32) -> (Algorithm, u32) {
     if terminating_degree(a, b).is_none() && *z != 1 {
@@ -387,11 +404,22 @@ pub(super) fn plan_regions(a: &Float, b: &Float, c: &Float, z: &Float, wp: u32) 
         return small_z_choice(af, bf, cf, est(&ca), est(&cb), zf, bits);
     }
     if *z > 0 {
-        if terminating_degree(&ca, &cb).is_some() {
-            return (Algorithm::Euler, 0);
-        }
         let s = exact_sub(&ca, b);
         let u = exact_sub(&one(), z).to_f64();
+        if let Some(d) = terminating_degree(&ca, &cb) {
+            // Euler's polynomial, unless its degree is long and the direct series
+            // converges sooner: `c - b` a huge negative integer (the majorant
+            // `2F1(A, B; C; R)` of a decimal `c = 3.4e29217`, where `C - B` is minus
+            // twice the radius of `c`, about `2^96800`) was a polynomial of that
+            // degree, refused TooExpensive, where the direct series takes 900 terms
+            if d <= EULER_DEGREE_ALWAYS {
+                return (Algorithm::Euler, 0);
+            }
+            return match near_one_choice(a, b, c, &s, zf, u, bits) {
+                (true, lost) => (Algorithm::Direct, guard(lost, bits)),
+                (false, _) => (Algorithm::Euler, 0),
+            };
+        }
         let (direct, lost) = near_one_choice(a, b, c, &s, zf, u, bits);
         let g = guard(lost, bits);
         return match (direct, s.is_integer()) {

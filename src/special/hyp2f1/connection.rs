@@ -33,7 +33,7 @@
 use rug::Float;
 
 use super::log_case::log_core;
-use super::series::{pow_exact_exponent, series_or_power};
+use super::series::{pow_exact_exponent, rounded_inside_unit, series_or_power};
 use super::transform::hyp2f1_pfaff;
 use super::one;
 use crate::ball::Ball;
@@ -94,8 +94,16 @@ pub(crate) fn hyp2f1_pfaff_connection(a: &Float, b: &Float, c: &Float, z: &Float
     }
     let omz_b = xball(&exact_sub(&one(), z), wp);
     let pre = pow_exact_exponent(&omz_b, &Float::with_val(a.prec(), -a), wp)?;
-    let u = omz_b.recip()?;
-    let w = xball(z, wp).mul(&u).neg();
+    // `1 - z` and `z` rounded into their balls at `wp` bits: a decimal `z`
+    // tightened to 58 000 bits made `u`, `ln u` and every term of the series in
+    // `u` cost that length (`2F1(-245.25, -162.25; 112.5; -181.625e25051)` at 150
+    // bits: 150 ms of CPU, of which 50 ms in one step before the budget's next
+    // check, issue 37's scan). Kept as given when the rounded `u` would reach 1.
+    let (u, zb) = match rounded_inside_unit(&omz_b.at_most_prec(wp).recip()?, wp) {
+        Some(u) => (u, xball(z, wp).at_most_prec(wp)),
+        None => (omz_b.recip()?, xball(z, wp)),
+    };
+    let w = zb.mul(&u).neg();
     let s = exact_sub(b, a);
     let inner = if s.is_integer() { log_core(a, &cb, c, &u, wp)? } else { connection_core(a, &cb, c, &w, &u, wp)? };
     Ok(pre.mul(&inner))

@@ -356,6 +356,9 @@ pub(crate) fn series_zoned(p1: &Ball, p2: &Ball, q: &Ball, x: &Ball, wp: u32) ->
         if n > MAX_TERMS {
             return Err(Error::NoConvergence { function: "hyp2f1 (large-parameter route)", terms: n });
         }
+        if n % crate::budget::TERMS_BETWEEN_CHECKS == 0 {
+            crate::budget::check_elapsed("2F1 connection series (large-parameter route)", 0.0, crate::error::Reached::Terms { count: n })?;
+        }
     }
 }
 
@@ -369,16 +372,57 @@ pub(crate) fn series_zoned(p1: &Ball, p2: &Ball, q: &Ball, x: &Ball, wp: u32) ->
 /// `gamma - alpha - big = 1 - c`; the caller passes `euler = (gamma - alpha,
 /// gamma - big)` formed from the inputs directly (`1 - b`, not `(c-a-b+1) - (c-a)`,
 /// whose ball would hold the integer `1 - b` with a radius around it).
-fn series_pair(alpha: &Ball, big: &Ball, gamma: &Ball, euler: (Ball, Ball), one_minus_c: &Ball, u: &Ball, one_minus_u: &Ball, wp: u32) -> Result<Ball> {
-    let (ga, alt) = euler;
-    if alpha.mid().is_sign_negative() && alt.mid() > alpha.mid() {
-        // a base longer than the working precision (`1 - u` at `u = 1/(1 - z)`,
-        // `z = -1.7e30833`: about 10^5 bits) is rounded into its ball first: `ln` at
-        // its own length took 0.4 s (issue 37's scan), for the same enclosure at `wp`
-        let pre = one_minus_u.at_most_prec(wp).pow(one_minus_c)?;
-        return Ok(pre.mul(&series_zoned(&ga, &alt, gamma, u, wp)?));
+struct SeriesPair<'a> {
+    alpha: &'a Ball,
+    big: &'a Ball,
+    gamma: &'a Ball,
+    euler: (Ball, Ball),
+}
+
+impl SeriesPair<'_> {
+    /// Whether Euler's form is summed (its moderate parameter is the larger).
+    fn takes_euler(&self) -> bool {
+        self.alpha.mid().is_sign_negative() && self.euler.1.mid() > self.alpha.mid()
     }
-    series_zoned(alpha, big, gamma, u, wp)
+
+    /// Estimated bits the summed form cancels at `u` (an estimate only: it sets
+    /// the precision of the sum, never its bound): `|m| log2((1+u)/(1-u))` for
+    /// a negative moderate parameter `m`, else 0.
+    fn cancellation(&self, u: f64) -> u32 {
+        let m = if self.takes_euler() { self.euler.1.mid().to_f64() } else { self.alpha.mid().to_f64() };
+        let per = ((1.0 + u) / (1.0 - u)).log2();
+        if m < 0.0 && per.is_finite() {
+            (-m * per).clamp(0.0, 65536.0) as u32
+        } else {
+            0
+        }
+    }
+
+    fn sum(&self, one_minus_c: &Ball, u: &Ball, one_minus_u: &Ball, wp: u32) -> Result<Ball> {
+        if self.takes_euler() {
+            // a base longer than the working precision (`1 - u` at `u = 1/(1 - z)`,
+            // `z = -1.7e30833`: about 10^5 bits) is rounded into its ball first: `ln` at
+            // its own length took 0.4 s (issue 37's scan), for the same enclosure at `wp`
+            let pre = one_minus_u.at_most_prec(wp).pow(one_minus_c)?;
+            return Ok(pre.mul(&series_zoned(&self.euler.0, &self.euler.1, self.gamma, u, wp)?));
+        }
+        series_zoned(self.alpha, self.big, self.gamma, u, wp)
+    }
+}
+
+/// The two series of a formula at their own precisions: `wp` (which the
+/// chooser's planned loss raised for the series that cancels most) less the
+/// bits by which each cancels less than the other. A series of positive terms
+/// next to one that cancels 250 bits (`2F1(-47.3, 1e6; 12.9; -0.05)`: 11 859
+/// terms at 561 bits) is summed at the precision its own terms need; a sum's
+/// bound holds at any precision, and the Ziv loop raises `wp` for both if the
+/// estimate was short.
+fn sum_both(s1: &SeriesPair, s2: &SeriesPair, one_minus_c: &Ball, u: &Ball, one_minus_u: &Ball, wp: u32) -> Result<(Ball, Ball)> {
+    let uf = u.mid().to_f64();
+    let (c1, c2) = (s1.cancellation(uf), s2.cancellation(uf));
+    let worst = c1.max(c2);
+    let at = |c: u32| wp.saturating_sub(worst - c).max(64);
+    Ok((s1.sum(one_minus_c, u, one_minus_u, at(c1))?, s2.sum(one_minus_c, u, one_minus_u, at(c2))?))
 }
 
 /// `Gamma(x1) Gamma(x2) / (Gamma(y1) Gamma(y2))` over balls without poles.
@@ -409,8 +453,12 @@ pub(crate) fn hyp2f1_large_param(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32
         // the powers at `wp` bits (`1 - z` of a decimal tightened to 54 000 bits:
         // `ln` and `exp` at that length, issue 37's scan)
         let omz = omz.at_most_prec(wp);
-        let t1 = g1.mul(&omz.pow(&a.neg())?).mul(&series_pair(&a, &cb, &ab.add_i64(1), e1, &omc, &u, &omu, wp)?);
-        let t2 = g2.mul(&omz.pow(&b.neg())?).mul(&series_pair(&ca, &b, &ba.add_i64(1), e2, &omc, &u, &omu, wp)?);
+        let (q1, q2) = (ab.add_i64(1), ba.add_i64(1));
+        let s1 = SeriesPair { alpha: &a, big: &cb, gamma: &q1, euler: e1 };
+        let s2 = SeriesPair { alpha: &ca, big: &b, gamma: &q2, euler: e2 };
+        let (f1, f2) = sum_both(&s1, &s2, &omc, &u, &omu, wp)?;
+        let t1 = g1.mul(&omz.pow(&a.neg())?).mul(&f1);
+        let t2 = g2.mul(&omz.pow(&b.neg())?).mul(&f2);
         return Ok(t1.add(&t2));
     }
     if z.lower() > 0 && z.upper() < 1 {
@@ -421,8 +469,12 @@ pub(crate) fn hyp2f1_large_param(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32
         let g4 = gamma_quotient([&c, &neg_s], [&a, &b], wp)?;
         let e3 = (b.sub(&c).add_i64(1), a.sub(&c).add_i64(1));
         let e4 = (b.neg().add_i64(1), a.neg().add_i64(1));
-        let t1 = g3.mul(&series_pair(&a, &b, &neg_s.add_i64(1), e3, &omc, &u, &z, wp)?);
-        let t2 = g4.mul(&u.at_most_prec(wp).pow(&s)?).mul(&series_pair(&ca, &cb, &s.add_i64(1), e4, &omc, &u, &z, wp)?);
+        let (q3, q4) = (neg_s.add_i64(1), s.add_i64(1));
+        let s3 = SeriesPair { alpha: &a, big: &b, gamma: &q3, euler: e3 };
+        let s4 = SeriesPair { alpha: &ca, big: &cb, gamma: &q4, euler: e4 };
+        let (f3, f4) = sum_both(&s3, &s4, &omc, &u, &z, wp)?;
+        let t1 = g3.mul(&f3);
+        let t2 = g4.mul(&u.at_most_prec(wp).pow(&s)?).mul(&f4);
         return Ok(t1.add(&t2));
     }
     Err(Error::precondition("large-parameter 2F1 route needs z < 0 or 0 < z < 1"))

@@ -28,7 +28,7 @@
 use rug::float::Round;
 use rug::Float;
 
-use super::series::{abs_upper_precise, first_positive_index, negligible, negligible_scaled, ratio_bound, TailFactor};
+use super::series::{abs_upper_precise, first_positive_index, negligible, negligible_scaled, ratio_bound, rounded_inside_unit, TailFactor};
 use super::{one, MAX_LOG_M, MIN_SERIES_PREC};
 use crate::ball::{Ball, MAG_PREC};
 use crate::error::{Error, Interval, Result};
@@ -48,6 +48,10 @@ pub(crate) fn hyp2f1_connection_log(a: &Float, b: &Float, c: &Float, z: &Float, 
 
 /// The logarithmic 1-x formula at the ball `u = 1 - x`, `0 < u < 1`.
 pub(super) fn log_core(a: &Float, b: &Float, c: &Float, u: &Ball, wp: u32) -> Result<Ball> {
+    // `u` at `wp` bits where it stays in (0, 1): `ln u` and every term multiply
+    // by it (a decimal `z` tightened to 58 000 bits, issue 37's scan)
+    let rounded = rounded_inside_unit(u, wp);
+    let u = rounded.as_ref().unwrap_or(u);
     let ca = exact_sub(c, a);
     let cb = exact_sub(c, b);
     let s = exact_sub(&ca, b);
@@ -106,6 +110,11 @@ pub(super) fn finite_sum(a: &Float, b: &Float, m: u64, u: &Ball, wp: u32) -> Res
         let den = Ball::from_i64((ni + 1) * (ni + 1 - m as i64), wp);
         t = t.mul(&ab.add_i64(ni)).mul(&bb.add_i64(ni)).mul(u).div(&den)?;
         s = s.add(&t);
+        if (n + 1) % crate::budget::TERMS_BETWEEN_CHECKS == 0 {
+            // `m` up to MAX_LOG_M terms: `2F1(100000, 1; 23.07; -4.75e7327)` at 6
+            // bits ran 1.5 s of CPU here before the next check (issue 37's scan, seed 2)
+            crate::budget::check_elapsed("2F1 logarithmic case, finite sum", 0.0, crate::error::Reached::Terms { count: n + 1 })?;
+        }
     }
     Ok(s)
 }

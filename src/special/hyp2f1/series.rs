@@ -182,8 +182,8 @@ pub(crate) fn series_2f1(a: &Float, b: &Float, c: &Float, z: &Ball, wp: u32) -> 
     // term (the radius is carried by the perturbation bound below); kept as
     // given when the rounded ball would reach `|z| = 1` (`w = 1 - 10^-6020`
     // after Pfaff: the series' own refusal then names its term count)
-    let rounded = z.at_most_prec(wp);
-    let z = if deg.is_some() || (rounded.upper() < 1 && rounded.lower() > -1) { &rounded } else { z };
+    let rounded = if deg.is_some() { Some(z.at_most_prec(wp)) } else { rounded_inside_unit(z, wp) };
+    let z = rounded.as_ref().unwrap_or(z);
     if let Some(m) = nonpos_degree(c) {
         if deg.map_or(true, |d| d > m) {
             return Err(pole_error(c));
@@ -346,6 +346,17 @@ pub(super) fn series_or_power(p: &Float, q: &Float, r: &Float, x: &Ball, one_min
         return pow_exact_exponent(one_minus_x, &Float::with_val(p.prec(), -p), wp);
     }
     series_2f1(p, q, r, x, wp)
+}
+
+/// `x` rounded into its ball at `wp` bits, when that ball still lies in
+/// `(-1, 1)` and, for a positive `x`, in `(0, 1)` (the series' and the logarithm's
+/// domains); `None` otherwise: then `x` is kept at its own length. A decimal
+/// argument tightened to 58 000 bits by the decimal retries otherwise makes every
+/// term, `ln` and `1/x` cost that length (issue 37's scan).
+pub(super) fn rounded_inside_unit(x: &Ball, wp: u32) -> Option<Ball> {
+    let r = x.at_most_prec(wp);
+    let inside = r.upper() < 1 && r.lower() > -1 && (x.lower() <= 0 || r.lower() > 0);
+    inside.then_some(r)
 }
 
 /// `base^e` for `base > 0` and an exact exponent (binary powering for integers).

@@ -591,24 +591,16 @@ mod cost_split {
     use super::*;
     use std::hint::black_box;
 
-    fn cpu_ns() -> f64 {
-        let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
-        // SAFETY: a valid, writable timespec; a clock id Linux defines.
-        let rc = unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut ts) };
-        assert_eq!(rc, 0);
-        ts.tv_sec as f64 * 1e9 + ts.tv_nsec as f64
-    }
-
     /// Fastest of 15 batches of `reps` calls, ns per call.
     fn per_call(reps: usize, mut f: impl FnMut() -> f64) -> f64 {
         let mut best = f64::INFINITY;
         let mut acc = 0.0;
         for _ in 0..15 {
-            let t0 = cpu_ns();
+            let t0 = crate::budget::thread_cpu_seconds() * 1e9;
             for _ in 0..reps {
                 acc += f();
             }
-            best = best.min((cpu_ns() - t0) / reps as f64);
+            best = best.min(((crate::budget::thread_cpu_seconds() * 1e9) - t0) / reps as f64);
         }
         black_box(acc);
         best
