@@ -199,12 +199,16 @@ pub struct ControlPaths {
     /// The closed cycle's unloading path when it is not `unloading`: empty, unless
     /// the largest contact lies on a falling branch that reloading cannot reach;
     /// the cycle then runs between pull-off and the grid state of the largest
-    /// control value, and this is its unloading path (from that state).
+    /// control value, and this is its unloading path (from that state). When
+    /// reloading stops there too, at a maximum between grid states above every
+    /// later one (an oscillation finer than the grid), the cycle runs up to the
+    /// grid state just before that maximum (up to 16 such cuts, each lower).
     #[cfg_attr(feature = "serde", serde(default))]
     pub cycle_unloading: Vec<PathNode>,
     /// The closed cycle does not close: reloading from the end of unloading
     /// stops at a maximum with no later grid state at its level, both up to the
-    /// largest contact and up to the grid's largest control value. There is then
+    /// largest contact, up to the grid's largest control value and up to the
+    /// cuts below the maxima it stops at (see `cycle_unloading`). There is then
     /// no cycle: `loops` is empty and `dissipation` is zero because nothing was
     /// measured, not because the contact dissipates nothing (more curve points
     /// or another `amax` may close it).
@@ -215,6 +219,11 @@ pub struct ControlPaths {
     /// Their dissipation.
     pub dissipation: Dissipation,
 }
+
+/// Cuts of the grid [`control_paths`] tries when the closed cycle does not close
+/// (each below the maximum the last reloading walk stopped at); past them the
+/// cycle is reported open.
+const MAX_CYCLE_CUTS: usize = 16;
 
 /// Relative `abar` tolerance of a refined extremum.
 const EXTREMUM_ABAR_TOL: f64 = 1e-9;
@@ -427,15 +436,28 @@ pub fn control_paths(params: Params, pts: &[CurvePoint], control: Driver) -> Res
         // it. The cycle then runs between pull-off and the grid's largest control
         // value (the state a machine loading to that value reaches), on the grid up
         // to that state.
-        let top = (0..n).fold(0, |best, k| if y(&pts[k]) >= y(&pts[best]) { k } else { best });
-        if top >= 1 {
+        // When the refined maximum reloading stopped at lies between grid states and
+        // above every one of them (an oscillation finer than the grid), the grid's
+        // largest control value lies past it and reloading stops at it again; the
+        // cycle then runs up to the grid state just before that maximum, or, when
+        // reloading on the grid up to there stops at an earlier such maximum (its
+        // jump's target lay past the cut), before that one, and so on down.
+        let mut top = (0..n).fold(0, |best, k| if y(&pts[k]) >= y(&pts[best]) { k } else { best });
+        let before = |abar: f64| pts.partition_point(|q| q.abar < abar).saturating_sub(1);
+        for _ in 0..MAX_CYCLE_CUTS {
+            if top < 1 {
+                break;
+            }
             let grid = &pts[..=top];
             let (u, u_jumps, u_end) = walk_unloading(grid, params, control)?;
             let (r, r_jumps, r_truncated) = reload(grid, params, control, u_end)?;
             if !r_truncated {
                 levels.extend(u_jumps.iter().map(|j| yn(&j.from)));
                 (cycle_unloading, reloading, reloading_jumps, reloading_truncated) = (u, r, r_jumps, false);
+                break;
             }
+            // the next cut: before the maximum this walk stopped at (strictly lower)
+            top = r.last().map_or(0, |p| before(p.abar)).min(top - 1);
         }
     }
     levels.extend(reloading_jumps.iter().map(|j| yn(&j.from)));

@@ -68,3 +68,28 @@ fn value_path_within_1e15_off_grid_and_other_wavelengths() {
     let (wu, wdu) = worst(&pts);
     eprintln!("value path, {} points: worst u error {wu:.3e}, du error {wdu:.3e} of the scale", pts.len());
 }
+
+/// The solver's scan path `WaveBessel::u_fast` (plain f64 from the double-double
+/// Bessel values, its sum stopped once the terms left are below `2^-64 |A|`):
+/// within `1e-15 |A| max(1, D)` of the 200-bit certified Bessel form, `D = 2 pi a/zeta`
+/// from 0.6 to 2000, next to the edge (`x/a - 1` down to `1e-12`) and far from it
+/// (`x/a` up to `1e3`), where the stopped sum keeps a few terms of `D/2`.
+#[test]
+fn fast_scan_path_within_its_documented_error() {
+    use maugis::contact::displacement::WaveBessel;
+    let mut worst = 0.0f64;
+    for &(a, zeta) in &[(0.5, 5.0), (1.0, 1.125), (3.0, 0.3125), (2.0, 0.0625), (6.0, 0.01875)] {
+        for &amp in &[1.0, -0.375] {
+            let wb = WaveBessel::new(a, zeta, amp).unwrap();
+            let d = wb.d();
+            for &r in &[1.0 + 1e-12, 1.0 + 1e-6, 1.0 + 1e-3, 1.1, 2.0, 10.0, 1e3] {
+                let x = a * r;
+                let u_ref = u_wave_mp(&exact(a), &exact(zeta), &exact(amp), &exact(x), REF_PREC).unwrap();
+                let e = Float::with_val(REF_PREC + 64, u_ref.mid() - wb.u_fast(x)).abs().to_f64() / (amp.abs() * d.max(1.0).sqrt());
+                assert!(e <= 1e-15, "u_fast a={a} zeta={zeta} A={amp} x={x} (D = {d}): error {e:e} of |A| sqrt(max(1, D))");
+                worst = worst.max(e);
+            }
+        }
+    }
+    eprintln!("u_fast: worst error {worst:.3e} of |A| sqrt(max(1, D))");
+}

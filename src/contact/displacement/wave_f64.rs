@@ -40,6 +40,10 @@ fn ln_factorial(n: f64) -> f64 {
     n * n.ln() - n + 0.5 * (2.0 * std::f64::consts::PI * n).ln() + 1.0 / (12.0 * n)
 }
 
+/// [`WaveBessel::u_fast`] stops its sum once the terms left are at most this in
+/// sum (`2^-64`, relative to `|A|`).
+const TAIL_LIMIT: f64 = 1.0 / 18_446_744_073_709_551_616.0;
+
 /// Placeholder entries of the batch outputs (every one is overwritten).
 const UNSET_PAIR: (Bounded, Bounded) = (Bounded { value: 0.0, err: f64::INFINITY }, Bounded { value: 0.0, err: f64::INFINITY });
 
@@ -263,7 +267,10 @@ impl WaveBessel {
 
     /// `u_w(x)` in plain f64 arithmetic (from the double-double Bessel values):
     /// about 4x faster than [`WaveBessel::eval`], with an error of a few ulps of
-    /// the largest term (`~ 1e-15 |A| D`) instead of one rounding. The Maugis
+    /// the largest term (`~ 1e-15 |A| D`) instead of one rounding (its sum
+    /// stops once the terms left are below `2^-64 |A|` in sum, so its cost
+    /// falls from `D/2` terms next to the edge to a few hundred away from it:
+    /// tests/it/wave_value.rs measures it against the certified form). The Maugis
     /// solver uses it in its scans; the public `u_wave` uses [`WaveBessel::eval`].
     pub fn u_fast(&self, x: f64) -> f64 {
         let a = self.a;
@@ -279,12 +286,22 @@ impl WaveBessel {
             (a / (x + p), ln_r + (p / x).ln_1p())
         };
         let q2 = q * q;
+        // |J_2n(D)| <= 1 (DLMF 10.14.1), so the terms past n are at most
+        // q^(2n+2)/(1 - q^2) in sum: once that is below TAIL_LIMIT the rest of the
+        // n_terms sum changes `su` by less than its own rounding (the documented
+        // error is a few ulps of the largest term, which is at least q^2 |J_2|).
+        // Far from the edge (x/a - 1 = 1e-3: q^2 = 1 - 0.18) that is a few hundred
+        // terms where D/2 can be tens of thousands (the strip scan of a fine wave).
+        let tail_scale = TAIL_LIMIT * (1.0 - q2);
         let mut q_pow = 1.0f64;
         let mut su = 0.0f64;
         for n in 1..=self.n_terms {
             q_pow *= q2;
             let t = self.j_even_f64[n] * q_pow;
             su += if n % 2 == 1 { t } else { -t };
+            if q_pow <= tail_scale {
+                break;
+            }
         }
         let j1 = self.j[1].to_f64();
         let one_minus_j0 = (Dd::ONE - self.j[0]).to_f64();
