@@ -131,8 +131,11 @@ fn w_is_grid_converged_at_the_largest_number_of_scales() {
     let scales = tier::pick(1, 4);
     let s = spec(vec![0.5], vec![3.0], scales);
     let case = s.cycles().unwrap().into_iter().find(|c| c.roles.contains(&CycleRole::Profile { hurst: 0.5, scales })).unwrap();
-    let coarse = run_cycle(&s, &case, s.resolution);
-    let fine = run_cycle(&s, &case, s.resolution.refined());
+    // Default tier: from half the rule's cells and steps per wavelength (a quarter
+    // of the cost), so the rule's own resolution is the refined one.
+    let start = tier::pick(ScaleResolution { cells_per_wavelength: 8.0, steps_per_wavelength: 8.0, refinement: 0 }, s.resolution);
+    let coarse = run_cycle(&s, &case, start);
+    let fine = run_cycle(&s, &case, start.refined());
     assert_eq!((fine.cells, fine.steps_per_leg), (2 * coarse.cells, 2 * coarse.steps_per_leg));
     for (name, a, b) in [("W", coarse.w, fine.w), ("W_d", coarse.w_d, fine.w_d)] {
         let (a, b) = (a.unwrap(), b.unwrap());
