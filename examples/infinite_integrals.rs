@@ -2,23 +2,16 @@
 //! `reference/generate_infinite_integrals.py`) through the expression integrator with no
 //! declaration. Prints id, prec, first-call CPU ms, warm CPU ms (mean over 0.3 s of
 //! CPU time, at least one call), evaluations, goal met, reference enclosed. CPU time
-//! of the process (`CLOCK_PROCESS_CPUTIME_ID`): the machine is shared.
+//! of the calling thread ([`maugis::budget::thread_cpu_seconds`]): the machine is shared.
 //!
 //! `cargo run --release --example infinite_integrals [-- PREC... [--only ID]]`
 
+use maugis::budget::thread_cpu_seconds as cpu;
 use maugis::quad::certified::{Integral, Options};
 use maugis::quad::expr::{integrate_range, End, Expr};
 use maugis::rug::Float;
 
 const CSV: &str = include_str!("../reference/data/integrals_infinite.csv");
-
-/// CPU seconds of this process.
-fn cpu() -> f64 {
-    let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
-    // SAFETY: a valid pointer to a timespec owned by this frame.
-    unsafe { libc::clock_gettime(libc::CLOCK_PROCESS_CPUTIME_ID, &mut ts) };
-    ts.tv_sec as f64 + ts.tv_nsec as f64 * 1e-9
-}
 
 /// Warm mean in CPU ms over 0.3 s (at least one call).
 fn warm(run: &dyn Fn() -> Integral) -> f64 {
@@ -31,19 +24,6 @@ fn warm(run: &dyn Fn() -> Integral) -> f64 {
     (cpu() - t) * 1e3 / calls as f64
 }
 
-fn fields(line: &str) -> Vec<String> {
-    let (mut out, mut cur, mut quoted) = (Vec::new(), String::new(), false);
-    for c in line.chars() {
-        match c {
-            '"' => quoted = !quoted,
-            ',' if !quoted => out.push(std::mem::take(&mut cur)),
-            c => cur.push(c),
-        }
-    }
-    out.push(cur);
-    out
-}
-
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let only = args.iter().position(|a| a == "--only").map(|i| args[i + 1].clone());
@@ -51,14 +31,15 @@ fn main() {
     let precs = if precs.is_empty() { vec![64, 333] } else { precs };
     // --expr EXPR A B: one integral given on the command line (no reference)
     let extra = args.iter().position(|a| a == "--expr").map(|i| format!("expr,,\"{}\",{},{},0", args[i + 1], args[i + 2], args[i + 3]));
-    let csv: Vec<&str> = match &extra {
-        Some(line) => vec![line.as_str()],
-        None => CSV.lines().skip(1).collect(),
+    // the reference table's rows (or the one from --expr), read by the csv crate
+    let table = match &extra {
+        Some(line) => format!("id,description,expression,a,b,value\n{line}\n"),
+        None => CSV.to_string(),
     };
+    let rows: Vec<csv::StringRecord> = csv::Reader::from_reader(table.as_bytes()).records().map(|r| r.expect("a row of the table")).collect();
     println!("id\tprec\tfirst_cpu_ms\twarm_cpu_ms\tevaluations\tgoal_met\tencloses");
     for &prec in &precs {
-        for line in &csv {
-            let f = fields(line);
+        for f in &rows {
             let (id, expr, a, b, value) = (&f[0], &f[2], &f[3], &f[4], &f[5]);
             if only.as_ref().is_some_and(|o| !id.starts_with(o.as_str())) {
                 continue;
