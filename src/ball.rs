@@ -47,12 +47,14 @@ pub(crate) use double_double::{two_prod, two_sum};
 mod lanes;
 pub(crate) use lanes::F64x2;
 mod mag;
+mod scaled;
 pub use bounded::Bounded;
 pub use decimal::{eval_at_decimals, eval_at_decimals_with_floor, Decimal, MAX_DECIMAL_DIGITS, MAX_DECIMAL_EXPONENT, MAX_DECIMAL_INPUT_PREC};
 pub use double_double::Dd;
 pub(crate) use dd_bounded::{div_f64_p, mag, BoundedDd, BOUND_INFLATION, C_ADD, U, U2};
 pub(crate) use double_double::{cpu_dispatch, Dekker, ExactProduct, Fused};
 pub use mag::Mag;
+pub use scaled::Scaled;
 
 /// `base^n` by square-and-multiply (`one` is the unit of `mul`); shared by the ball,
 /// complex-ball and magnitude powers.
@@ -111,7 +113,7 @@ fn rounding_error(m: &Float, ord: Ordering) -> Mag {
 }
 
 /// A ball from a rounded midpoint and its ternary value.
-fn rounded(mid: Float, ord: Ordering) -> Ball {
+pub(crate) fn rounded(mid: Float, ord: Ordering) -> Ball {
     let rad = rounding_error(&mid, ord);
     Ball { mid, rad }
 }

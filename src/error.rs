@@ -50,6 +50,14 @@ pub enum Error {
         /// Where.
         what: String,
     },
+    /// The value itself lies outside MPFR's exponent range (magnitudes from
+    /// `2^-(2^30)` to `2^(2^30)`): no precision can represent it. Factors past
+    /// that range whose product is inside it are answered
+    /// ([`crate::ball::Scaled`]); this is the product's own size.
+    ValueOutOfRange {
+        /// An estimate of `log2 |value|`.
+        log2_magnitude: f64,
+    },
     /// An integrand expression that does not parse ([`crate::quad::expr`]).
     Expression(crate::quad::expr::error::ExprError),
     /// A certified integral that cannot be done as asked ([`crate::quad::certified`]).
@@ -353,6 +361,10 @@ impl fmt::Display for Error {
             }
             Error::DivisionByZero => write!(f, "division by a ball containing zero"),
             Error::Overflow { what } => write!(f, "overflow in {what}: the result exceeds the exponent range"),
+            Error::ValueOutOfRange { log2_magnitude } => write!(
+                f,
+                "the value is about 2^{log2_magnitude:.4e}, outside the exponent range 2^-(2^30) .. 2^(2^30): no precision can represent it"
+            ),
             Error::Expression(e) => write!(f, "{e}"),
             Error::Integration(e) => write!(f, "{e}"),
             Error::Sweep(e) => write!(f, "{e}"),

@@ -31,7 +31,8 @@ use std::f64::consts::PI;
 use rug::float::Round;
 use rug::Float;
 
-use crate::ball::{Ball, MAG_PREC};
+use crate::ball::{Ball, Scaled, MAG_PREC};
+use rug::ops::AssignRound;
 use crate::error::{Error, Result};
 use crate::special::{exact_add, exact_sub, is_nonpositive_integer};
 
@@ -127,13 +128,21 @@ pub(crate) fn pochhammer(x: &Float, k: u64, wp: u32) -> Ball {
 /// `prod Gamma(num_i) / prod Gamma(den_j)` at exact points. `num` must avoid the
 /// poles; a pole in `den` makes the product an exact zero. Arguments that differ
 /// by an integer of at most 64 are paired into Pochhammer
-/// products.
+/// products. Gammas past the exponent range are carried in logarithms
+/// ([`gamma_ratio_scaled`]); only a ratio that is itself outside the range is
+/// refused ([`Error::ValueOutOfRange`]).
 pub(crate) fn gamma_ratio(num: &[&Float], den: &[&Float], wp: u32) -> Result<Ball> {
+    gamma_ratio_scaled(num, den, wp)?.to_ball(wp)
+}
+
+/// [`gamma_ratio`] as a [`Scaled`] (for a caller that multiplies it by more
+/// factors before the value is formed).
+pub(crate) fn gamma_ratio_scaled(num: &[&Float], den: &[&Float], wp: u32) -> Result<Scaled> {
     if den.iter().any(|y| is_nonpositive_integer(y)) {
-        return Ok(Ball::zero(wp));
+        return Ok(Scaled::from_ball(Ball::zero(wp)));
     }
     let mut used = vec![false; den.len()];
-    let mut r = Ball::one(wp);
+    let mut r = Scaled::one(wp);
     for x in num {
         if is_nonpositive_integer(x) {
             return Err(Error::Pole { function: "Gamma", at: x.to_f64() });
@@ -160,21 +169,109 @@ pub(crate) fn gamma_ratio(num: &[&Float], den: &[&Float], wp: u32) -> Result<Bal
                 let k = d.to_f64().abs() as u64;
                 if d.is_sign_negative() {
                     // Gamma(x) / Gamma(x + k) = 1 / (x)_k
-                    r = r.div(&pochhammer(x, k, wp))?;
+                    r = r.div_ball(&pochhammer(x, k, wp))?;
                 } else {
                     // Gamma(y + k) / Gamma(y) = (y)_k
-                    r = r.mul(&pochhammer(den[j], k, wp));
+                    r = r.mul_ball(&pochhammer(den[j], k, wp));
                 }
             }
-            None => r = r.mul(&gamma_ball(x, wp)?),
+            None => r = r.mul(&gamma_scaled(x, wp)?),
         }
     }
     for (j, y) in den.iter().enumerate() {
         if !used[j] {
-            r = r.div(&gamma_ball(y, wp)?)?;
+            r = r.div(&gamma_scaled(y, wp)?)?;
         }
     }
     Ok(r)
+}
+
+/// `Gamma(x)` at an exact non-pole `x` as a [`Scaled`]: [`gamma_ball`] where the
+/// value is inside the exponent range, else in logarithms ([`ln_gamma_scaled`]).
+pub(crate) fn gamma_scaled(x: &Float, wp: u32) -> Result<Scaled> {
+    match gamma_ball(x, wp) {
+        Err(Error::Overflow { .. }) => ln_gamma_scaled(&Ball::from_float(x, x.prec()), wp),
+        r => r.map(Scaled::from_ball),
+    }
+}
+
+/// [`gamma_of_ball`] as a [`Scaled`]: in logarithms where Gamma passes the
+/// exponent range ([`ln_gamma_scaled`]).
+pub(crate) fn gamma_of_ball_scaled(x: &Ball, wp: u32) -> Result<Scaled> {
+    match gamma_of_ball(x, wp) {
+        Err(Error::Overflow { .. }) => ln_gamma_scaled(x, wp),
+        r => r.map(Scaled::from_ball),
+    }
+}
+
+/// `Gamma` over a pole-free ball `x` with `|x| >= 2` as `m e^l`:
+/// `e^(ln Gamma(x))` for `x >= 2` ([`ln_gamma_positive`]); for `x <= -2` the
+/// reflection `Gamma(x) = pi / ((-1)^n sin(pi d) Gamma(1 - x))` [DLMF 5.5.3],
+/// `x = n + d` with `n` the integer nearest the midpoint (`sin(pi x) = (-1)^n
+/// sin(pi d)`; every `t` of the ball has `t - n` in the ball `d`), so `m = pi /
+/// ((-1)^n sin(pi d))` and `l = -ln Gamma(1 - x)`. Other balls (and a `sin(pi d)`
+/// ball holding zero) are [`Error::Overflow`], as the plain Gamma reported.
+fn ln_gamma_scaled(x: &Ball, wp: u32) -> Result<Scaled> {
+    if x.lower() >= 2 {
+        return Ok(Scaled::with_log(Ball::one(wp), ln_gamma_positive(x, wp)?));
+    }
+    let what = "gamma (in logarithms: a ball too wide or next to a pole)";
+    if x.upper() <= -2 {
+        let n = Float::with_val(x.prec(), x.mid().round_ref());
+        let mut d = Ball::from_float(&exact_sub(x.mid(), &n), wp + 16);
+        d.add_error_mag(x.rad_mag());
+        let sin = d.mul(&Ball::pi(wp + 16)).sin();
+        if sin.contains_zero() {
+            return Err(Error::Overflow { what: what.into() });
+        }
+        let odd = !Float::with_val(n.prec() + 1, &n / 2u32).is_integer();
+        let m = Ball::pi(wp + 16).div(&if odd { sin.neg() } else { sin })?;
+        let mut one_minus_x = Ball::from_float(&exact_sub(&int_float(1), x.mid()), x.prec() + 1);
+        one_minus_x.add_error_mag(x.rad_mag());
+        return Ok(Scaled::with_log(m, ln_gamma_positive(&one_minus_x, wp)?.neg()));
+    }
+    Err(Error::Overflow { what: what.into() })
+}
+
+/// `ln Gamma` over a ball `x >= 2`, to an absolute error of about
+/// `2^-(wp+16)`: the ball rounded to `p = wp + 16 + log2(x ln x)` bits (the
+/// rounding stays in its radius), then
+/// * for `x >= 2^(wp+16)`, Stirling's formula with its remainder [DLMF 5.6.1]:
+///   `ln Gamma(t) - S(t)` lies in `(0, 1/(12 t))` for `t > 0`, `S(t) = (t - 1/2)
+///   ln t - t + ln(2 pi)/2`; `S` in ball arithmetic over the ball and the
+///   remainder as a radius `1/(12 x_lo)`;
+/// * else MPFR's correctly rounded `ln |Gamma|` (one ulp) at the midpoint, and
+///   the radius `r` carried by `0 < psi(t) < ln t` for `t >= 2` [DLMF 5.9.13's
+///   consequence `psi(t) < ln t`, and `psi > 0` past 1.47]: `|ln Gamma(t) - ln
+///   Gamma(m)| <= r ln(x_hi)`.
+fn ln_gamma_positive(x: &Ball, wp: u32) -> Result<Ball> {
+    let ex = x.mid().get_exp().map_or(1, i64::from).max(1);
+    let size = ex + (64 - (ex as u64).leading_zeros()) as i64;
+    let p = (i64::from(wp) + 16 + size).min(i64::from(crate::MAX_WORKING_PREC) * 4) as u32;
+    // at exactly p bits: rounded when longer, extended (exactly) when shorter, so
+    // that `ln` and the products below run at p bits
+    let xb = x.set_prec(p);
+    if ex > i64::from(wp) + 16 {
+        let s = xb.sub(&Ball::from_ratio(1, 2, p)).mul(&xb.ln()?).sub(&xb);
+        let mut s = s.add(&Ball::pi(p).mul_i64(2).ln()?.mul_pow2(-1));
+        let lo = xb.lower();
+        let mut twelve_lo = Float::with_val(64, 0);
+        twelve_lo.assign_round(&lo * 12u32, Round::Down);
+        let mut bound = Float::with_val(64, 0);
+        bound.assign_round(twelve_lo.recip_ref(), Round::Up);
+        s.add_error(&bound);
+        return Ok(s);
+    }
+    crate::budget::check_estimate("ln Gamma(x) (MPFR)", gamma_seconds(p), f64::INFINITY)?;
+    let mut lg = Float::new(p);
+    let mut sign = std::cmp::Ordering::Equal;
+    let ord = (&mut lg, &mut sign).assign_round(xb.mid().ln_abs_gamma_ref(), Round::Nearest);
+    let mut out = crate::ball::rounded(lg, ord);
+    if !xb.is_exact() {
+        let ln_hi = Float::with_val_round(64, xb.upper().ln_ref(), Round::Up).0;
+        out.add_error_mag(xb.rad_mag().mul(crate::ball::Mag::from_float_up(&ln_hi)));
+    }
+    Ok(out)
 }
 
 /// `Gamma(x)` at an exact non-pole `x`: `(n-1)!` and `sqrt(pi) (1/2)_n` (or
@@ -402,6 +499,45 @@ mod tests {
                     assert!(reflected.rel_accuracy_bits() >= wp as f64 - 4.0, "x = -{n} + {sign} 2^{e} at {wp}: {reflected:?}");
                 }
             }
+        }
+    }
+
+    /// `ln Gamma` in logarithms against MPFR's correctly rounded `ln |Gamma|` at
+    /// 1600 bits, on both branches (MPFR's below `2^(wp+16)`, Stirling's above), at
+    /// exact points and over balls, and the reflection at negative `x`.
+    #[test]
+    fn ln_gamma_in_logarithms_encloses_mpfr() {
+        let lgamma = |x: &Float| {
+            let mut lg = Float::new(1600);
+            let mut sign = std::cmp::Ordering::Equal;
+            (&mut lg, &mut sign).assign_round(x.ln_abs_gamma_ref(), Round::Nearest);
+            (lg, sign)
+        };
+        for wp in [20u32, 64, 200] {
+            for x in ["3.5", "4.2e18", "1e40", "1.5e80", "7e300"] {
+                let xf = Float::with_val(1200, Float::parse(x).unwrap());
+                let l = ln_gamma_positive(&Ball::from_float(&xf, xf.prec()), wp).unwrap();
+                assert!(l.contains(&lgamma(&xf).0), "{x} at {wp}: {l:?}");
+                // absolute error about 2^-(wp+16)
+                assert!(l.rad() < Float::with_val(64, Float::i_exp(1, -(wp as i32))), "{x} at {wp}: {l:?}");
+                // over a ball: every point's value inside
+                let ball = Ball::with_radius(xf.clone(), &Float::with_val(64, Float::i_exp(1, -10)));
+                let lb = ln_gamma_positive(&ball, wp).unwrap();
+                for end in [ball.lower(), ball.upper()] {
+                    assert!(lb.contains(&lgamma(&Float::with_val(1200, &end)).0), "{x} ball at {wp}: {lb:?}");
+                }
+            }
+        }
+        // Gamma(-4.2e18 - 0.25) and Gamma(-1e40 + 1/3) by reflection, as m e^l
+        for x in ["-4200000000000000000.25", "-1e40"] {
+            let xf = Float::with_val(1200, Float::parse(x).unwrap()) + Float::with_val(1200, 1) / 3u32;
+            let g = ln_gamma_scaled(&Ball::from_float(&xf, xf.prec()), 64).unwrap();
+            let (lg, sign) = lgamma(&xf);
+            // m e^l / (sign e^lg) = 1: ln|m| + l - lg = 0 and the signs agree
+            let m = crate::ball::Scaled::with_log(Ball::one(64), Ball::from_float(&Float::with_val(1600, -&lg), 1600));
+            let ratio = g.mul(&m).to_ball(64).unwrap();
+            let one = if sign == std::cmp::Ordering::Less { -1 } else { 1 };
+            assert!(ratio.contains(&Float::with_val(64, one)) && ratio.rel_accuracy_bits() > 50.0, "{x}: {ratio:?}");
         }
     }
 }

@@ -57,7 +57,7 @@ use rug::ops::AssignRound;
 use rug::Float;
 
 use crate::ball::{Ball, Mag, MAG_PREC};
-use crate::error::{Error, Interval, Result};
+use crate::error::{Error, Result};
 
 /// Names of the lower parameters in errors.
 const LOWER_PARAMETER_NAMES: [&str; 8] = ["b1", "b2", "b3", "b4", "b5", "b6", "b7", "b8"];
@@ -101,6 +101,16 @@ impl SeriesSum {
     }
 }
 
+/// The refusal of a series whose tail bound starts only past a parameter of
+/// `-terms` (at least `terms` terms, `terms >= 10^15`): a cost, not the input's
+/// fault (it was `OutOfRange`, which read as a domain error: issue 37's scan met
+/// it at `c - a = -2.7e29278` once the Gammas there were answered in logarithms).
+pub(crate) fn series_past_negative_parameter(function: &'static str, terms: f64) -> Error {
+    let per_term = seconds_per_term(64);
+    let limit = crate::budget::limit_seconds(MAX_SERIES_TERMS as f64 * per_term);
+    Error::TooExpensive { function, seconds: (terms * per_term).max(limit.next_up()), limit_seconds: limit }
+}
+
 /// Smallest `N >= 0` with `x + N > 0` for every ball `x` (its lower end).
 fn first_positive_index(params: &[Ball]) -> Result<u64> {
     let mut n = 0u64;
@@ -110,7 +120,7 @@ fn first_positive_index(params: &[Ball]) -> Result<u64> {
             let m = Float::with_val(64, -&lo).ceil();
             let m = m.to_f64();
             if !(m.is_finite() && m < 1e15) {
-                return Err(Error::OutOfRange { arg: "hypergeometric parameter", value: lo.to_f64(), allowed: Interval::above(-1e15) });
+                return Err(series_past_negative_parameter("hypergeometric series (a parameter below -1e15)", m));
             }
             n = n.max(m as u64 + 1);
         }

@@ -312,7 +312,8 @@ fn registry_mp_budget_scan() {
 /// inside the input ball, a precision or an integer out of range, a decimal
 /// the parser or the function cannot take, a profile the model does not take (a
 /// wave finer than `abar/beta = 1e5 / (2 pi)`: `ProfileError::WaveTooFine`, checked
-/// before any work).
+/// before any work), a value itself outside the exponent range (no precision
+/// represents it: `ValueOutOfRange`).
 fn about_the_input(e: &maugis::Error) -> bool {
     use maugis::Error as E;
     e.is_domain()
@@ -325,6 +326,7 @@ fn about_the_input(e: &maugis::Error) -> bool {
                 | E::Arity { .. }
                 | E::NotRepresentable { .. }
                 | E::NonFiniteResult { .. }
+                | E::ValueOutOfRange { .. }
                 | E::Profile(_)
         )
 }

@@ -30,6 +30,7 @@ mod fuzz;
 mod golden;
 mod hyp2f1_decimal;
 mod hyp2f1_decimal_corners;
+mod hyp2f1_exponent_range;
 mod hyp2f1_f64;
 mod hyp2f1_large_param;
 mod identities;

@@ -55,9 +55,9 @@ use rug::Float;
 use super::choose::{evaluate, plan, plan_regions, Algorithm};
 use super::large_param::{hyp2f1_large_param, large_param_cheaper, large_param_loss, large_param_terms};
 use super::{hyp2f1_mp, validate};
-use crate::ball::{Ball, Mag};
+use crate::ball::{Ball, Mag, Scaled};
 use crate::error::{check_prec, Error, Interval, Result};
-use crate::special::gamma::{gamma_ball, gamma_of_ball};
+use crate::special::gamma::{gamma_of_ball_scaled, gamma_scaled};
 use crate::special::{is_nonpositive_integer, ziv_ball_inputs, DEFAULT_GUARD_BITS};
 
 /// Precision of the majorant evaluations (only upper bounds are needed).
@@ -150,8 +150,10 @@ pub fn hyp2f1_ball_mp(a: &Ball, b: &Ball, c: &Ball, z: &Ball, prec: u32) -> Resu
         let inner = direct_ball(a, &c.sub(b), c, &w, wp)?;
         // at `wp` bits: `1 - z` of a decimal `z` tightened to 54 000 bits made
         // `ln` and `exp` run at that length (50 ms, issue 37's scan)
-        let pre = omz.at_most_prec(wp).pow(&a.neg())?;
-        return Ok(pre.mul(&inner));
+        // the prefactor in logarithms where it passes the exponent range
+        // (`(1 - z)^(-7.4e17)`), the product formed once (`Scaled`)
+        let pre = Scaled::pow(&omz.at_most_prec(wp), &a.neg(), wp)?;
+        return pre.mul_ball(&inner).to_ball(wp);
     }
     Err(too_wide("z", z, "within (-3/4, 1) or below -1/2"))
 }
@@ -398,9 +400,10 @@ fn direct_ball(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32) -> Result<Ball> 
     Ok(out)
 }
 
-/// `Gamma` over a ball without poles ([`gamma_of_ball`]: the module docs' bound);
-/// a pole inside the ball is named as a parameter pole.
-fn gamma_over_ball(x: &Ball, wp: u32) -> Result<Ball> {
+/// `Gamma` over a ball without poles ([`gamma_of_ball`]: the module docs' bound),
+/// in logarithms where it passes the exponent range; a pole inside the ball is
+/// named as a parameter pole.
+fn gamma_over_ball(x: &Ball, wp: u32) -> Result<Scaled> {
     if !x.is_exact() && contains_nonpositive_integer(x) {
         return Err(Error::ParameterPole {
             function: "2F1(a, b; c; 1) over balls",
@@ -411,9 +414,9 @@ fn gamma_over_ball(x: &Ball, wp: u32) -> Result<Ball> {
         });
     }
     if x.is_exact() {
-        return gamma_ball(x.mid(), wp);
+        return gamma_scaled(x.mid(), wp);
     }
-    gamma_of_ball(x, wp)
+    gamma_of_ball_scaled(x, wp)
 }
 
 /// Gauss's sum (or Chu-Vandermonde) at `z = 1` over balls of parameters.
@@ -432,7 +435,7 @@ fn gauss_ball(a: &Ball, b: &Ball, c: &Ball, terminating: Option<u64>, wp: u32) -
     let s = c.sub(a).sub(b);
     let num = gamma_over_ball(c, wp)?.mul(&gamma_over_ball(&s, wp)?);
     let den = gamma_over_ball(&c.sub(a), wp)?.mul(&gamma_over_ball(&c.sub(b), wp)?);
-    num.div(&den)
+    num.div(&den)?.to_ball(wp)
 }
 
 #[cfg(test)]

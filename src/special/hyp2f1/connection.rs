@@ -33,12 +33,12 @@
 use rug::Float;
 
 use super::log_case::log_core;
-use super::series::{pow_exact_exponent, rounded_inside_unit, series_or_power};
+use super::series::{pow_exact_exponent_scaled, rounded_inside_unit, series_or_power};
 use super::transform::hyp2f1_pfaff;
 use super::one;
-use crate::ball::Ball;
+use crate::ball::{Ball, Scaled};
 use crate::error::{Error, Result};
-use crate::special::gamma::{gamma_ratio, xball};
+use crate::special::gamma::{gamma_ratio, gamma_ratio_scaled, xball};
 use crate::special::{exact_add, exact_sub, is_nonpositive_integer};
 
 /// [`Algorithm::Connection`]: the 1-z formula for exact `0 < z < 1`, `c - a - b`
@@ -62,20 +62,18 @@ pub(super) fn connection_core(a: &Float, b: &Float, c: &Float, x: &Ball, u: &Bal
     let neg_s = Float::with_val(s.prec(), -&s);
     let one_minus_s = exact_sub(&one(), &s);
     let one_plus_s = exact_add(&one(), &s);
-    let g1 = gamma_ratio(&[c, &s], &[&ca, &cb], wp)?;
-    let t1 = if g1.is_exact() && g1.mid().is_zero() {
-        g1
-    } else {
-        g1.mul(&series_or_power(a, b, &one_minus_s, u, x, wp)?)
-    };
-    let g2 = gamma_ratio(&[c, &neg_s], &[a, b], wp)?;
-    let t2 = if g2.is_exact() && g2.mid().is_zero() {
+    // each term's Gamma ratio and power in logarithms where they pass the
+    // exponent range (`Scaled`), the term formed once
+    let g1 = gamma_ratio_scaled(&[c, &s], &[&ca, &cb], wp)?;
+    let t1 = if g1.is_exact_zero() { g1 } else { g1.mul_ball(&series_or_power(a, b, &one_minus_s, u, x, wp)?) };
+    let g2 = gamma_ratio_scaled(&[c, &neg_s], &[a, b], wp)?;
+    let t2 = if g2.is_exact_zero() {
         g2
     } else {
-        let us = pow_exact_exponent(u, &s, wp)?;
-        g2.mul(&us).mul(&series_or_power(&ca, &cb, &one_plus_s, u, x, wp)?)
+        let us = pow_exact_exponent_scaled(u, &s, wp)?;
+        g2.mul(&us).mul_ball(&series_or_power(&ca, &cb, &one_plus_s, u, x, wp)?)
     };
-    Ok(t1.add(&t2))
+    Scaled::sum_to_ball(&[t1, t2], wp)
 }
 
 /// [`Algorithm::PfaffConnection`] and [`Algorithm::PfaffConnectionLog`]: for
@@ -93,7 +91,7 @@ pub(crate) fn hyp2f1_pfaff_connection(a: &Float, b: &Float, c: &Float, z: &Float
         return hyp2f1_pfaff(a, b, c, z, wp);
     }
     let omz_b = xball(&exact_sub(&one(), z), wp);
-    let pre = pow_exact_exponent(&omz_b, &Float::with_val(a.prec(), -a), wp)?;
+    let pre = pow_exact_exponent_scaled(&omz_b, &Float::with_val(a.prec(), -a), wp)?;
     // `1 - z` and `z` rounded into their balls at `wp` bits: a decimal `z`
     // tightened to 58 000 bits made `u`, `ln u` and every term of the series in
     // `u` cost that length (`2F1(-245.25, -162.25; 112.5; -181.625e25051)` at 150
@@ -106,7 +104,7 @@ pub(crate) fn hyp2f1_pfaff_connection(a: &Float, b: &Float, c: &Float, z: &Float
     let w = zb.mul(&u).neg();
     let s = exact_sub(b, a);
     let inner = if s.is_integer() { log_core(a, &cb, c, &u, wp)? } else { connection_core(a, &cb, c, &w, &u, wp)? };
-    Ok(pre.mul(&inner))
+    pre.mul_ball(&inner).to_ball(wp)
 }
 
 /// [`Algorithm::Gauss`]: `2F1(a, b; c; 1) = Gamma(c) Gamma(c-a-b) / (Gamma(c-a) Gamma(c-b))`, `c - a - b > 0`.

@@ -67,9 +67,9 @@ use rug::float::Round;
 use rug::ops::{AddAssignRound, AssignRound, DivAssignRound, MulAssignRound, Pow, SubAssignRound};
 use rug::Float;
 
-use crate::ball::Ball;
+use crate::ball::{Ball, Scaled};
 use crate::error::{Error, Result};
-use crate::special::gamma::gamma_of_ball;
+use crate::special::gamma::gamma_of_ball_scaled;
 use crate::special::input_ball;
 use crate::special::pfq::contains_pole;
 
@@ -107,8 +107,12 @@ pub(crate) fn large_param_terms(a: f64, b: f64, c: f64, z: f64, bits: f64) -> Op
 /// parameter is negative cancels about `|alpha| log2((1+u)/(1-u))` bits
 /// (`series_pair` takes the better of `alpha` and its Euler partner; in both
 /// formulas the pairs are `(a, a-c+1)` and `(c-a, 1-a)`), plus `log2` of the
-/// large parameter for the Gamma values and powers at it.
+/// large parameter for the Gamma values and powers at it. The formulas are
+/// symmetric in `a` and `b`; the estimate takes `b` as the large one (with `a =
+/// 7.4e17` it read `c - a` as a moderate parameter of `-7.4e17` and planned
+/// 65 536 guard bits, issue 37's scan).
 pub(crate) fn large_param_loss(a: f64, b: f64, c: f64, z: f64) -> u32 {
+    let (a, b) = if a.abs() > b.abs() { (b, a) } else { (a, b) };
     let u = if z < 0.0 { 1.0 / (1.0 - z) } else { 1.0 - z };
     let per = ((1.0 + u) / (1.0 - u)).log2();
     let eff = |alpha: f64, alt: f64| if alpha < 0.0 { alpha.max(alt) } else { alpha };
@@ -186,31 +190,38 @@ fn tail_bound(p: &Ball, r: &Ball, q: &Ball, u_hi: &Float, n: u64, t_abs: &Float)
     } else if q_hi_n < 0 {
         let e = Float::with_val_round(BOUND_PREC, -&q_hi_n, Round::Down).0;
         let half = Float::with_val_round(BOUND_PREC, &e / 2u32, Round::Down).0;
-        let steps = Float::with_val(BOUND_PREC, half.floor_ref()).to_f64();
-        if !(steps >= 1.0) || steps > 1e15 {
+        // K - N as a float: at a parameter of 7.4e17 it is about 3.7e17 (an
+        // integer past f64's exact range, and past u64 at 10^20), where
+        // rho^(K-N) makes zone 2 vanish; only its bound's inputs need it
+        let steps = Float::with_val(BOUND_PREC, half.floor_ref());
+        if !(steps >= 1) {
             return None;
         }
-        (half, Some(n + steps as u64))
+        (half, Some(steps))
     } else {
         return None;
     };
     let rho = mul_up(&mul_up(u_hi, &add_up(&one, &div_up(&delta, &d1))), &r_factor(&nf));
     let zone1 = geometric_up(&rho)?;
-    let Some(k) = k_end else { return Some(mul_up(t_abs, &zone1)) };
+    let Some(steps) = k_end else { return Some(mul_up(t_abs, &zone1)) };
     // zone 2
     let d0 = integer_distance(q);
     if !(d0 > 0) {
         return None;
     }
-    let kf = Float::with_val(BOUND_PREC, k);
+    let kf = Float::with_val_round(BOUND_PREC, &nf + &steps, Round::Down).0;
     let m = mul_up(&delta, &Float::with_val(BOUND_PREC, 2));
     let near = add_up(&one, &div_up(&delta, &d0));
     let c = mul_up(&mul_up(&near, &near), &exp_up(&m));
     let y = mul_up(u_hi, &r_factor(&kf));
     let grow = exp_up(&div_up(&m, &kf));
     let zone2_geom = geometric_up(&mul_up(&y, &grow))?;
-    let k_pow = Float::with_val_round(BOUND_PREC, (&kf).pow(&m), Round::Up).0;
-    let rho_pow = Float::with_val_round(BOUND_PREC, (&rho).pow(&Float::with_val(BOUND_PREC, k - n)), Round::Up).0;
+    let k_up = Float::with_val_round(BOUND_PREC, &nf + &steps, Round::Up).0;
+    let k_pow = Float::with_val_round(BOUND_PREC, (&k_up).pow(&m), Round::Up).0;
+    // K = N + steps, an integer with K - N <= E/2 (what zone 1 needs); where K
+    // itself is rounded, it is rounded the way that enlarges each bound (down in
+    // `r_factor` and `e^(m/K)`, up in `K^m`)
+    let rho_pow = Float::with_val_round(BOUND_PREC, (&rho).pow(&steps), Round::Up).0;
     let zone2 = mul_up(&mul_up(&mul_up(&rho_pow, &c), &k_pow), &zone2_geom);
     let total = mul_up(t_abs, &add_up(&zone1, &zone2));
     total.is_finite().then_some(total)
@@ -403,8 +414,8 @@ impl SeriesPair<'_> {
             // a base longer than the working precision (`1 - u` at `u = 1/(1 - z)`,
             // `z = -1.7e30833`: about 10^5 bits) is rounded into its ball first: `ln` at
             // its own length took 0.4 s (issue 37's scan), for the same enclosure at `wp`
-            let pre = one_minus_u.at_most_prec(wp).pow(one_minus_c)?;
-            return Ok(pre.mul(&series_zoned(&self.euler.0, &self.euler.1, self.gamma, u, wp)?));
+            let pre = Scaled::pow(&one_minus_u.at_most_prec(wp), one_minus_c, wp)?;
+            return pre.mul_ball(&series_zoned(&self.euler.0, &self.euler.1, self.gamma, u, wp)?).to_ball(wp);
         }
         series_zoned(self.alpha, self.big, self.gamma, u, wp)
     }
@@ -425,10 +436,11 @@ fn sum_both(s1: &SeriesPair, s2: &SeriesPair, one_minus_c: &Ball, u: &Ball, one_
     Ok((s1.sum(one_minus_c, u, one_minus_u, at(c1))?, s2.sum(one_minus_c, u, one_minus_u, at(c2))?))
 }
 
-/// `Gamma(x1) Gamma(x2) / (Gamma(y1) Gamma(y2))` over balls without poles.
-fn gamma_quotient(num: [&Ball; 2], den: [&Ball; 2], wp: u32) -> Result<Ball> {
-    let n = gamma_of_ball(num[0], wp)?.mul(&gamma_of_ball(num[1], wp)?);
-    let d = gamma_of_ball(den[0], wp)?.mul(&gamma_of_ball(den[1], wp)?);
+/// `Gamma(x1) Gamma(x2) / (Gamma(y1) Gamma(y2))` over balls without poles, in
+/// logarithms where a Gamma passes the exponent range (`Scaled`).
+fn gamma_quotient(num: [&Ball; 2], den: [&Ball; 2], wp: u32) -> Result<Scaled> {
+    let n = gamma_of_ball_scaled(num[0], wp)?.mul(&gamma_of_ball_scaled(num[1], wp)?);
+    let d = gamma_of_ball_scaled(den[0], wp)?.mul(&gamma_of_ball_scaled(den[1], wp)?);
     n.div(&d)
 }
 
@@ -457,9 +469,12 @@ pub(crate) fn hyp2f1_large_param(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32
         let s1 = SeriesPair { alpha: &a, big: &cb, gamma: &q1, euler: e1 };
         let s2 = SeriesPair { alpha: &ca, big: &b, gamma: &q2, euler: e2 };
         let (f1, f2) = sum_both(&s1, &s2, &omc, &u, &omu, wp)?;
-        let t1 = g1.mul(&omz.pow(&a.neg())?).mul(&f1);
-        let t2 = g2.mul(&omz.pow(&b.neg())?).mul(&f2);
-        return Ok(t1.add(&t2));
+        // each term's Gamma quotient and power in logarithms, formed once
+        // (a term below the exponent range, `2^(-5.5e18)` at `a = 7.4e17`, `z =
+        // -177.9`, goes into the radius)
+        let t1 = g1.mul(&Scaled::pow(&omz, &a.neg(), wp)?).mul_ball(&f1);
+        let t2 = g2.mul(&Scaled::pow(&omz, &b.neg(), wp)?).mul_ball(&f2);
+        return Scaled::sum_to_ball(&[t1, t2], wp);
     }
     if z.lower() > 0 && z.upper() < 1 {
         let u = one.sub(&z);
@@ -473,9 +488,9 @@ pub(crate) fn hyp2f1_large_param(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32
         let s3 = SeriesPair { alpha: &a, big: &b, gamma: &q3, euler: e3 };
         let s4 = SeriesPair { alpha: &ca, big: &cb, gamma: &q4, euler: e4 };
         let (f3, f4) = sum_both(&s3, &s4, &omc, &u, &z, wp)?;
-        let t1 = g3.mul(&f3);
-        let t2 = g4.mul(&u.at_most_prec(wp).pow(&s)?).mul(&f4);
-        return Ok(t1.add(&t2));
+        let t1 = g3.mul_ball(&f3);
+        let t2 = g4.mul(&Scaled::pow(&u.at_most_prec(wp), &s, wp)?).mul_ball(&f4);
+        return Scaled::sum_to_ball(&[t1, t2], wp);
     }
     Err(Error::precondition("large-parameter 2F1 route needs z < 0 or 0 < z < 1"))
 }

@@ -30,9 +30,9 @@ use rug::Float;
 
 use super::series::{abs_upper_precise, first_positive_index, negligible, negligible_scaled, ratio_bound, rounded_inside_unit, TailFactor};
 use super::{one, MAX_LOG_M, MIN_SERIES_PREC};
-use crate::ball::{Ball, MAG_PREC};
+use crate::ball::{Ball, Scaled, MAG_PREC};
 use crate::error::{Error, Interval, Result};
-use crate::special::gamma::{gamma_ratio, int_float, mag_abs, mag_add, mag_div, mag_inf, mag_min, mag_mul, xball};
+use crate::special::gamma::{gamma_ratio_scaled, int_float, mag_abs, mag_add, mag_div, mag_inf, mag_min, mag_mul, xball};
 use crate::special::pfq::MAX_SERIES_TERMS;
 use crate::special::{exact_add, exact_sub, is_nonpositive_integer};
 
@@ -78,26 +78,28 @@ pub(super) fn log_core(a: &Float, b: &Float, c: &Float, u: &Ball, wp: u32) -> Re
 /// `2F1(a, b; a+b+m; 1-u)` for an integer `m >= 0` [A&S 15.3.10-11]; `ca = c-a`, `cb = c-b`.
 #[allow(clippy::too_many_arguments)]
 pub(super) fn log_formula(a: &Float, b: &Float, c: &Float, ca: &Float, cb: &Float, m: u64, u: &Ball, wp: u32) -> Result<Ball> {
-    let mut result = Ball::zero(wp);
+    // the Gamma ratios in logarithms where they pass the exponent range, each
+    // term formed once (`Scaled`)
+    let mut terms = Vec::with_capacity(2);
     if m >= 1 {
-        let g = gamma_ratio(&[c], &[ca, cb], wp)?;
-        if !(g.is_exact() && g.mid().is_zero()) {
+        let g = gamma_ratio_scaled(&[c], &[ca, cb], wp)?;
+        if !g.is_exact_zero() {
             let gm = Ball::factorial((m - 1) as u32, wp); // Gamma(m)
-            result = g.mul(&gm).mul(&finite_sum(a, b, m, u, wp)?);
+            terms.push(g.mul_ball(&gm).mul_ball(&finite_sum(a, b, m, u, wp)?));
         }
     }
-    let g2 = gamma_ratio(&[c], &[a, b], wp)?;
-    if !(g2.is_exact() && g2.mid().is_zero()) {
+    let g2 = gamma_ratio_scaled(&[c], &[a, b], wp)?;
+    if !g2.is_exact_zero() {
         let am = exact_add(a, &int_float(m));
         let bm = exact_add(b, &int_float(m));
-        let mut part = g2.mul(&u.pow_u64(m)).mul(&log_series(&am, &bm, m, u, wp)?);
+        let part = g2.mul_ball(&u.pow_u64(m)).mul_ball(&log_series(&am, &bm, m, u, wp)?);
         // -(-u)^m = (-1)^{m+1} u^m
-        if m % 2 == 0 {
-            part = part.neg();
-        }
-        result = result.add(&part);
+        terms.push(if m % 2 == 0 { part.neg() } else { part });
     }
-    Ok(result)
+    if terms.is_empty() {
+        return Ok(Ball::zero(wp));
+    }
+    Scaled::sum_to_ball(&terms, wp)
 }
 
 /// `sum_{n<m} (a)_n (b)_n / (n! (1-m)_n) u^n`.

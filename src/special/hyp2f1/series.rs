@@ -37,8 +37,8 @@ use rug::ops::{AddAssignRound, AssignRound, DivAssignRound, MulAssignRound, SubA
 use rug::Float;
 
 use super::{nonpos_degree, one, pole_error, terminating_degree, MIN_SERIES_PREC};
-use crate::ball::{Ball, MAG_PREC};
-use crate::error::{Error, Interval, Result};
+use crate::ball::{Ball, Scaled, MAG_PREC};
+use crate::error::{Error, Result};
 use crate::special::gamma::{
     expm1_up, mag_abs, mag_abs_down, mag_add, mag_div, mag_geometric, mag_inf, mag_min, mag_mul, mag_pow2, mag_u64,
     mag_zero, xball,
@@ -52,7 +52,7 @@ pub(super) fn first_positive_index(params: &[&Float]) -> Result<u64> {
         if **p <= 0 {
             let v = -p.to_f64();
             if v.is_nan() || v >= 1e15 {
-                return Err(Error::OutOfRange { arg: "2F1 parameter", value: -v, allowed: Interval::above(-1e15) });
+                return Err(crate::special::pfq::series_past_negative_parameter("2F1(a, b; c; z) by its series (a parameter below -1e15)", v));
             }
             n = n.max(v.floor() as u64 + 1);
         }
@@ -359,21 +359,30 @@ pub(super) fn rounded_inside_unit(x: &Ball, wp: u32) -> Option<Ball> {
     inside.then_some(r)
 }
 
-/// `base^e` for `base > 0` and an exact exponent (binary powering for integers).
+/// `base^e` for `base > 0` and an exact exponent (binary powering for integers):
+/// [`pow_exact_exponent_scaled`] as a ball ([`Error::ValueOutOfRange`] when the
+/// power itself is outside the exponent range).
 pub(super) fn pow_exact_exponent(base: &Ball, e: &Float, wp: u32) -> Result<Ball> {
+    pow_exact_exponent_scaled(base, e, wp)?.to_ball(wp)
+}
+
+/// `base^e` for `base > 0` and an exact exponent as a [`Scaled`]: binary powering
+/// for an integer `|e| <= 2^20` while the power stays in the exponent range, else
+/// `e^(e ln base)` ([`Scaled::pow`], in logarithms when `|e ln base|` is large:
+/// the Pfaff prefactor `(1 - z)^(-a)` at `a = 7.4e17` passes `2^(2^30)` while its
+/// product with the inner sum need not).
+pub(super) fn pow_exact_exponent_scaled(base: &Ball, e: &Float, wp: u32) -> Result<Scaled> {
     if e.is_zero() {
-        return Ok(Ball::one(wp));
+        return Ok(Scaled::one(wp));
     }
     if e.is_integer() && e.clone().abs() <= (1u64 << 20) {
         let n = e.to_f64().abs() as u64;
         let p = base.pow_u64(n);
-        if !p.is_finite() {
-            // past MPFR's exponent range (2^(2^30)): `(1 - z)^100001` at
-            // `1 - z = 1.3e14333` (issue 37's scan, which found it as a DivisionByZero
-            // of the reciprocal)
-            return Err(Error::Overflow { what: "(1 - z)^e in 2F1 (past the exponent range)".into() });
+        // past MPFR's exponent range (2^(2^30)): `(1 - z)^100001` at `1 - z =
+        // 1.3e14333` (issue 37's scan): in logarithms below
+        if p.is_finite() && !p.contains_zero() {
+            return Ok(Scaled::from_ball(if e.is_sign_negative() { p.recip()? } else { p }));
         }
-        return if e.is_sign_negative() { p.recip() } else { Ok(p) };
     }
     // A base longer than the working precision (`1 - z` exact at `z = 3e-29731`
     // holds about 98 000 bits) is rounded into its ball first: `ln` at the
@@ -384,5 +393,7 @@ pub(super) fn pow_exact_exponent(base: &Ball, e: &Float, wp: u32) -> Result<Ball
     // bits, and `exp` ran at 175 060 bits: 0.1 s a call, issue 37's scan): `ln`
     // of the base carries a relative error of `2^-wp` already, so `e` rounded to
     // `wp` bits widens `e ln(base)` by as much again, which the Ziv loop sees.
-    base.pow(&Ball::from_float(e, wp.max(2)))
+    // (`Ball::pow` rounds `e` to the base's precision; `Scaled::pow`, for a large
+    // `e ln(base)`, to the length its absolute accuracy needs.)
+    Scaled::pow(&base, &Ball::from_float(e, e.prec()), wp)
 }

@@ -17,7 +17,7 @@
 use rug::{Float, Rational};
 
 use super::polynomial::{hyp2f1_polynomial, polynomial_at, to_rational};
-use super::series::{pow_exact_exponent, series_2f1};
+use super::series::{pow_exact_exponent_scaled, series_2f1};
 use super::{one, terminating_degree};
 use crate::ball::Ball;
 use crate::error::{Error, Result};
@@ -42,7 +42,7 @@ pub(crate) fn hyp2f1_pfaff(a: &Float, b: &Float, c: &Float, z: &Float, wp: u32) 
     let (p, q) = if is_nonpositive_integer(&ca) && !is_nonpositive_integer(&cb) { (b, ca) } else { (a, cb) };
     let omz = exact_sub(&one(), z);
     let omz_b = xball(&omz, wp);
-    let pre = pow_exact_exponent(&omz_b, &Float::with_val(p.prec(), -p), wp)?;
+    let pre = pow_exact_exponent_scaled(&omz_b, &Float::with_val(p.prec(), -p), wp)?;
     let u = omz_b.recip()?;
     let w = xball(z, wp).mul(&u).neg();
     let inner = if terminating_degree(p, &q).is_some() {
@@ -52,7 +52,8 @@ pub(crate) fn hyp2f1_pfaff(a: &Float, b: &Float, c: &Float, z: &Float, wp: u32) 
     } else {
         series_2f1(p, &q, c, &w, wp)?
     };
-    Ok(pre.mul(&inner))
+    // the prefactor in logarithms where it passes the exponent range
+    pre.mul_ball(&inner).to_ball(wp)
 }
 
 /// [`Algorithm::Euler`]: `(1-z)^{c-a-b} 2F1(c-a, c-b; c; z)` [DLMF 15.8.1]; any
@@ -70,5 +71,5 @@ pub(crate) fn hyp2f1_euler(a: &Float, b: &Float, c: &Float, z: &Float, wp: u32) 
     } else {
         series_2f1(&ca, &cb, c, &xball(z, wp), wp)?
     };
-    Ok(pow_exact_exponent(&u, &s, wp)?.mul(&inner))
+    pow_exact_exponent_scaled(&u, &s, wp)?.mul_ball(&inner).to_ball(wp)
 }
