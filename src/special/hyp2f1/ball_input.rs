@@ -57,7 +57,7 @@ use super::large_param::{hyp2f1_large_param, large_param_cheaper, large_param_lo
 use super::{hyp2f1_mp, validate};
 use crate::ball::{Ball, Mag, Scaled};
 use crate::error::{check_prec, Error, Interval, Result};
-use crate::special::gamma::{gamma_of_ball_scaled, gamma_scaled};
+use crate::special::gamma::gamma_pair_scaled;
 use crate::special::{is_nonpositive_integer, ziv_ball_inputs, DEFAULT_GUARD_BITS};
 
 /// Precision of the majorant evaluations (only upper bounds are needed).
@@ -400,10 +400,9 @@ fn direct_ball(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32) -> Result<Ball> 
     Ok(out)
 }
 
-/// `Gamma` over a ball without poles ([`gamma_of_ball`]: the module docs' bound),
-/// in logarithms where it passes the exponent range; a pole inside the ball is
-/// named as a parameter pole.
-fn gamma_over_ball(x: &Ball, wp: u32) -> Result<Scaled> {
+/// A Gamma argument ball of Gauss's sum that holds a pole, named as a parameter
+/// pole (an exact pole is the Gamma's own error later).
+fn no_parameter_pole(x: &Ball) -> Result<()> {
     if !x.is_exact() && contains_nonpositive_integer(x) {
         return Err(Error::ParameterPole {
             function: "2F1(a, b; c; 1) over balls",
@@ -413,10 +412,7 @@ fn gamma_over_ball(x: &Ball, wp: u32) -> Result<Scaled> {
             upper: x.upper().to_f64(),
         });
     }
-    if x.is_exact() {
-        return gamma_scaled(x.mid(), wp);
-    }
-    gamma_of_ball_scaled(x, wp)
+    Ok(())
 }
 
 /// Gauss's sum (or Chu-Vandermonde) at `z = 1` over balls of parameters.
@@ -432,10 +428,18 @@ fn gauss_ball(a: &Ball, b: &Ball, c: &Ball, terminating: Option<u64>, wp: u32) -
         }
         return num.div(&den);
     }
-    let s = c.sub(a).sub(b);
-    let num = gamma_over_ball(c, wp)?.mul(&gamma_over_ball(&s, wp)?);
-    let den = gamma_over_ball(&c.sub(a), wp)?.mul(&gamma_over_ball(&c.sub(b), wp)?);
-    num.div(&den)?.to_ball(wp)
+    // Gamma(c) / Gamma(c - a) and Gamma(c - a - b) / Gamma(c - b), each pair by
+    // its difference `a` (`gamma_pair_scaled`: at c = 10^20000 the radius of c
+    // would otherwise enter both logarithms, and the bits they need are those of
+    // `a ln c`, not `c ln c`)
+    let (ca, cb) = (c.sub(a), c.sub(b));
+    let s = ca.sub(b);
+    for x in [c, &s, &ca, &cb] {
+        no_parameter_pole(x)?;
+    }
+    let first = gamma_pair_scaled(c, &ca, a, wp)?;
+    let second = gamma_pair_scaled(&s, &cb, &a.neg(), wp)?;
+    first.mul(&second).to_ball(wp)
 }
 
 #[cfg(test)]

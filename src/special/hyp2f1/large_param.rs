@@ -69,7 +69,7 @@ use rug::Float;
 
 use crate::ball::{Ball, Scaled};
 use crate::error::{Error, Result};
-use crate::special::gamma::gamma_of_ball_scaled;
+use crate::special::gamma::{gamma_of_ball_scaled, gamma_pair_scaled};
 use crate::special::input_ball;
 use crate::special::pfq::contains_pole;
 
@@ -457,8 +457,10 @@ pub(crate) fn hyp2f1_large_param(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32
         let omz = one.sub(&z);
         let u = omz.recip()?;
         let (ba, ab) = (b.sub(&a), a.sub(&b));
-        let g1 = gamma_quotient([&c, &ba], [&b, &ca], wp)?;
-        let g2 = gamma_quotient([&c, &ab], [&a, &cb], wp)?;
+        // G1 = [Gamma(c) / Gamma(c - a)] [Gamma(b - a) / Gamma(b)], G2 likewise
+        // with a and b exchanged: each pair by its difference (`gamma_pair_scaled`)
+        let g1 = gamma_pair_scaled(&c, &ca, &a, wp)?.mul(&gamma_pair_scaled(&ba, &b, &a.neg(), wp)?);
+        let g2 = gamma_pair_scaled(&c, &cb, &b, wp)?.mul(&gamma_pair_scaled(&ab, &a, &b.neg(), wp)?);
         let omu = z.neg().mul(&u);
         let e1 = (b.neg().add_i64(1), a.sub(&c).add_i64(1));
         let e2 = (b.sub(&c).add_i64(1), a.neg().add_i64(1));
@@ -480,7 +482,7 @@ pub(crate) fn hyp2f1_large_param(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32
         let u = one.sub(&z);
         let s = ca.sub(&b);
         let neg_s = s.neg();
-        let g3 = gamma_quotient([&c, &s], [&ca, &cb], wp)?;
+        let g3 = gamma_pair_scaled(&c, &ca, &a, wp)?.mul(&gamma_pair_scaled(&s, &cb, &a.neg(), wp)?);
         let g4 = gamma_quotient([&c, &neg_s], [&a, &b], wp)?;
         let e3 = (b.sub(&c).add_i64(1), a.sub(&c).add_i64(1));
         let e4 = (b.neg().add_i64(1), a.neg().add_i64(1));

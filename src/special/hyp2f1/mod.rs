@@ -109,6 +109,12 @@
 //! `connection` (1-z formula, Pfaff + 1-w, Gauss's sum), `log_case` (the
 //! degenerate 1-z formula), `large_param` (one large parameter, over balls),
 //! `choose` (the cost model and dispatcher).
+//! Gamma ratios, connection terms and the Pfaff/Euler prefactors are formed
+//! through [`Scaled`](crate::ball::Scaled) (`m e^l`): a Gamma or a power past
+//! MPFR's exponent range (`Gamma(4.2e18)`, `(1 - z)^(-7.4e17)`) is carried in
+//! logarithms and the term exponentiated once (the enclosure is proved in
+//! `src/ball/scaled.rs`; `ln Gamma` in `special/gamma.rs`). Only a value itself
+//! outside the range is refused ([`Error::ValueOutOfRange`](crate::Error::ValueOutOfRange)).
 //! Gamma, Pochhammer and the magnitude helpers live in `special/gamma.rs`.
 
 mod ball_input;
