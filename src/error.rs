@@ -55,7 +55,8 @@ pub enum Error {
     /// that range whose product is inside it are answered
     /// ([`crate::ball::Scaled`]); this is the product's own size.
     ValueOutOfRange {
-        /// An estimate of `log2 |value|`.
+        /// An estimate of `log2 |value|` (infinite when that is itself past
+        /// f64's range, as for `(1 - 3.9e-62)^(-2.7e24977)`).
         log2_magnitude: f64,
     },
     /// An integrand expression that does not parse ([`crate::quad::expr`]).

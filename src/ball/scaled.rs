@@ -129,7 +129,9 @@ impl Scaled {
 
     /// `base^e` for a positive ball `base` (an error otherwise), carried in
     /// logarithms at the precision the module docs give, whatever the size of
-    /// `e ln base`.
+    /// `e ln base`. Pass `base` unrounded: it is rounded here to the bits its
+    /// logarithm needs (`wp` rounded first, `(1 - 3.9e-62)^(2.7e24977)` lost
+    /// all of `ln base` to the rounding).
     pub fn pow(base: &Ball, e: &Ball, wp: u32) -> Result<Scaled> {
         if (base.is_exact() && *base.mid() == 1) || (e.is_exact() && e.mid().is_zero()) {
             return Ok(Scaled::one(wp));
@@ -140,7 +142,10 @@ impl Scaled {
         if size <= 28 && e.rad_mag().le(&crate::ball::Mag::pow2_const(20)) {
             // |e ln base| below 2^28 (with room for the radius): the power is
             // inside the exponent range, `Ball::pow` as it always was
-            return Ok(Scaled::from_ball(base.pow(e)?));
+            // (a base longer than `wp` bits, a decimal `1 - z` tightened to 54 000
+            // bits, is rounded into its ball at `wp` first: `ln` and `exp` at its
+            // own length cost that length)
+            return Ok(Scaled::from_ball(base.at_most_prec(wp).pow(e)?));
         }
         let p = (i64::from(wp) + 16 + size).min(i64::from(crate::MAX_WORKING_PREC) * 4) as u32;
         crate::budget::check_estimate("a power taken in logarithms (ln at the bits its size needs)", ln_seconds(p), f64::INFINITY)?;

@@ -288,7 +288,14 @@ fn registry_mp_budget_scan() {
                     answered += 1;
                 }
                 Err(e) if e.is_time_limit() => time += 1,
-                Err(e) if about_the_input(&e) => input += 1,
+                Err(e) if about_the_input(&e) => {
+                    if let maugis::Error::ValueOutOfRange { log2_magnitude } = e {
+                        // the value itself past the exponent range: counted with the
+                        // input's refusals, printed so that a run can tell them apart
+                        eprintln!("value out of range (2^{log2_magnitude:.3e}): {text}");
+                    }
+                    input += 1
+                }
                 // a working-precision cap, a series cap, an exponent overflow in a
                 // step: the input may be answerable, the method gave up (counted,
                 // printed, and listed in docs/fuzzing.md as open)

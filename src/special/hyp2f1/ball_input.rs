@@ -152,7 +152,7 @@ pub fn hyp2f1_ball_mp(a: &Ball, b: &Ball, c: &Ball, z: &Ball, prec: u32) -> Resu
         // `ln` and `exp` run at that length (50 ms, issue 37's scan)
         // the prefactor in logarithms where it passes the exponent range
         // (`(1 - z)^(-7.4e17)`), the product formed once (`Scaled`)
-        let pre = Scaled::pow(&omz.at_most_prec(wp), &a.neg(), wp)?;
+        let pre = Scaled::pow(&omz, &a.neg(), wp)?;
         return pre.mul_ball(&inner).to_ball(wp);
     }
     Err(too_wide("z", z, "within (-3/4, 1) or below -1/2"))

@@ -414,7 +414,7 @@ impl SeriesPair<'_> {
             // a base longer than the working precision (`1 - u` at `u = 1/(1 - z)`,
             // `z = -1.7e30833`: about 10^5 bits) is rounded into its ball first: `ln` at
             // its own length took 0.4 s (issue 37's scan), for the same enclosure at `wp`
-            let pre = Scaled::pow(&one_minus_u.at_most_prec(wp), one_minus_c, wp)?;
+            let pre = Scaled::pow(one_minus_u, one_minus_c, wp)?;
             return pre.mul_ball(&series_zoned(&self.euler.0, &self.euler.1, self.gamma, u, wp)?).to_ball(wp);
         }
         series_zoned(self.alpha, self.big, self.gamma, u, wp)
@@ -464,9 +464,9 @@ pub(crate) fn hyp2f1_large_param(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32
         let omu = z.neg().mul(&u);
         let e1 = (b.neg().add_i64(1), a.sub(&c).add_i64(1));
         let e2 = (b.sub(&c).add_i64(1), a.neg().add_i64(1));
-        // the powers at `wp` bits (`1 - z` of a decimal tightened to 54 000 bits:
-        // `ln` and `exp` at that length, issue 37's scan)
-        let omz = omz.at_most_prec(wp);
+        // the powers: `Scaled::pow` rounds `1 - z` (a decimal tightened to 54 000
+        // bits: `ln` and `exp` at that length, issue 37's scan) to `wp` bits, or
+        // to the bits a large `|a ln(1 - z)|` needs
         let (q1, q2) = (ab.add_i64(1), ba.add_i64(1));
         let s1 = SeriesPair { alpha: &a, big: &cb, gamma: &q1, euler: e1 };
         let s2 = SeriesPair { alpha: &ca, big: &b, gamma: &q2, euler: e2 };
@@ -491,7 +491,7 @@ pub(crate) fn hyp2f1_large_param(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32
         let s4 = SeriesPair { alpha: &ca, big: &cb, gamma: &q4, euler: e4 };
         let (f3, f4) = sum_both(&s3, &s4, &omc, &u, &z, wp)?;
         let t1 = g3.mul_ball(&f3);
-        let t2 = g4.mul(&Scaled::pow(&u.at_most_prec(wp), &s, wp)?).mul_ball(&f4);
+        let t2 = g4.mul(&Scaled::pow(&u, &s, wp)?).mul_ball(&f4);
         return Scaled::sum_to_ball(&[t1, t2], wp);
     }
     Err(Error::precondition("large-parameter 2F1 route needs z < 0 or 0 < z < 1"))

@@ -385,15 +385,14 @@ pub(super) fn pow_exact_exponent_scaled(base: &Ball, e: &Float, wp: u32) -> Resu
         }
     }
     // A base longer than the working precision (`1 - z` exact at `z = 3e-29731`
-    // holds about 98 000 bits) is rounded into its ball first: `ln` at the
-    // base's own length took 0.5 s (issue 37's scan), and the answer is the
-    // same enclosure at `wp` bits.
-    let base = base.at_most_prec(wp);
+    // holds about 98 000 bits) is rounded into its ball by `Scaled::pow`: at `wp`
+    // bits when `|e ln base|` is small (`ln` at the base's own length took 0.5 s,
+    // issue 37's scan), else at the bits its size needs.
     // Likewise the exponent (`c - a - b` exact at `a = -1e-23409` holds 78 000
     // bits, and `exp` ran at 175 060 bits: 0.1 s a call, issue 37's scan): `ln`
     // of the base carries a relative error of `2^-wp` already, so `e` rounded to
     // `wp` bits widens `e ln(base)` by as much again, which the Ziv loop sees.
     // (`Ball::pow` rounds `e` to the base's precision; `Scaled::pow`, for a large
     // `e ln(base)`, to the length its absolute accuracy needs.)
-    Scaled::pow(&base, &Ball::from_float(e, e.prec()), wp)
+    Scaled::pow(base, &Ball::from_float(e, e.prec()), wp)
 }
