@@ -17,8 +17,9 @@
 //! * Product and quotient: `(m1 m2, l1 + l2)` and `(m1 / m2, l1 - l2)`, since
 //!   `mu1 e^lambda1 mu2 e^lambda2 = (mu1 mu2) e^(lambda1 + lambda2)`; ball
 //!   arithmetic encloses each part, so the pair encloses every product.
-//! * Power ([`Scaled::pow`]): `base^e = e^(e ln base)` for `base > 0`, with `ln`
-//!   of the base and the product at `p = wp + 16 + log2 |e ln base|` bits, so
+//! * Power ([`Scaled::pow`]): `base^e = e^(e ln base)` for `base > 0`, with `ln
+//!   base = ln_1p(base - 1)` next to 1 (`base - 1` formed at the base's own
+//!   length, then rounded into its ball; `ln base` at `p` bits elsewhere) and the product at `p = wp + 16 + log2 |e ln base|` bits, so
 //!   that the absolute error of `l`, which becomes the relative error of the
 //!   value, is about `2^-(wp+16)` however large `l` is.
 //! * Back to a ball ([`Scaled::to_ball`]): for any integer `k`, `mu e^lambda =
@@ -136,20 +137,30 @@ impl Scaled {
         if (base.is_exact() && *base.mid() == 1) || (e.is_exact() && e.mid().is_zero()) {
             return Ok(Scaled::one(wp));
         }
-        // log2 |e ln base| from a 64-bit logarithm (an estimate that only sets the precision)
-        let ln64 = base.at_most_prec(64).ln()?;
-        let size = (exponent(e.mid()) + exponent(ln64.mid())).max(0);
-        if size <= 28 && e.rad_mag().le(&crate::ball::Mag::pow2_const(20)) {
-            // |e ln base| below 2^28 (with room for the radius): the power is
-            // inside the exponent range, `Ball::pow` as it always was
-            // (a base longer than `wp` bits, a decimal `1 - z` tightened to 54 000
-            // bits, is rounded into its ball at `wp` first: `ln` and `exp` at its
-            // own length cost that length)
-            return Ok(Scaled::from_ball(base.at_most_prec(wp).pow(e)?));
+        if !base.is_positive() {
+            return Err(base.out_of_range("pow base", crate::error::Interval::above(0.0)));
         }
+        // ln base = ln_1p(base - 1), with base - 1 formed at the base's own
+        // length (exact for a long `1 - z` at a tiny `z`: rounding `1 - 3.9e-62`
+        // to `wp` bits first gave ln base = 0 +- 2^-wp, and with it nothing)
+        let t = base.sub(&Ball::one(2));
+        // log2 |e ln base| from the exponents (an estimate that only sets the precision):
+        // |ln base| is about |t| for |t| < 1/2, and below log2(e) |ln(1+t)| otherwise
+        let ln_exp = if t.mid().get_exp().is_some_and(|x| x < 0) {
+            exponent(t.mid())
+        } else {
+            let lb = base.at_most_prec(64).ln()?;
+            exponent(lb.mid()) + 1
+        };
+        let size = (exponent(e.mid()) + ln_exp).max(0);
         let p = (i64::from(wp) + 16 + size).min(i64::from(crate::MAX_WORKING_PREC) * 4) as u32;
-        crate::budget::check_estimate("a power taken in logarithms (ln at the bits its size needs)", ln_seconds(p), f64::INFINITY)?;
-        let l = base.set_prec(p).ln()?.mul(&e.at_most_prec(p));
+        if p > 4096 {
+            crate::budget::check_estimate("a power taken in logarithms (ln at the bits its size needs)", ln_seconds(p), f64::INFINITY)?;
+        }
+        // ln_1p only next to 1 (|t| < 1/2): next to 0, `1 + t` rounded at p bits
+        // would lose `base` itself (`1 - z` at `z = 1 - 10^-30`)
+        let ln_base = if t.mid().get_exp().is_some_and(|x| x < 0) { t.set_prec(p).ln_1p()? } else { base.set_prec(p).ln()? };
+        let l = ln_base.mul(&e.at_most_prec(p));
         Ok(Scaled { m: Ball::one(wp), l })
     }
 
