@@ -55,7 +55,7 @@ pub(crate) use dd_bounded::{div_f64_p, mag, BoundedDd, BOUND_INFLATION, C_ADD, U
 pub(crate) use double_double::{cpu_dispatch, Dekker, ExactProduct, Fused};
 pub use mag::Mag;
 pub use scaled::Scaled;
-pub(crate) use scaled::ln_seconds;
+pub(crate) use scaled::{intermediate, ln_seconds};
 
 /// `base^n` by square-and-multiply (`one` is the unit of `mul`); shared by the ball,
 /// complex-ball and magnitude powers.

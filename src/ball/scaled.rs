@@ -62,6 +62,15 @@ pub(crate) fn ln_seconds(p: u32) -> f64 {
     0.045 * (f64::from(p) / 1e5).powf(1.5)
 }
 
+/// [`Error::ValueOutOfRange`] of an intermediate as [`Error::Overflow`]: only
+/// the function's own value may be called out of range.
+pub(crate) fn intermediate(e: Error) -> Error {
+    match e {
+        Error::ValueOutOfRange { .. } => Error::Overflow { what: "an intermediate product taken in logarithms (past the exponent range)".into() },
+        e => e,
+    }
+}
+
 /// `floor(log2 |x|) + 1` of a finite nonzero float, 0 otherwise.
 fn exponent(x: &Float) -> i64 {
     x.get_exp().map_or(0, i64::from)
@@ -189,16 +198,16 @@ impl Scaled {
         }
     }
 
-    /// `sum terms` as a ball (module docs, "Sums"): terms below the exponent
-    /// range go into the radius; [`Error::ValueOutOfRange`] when every term lies
-    /// below it (the sum then does too), [`Error::Overflow`] when a term lies
-    /// above it (the terms may cancel: a cap of this method, not the value's).
-    pub fn sum_to_ball(terms: &[Scaled], wp: u32) -> Result<Ball> {
+    /// `sum terms` as the function's value (module docs, "Sums"): terms below
+    /// the exponent range go into the radius; [`Error::ValueOutOfRange`] when
+    /// every term lies below it (the sum then does too), [`Error::Overflow`] when
+    /// a term lies above it (the terms may cancel: a cap of this method).
+    pub fn sum_to_value(terms: &[Scaled], wp: u32) -> Result<Ball> {
         let mut out: Option<Ball> = None;
         let mut tiny = Mag::ZERO;
         let mut tiny_log2 = f64::NEG_INFINITY;
         for t in terms {
-            match t.to_ball(wp) {
+            match t.form(wp) {
                 Ok(b) => out = Some(out.map_or_else(|| b.clone(), |o| o.add(&b))),
                 Err(Error::ValueOutOfRange { log2_magnitude }) if log2_magnitude < 0.0 => {
                     tiny = tiny.add(t.abs_upper_mag());
@@ -219,11 +228,29 @@ impl Scaled {
         }
     }
 
-    /// The enclosing ball at about `wp` bits (module docs), or
-    /// [`Error::ValueOutOfRange`] when the value itself lies outside MPFR's
-    /// exponent range, or [`Error::Overflow`] when the enclosure straddles a limit
-    /// of that range.
+    /// [`Scaled::sum_to_value`] for an intermediate sum (an inner function that
+    /// a prefactor multiplies later): out of range is [`Error::Overflow`].
+    pub fn sum_to_ball(terms: &[Scaled], wp: u32) -> Result<Ball> {
+        Scaled::sum_to_value(terms, wp).map_err(intermediate)
+    }
+
+    /// The enclosing ball at about `wp` bits (module docs) of a value that is
+    /// the function's own: [`Error::ValueOutOfRange`] when it lies outside MPFR's
+    /// exponent range (an honest refusal: no precision represents it), or
+    /// [`Error::Overflow`] when the enclosure straddles a limit of that range.
+    pub fn to_value(&self, wp: u32) -> Result<Ball> {
+        self.form(wp)
+    }
+
+    /// [`Scaled::to_value`] for an intermediate (a factor or an inner function
+    /// that later factors may bring back into range): out of range is
+    /// [`Error::Overflow`], a cap of the method, never a statement about the
+    /// function's value.
     pub fn to_ball(&self, wp: u32) -> Result<Ball> {
+        self.form(wp).map_err(intermediate)
+    }
+
+    fn form(&self, wp: u32) -> Result<Ball> {
         if self.plain() || self.is_exact_zero() {
             if !self.m.is_finite() {
                 return Err(Error::Overflow { what: "a product taken in logarithms (its ball)".into() });
@@ -289,17 +316,17 @@ mod tests {
         let three = Ball::from_i64(3, 64);
         let big = Ball::from_float(&Float::with_val(64, 1u64 << 40), 64);
         let back = big.neg().add_i64(5);
-        let v = Scaled::pow(&three, &big, 64).unwrap().mul(&Scaled::pow(&three, &back, 64).unwrap()).to_ball(64).unwrap();
+        let v = Scaled::pow(&three, &big, 64).unwrap().mul(&Scaled::pow(&three, &back, 64).unwrap()).to_value(64).unwrap();
         assert!(v.contains(&Float::with_val(64, 243)), "{v:?}");
         assert!(v.rel_accuracy_bits() > 50.0, "{v:?}");
         // the factor alone is refused as out of range, with its size
-        match Scaled::pow(&three, &big, 64).unwrap().to_ball(64) {
+        match Scaled::pow(&three, &big, 64).unwrap().to_value(64) {
             Err(Error::ValueOutOfRange { log2_magnitude }) => {
                 assert!((log2_magnitude / (1u64 << 40) as f64 - 3f64.log2()).abs() < 1e-9, "{log2_magnitude}")
             }
             other => panic!("{other:?}"),
         }
-        match Scaled::pow(&three, &big.neg(), 64).unwrap().to_ball(64) {
+        match Scaled::pow(&three, &big.neg(), 64).unwrap().to_value(64) {
             Err(Error::ValueOutOfRange { log2_magnitude }) => assert!(log2_magnitude < -1e12),
             other => panic!("{other:?}"),
         }

@@ -14,7 +14,7 @@
 //!   too), and the rounding is carried by `|Gamma(t) - Gamma(m)| <= |Gamma(m)|
 //!   (e^{rM} - 1)`, `M = max |psi|` over the ball (psi is increasing between
 //!   poles, DLMF 5.15.1). MPFR's Gamma at 35 000 bits takes about two minutes.
-//! * **Gamma ratios** ([`gamma_ratio`]): `prod Gamma(num_i) / prod Gamma(den_j)`.
+//! * **Gamma ratios** ([`gamma_ratio_scaled`]): `prod Gamma(num_i) / prod Gamma(den_j)`.
 //!   Arguments that differ by an integer `k <= 64` are paired into Pochhammer
 //!   products `Gamma(x+k)/Gamma(x) = (x)_k` [DLMF 5.2.5], which is exact in the
 //!   limit and cheap; `1/Gamma` at a pole is the exact zero [DLMF 5.2.1].
@@ -125,18 +125,12 @@ pub(crate) fn pochhammer(x: &Float, k: u64, wp: u32) -> Ball {
     r
 }
 
-/// `prod Gamma(num_i) / prod Gamma(den_j)` at exact points. `num` must avoid the
-/// poles; a pole in `den` makes the product an exact zero. Arguments that differ
-/// by an integer of at most 64 are paired into Pochhammer
-/// products. Gammas past the exponent range are carried in logarithms
-/// ([`gamma_ratio_scaled`]); only a ratio that is itself outside the range is
-/// refused ([`Error::ValueOutOfRange`]).
-pub(crate) fn gamma_ratio(num: &[&Float], den: &[&Float], wp: u32) -> Result<Ball> {
-    gamma_ratio_scaled(num, den, wp)?.to_ball(wp)
-}
-
-/// [`gamma_ratio`] as a [`Scaled`] (for a caller that multiplies it by more
-/// factors before the value is formed).
+/// `prod Gamma(num_i) / prod Gamma(den_j)` at exact points as a [`Scaled`] (the
+/// caller forms the value, or multiplies more factors first). `num` must avoid
+/// the poles; a pole in `den` makes the product an exact zero. Arguments that
+/// differ by an integer of at most 64 are paired into Pochhammer products; huge
+/// close arguments by Stirling's pair formula ([`gamma_pair_scaled`]); other
+/// Gammas past the exponent range are carried in logarithms ([`gamma_scaled`]).
 pub(crate) fn gamma_ratio_scaled(num: &[&Float], den: &[&Float], wp: u32) -> Result<Scaled> {
     if den.iter().any(|y| is_nonpositive_integer(y)) {
         return Ok(Scaled::from_ball(Ball::zero(wp)));

@@ -153,7 +153,7 @@ pub fn hyp2f1_ball_mp(a: &Ball, b: &Ball, c: &Ball, z: &Ball, prec: u32) -> Resu
         // the prefactor in logarithms where it passes the exponent range
         // (`(1 - z)^(-7.4e17)`), the product formed once (`Scaled`)
         let pre = Scaled::pow(&omz, &a.neg(), wp)?;
-        return pre.mul_ball(&inner).to_ball(wp);
+        return pre.mul_ball(&inner).to_value(wp);
     }
     Err(too_wide("z", z, "within (-3/4, 1) or below -1/2"))
 }
@@ -302,7 +302,8 @@ fn plus_one_up(p: &Float) -> Float {
 /// replace the non-terminating majorant; `a = 0` or `b = 0` exact is exactly 1.
 fn direct_ball(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32) -> Result<Ball> {
     if [a, b, c, z].iter().all(|x| x.is_exact()) {
-        return hyp2f1_mp(a.mid(), b.mid(), c.mid(), z.mid(), wp);
+        // (an inner function after Pfaff may be out of range where the value is not)
+        return hyp2f1_mp(a.mid(), b.mid(), c.mid(), z.mid(), wp).map_err(crate::ball::intermediate);
     }
     let c_lo = c.lower();
     if !(c_lo > 0) {
@@ -325,7 +326,7 @@ fn direct_ball(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32) -> Result<Ball> 
     if !(rr < 1) {
         return Err(too_wide("z", z, "|z| < 1 over the ball after the transformation"));
     }
-    let mut out = hyp2f1_mp(a.mid(), b.mid(), c.mid(), z.mid(), wp)?;
+    let mut out = hyp2f1_mp(a.mid(), b.mid(), c.mid(), z.mid(), wp).map_err(crate::ball::intermediate)?;
     // The majorant's parameters: A (or -d, exact, with x = -R) and its shift by one.
     let terminating = deg_a.is_some() || deg_b.is_some();
     let param = |x: &Ball, big: &Float| if exact_degree(x).is_some() { x.mid().clone() } else { big.clone() };
@@ -439,7 +440,7 @@ fn gauss_ball(a: &Ball, b: &Ball, c: &Ball, terminating: Option<u64>, wp: u32) -
     }
     let first = gamma_pair_scaled(c, &ca, a, wp)?;
     let second = gamma_pair_scaled(&s, &cb, &a.neg(), wp)?;
-    first.mul(&second).to_ball(wp)
+    first.mul(&second).to_value(wp)
 }
 
 #[cfg(test)]

@@ -26,7 +26,7 @@
 //!
 //! # Error bound
 //!
-//! Ball arithmetic throughout: the Gamma ratios from [`gamma_ratio`] (exact
+//! Ball arithmetic throughout: the Gamma ratios from [`gamma_ratio_scaled`] (exact
 //! points, MPFR's correctly rounded values), the powers with directed rounding,
 //! and the series engine's rigorous radius for the two `1-z` series.
 
@@ -38,7 +38,7 @@ use super::transform::hyp2f1_pfaff;
 use super::one;
 use crate::ball::{Ball, Scaled};
 use crate::error::{Error, Result};
-use crate::special::gamma::{gamma_ratio, gamma_ratio_scaled, xball};
+use crate::special::gamma::{gamma_ratio_scaled, xball};
 use crate::special::{exact_add, exact_sub, is_nonpositive_integer};
 
 /// [`Algorithm::Connection`]: the 1-z formula for exact `0 < z < 1`, `c - a - b`
@@ -104,7 +104,7 @@ pub(crate) fn hyp2f1_pfaff_connection(a: &Float, b: &Float, c: &Float, z: &Float
     let w = zb.mul(&u).neg();
     let s = exact_sub(b, a);
     let inner = if s.is_integer() { log_core(a, &cb, c, &u, wp)? } else { connection_core(a, &cb, c, &w, &u, wp)? };
-    pre.mul_ball(&inner).to_ball(wp)
+    pre.mul_ball(&inner).to_value(wp)
 }
 
 /// [`Algorithm::Gauss`]: `2F1(a, b; c; 1) = Gamma(c) Gamma(c-a-b) / (Gamma(c-a) Gamma(c-b))`, `c - a - b > 0`.
@@ -115,5 +115,5 @@ pub(crate) fn hyp2f1_gauss(a: &Float, b: &Float, c: &Float, wp: u32) -> Result<B
     if s <= 0 {
         return Err(Error::precondition("Gauss's sum needs c - a - b > 0"));
     }
-    gamma_ratio(&[c, &s], &[&ca, &cb], wp)
+    gamma_ratio_scaled(&[c, &s], &[&ca, &cb], wp)?.to_value(wp)
 }

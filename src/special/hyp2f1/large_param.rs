@@ -476,7 +476,7 @@ pub(crate) fn hyp2f1_large_param(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32
         // -177.9`, goes into the radius)
         let t1 = g1.mul(&Scaled::pow(&omz, &a.neg(), wp)?).mul_ball(&f1);
         let t2 = g2.mul(&Scaled::pow(&omz, &b.neg(), wp)?).mul_ball(&f2);
-        return Scaled::sum_to_ball(&[t1, t2], wp);
+        return Scaled::sum_to_value(&[t1, t2], wp);
     }
     if z.lower() > 0 && z.upper() < 1 {
         let u = one.sub(&z);
@@ -492,7 +492,7 @@ pub(crate) fn hyp2f1_large_param(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32
         let (f3, f4) = sum_both(&s3, &s4, &omc, &u, &z, wp)?;
         let t1 = g3.mul_ball(&f3);
         let t2 = g4.mul(&Scaled::pow(&u, &s, wp)?).mul_ball(&f4);
-        return Scaled::sum_to_ball(&[t1, t2], wp);
+        return Scaled::sum_to_value(&[t1, t2], wp);
     }
     Err(Error::precondition("large-parameter 2F1 route needs z < 0 or 0 < z < 1"))
 }

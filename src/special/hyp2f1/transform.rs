@@ -53,7 +53,7 @@ pub(crate) fn hyp2f1_pfaff(a: &Float, b: &Float, c: &Float, z: &Float, wp: u32) 
         series_2f1(p, &q, c, &w, wp)?
     };
     // the prefactor in logarithms where it passes the exponent range
-    pre.mul_ball(&inner).to_ball(wp)
+    pre.mul_ball(&inner).to_value(wp)
 }
 
 /// [`Algorithm::Euler`]: `(1-z)^{c-a-b} 2F1(c-a, c-b; c; z)` [DLMF 15.8.1]; any
@@ -71,5 +71,5 @@ pub(crate) fn hyp2f1_euler(a: &Float, b: &Float, c: &Float, z: &Float, wp: u32) 
     } else {
         series_2f1(&ca, &cb, c, &xball(z, wp), wp)?
     };
-    pow_exact_exponent_scaled(&u, &s, wp)?.mul_ball(&inner).to_ball(wp)
+    pow_exact_exponent_scaled(&u, &s, wp)?.mul_ball(&inner).to_value(wp)
 }
