@@ -185,7 +185,7 @@ fn write_study(study: &ScalesStudy, out: &std::path::Path) -> Result<(), String>
     let written = write_atomically(out, &files)?;
     let mut report = String::new();
     let cpu: f64 = study.cycles.iter().map(|c| c.seconds).sum();
-    let failed = study.cycles.iter().filter(|c| c.error.is_some()).count();
+    let failed = study.cycles.iter().filter(|c| c.error.is_some() || c.model_error.is_some()).count();
     let _ = writeln!(
         report,
         "maugis multiscale scales: {} cycles{} ({failed} with an error), {:.0} s of cycle time",
@@ -229,7 +229,9 @@ fn measured(c: &ScaleCycle) -> String {
 
 /// A cycle's error as a quoted CSV cell.
 fn error_cell(c: &ScaleCycle) -> String {
-    format!("\"{}\"", c.error.as_deref().unwrap_or("").replace('"', "'"))
+    let model = c.model_error.as_ref().map(|e| format!("model: {e}"));
+    let parts: Vec<&str> = c.error.iter().chain(&model).map(String::as_str).collect();
+    format!("\"{}\"", parts.join("; ").replace('"', "'"))
 }
 
 fn rows_csv(rows: &[ScalesRow]) -> String {
