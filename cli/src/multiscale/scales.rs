@@ -349,7 +349,7 @@ fn w_svg(study: &ScalesStudy, rows: &[ScalesRow]) -> Result<String, String> {
         let root = root.titled(&format!("W of the closed cycle against the number of scales N (gamma = {})", short(spec.gamma)), ("sans-serif", 24)).map_err(plot_err)?;
         let (left, _) = root.split_horizontally(pw * cols as u32);
         let areas = left.split_evenly((grid_rows, cols));
-        let style = |k: usize, i: usize| ShapeStyle { color: colour(k).to_rgba(), filled: false, stroke_width: if i == 0 { 2 } else { 2 } };
+        let style = |k: usize, _i: usize| ShapeStyle { color: colour(k).to_rgba(), filled: false, stroke_width: 2 };
         for (i, (&l, area)) in spec.lambdas.iter().zip(&areas).enumerate() {
             let of: Vec<&ScalesRow> = rows.iter().filter(|r| r.lambda == l).collect();
             let ys = of.iter().flat_map(|r| [r.profile.w, r.w_sum_of_singles, r.profile.model.filter(|m| m.valid).map(|m| m.w)]).flatten().filter(|v| v.is_finite());
