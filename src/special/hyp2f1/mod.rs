@@ -114,7 +114,7 @@
 //! MPFR's exponent range (`Gamma(4.2e18)`, `(1 - z)^(-7.4e17)`) is carried in
 //! logarithms and the term exponentiated once (the enclosure is proved in
 //! `src/ball/scaled.rs`; `ln Gamma` in `special/gamma.rs`). Only a value itself
-//! outside the range is refused ([`Error::ValueOutOfRange`](crate::Error::ValueOutOfRange)).
+//! outside the range is refused ([`crate::Error::ValueOutOfRange`]).
 //! Gamma, Pochhammer and the magnitude helpers live in `special/gamma.rs`.
 
 mod ball_input;
