@@ -290,8 +290,8 @@ impl Scaled {
         }
         // |t| <= 2^e_hi; |t| >= 2^(e_lo - 1) when t excludes zero
         let e_hi = exponent(&t.abs_upper());
-        let above_all = !t.contains_zero() && k + exponent(&t.abs_lower()) - 1 >= emax;
-        let below_all = k + e_hi <= emin - 1;
+        let above_all = !t.contains_zero() && k + exponent(&t.abs_lower()) > emax;
+        let below_all = k + e_hi < emin;
         if above_all || below_all {
             return Err(Error::ValueOutOfRange { log2_magnitude: log2_estimate });
         }

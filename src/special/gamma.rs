@@ -176,7 +176,7 @@ pub(crate) fn gamma_ratio_scaled(num: &[&Float], den: &[&Float], wp: u32) -> Res
                 let huge = |t: &Float| *t > 0 && t.get_exp().is_some_and(|e| i64::from(e) > i64::from(wp) + 17);
                 let close = (0..den.len()).find(|&j| {
                     let y = den[j];
-                    !used[j] && huge(x) && huge(y) && exact_sub(x, y).get_exp().map_or(true, |e| e < y.get_exp().unwrap_or(0) - 1)
+                    !used[j] && huge(x) && huge(y) && exact_sub(x, y).get_exp().is_none_or(|e| e < y.get_exp().unwrap_or(0) - 1)
                 });
                 match close {
                     Some(j) => {
