@@ -260,6 +260,12 @@ fn abs_max(x: &Ball) -> Float {
 /// 1 - 2^-52)`, whose pieces cancel): a wide ball's upper end is as valid a bound,
 /// it only asks more digits of the input balls.
 fn majorant(p: &Float, q: &Float, r: &Float, x: &Float) -> Result<Mag> {
+    // a majorant past the exponent range is this bound's cap, never the value's
+    majorant_value(p, q, r, x).map_err(crate::ball::intermediate)
+}
+
+/// [`majorant`] before its errors are read as an intermediate's.
+fn majorant_value(p: &Float, q: &Float, r: &Float, x: &Float) -> Result<Mag> {
     validate(p, q, r, x)?;
     if x.is_zero() {
         return Ok(Mag::pow2(0));
