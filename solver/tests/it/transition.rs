@@ -1,12 +1,20 @@
 //! lambda* by bisection (`transition`): on the Fig. 4c roughness at a coarse
-//! resolution (1024 cells, 100 steps; the refined search at 2048 and 200), the
-//! bracket holds the crossing of the threshold by the evaluations themselves,
-//! the uncertainty covers the two resolutions, and bad specs are typed errors.
+//! resolution and the refined one (twice the cells and steps), the bracket
+//! holds the crossing of the threshold by the evaluations themselves, the
+//! uncertainty covers the two resolutions, and bad specs are typed errors.
+//!
+//! Default tier: 512 cells and 100 steps (refined 1024 and 200), about a sixth
+//! of the long tier's cost; the two brackets are those of the long tier
+//! (coarse (0.886, 1.095), refined (0.716, 0.886)), so the shift between the
+//! resolutions is not zero and the uncertainty must cover it. Long tier: 1024
+//! and 100 (refined 2048 and 200), as before.
 
 use maugis_solver::profile::AdhesionLaw;
 use maugis_solver::map::{Resolution, ResolutionRule};
 use maugis_solver::transition::{johnson_sweep, transition, Search, TransitionSpec};
 use maugis_solver::SolverError;
+
+use crate::tier;
 
 fn spec() -> TransitionSpec {
     TransitionSpec {
@@ -18,9 +26,15 @@ fn spec() -> TransitionSpec {
         scan: 2,
         fraction: 0.1,
         rel_tol: 0.25,
-        resolution: ResolutionRule::Fixed(Resolution { cells: 1024, steps_per_leg: 100 }),
+        resolution: ResolutionRule::Fixed(coarse_resolution()),
         law: AdhesionLaw::Dugdale,
     }
+}
+
+/// The coarse search's resolution: 512 cells and 100 steps a leg in the default
+/// tier, 1024 and 100 in the long tier (module docs).
+fn coarse_resolution() -> Resolution {
+    Resolution { cells: tier::pick(512, 1024), steps_per_leg: 100 }
 }
 
 /// The final bracket `(lo, hi)`: `lo` is the largest evaluated lambda inside
@@ -47,18 +61,34 @@ fn lambda_star_is_bracketed_with_an_uncertainty() {
     let coarse = check_bracket(&t.search, t.threshold, sp.rel_tol);
     let fine = check_bracket(refined, t.threshold, sp.rel_tol);
     assert_eq!(t.lambda_star(), Some(fine));
-    assert!(refined.evaluations.iter().all(|e| e.resolution == Resolution { cells: 2048, steps_per_leg: 200 }));
+    let c = coarse_resolution();
+    assert!(t.search.evaluations.iter().all(|e| e.resolution == c));
+    assert!(refined.evaluations.iter().all(|e| e.resolution == Resolution { cells: 2 * c.cells, steps_per_leg: 2 * c.steps_per_leg }));
     let u = t.relative_uncertainty().unwrap();
-    assert!(u >= (fine.ln() - coarse.ln()).abs() && u.is_finite(), "{u}");
+    let shift = (fine.ln() - coarse.ln()).abs();
+    assert!(shift > 0.0, "the two resolutions' lambda* agree ({fine}): the shift is not exercised");
+    assert!(u >= shift && u.is_finite(), "{u}");
     // The same roughness as the Johnson parameter chi = sqrt(beta)/alpha = 3,
     // without the refined search, next to a bad one: rows in order, the
     // coarse search's bracket, a typed error for chi < 0 (alpha < 0).
-    let rows = johnson_sweep(sp, &[3.0, -1.0], &[sp.fraction], &|_| false);
+    // Default tier: the search over the coarse search's final bracket (its two
+    // ends, no bisection); long tier: the whole coarse search again.
+    let (lo, hi) = t.search.bracket.unwrap();
+    let template = tier::pick(TransitionSpec { lambda_min: lo, lambda_max: hi, ..sp }, sp);
+    let rows = johnson_sweep(template, &[3.0, -1.0], &[sp.fraction], &|_| false);
     assert_eq!((rows[0].chi, rows[1].chi), (3.0, -1.0));
     assert!((rows[0].spec.alpha / sp.alpha - 1.0).abs() < 1e-15, "{}", rows[0].spec.alpha);
     let r = &rows[0].result.as_ref().unwrap()[0];
     assert!(r.refined.is_none());
-    assert_eq!(r.search.bracket, t.search.bracket);
+    // The same bracket (the scan's ends are exp(ln lambda), within rounding of
+    // the coarse search's), from the same W at every lambda it evaluated.
+    let (rlo, rhi) = r.search.bracket.expect("the sweep's search brackets lambda*");
+    let close = |a: f64, b: f64| (a / b - 1.0).abs() <= 1e-12;
+    assert!(close(rlo, lo) && close(rhi, hi), "({rlo}, {rhi}) against ({lo}, {hi})");
+    for e in &r.search.evaluations {
+        let same = t.search.evaluations.iter().find(|c| close(c.lambda, e.lambda)).unwrap_or_else(|| panic!("the coarse search has no lambda = {}", e.lambda));
+        assert!((e.w - same.w).abs() <= 1e-9 * same.w.abs().max(1.0) && (e.w_smooth - same.w_smooth).abs() <= 1e-9, "{e:?} against {same:?}");
+    }
     assert!(matches!(rows[1].result, Err(SolverError::OutOfRange { arg, .. }) if arg.starts_with("alpha")), "{:?}", rows[1].result);
 }
 
