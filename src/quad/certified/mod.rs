@@ -66,7 +66,7 @@ use std::fmt;
 use rug::Float;
 
 pub use holo::HoloBall;
-pub(crate) use holo::Mode;
+pub(crate) use holo::{MappedEnd, Mode};
 pub use singular::{Decay, EndBound, Weight};
 
 use crate::ball::{Ball, CBall, Mag};

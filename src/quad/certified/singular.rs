@@ -59,7 +59,7 @@
 
 use rug::Float;
 
-use super::{HoloBall, IntegrationError, Mode, Part, PartsBuilder, XMap};
+use super::{HoloBall, IntegrationError, MappedEnd, Mode, Part, PartsBuilder, XMap};
 use crate::ball::{Ball, CBall, Mag};
 use crate::error::{Error, Result};
 
@@ -192,6 +192,8 @@ fn right_factor(a: Ball, alpha: Ball, k: u32) -> impl Fn(&HoloBall, &mut dyn FnM
 /// -1 for `x = e - d e^{-s}`), and its tail bound for the target `target`.
 struct Mapped {
     e: Ball,
+    /// `e` as a rational, when exact (for [`MappedEnd`]).
+    e_exact: Option<rug::Rational>,
     sign: i64,
     d: Ball,
     mu: Ball,
@@ -204,7 +206,8 @@ impl Mapped {
         let other = Ball::from_float(other, other.prec());
         let d = if sign > 0 { other.sub(e) } else { e.sub(&other) };
         let log_d = d.set_prec(wp).ln()?;
-        Ok(Mapped { e: e.set_prec(wp), sign, d: d.set_prec(wp), mu: exponent.set_prec(wp).add_i64(1), log_d, k })
+        let e_exact = if e.is_exact() { e.mid().to_rational() } else { None };
+        Ok(Mapped { e: e.set_prec(wp), e_exact, sign, d: d.set_prec(wp), mu: exponent.set_prec(wp).add_i64(1), log_d, k })
     }
 
     /// `x(s)` in f64, for errors.
@@ -212,14 +215,13 @@ impl Mapped {
         XMap::Endpoint { e: self.e.to_f64(), d: self.d.to_f64(), sign: self.sign as f64 }
     }
 
-    /// `x(s)`.
-    fn x(&self, s: &HoloBall) -> HoloBall {
-        let step = s.real(self.d.clone()) * (-s).exp();
-        if self.sign > 0 {
-            s.real(self.e.clone()) + step
-        } else {
-            s.real(self.e.clone()) - step
-        }
+    /// `x(s)`, from `t = d e^{-s}` and `log_t = log d - s`, carrying both
+    /// ([`MappedEnd`]).
+    fn x(&self, s: &HoloBall, log_t: &HoloBall) -> HoloBall {
+        let t = s.real(self.d.clone()) * (-s).exp();
+        let x = if self.sign > 0 { s.real(self.e.clone()) + &t } else { s.real(self.e.clone()) - &t };
+        let end = MappedEnd { e: self.e_exact.clone(), sign: self.sign, t: t.into_inner(), log_t: log_t.inner().clone() };
+        x.with_end(end)
     }
 
     /// The integrand in `s`, around the analytic factor `h`.
@@ -233,7 +235,7 @@ impl Mapped {
             if self.k > 0 {
                 v = v * ld.powi(self.k as i64);
             }
-            v * h(&self.x(s), g)
+            v * h(&self.x(s, &ld), g)
         })
     }
 

@@ -39,6 +39,13 @@ pub trait ExprValue: Clone {
     /// A value that contains the decimal `d` exactly, in the kind of `like`
     /// (a ball for ball types, the nearest double for `f64`).
     fn from_decimal(d: &Decimal, like: &Self) -> Self;
+    /// `e` at `x`: what [`Expr::eval`] computes. The default evaluates the tree node by
+    /// node; the integrator's argument overrides it on a piece mapped at an end
+    /// (`mapped.rs`).
+    #[doc(hidden)]
+    fn eval_expr(e: &Expr, x: &Self) -> Self {
+        e.eval_plain(x)
+    }
 }
 
 /// `sech` for f64, so that [`apply_function!`] reads the same for every type.
@@ -80,6 +87,11 @@ macro_rules! apply_function {
 impl Expr {
     /// The value at `x`, computed in the type of `x` (constants take its precision).
     pub fn eval<V: ExprValue>(&self, x: &V) -> V {
+        V::eval_expr(self, x)
+    }
+
+    /// [`Expr::eval`] node by node, whatever `x` carries.
+    pub(crate) fn eval_plain<V: ExprValue>(&self, x: &V) -> V {
         self.eval_cow(x).into_owned()
     }
 
@@ -238,5 +250,12 @@ impl ExprValue for HoloBall {
     }
     fn from_decimal(d: &Decimal, like: &HoloBall) -> HoloBall {
         like.decimal(d)
+    }
+    /// On a piece mapped at an end, from the end's logarithm (`mapped.rs`).
+    fn eval_expr(e: &Expr, x: &HoloBall) -> HoloBall {
+        match x.mapped_end() {
+            Some(end) => super::mapped::eval_mapped(e, x, end),
+            None => e.eval_plain(x),
+        }
     }
 }
