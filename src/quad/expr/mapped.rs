@@ -210,3 +210,39 @@ impl Walk<'_> {
 fn is_one(e: &Expr) -> bool {
     matches!(e, Expr::Number(d) if *d.as_rational() == 1)
 }
+
+/// Whether evaluating `f` with the logarithm of `x` (an end at `e = 0`, `sign = +1`, as
+/// on the map `x = c e^s` of an algebraic tail) changes anything: some `log`, `sqrt`,
+/// general power, negative integer power or denominator has an operand that carries a
+/// logarithm by the rules of the module docs. Where it does not, the map's part keeps
+/// its periodicity (`quad/certified/singular.rs`).
+pub(crate) fn reads_end_log(f: &Expr) -> bool {
+    let zero = Rational::new();
+    let carries = |a: &Expr| carries_log(a, &zero);
+    let here = match f {
+        Expr::Call(Function::Log | Function::Sqrt, a) | Expr::Pow(a, _) => carries(a),
+        Expr::PowInt(a, n) => *n < 0 && carries(a),
+        Expr::Div(_, b) => carries(b),
+        _ => false,
+    };
+    here || match f {
+        Expr::X | Expr::Pi | Expr::Number(_) => false,
+        Expr::Neg(a) | Expr::PowInt(a, _) | Expr::Call(_, a) | Expr::BesselJ(_, a) => reads_end_log(a),
+        Expr::Add(a, b) | Expr::Sub(a, b) | Expr::Mul(a, b) | Expr::Div(a, b) | Expr::Pow(a, b) => reads_end_log(a) || reads_end_log(b),
+    }
+}
+
+/// Whether the walk gives `a` a logarithm at an end `e` with `sign = +1` (a static
+/// over-approximation of [`Walk::node`]: a constant factor is assumed positive).
+fn carries_log(a: &Expr, e: &Rational) -> bool {
+    if let Some((c0, c1)) = affine(a) {
+        return c1 > 0 && Rational::from(&c0 + Rational::from(&c1 * e)) == 0;
+    }
+    match a {
+        Expr::Mul(x, y) | Expr::Div(x, y) => {
+            (carries_log(x, e) || !x.depends_on_x()) && (carries_log(y, e) || !y.depends_on_x())
+        }
+        Expr::PowInt(x, _) | Expr::Pow(x, _) | Expr::Call(Function::Sqrt, x) => carries_log(x, e),
+        _ => false,
+    }
+}
