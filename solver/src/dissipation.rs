@@ -160,15 +160,7 @@ pub fn closed_cycle(cycle: &Cycle, solver_datum: f64, driver: Driver) -> Result<
     count_in_range(states.len(), "the cycle's states in contact (the dissipation needs 2)", 2, usize::MAX)?;
     let mut pts = Vec::with_capacity(states.len());
     for s in &states {
-        finite(s.abar, "a state's contact half-width")?;
-        finite(s.load, "a state's load")?;
-        finite(s.approach, "a state's approach")?;
-        pts.push(PathNode {
-            abar: s.abar,
-            load: s.load,
-            approach: approach_on_model_datum(s.approach, s.load, solver_datum),
-            valid: s.contact_intervals() <= 1,
-        });
+        pts.push(path_node(s, solver_datum)?);
     }
     pts.sort_by(|p, q| p.abar.total_cmp(&q.abar));
     // Both legs visit the states a stiff machine reaches either way (at
@@ -206,6 +198,21 @@ pub fn closed_cycle(cycle: &Cycle, solver_datum: f64, driver: Driver) -> Result<
         loops,
         dissipation,
         single_interval,
+    })
+}
+
+/// A simulated state as a node of a model-convention path: its approach moved
+/// to the model's datum, `valid` when it has at most one contact interval.
+/// Errors: a non-finite half-width, load or approach.
+fn path_node(s: &State, solver_datum: f64) -> Result<PathNode> {
+    finite(s.abar, "a state's contact half-width")?;
+    finite(s.load, "a state's load")?;
+    finite(s.approach, "a state's approach")?;
+    Ok(PathNode {
+        abar: s.abar,
+        load: s.load,
+        approach: approach_on_model_datum(s.approach, s.load, solver_datum),
+        valid: s.contact_intervals() <= 1,
     })
 }
 
@@ -417,17 +424,7 @@ pub struct LegCycle {
 pub fn closed_cycle_along_legs(cycle: &Cycle, solver_datum: f64, driver: Driver) -> Result<LegCycle> {
     finite(solver_datum, "the solver datum")?;
     in_range(solver_datum, "the solver datum", Interval::above(0.0))?;
-    let node = |s: &State| -> Result<PathNode> {
-        finite(s.abar, "a state's contact half-width")?;
-        finite(s.load, "a state's load")?;
-        finite(s.approach, "a state's approach")?;
-        Ok(PathNode {
-            abar: s.abar,
-            load: s.load,
-            approach: approach_on_model_datum(s.approach, s.load, solver_datum),
-            valid: s.contact_intervals() <= 1,
-        })
-    };
+    let node = |s: &State| path_node(s, solver_datum);
     let y = |p: &PathNode| driver.value((p.load, p.approach));
     // Unloading: the largest contact, then the leg while in contact; walked
     // backwards over the reversed list (the walk's `-1` is the running minimum).
