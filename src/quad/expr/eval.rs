@@ -4,7 +4,6 @@ use std::borrow::Cow;
 
 use super::tree::{Expr, Function};
 use crate::ball::{Ball, CBall, Decimal};
-use crate::quad::certified::HoloBall;
 
 /// The operations an [`Expr`] is evaluated with.
 ///
@@ -83,6 +82,7 @@ macro_rules! apply_function {
         }
     };
 }
+pub(crate) use apply_function;
 
 impl Expr {
     /// The value at `x`, computed in the type of `x` (constants take its precision).
@@ -207,55 +207,5 @@ impl ExprValue for CBall {
     }
     fn from_decimal(d: &Decimal, like: &CBall) -> CBall {
         CBall::from_real(d.to_ball(like.prec()))
-    }
-}
-
-/// The certified integrator's argument ([`HoloBall`]): the functions with a branch
-/// cut take the form the integrator's evaluation mode asks for (principal at the
-/// nodes, analytic on the boxes around its ellipses), so an expression evaluated
-/// in it is an integrand that cannot integrate across a cut unnoticed.
-impl ExprValue for HoloBall {
-    fn add(&self, other: &HoloBall) -> HoloBall {
-        self + other
-    }
-    fn sub(&self, other: &HoloBall) -> HoloBall {
-        self - other
-    }
-    fn mul(&self, other: &HoloBall) -> HoloBall {
-        self * other
-    }
-    fn div(&self, other: &HoloBall) -> HoloBall {
-        self / other
-    }
-    fn neg(&self) -> HoloBall {
-        -self
-    }
-    fn recip(&self) -> HoloBall {
-        HoloBall::recip(self)
-    }
-    fn pow_int(&self, n: i64) -> HoloBall {
-        self.powi(n)
-    }
-    fn pow(&self, e: &HoloBall) -> HoloBall {
-        HoloBall::pow(self, e)
-    }
-    fn apply(&self, f: Function) -> HoloBall {
-        apply_function!(self, f, sqrt, log, atan)
-    }
-    fn bessel_j(&self, n: i64) -> HoloBall {
-        self.besselj(n)
-    }
-    fn pi(like: &HoloBall) -> HoloBall {
-        like.pi()
-    }
-    fn from_decimal(d: &Decimal, like: &HoloBall) -> HoloBall {
-        like.decimal(d)
-    }
-    /// On a piece mapped at an end, from the end's logarithm (`mapped.rs`).
-    fn eval_expr(e: &Expr, x: &HoloBall) -> HoloBall {
-        match x.mapped_end() {
-            Some(end) => super::mapped::eval_mapped(e, x, end),
-            None => e.eval_plain(x),
-        }
     }
 }

@@ -52,9 +52,10 @@
 
 use rug::Rational;
 
-use super::eval::ExprValue;
+use super::eval::{apply_function, ExprValue};
 use super::local::affine;
 use super::tree::{Expr, Function};
+use crate::ball::Decimal;
 use crate::quad::certified::{HoloBall, MappedEnd};
 
 /// A value and, when known, a logarithm of it (module docs, 3).
@@ -244,5 +245,55 @@ fn carries_log(a: &Expr, e: &Rational) -> bool {
         }
         Expr::PowInt(x, _) | Expr::Pow(x, _) | Expr::Call(Function::Sqrt, x) => carries_log(x, e),
         _ => false,
+    }
+}
+
+/// The certified integrator's argument ([`HoloBall`]): the functions with a branch
+/// cut take the form the integrator's evaluation mode asks for (principal at the
+/// nodes, analytic on the boxes around its ellipses), so an expression evaluated
+/// in it is an integrand that cannot integrate across a cut unnoticed.
+impl ExprValue for HoloBall {
+    fn add(&self, other: &HoloBall) -> HoloBall {
+        self + other
+    }
+    fn sub(&self, other: &HoloBall) -> HoloBall {
+        self - other
+    }
+    fn mul(&self, other: &HoloBall) -> HoloBall {
+        self * other
+    }
+    fn div(&self, other: &HoloBall) -> HoloBall {
+        self / other
+    }
+    fn neg(&self) -> HoloBall {
+        -self
+    }
+    fn recip(&self) -> HoloBall {
+        HoloBall::recip(self)
+    }
+    fn pow_int(&self, n: i64) -> HoloBall {
+        self.powi(n)
+    }
+    fn pow(&self, e: &HoloBall) -> HoloBall {
+        HoloBall::pow(self, e)
+    }
+    fn apply(&self, f: Function) -> HoloBall {
+        apply_function!(self, f, sqrt, log, atan)
+    }
+    fn bessel_j(&self, n: i64) -> HoloBall {
+        self.besselj(n)
+    }
+    fn pi(like: &HoloBall) -> HoloBall {
+        like.pi()
+    }
+    fn from_decimal(d: &Decimal, like: &HoloBall) -> HoloBall {
+        like.decimal(d)
+    }
+    /// On a piece mapped at an end, from the end's logarithm (`mapped.rs`).
+    fn eval_expr(e: &Expr, x: &HoloBall) -> HoloBall {
+        match x.mapped_end() {
+            Some(end) => eval_mapped(e, x, end),
+            None => e.eval_plain(x),
+        }
     }
 }
