@@ -272,8 +272,14 @@ pub struct ScaleCycle {
     /// `alpha_min/(lambda beta_min)` of the finest wave: the traction estimate
     /// of Eq. 16 (0 for the smooth cylinder).
     pub traction_estimate: f64,
-    /// What failed, if anything.
+    /// What failed before the model, if anything: the parameters or the
+    /// solver (prefixed `parameters: ` or `solver: `).
     pub error: Option<String>,
+    /// Why the model has no W on this profile, if it has none (`model` is
+    /// then `None`). Studies written before this field held the model's error
+    /// in `error`, after `"; model: "`; [`with_model`] moves it here.
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub model_error: Option<String>,
     /// Wall time (s).
     pub seconds: f64,
 }
@@ -326,6 +332,7 @@ fn blank_cycle(case: &CycleCase) -> ScaleCycle {
         model: None,
         traction_estimate: case.waves.iter().min_by(|a, b| a.1.total_cmp(&b.1)).map_or(0.0, |&(a, b)| a / (case.lambda * b)),
         error: None,
+        model_error: None,
         seconds: 0.0,
     }
 }
@@ -347,20 +354,28 @@ fn solver_cycle(spec: &ScalesSpec, case: &CycleCase, resolution: ScaleResolution
 }
 
 /// `cycle` with the model's closed cycle on its profile (re)computed
-/// ([`model_points`]); a model that fails adds to `error`.
+/// ([`model_points`]); a model that fails sets `model_error`.
 pub fn with_model(spec: &ScalesSpec, mut cycle: ScaleCycle) -> ScaleCycle {
     let model = case_params(spec, cycle.lambda, &cycle.waves).and_then(|(params, _)| model_cycle(params, spec, finest_wavelength(spec, &cycle.waves)));
-    // An earlier model's error goes; the solver's stays.
-    let mut errors: Vec<String> = cycle.error.iter().flat_map(|e| e.split("; ")).filter(|p| !p.starts_with("model: ")).map(str::to_string).collect();
-    cycle.model = match model {
-        Ok(m) => Some(m),
-        Err(e) => {
-            errors.push(format!("model: {e}"));
-            None
-        }
+    // An earlier model's error goes; the solver's stays (a study written
+    // before `model_error` existed held it at the end of `error`).
+    cycle.error = cycle.error.as_deref().map(without_legacy_model_error).filter(|e| !e.is_empty()).map(str::to_string);
+    (cycle.model, cycle.model_error) = match model {
+        Ok(m) => (Some(m), None),
+        Err(e) => (None, Some(e.to_string())),
     };
-    cycle.error = (!errors.is_empty()).then(|| errors.join("; "));
     cycle
+}
+
+/// `error` of a study written before [`ScaleCycle::model_error`] existed,
+/// without the model's part: that was appended last, as `model: ...` after
+/// `"; "` (or alone), and its own text may hold `"; "`.
+fn without_legacy_model_error(error: &str) -> &str {
+    const MODEL: &str = "model: ";
+    if error.starts_with(MODEL) {
+        return "";
+    }
+    error.find(&format!("; {MODEL}")).map_or(error, |k| &error[..k])
 }
 
 /// The model's W, W_d and validity on `params`' profile.

@@ -185,7 +185,7 @@ fn write_study(study: &ScalesStudy, out: &std::path::Path) -> Result<(), String>
     let written = write_atomically(out, &files)?;
     let mut report = String::new();
     let cpu: f64 = study.cycles.iter().map(|c| c.seconds).sum();
-    let failed = study.cycles.iter().filter(|c| c.error.is_some()).count();
+    let failed = study.cycles.iter().filter(|c| c.error.is_some() || c.model_error.is_some()).count();
     let _ = writeln!(
         report,
         "maugis multiscale scales: {} cycles{} ({failed} with an error), {:.0} s of cycle time",
@@ -229,7 +229,9 @@ fn measured(c: &ScaleCycle) -> String {
 
 /// A cycle's error as a quoted CSV cell.
 fn error_cell(c: &ScaleCycle) -> String {
-    format!("\"{}\"", c.error.as_deref().unwrap_or("").replace('"', "'"))
+    let model = c.model_error.as_ref().map(|e| format!("model: {e}"));
+    let parts: Vec<&str> = c.error.iter().chain(&model).map(String::as_str).collect();
+    format!("\"{}\"", parts.join("; ").replace('"', "'"))
 }
 
 fn rows_csv(rows: &[ScalesRow]) -> String {
@@ -347,7 +349,7 @@ fn w_svg(study: &ScalesStudy, rows: &[ScalesRow]) -> Result<String, String> {
         let root = root.titled(&format!("W of the closed cycle against the number of scales N (gamma = {})", short(spec.gamma)), ("sans-serif", 24)).map_err(plot_err)?;
         let (left, _) = root.split_horizontally(pw * cols as u32);
         let areas = left.split_evenly((grid_rows, cols));
-        let style = |k: usize, i: usize| ShapeStyle { color: colour(k).to_rgba(), filled: false, stroke_width: if i == 0 { 2 } else { 2 } };
+        let style = |k: usize, _i: usize| ShapeStyle { color: colour(k).to_rgba(), filled: false, stroke_width: 2 };
         for (i, (&l, area)) in spec.lambdas.iter().zip(&areas).enumerate() {
             let of: Vec<&ScalesRow> = rows.iter().filter(|r| r.lambda == l).collect();
             let ys = of.iter().flat_map(|r| [r.profile.w, r.w_sum_of_singles, r.profile.model.filter(|m| m.valid).map(|m| m.w)]).flatten().filter(|v| v.is_finite());

@@ -87,7 +87,7 @@ fn a_two_scale_study_merges_reuses_and_meets_the_model() {
     let whole = run_study(s.clone(), None, |_| {}).unwrap();
     assert_eq!(whole.cycles.len(), 4);
     for c in &whole.cycles {
-        assert!(c.error.is_none(), "cycle {}: {:?}", c.index, c.error);
+        assert!(c.error.is_none() && c.model_error.is_none(), "cycle {}: {:?} {:?}", c.index, c.error, c.model_error);
     }
     // Shards, merged in any order, are the whole.
     let part = |k: usize| ScalesStudy {
@@ -141,5 +141,44 @@ fn w_is_grid_converged_at_the_largest_number_of_scales() {
         let (a, b) = (a.unwrap(), b.unwrap());
         eprintln!("{scales} scales: {name} {a} at {} cells, {b} at {}", coarse.cells, fine.cells);
         assert!((a - b).abs() <= (0.03 * b.abs()).max(0.02), "{name}: {a} against {b} refined");
+    }
+}
+
+/// A study written before `model_error` existed kept the model's error at the
+/// end of `error`, after `"; model: "`, and that message itself holds `"; "`:
+/// reusing the cycle recomputes the model and keeps only the solver's part
+/// (it once kept the message's tail, "change amax or ...", as an error).
+#[test]
+fn a_reused_cycle_drops_a_legacy_model_error_whole() {
+    use maugis_solver::scales::{with_model, ScaleCycle};
+    let s = spec(vec![0.5], vec![3.0], 1);
+    let open = "the model's closed cycle does not close (reloading stops at a maximum with no later curve point at its level) under load control: its W is not measured; change amax or the model's curve points";
+    let smooth = |error: Option<String>| ScaleCycle {
+        index: 0,
+        lambda: 3.0,
+        waves: vec![],
+        roles: vec![CycleRole::Smooth],
+        cells: 2048,
+        steps_per_leg: 400,
+        half_width: 8.0,
+        w: Some(0.0),
+        w_d: Some(0.0),
+        cavitated_fraction: 0.0,
+        max_intervals: 1,
+        pull_off: Some(-1.0),
+        model: None,
+        traction_estimate: 0.0,
+        error,
+        model_error: None,
+        seconds: 0.0,
+    };
+    for (legacy, kept) in [
+        (format!("solver: the grid is too coarse; model: {open}"), Some("solver: the grid is too coarse")),
+        (format!("model: {open}"), None),
+        ("solver: a; b".to_string(), Some("solver: a; b")),
+    ] {
+        let c = with_model(&s, smooth(Some(legacy.clone())));
+        assert_eq!(c.error.as_deref(), kept, "from {legacy:?}");
+        assert!(c.model_error.is_none() && c.model.is_some(), "the smooth cylinder's model at lambda 3: {:?}", c.model_error);
     }
 }

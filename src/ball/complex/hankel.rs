@@ -250,7 +250,10 @@ fn remainder_bound(m: u64, l: u64, a_rho: Mag, rho: Mag, below_axis: bool) -> Ma
     let mut v1 = nu.abs_upper_mag().div(rho);
     if below_axis {
         // chi(1) = pi^(1/2) Gamma(3/2) / Gamma(1) = pi/2 < 1.5707963267949
-        v1 = v1.mul(Mag::from_f64(1.5707963267949));
+        // (an upper bound of pi/2 by 3.4e-15, not pi/2 itself).
+        #[allow(clippy::approx_constant)]
+        let half_pi_above = 1.5707963267949;
+        v1 = v1.mul(Mag::from_f64(half_pi_above));
     }
     let e = Ball::from_float(&v1.to_float(), p).exp().map(|x| x.abs_upper_mag()).unwrap_or(Mag::inf());
     let mut b = a_rho.mul_2exp(1).mul(e);
