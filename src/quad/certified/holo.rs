@@ -23,6 +23,8 @@
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
+use rug::Rational;
+
 use crate::ball::{Ball, CBall, Decimal};
 
 /// Where the integrand is being evaluated (set by the integrator only).
@@ -39,6 +41,25 @@ pub(crate) enum Mode {
 pub struct HoloBall {
     z: CBall,
     mode: Mode,
+    /// Set by the integrator on the argument of a piece mapped at an end
+    /// (`singular.rs`); every operation drops it.
+    end: Option<Box<MappedEnd>>,
+}
+
+/// The argument of a piece mapped at an end `e`: `x = e + sign t` with `t = exp(log_t)`,
+/// both computed from the integrator's variable `s` without cancellation (`t = d e^{-s}`,
+/// `log_t = log d - s`), holomorphic in `s`, and on the real axis `t > 0` and `log_t`
+/// the real logarithm of `t`. The expression evaluator reads it (`quad/expr/mapped.rs`)
+/// so that `log(x - e)`, `(x - e)^r` and the like are evaluated from `log_t`, entire in
+/// `s`, instead of from `x`, whose box turns around `e` when `Im s` is large.
+#[derive(Clone, Debug)]
+pub(crate) struct MappedEnd {
+    /// `e`, when it is an exact rational (otherwise the evaluator evaluates as usual).
+    pub(crate) e: Option<Rational>,
+    /// `+1` or `-1`.
+    pub(crate) sign: i64,
+    pub(crate) t: CBall,
+    pub(crate) log_t: CBall,
 }
 
 macro_rules! cut_function {
@@ -65,7 +86,18 @@ macro_rules! entire_function {
 
 impl HoloBall {
     pub(crate) fn new(z: CBall, mode: Mode) -> HoloBall {
-        HoloBall { z, mode }
+        HoloBall { z, mode, end: None }
+    }
+
+    /// `self`, marked as the argument of a piece mapped at an end ([`MappedEnd`]).
+    pub(crate) fn with_end(mut self, end: MappedEnd) -> HoloBall {
+        self.end = Some(Box::new(end));
+        self
+    }
+
+    /// The end this argument was mapped at, if any.
+    pub(crate) fn mapped_end(&self) -> Option<&MappedEnd> {
+        self.end.as_deref()
     }
 
     pub(crate) fn into_inner(self) -> CBall {
@@ -82,7 +114,7 @@ impl HoloBall {
     }
 
     fn with(&self, z: CBall) -> HoloBall {
-        HoloBall { z, mode: self.mode }
+        HoloBall { z, mode: self.mode, end: None }
     }
 
     /// Working precision of the evaluation (bits): make constants at this precision.

@@ -66,7 +66,7 @@ use std::fmt;
 use rug::Float;
 
 pub use holo::HoloBall;
-pub(crate) use holo::Mode;
+pub(crate) use holo::{MappedEnd, Mode};
 pub use singular::{Decay, EndBound, Weight};
 
 use crate::ball::{Ball, CBall, Mag};
@@ -121,6 +121,9 @@ pub struct Options {
     max_depth: Option<u32>,
     max_degree: Option<usize>,
     max_working_prec: u32,
+    /// The integrand reads the logarithm of `x` on the map `x = c e^s` of an algebraic
+    /// tail (`quad/expr/mapped.rs`); that map's part is then not `2 pi i`-periodic.
+    end_log: bool,
 }
 
 impl Default for Options {
@@ -136,7 +139,14 @@ impl Options {
     /// (`1000 w + w^2` evaluations, depth `2 w`, degree `prec/2 + 60` but at most 512), working precision up to `8 prec +
     /// 256` bits.
     pub fn new() -> Options {
-        Options { goal_bits: None, abs_tol: None, relative_only: false, max_evaluations: None, max_depth: None, max_degree: None, max_working_prec: 0 }
+        Options { goal_bits: None, abs_tol: None, relative_only: false, max_evaluations: None, max_depth: None, max_degree: None, max_working_prec: 0, end_log: false }
+    }
+
+    /// For the expression integrator: its integrand evaluates `x`'s logarithm from the
+    /// map of an algebraic tail (`quad/expr/mapped.rs`).
+    pub(crate) fn end_log(mut self, on: bool) -> Options {
+        self.end_log = on;
+        self
     }
 
     /// Relative goal in bits (`rad <= 2^-bits |mid|`), at most [`crate::MAX_PREC`].
@@ -399,7 +409,7 @@ where
 {
     check_prec(prec)?;
     finite_ball(a, "a")?;
-    let builder = singular::infinite_parts(a, weight, decay, None)?;
+    let builder = singular::infinite_parts(a, weight, decay, None, opts.end_log)?;
     run(&mut f, &*builder, prec, opts)
 }
 
@@ -431,7 +441,7 @@ where
     check_prec(prec)?;
     finite_ball(a, "a")?;
     finite_ball(from, "from")?;
-    let builder = singular::infinite_parts(a, weight, decay, Some(from))?;
+    let builder = singular::infinite_parts(a, weight, decay, Some(from), opts.end_log)?;
     run(&mut f, &*builder, prec, opts)
 }
 

@@ -59,7 +59,7 @@
 
 use rug::Float;
 
-use super::{HoloBall, IntegrationError, Mode, Part, PartsBuilder, XMap};
+use super::{HoloBall, IntegrationError, MappedEnd, Mode, Part, PartsBuilder, XMap};
 use crate::ball::{Ball, CBall, Mag};
 use crate::error::{Error, Result};
 
@@ -192,6 +192,8 @@ fn right_factor(a: Ball, alpha: Ball, k: u32) -> impl Fn(&HoloBall, &mut dyn FnM
 /// -1 for `x = e - d e^{-s}`), and its tail bound for the target `target`.
 struct Mapped {
     e: Ball,
+    /// `e` as a rational, when exact (for [`MappedEnd`]).
+    e_exact: Option<rug::Rational>,
     sign: i64,
     d: Ball,
     mu: Ball,
@@ -204,7 +206,8 @@ impl Mapped {
         let other = Ball::from_float(other, other.prec());
         let d = if sign > 0 { other.sub(e) } else { e.sub(&other) };
         let log_d = d.set_prec(wp).ln()?;
-        Ok(Mapped { e: e.set_prec(wp), sign, d: d.set_prec(wp), mu: exponent.set_prec(wp).add_i64(1), log_d, k })
+        let e_exact = if e.is_exact() { e.mid().to_rational() } else { None };
+        Ok(Mapped { e: e.set_prec(wp), e_exact, sign, d: d.set_prec(wp), mu: exponent.set_prec(wp).add_i64(1), log_d, k })
     }
 
     /// `x(s)` in f64, for errors.
@@ -212,14 +215,13 @@ impl Mapped {
         XMap::Endpoint { e: self.e.to_f64(), d: self.d.to_f64(), sign: self.sign as f64 }
     }
 
-    /// `x(s)`.
-    fn x(&self, s: &HoloBall) -> HoloBall {
-        let step = s.real(self.d.clone()) * (-s).exp();
-        if self.sign > 0 {
-            s.real(self.e.clone()) + step
-        } else {
-            s.real(self.e.clone()) - step
-        }
+    /// `x(s)`, from `t = d e^{-s}` and `log_t = log d - s`, carrying both
+    /// ([`MappedEnd`]).
+    fn x(&self, s: &HoloBall, log_t: &HoloBall) -> HoloBall {
+        let t = s.real(self.d.clone()) * (-s).exp();
+        let x = if self.sign > 0 { s.real(self.e.clone()) + &t } else { s.real(self.e.clone()) - &t };
+        let end = MappedEnd { e: self.e_exact.clone(), sign: self.sign, t: t.into_inner(), log_t: log_t.inner().clone() };
+        x.with_end(end)
     }
 
     /// The integrand in `s`, around the analytic factor `h`.
@@ -233,7 +235,7 @@ impl Mapped {
             if self.k > 0 {
                 v = v * ld.powi(self.k as i64);
             }
-            v * h(&self.x(s), g)
+            v * h(&self.x(s, &ld), g)
         })
     }
 
@@ -312,7 +314,11 @@ where
 /// With `from = Some(R)`, the decay holds only for `x >= R`: every cut is then at least
 /// `R`, and the map of an algebraic decay starts at `max(a, R)` with `[a, R]` a finite
 /// piece.
-pub(crate) fn infinite_parts<'w, F>(a: &Ball, weight: Option<&Weight>, decay: &Decay, from: Option<&Ball>) -> Result<Box<PartsBuilder<'w, F>>>
+///
+/// With `end_log`, the map `x = c e^s` of an algebraic decay hands the integrand `x`
+/// with its logarithm `log c + s` ([`MappedEnd`] at `e = 0`), and its part is not
+/// declared periodic (the integrand so evaluated need not be).
+pub(crate) fn infinite_parts<'w, F>(a: &Ball, weight: Option<&Weight>, decay: &Decay, from: Option<&Ball>, end_log: bool) -> Result<Box<PartsBuilder<'w, F>>>
 where
     F: FnMut(&HoloBall) -> HoloBall + 'w,
 {
@@ -346,7 +352,7 @@ where
         Decay::Algebraic { power, bound } => match cut_algebraic_in_x(&start, power, bound, tol.mul_2exp(-2))? {
             // a moderate cut: [a, T] as a finite range (fewer evaluations at low goals)
             Some((t, tail)) => parts_on(&a, &Ball::from_float(&t, t.prec()), &w, tol.mul_2exp(-1), wp, g, tail),
-            None => algebraic_parts(&a, r.as_ref(), &w, power, bound, tol, wp, g),
+            None => algebraic_parts(&a, r.as_ref(), &w, power, bound, tol, wp, g, end_log),
         },
     }))
 }
@@ -355,7 +361,7 @@ where
 /// when `w` is singular at `a`, then `[c, inf)` in the variable `s` of `x = c e^s`, cut at
 /// `S` with the declared tail (module docs).
 #[allow(clippy::too_many_arguments)]
-fn algebraic_parts<'w, F>(a: &Ball, from: Option<&Ball>, w: &Weight, power: &Ball, bound: &Ball, tol: Mag, wp: u32, g: &mut F) -> Result<Vec<Part<'w>>>
+fn algebraic_parts<'w, F>(a: &Ball, from: Option<&Ball>, w: &Weight, power: &Ball, bound: &Ball, tol: Mag, wp: u32, g: &mut F, end_log: bool) -> Result<Vec<Part<'w>>>
 where
     F: FnMut(&HoloBall) -> HoloBall,
 {
@@ -373,16 +379,26 @@ where
     let (s, tail) = cut_algebraic(&c, power, bound, map_tol.mul_2exp(-2))?;
     let factor = right_factor(a.set_prec(wp), w.alpha.set_prec(wp), w.log_power);
     let c = c.set_prec(wp);
+    let log_c = if end_log { Some(c.ln()?) } else { None };
     parts.push(Part {
         lo: Float::with_val(wp, 0),
         hi: s,
         tail,
-        // e^{s + 2 pi i} = e^s: the map is periodic (cover.rs)
-        periodic: true,
+        // e^{s + 2 pi i} = e^s: the map is periodic (cover.rs), and so is the integrand
+        // unless it reads log x = log c + s, which is not
+        periodic: !end_log,
         map: XMap::Exponential { c: c.to_f64() },
         wrap: Box::new(move |s: &HoloBall, g: &mut dyn FnMut(&HoloBall) -> HoloBall| {
             let x = s.real(c.clone()) * s.exp();
-            factor(&x, g) * x
+            let fx = match &log_c {
+                // x = 0 + t, t = c e^s = exp(log c + s)
+                Some(log_c) => {
+                    let end = MappedEnd { e: Some(rug::Rational::new()), sign: 1, t: x.inner().clone(), log_t: (s.real(log_c.clone()) + s).into_inner() };
+                    factor(&x.clone().with_end(end), g)
+                }
+                None => factor(&x, g),
+            };
+            fx * x
         }),
     });
     Ok(parts)

@@ -4,7 +4,6 @@ use std::borrow::Cow;
 
 use super::tree::{Expr, Function};
 use crate::ball::{Ball, CBall, Decimal};
-use crate::quad::certified::HoloBall;
 
 /// The operations an [`Expr`] is evaluated with.
 ///
@@ -39,6 +38,13 @@ pub trait ExprValue: Clone {
     /// A value that contains the decimal `d` exactly, in the kind of `like`
     /// (a ball for ball types, the nearest double for `f64`).
     fn from_decimal(d: &Decimal, like: &Self) -> Self;
+    /// `e` at `x`: what [`Expr::eval`] computes. The default evaluates the tree node by
+    /// node; the integrator's argument overrides it on a piece mapped at an end
+    /// (`mapped.rs`).
+    #[doc(hidden)]
+    fn eval_expr(e: &Expr, x: &Self) -> Self {
+        e.eval_plain(x)
+    }
 }
 
 /// `sech` for f64, so that [`apply_function!`] reads the same for every type.
@@ -76,10 +82,16 @@ macro_rules! apply_function {
         }
     };
 }
+pub(crate) use apply_function;
 
 impl Expr {
     /// The value at `x`, computed in the type of `x` (constants take its precision).
     pub fn eval<V: ExprValue>(&self, x: &V) -> V {
+        V::eval_expr(self, x)
+    }
+
+    /// [`Expr::eval`] node by node, whatever `x` carries.
+    pub(crate) fn eval_plain<V: ExprValue>(&self, x: &V) -> V {
         self.eval_cow(x).into_owned()
     }
 
@@ -195,48 +207,5 @@ impl ExprValue for CBall {
     }
     fn from_decimal(d: &Decimal, like: &CBall) -> CBall {
         CBall::from_real(d.to_ball(like.prec()))
-    }
-}
-
-/// The certified integrator's argument ([`HoloBall`]): the functions with a branch
-/// cut take the form the integrator's evaluation mode asks for (principal at the
-/// nodes, analytic on the boxes around its ellipses), so an expression evaluated
-/// in it is an integrand that cannot integrate across a cut unnoticed.
-impl ExprValue for HoloBall {
-    fn add(&self, other: &HoloBall) -> HoloBall {
-        self + other
-    }
-    fn sub(&self, other: &HoloBall) -> HoloBall {
-        self - other
-    }
-    fn mul(&self, other: &HoloBall) -> HoloBall {
-        self * other
-    }
-    fn div(&self, other: &HoloBall) -> HoloBall {
-        self / other
-    }
-    fn neg(&self) -> HoloBall {
-        -self
-    }
-    fn recip(&self) -> HoloBall {
-        HoloBall::recip(self)
-    }
-    fn pow_int(&self, n: i64) -> HoloBall {
-        self.powi(n)
-    }
-    fn pow(&self, e: &HoloBall) -> HoloBall {
-        HoloBall::pow(self, e)
-    }
-    fn apply(&self, f: Function) -> HoloBall {
-        apply_function!(self, f, sqrt, log, atan)
-    }
-    fn bessel_j(&self, n: i64) -> HoloBall {
-        self.besselj(n)
-    }
-    fn pi(like: &HoloBall) -> HoloBall {
-        like.pi()
-    }
-    fn from_decimal(d: &Decimal, like: &HoloBall) -> HoloBall {
-        like.decimal(d)
     }
 }

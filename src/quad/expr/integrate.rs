@@ -239,7 +239,9 @@ fn to_infinity(f: &Expr, a: &crate::Ball, weight: Option<&Weight>, prec: u32, op
                 }
             }
             let g = |x: &_| f.eval(x);
-            integrate_to_infinity_from(g, a, weight, &decay, &from, prec, opts)
+            // x's logarithm from the map of an algebraic tail (`mapped.rs`)
+            let opts = opts.clone().end_log(super::mapped::reads_end_log(f));
+            integrate_to_infinity_from(g, a, weight, &decay, &from, prec, &opts)
         }
         TailClass::Slow { power } => Err(Error::Integration(IntegrationError::NotAbsolutelyIntegrable { power, end: side })),
         TailClass::Unknown => Err(Error::Integration(IntegrationError::MissingDecay)),

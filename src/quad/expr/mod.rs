@@ -88,6 +88,7 @@ mod function;
 mod integrate;
 mod limits;
 mod local;
+mod mapped;
 mod oscillatory;
 mod parse;
 mod removable;

@@ -451,3 +451,96 @@ mod integrals {
         assert!(matches!(r, Err(crate::Error::Integration(_))));
     }
 }
+
+/// The evaluation on a piece mapped at an end (`mapped.rs`): the same values on the
+/// real axis, and finite boxes far up in `Im s`, where `x` turns around the end.
+mod mapped_end {
+    use super::*;
+    use crate::ball::{Ball, CBall};
+    use crate::quad::certified::{HoloBall, MappedEnd, Mode};
+    use rug::{Float, Rational};
+
+    const P: u32 = 128;
+
+    /// `x = e + sign d e^{-s}` carrying its end, for `s` the ball `re + i im`.
+    fn mapped_x(e: i64, sign: i64, d: f64, s: CBall, mode: Mode) -> (HoloBall, HoloBall) {
+        let s = HoloBall::new(s, mode);
+        let dd = Ball::from_f64(d, P).unwrap();
+        let log_t = s.real(dd.ln().unwrap()) - &s;
+        let t = s.real(dd) * (-&s).exp();
+        let x = if sign > 0 {
+            s.real(Ball::from_i64(e, P)) + &t
+        } else {
+            s.real(Ball::from_i64(e, P)) - &t
+        };
+        let plain = HoloBall::new(x.inner_ref().clone(), mode);
+        let end = MappedEnd {
+            e: Some(Rational::from(e)),
+            sign,
+            t: t.into_inner(),
+            log_t: log_t.into_inner(),
+        };
+        (x.with_end(end), plain)
+    }
+
+    fn ball(lo: f64, hi: f64) -> Ball {
+        Ball::hull(&Float::with_val(P, lo), &Float::with_val(P, hi), P)
+    }
+
+    const CASES: [(&str, i64, i64); 10] = [
+        ("x^x", 0, 1),
+        ("log(x)*log(1-x)", 0, 1),
+        ("x^(-1/2)*cos(x)", 0, 1),
+        ("sqrt(3*x)/(2*x)", 0, 1),
+        ("x^-2*(1 - cos(x))", 0, 1),
+        ("log(x/3)^2 + exp(x)", 0, 1),
+        ("(1-x)^0.3*log(1-x)", 1, -1),
+        ("(2 - 2*x)^(-1/3)", 1, -1),
+        ("log(x - 1)*x^x", 1, 1),
+        ("sqrt(x)*atan(x)", 0, 1),
+    ];
+
+    #[test]
+    fn the_same_values_on_the_real_axis() {
+        for (text, e, sign) in CASES {
+            let f = p(text);
+            for s in [0.0, 0.5, 3.0, 40.0] {
+                let (x, plain) = mapped_x(
+                    e,
+                    sign,
+                    0.25,
+                    CBall::from_real(Ball::from_f64(s, P).unwrap()),
+                    Mode::Point,
+                );
+                let (v, w) = (f.eval(&x), f.eval(&plain));
+                assert!(v.is_finite() && w.is_finite(), "{text} at s = {s}");
+                assert!(
+                    v.inner_ref().overlaps(w.inner_ref()),
+                    "{text} at s = {s}: {:?} vs {:?}",
+                    v.inner_ref(),
+                    w.inner_ref()
+                );
+                // a real segment of s, too
+                let seg = CBall::from_real(ball(s, s + 0.5));
+                let (x, _) = mapped_x(e, sign, 0.25, seg, Mode::Point);
+                assert!(
+                    f.eval(&x).inner_ref().overlaps(w.inner_ref()),
+                    "{text} on [{s}, {}]",
+                    s + 0.5
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn boxes_that_reach_around_the_end_stay_finite() {
+        // Im s in [-4, 4]: x = e + sign e^{-s}/4 goes around e, where log(x - e) has a cut
+        for (text, e, sign) in CASES {
+            let f = p(text);
+            let s = CBall::new(ball(20.0, 24.0), ball(-4.0, 4.0));
+            let (x, plain) = mapped_x(e, sign, 0.25, s, Mode::Analytic);
+            assert!(f.eval(&x).is_finite(), "{text}");
+            assert!(!f.eval(&plain).is_finite(), "{text}: finite from x alone");
+        }
+    }
+}
