@@ -145,6 +145,17 @@ pub fn hyp2f1_ball_mp(a: &Ball, b: &Ball, c: &Ball, z: &Ball, prec: u32) -> Resu
     }
     if z.upper() < -0.5 {
         // Pfaff: (1-z)^{-a} 2F1(a, c-b; c; w), w = z/(z-1) = -z/(1-z).
+        // 2F1 is symmetric in a and b: a terminating parameter (the lower
+        // degree) is taken as `a`, so that the prefactor is `(1-z)^d` and the
+        // inner function a polynomial of degree `d`. Taken the other way, at
+        // `2F1(8.3e17, -1; 26.78; -20) = 1 + 6.2e17` the prefactor
+        // `21^(-8.3e17)` and the inner function, about its reciprocal, each
+        // passed the exponent range (issue 37's scan: `Overflow`).
+        let (a, b) = match (exact_degree(a), exact_degree(b)) {
+            (None, Some(_)) => (b, a),
+            (Some(da), Some(db)) if db < da => (b, a),
+            _ => (a, b),
+        };
         let omz = Ball::one(wp).sub(z);
         let w = z.div(&omz)?.neg();
         let inner = direct_ball(a, &c.sub(b), c, &w, wp)?;
@@ -509,5 +520,33 @@ mod tests {
         let q3 = |s: &str| Float::with_val(300, dec(s).as_rational());
         let m = hyp2f1_mp(&q3("0.3"), &q3("-1.7"), &q3("2.9"), &q3("-3.1"), 200).unwrap();
         assert!(b.overlaps(&m) && b.meets_rel(128), "{b:?} vs {m:?}");
+    }
+
+    /// A terminating `b = -d` with a huge `a` in the Pfaff region (issue 37's
+    /// scan refused these as `Overflow`): the value is the polynomial
+    /// `sum_k (a)_k (-d)_k / ((c)_k k!) z^k`, summed here in exact rationals
+    /// from the decimals as typed.
+    #[test]
+    fn a_terminating_b_with_a_huge_a_below_minus_one_answers() {
+        use rug::Rational;
+        for (a, d, c, z) in [
+            ("834858075317145057", 1u32, "26.78491247857184", "-20"),
+            ("2781327933789835835", 17, "26.540264011134894", "-4"),
+            ("3711248345017201267", 1, "2.6229905839978656e1", "-125.5"),
+        ] {
+            let q = |s: &str| dec(s).as_rational().clone();
+            let (aq, cq, zq) = (q(a), q(c), q(z));
+            let (mut term, mut sum) = (Rational::from(1), Rational::from(1));
+            for k in 0..d {
+                term *= Rational::from(&aq + k) * Rational::from(k as i64 - d as i64) * &zq;
+                term /= Rational::from(&cq + k) * Rational::from(k + 1);
+                sum += &term;
+            }
+            let want = Float::with_val(4096, &sum);
+            for prec in [8, 53, 128] {
+                let r = at_decimals(a, &format!("-{d}"), c, z, prec).unwrap_or_else(|e| panic!("2F1({a}, -{d}; {c}; {z}) at {prec}: {e:?}"));
+                assert!(r.contains(&want) && r.meets_rel(prec), "2F1({a}, -{d}; {c}; {z}) at {prec}: {r:?} against {want:.20}");
+            }
+        }
     }
 }
