@@ -239,7 +239,12 @@ pub(crate) fn gamma_pair_scaled(x: &Ball, y: &Ball, d: &Ball, wp: u32) -> Result
     let ed = d.mid().get_exp().map_or(0, i64::from);
     let size = (ed + (64 - (ey as u64).leading_zeros()) as i64).max(0);
     let p = (i64::from(wp) + 16 + size).min(i64::from(crate::MAX_WORKING_PREC) * 4) as u32;
-    crate::budget::check_estimate("Gamma(y + d) / Gamma(y) by Stirling (logarithms at the bits d ln y needs)", crate::ball::ln_seconds(p), f64::INFINITY)?;
+    // Two ball logarithms below, each an MPFR logarithm at both ends: four at `p`
+    // bits, about 1.7 times one `ln_seconds` (measured at 96 000 bits: 14 ms each
+    // warm, `log 2` at a new precision 14 ms more; one estimate, 42 ms, let the
+    // seed-2 scan's `2F1(2.9e28811, 5.7e-73; 1.9e28873; -9)` run 0.21 s under a
+    // 100 ms budget, docs/fuzzing.md): charged as two.
+    crate::budget::check_estimate("Gamma(y + d) / Gamma(y) by Stirling (logarithms at the bits d ln y needs)", 2.0 * crate::ball::ln_seconds(p), f64::INFINITY)?;
     let (yb, db) = (y.set_prec(p), d.set_prec(p));
     let ratio = db.div(&yb)?;
     if ratio.lower() <= -1 {
