@@ -72,6 +72,8 @@ use crate::ball::fixed::{self, limbs::Signed, limbs::MAX_LIMBS};
 use crate::ball::{Ball, Dd, Mag};
 use crate::error::{Error, Invariant, Result};
 
+use super::legendre_series::SeriesPlan;
+
 /// A Gauss-Legendre rule on `[-1, 1]`: the non-negative nodes (in decreasing
 /// order) and their weights; the negative nodes mirror them.
 #[derive(Debug)]
@@ -119,7 +121,7 @@ fn legendre_pair_ball(n: usize, x: &Ball) -> Result<(Ball, Ball)> {
 
 /// `c_j = (1/2)_j / j! = binom(2j, j) / 4^j`, `j = 0 ..= n`, as balls at `prec` bits
 /// (`c_{j+1} = c_j (2j + 1)/(2j + 2)`; all positive, `sum_k c_k c_{n-k} = P_n(1) = 1`).
-fn fourier_coefficients(n: usize, prec: u32) -> Result<Vec<Ball>> {
+pub(crate) fn fourier_coefficients(n: usize, prec: u32) -> Result<Vec<Ball>> {
     let mut c = Vec::with_capacity(n + 1);
     c.push(Ball::one(prec));
     for j in 0..n {
@@ -184,6 +186,46 @@ impl FourierWeights {
         }
         let fixed = FixedWeights::new(n, &t, &u, c[0].prec());
         FourierWeights { t, u, fixed }
+    }
+}
+
+/// How a rule evaluates `P_n` and `P_n'` in ball arithmetic: the Fourier form where its
+/// loop runs in fixed point (up to 8 limbs), the series at 0 with rectangular splitting
+/// above (`legendre_series.rs`; at 3353 bits and degree 430 about 30 times fewer limb
+/// products a point).
+enum Evaluation {
+    Fourier(FourierWeights),
+    Series(SeriesPlan),
+}
+
+impl Evaluation {
+    /// The evaluation for degree `n` at `ext` bits.
+    fn new(n: usize, ext: u32) -> Result<Evaluation> {
+        let c = fourier_coefficients(n, ext)?;
+        if n >= 2 && fixed::limbs_for_bits(ext).is_none() {
+            return Ok(Evaluation::Series(SeriesPlan::new(n, &c)));
+        }
+        Ok(Evaluation::Fourier(FourierWeights::new(n, &c)))
+    }
+
+    /// `(P_n(x), P_n'(x))` for every point of the ball `x` in `(-1, 1)`, as balls at
+    /// `x`'s precision.
+    fn eval(&self, n: usize, x: &Ball) -> Result<(Ball, Ball)> {
+        match self {
+            Evaluation::Fourier(fw) => legendre_fourier(n, x, fw),
+            Evaluation::Series(plan) => {
+                let p = x.prec();
+                let (v, d) = plan.eval(x, plan.working_prec(x.to_f64(), p))?;
+                Ok((v.set_prec(p), d.set_prec(p)))
+            }
+        }
+    }
+
+    fn series(&self) -> Option<&SeriesPlan> {
+        match self {
+            Evaluation::Series(plan) => Some(plan),
+            Evaluation::Fourier(_) => None,
+        }
     }
 }
 
@@ -543,7 +585,7 @@ impl Recurrence {
 /// The root of `P_n` near `x0` (Tricomi's start), by Newton's method in f64, in
 /// double-double and in MPFR with the precision about doubled a step, to about
 /// `prec` bits (an estimate: [`certify_node`] proves).
-fn newton_root(rec: &Recurrence, x0: f64, prec: u32) -> Float {
+fn newton_root(rec: &Recurrence, series: Option<&SeriesPlan>, x0: f64, prec: u32) -> Float {
     let n = rec.n;
     let mut x = x0;
     for _ in 0..8 {
@@ -568,7 +610,17 @@ fn newton_root(rec: &Recurrence, x0: f64, prec: u32) -> Float {
     while acc < prec {
         let q = (2 * acc).saturating_sub(loss).min(prec + 8);
         xf.set_prec_round(q, Round::Nearest);
-        rec.step(&mut xf);
+        // the recurrence in fixed point where it fits, else the series (when the rule
+        // evaluates by it), else the recurrence in MPFR
+        if rec.step_fixed(&mut xf).is_none() {
+            match series {
+                Some(plan) => {
+                    let p = plan.working_prec(xf.to_f64(), q);
+                    plan.newton_step(&mut xf, p)
+                }
+                None => rec.step(&mut xf),
+            }
+        }
         acc = q.saturating_sub(8);
     }
     // `prec` bits, so that the certificate's precision holds `x` exactly
@@ -656,7 +708,7 @@ fn build_rule(n: usize, prec: u32, fallbacks: &mut usize) -> Result<Rule> {
     }
     let half = n.div_ceil(2);
     let (target, ext) = precisions(n, prec);
-    let fw = FourierWeights::new(n, &fourier_coefficients(n, ext)?);
+    let ev = Evaluation::new(n, ext)?;
     let rec = Recurrence::new(n, target + 8);
     let mut nodes = Vec::with_capacity(half);
     let mut weights = Vec::with_capacity(half);
@@ -666,17 +718,17 @@ fn build_rule(n: usize, prec: u32, fallbacks: &mut usize) -> Result<Rule> {
         let exact_zero = n % 2 == 1 && k == half;
         let (node, w) = if exact_zero {
             let zero = Ball::zero(ext);
-            let (_, d) = legendre_fourier(n, &zero, &fw)?;
+            let (_, d) = ev.eval(n, &zero)?;
             (zero, Ball::from_i64(2, ext).div(&d.sqr())?)
         } else {
             let theta = std::f64::consts::PI * (4.0 * k as f64 - 1.0) / (4.0 * nf + 2.0);
             let x0 = (1.0 - (nf - 1.0) / (8.0 * nf * nf * nf)) * theta.cos();
-            let x = newton_root(&rec, x0, newton_bits(n, prec));
-            match certify_node(n, &x, prec, &fw)? {
+            let x = newton_root(&rec, ev.series(), x0, newton_bits(n, prec));
+            match certify_node(n, &x, prec, &ev)? {
                 Some(nw) => nw,
                 None => {
                     *fallbacks += 1;
-                    certify_node_by_signs(n, &newton_root(&rec, x0, target + 4), ext, target, &fw)?
+                    certify_node_by_signs(n, &newton_root(&rec, ev.series(), x0, target + 4), ext, target, &ev)?
                 }
             }
         };
@@ -710,14 +762,14 @@ fn weight(node: &Ball, slope: &Ball) -> Result<Ball> {
 /// `None` when the bound does not prove a root within `2^-(prec + 6)` of the new
 /// point or leaves the weight wider than `2^-(prec + 4)` relative (then
 /// [`certify_node_by_signs`]).
-fn certify_node(n: usize, x: &Float, prec: u32, fw: &FourierWeights) -> Result<Option<(Ball, Ball)>> {
+fn certify_node(n: usize, x: &Float, prec: u32, ev: &Evaluation) -> Result<Option<(Ball, Ball)>> {
     let ext = precisions(n, prec).1;
     let xb = Ball::from_float(x, ext);
     // x exact, and inside (-1, 1), where the bounds through M_3 hold
     if !xb.rad_mag().is_zero() || *x >= 1 || *x <= -1 {
         return Ok(None);
     }
-    let (value, slope) = legendre_fourier(n, &xb, fw)?;
+    let (value, slope) = ev.eval(n, &xb)?;
     // P_n''(x) from Legendre's equation (1 - x^2) P'' = 2x P' - n(n+1) P (DLMF 18.8.1),
     // and M_3 >= |P_n'''| on [-1, 1]
     let m3 = derivative_bound_at_one(n, 3);
@@ -767,7 +819,7 @@ fn certify_node(n: usize, x: &Float, prec: u32, fw: &FourierWeights) -> Result<O
 /// `2^-target`, `P_n` evaluated at `ext` bits at both ends) and its weight from `P_n'`
 /// on that ball: the route before 2026-11-29, kept for a node where
 /// [`certify_node`]'s bound fails.
-fn certify_node_by_signs(n: usize, x: &Float, ext: u32, target: u32, fw: &FourierWeights) -> Result<(Ball, Ball)> {
+fn certify_node_by_signs(n: usize, x: &Float, ext: u32, target: u32, ev: &Evaluation) -> Result<(Ball, Ball)> {
     // delta starts at the target and grows if the signs cannot be decided (the
     // Newton iterate is then less accurate than expected).
     let mut delta_exp = -(target as i64);
@@ -777,12 +829,12 @@ fn certify_node_by_signs(n: usize, x: &Float, ext: u32, target: u32, fw: &Fourie
         lo.assign_round(x - &delta, Round::Down);
         let mut hi = Float::new(ext);
         hi.assign_round(x + &delta, Round::Up);
-        let (plo, _) = legendre_fourier(n, &Ball::from_float(&lo, ext), fw)?;
-        let (phi, _) = legendre_fourier(n, &Ball::from_float(&hi, ext), fw)?;
+        let (plo, _) = ev.eval(n, &Ball::from_float(&lo, ext))?;
+        let (phi, _) = ev.eval(n, &Ball::from_float(&hi, ext))?;
         if let (Some(a), Some(b)) = (strict_sign(&plo), strict_sign(&phi)) {
             if a != b {
                 let node = Ball::hull(&lo, &hi, ext);
-                let (_, slope) = legendre_fourier(n, &node, fw)?;
+                let (_, slope) = ev.eval(n, &node)?;
                 let w = weight(&node, &slope)?;
                 return Ok((node, w));
             }
@@ -933,11 +985,11 @@ mod tests {
         for &n in &[2usize, 7, 38, 100] {
             let prec = 200u32;
             let (target, ext) = precisions(n, prec);
-            let fw = FourierWeights::new(n, &fourier_coefficients(n, ext).unwrap());
+            let ev = Evaluation::new(n, ext).unwrap();
             let rec = Recurrence::new(n, target + 8);
             let r = rule(n, prec).unwrap();
             for (k, (x, w)) in r.nodes.iter().zip(&r.weights).enumerate().filter(|(_, (x, _))| !x.mid().is_zero()) {
-                let (node, weight) = certify_node_by_signs(n, &newton_root(&rec, x.mid().to_f64(), target + 4), ext, target, &fw).unwrap();
+                let (node, weight) = certify_node_by_signs(n, &newton_root(&rec, ev.series(), x.mid().to_f64(), target + 4), ext, target, &ev).unwrap();
                 assert!(node.overlaps(x) && weight.overlaps(w), "n {n} node {k}");
             }
         }

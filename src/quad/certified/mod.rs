@@ -59,6 +59,7 @@ pub(crate) mod adaptive;
 mod cover;
 mod holo;
 pub(crate) mod legendre;
+mod legendre_series;
 mod singular;
 
 use std::fmt;
