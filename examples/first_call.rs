@@ -6,6 +6,9 @@
 //! `cargo run --release --example first_call -- ID PREC` prints `id prec first_ms
 //! warm_ms evaluations`; without arguments it runs every (id, prec) of the table, each
 //! in a fresh process of itself (the first call must not find rules of an earlier one).
+//! `first_call rule N PREC` prints the wall milliseconds of building one Gauss-Legendre
+//! rule (degree `N`, `PREC`-bit balls) in a fresh process (under load, count its CPU
+//! time with `perf stat -e task-clock`).
 
 use std::process::Command;
 use std::time::Instant;
@@ -45,6 +48,13 @@ fn one(id: &str, prec: u32) {
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
+    if args.len() == 3 && args[0] == "rule" {
+        let (n, prec) = (args[1].parse().expect("degree"), args[2].parse().expect("prec"));
+        let t = Instant::now();
+        maugis::quad::certified::build_gauss_legendre_rule(n, prec).expect("rule");
+        println!("rule\t{n}\t{prec}\t{:.2}", t.elapsed().as_secs_f64() * 1e3);
+        return;
+    }
     if args.len() == 2 {
         one(&args[0], args[1].parse().expect("prec"));
         return;

@@ -606,9 +606,21 @@ fn newton_root(rec: &Recurrence, series: Option<&SeriesPlan>, x0: f64, prec: u32
     let loss = 2 * (usize::BITS - n.leading_zeros()) + 4;
     let mut xf = Float::with_val(prec.max(106), xd.hi);
     xf += xd.lo;
-    let mut acc = 90u32;
-    while acc < prec {
-        let q = (2 * acc).saturating_sub(loss).min(prec + 8);
+    // The precisions top-down (as Arb's `legendre_p_ui_root`): a step at `q` bits from
+    // `a` correct ones gives `min(q - 8, 2a - loss)`, so the level below `q` is `(q - 8 +
+    // loss)/2 + 8`, down to what double-double gave.
+    let mut levels = Vec::new();
+    if prec > 90 {
+        levels.push(prec + 8);
+        loop {
+            let need = (levels[levels.len() - 1] - 8 + loss).div_ceil(2);
+            if need <= 90 {
+                break;
+            }
+            levels.push(need + 8);
+        }
+    }
+    for &q in levels.iter().rev() {
         xf.set_prec_round(q, Round::Nearest);
         // the recurrence in fixed point where it fits, else the series (when the rule
         // evaluates by it), else the recurrence in MPFR
@@ -621,7 +633,6 @@ fn newton_root(rec: &Recurrence, series: Option<&SeriesPlan>, x0: f64, prec: u32
                 None => rec.step(&mut xf),
             }
         }
-        acc = q.saturating_sub(8);
     }
     // `prec` bits, so that the certificate's precision holds `x` exactly
     xf.set_prec_round(prec, Round::Nearest);
@@ -672,12 +683,13 @@ fn precisions(n: usize, prec: u32) -> (u32, u32) {
     (prec + 2 * l + 12, prec + 3 * l + 16)
 }
 
-/// The bits of Newton's iterate before the certificate's own Newton step: that step
-/// squares the error (times `|P_n''/(2 P_n')| <= n^2`), and the weight asks that `M_3
-/// delta^2/|P_n'| ~ 2^(5.5 L - 6) delta^2` stay below `2^-(prec + 6)`.
+/// The bits of Newton's iterate before the certificate's own step: that step is of
+/// third order (method block, step 3), and its Taylor remainders, through `M_4 =
+/// P_n''''(1) ~ 2^(8 L - 8.6)`, ask that `M_4 delta^3/6` stay below `2^-(prec + 6)`
+/// times `|P_n'| >= 0.8 n^(1/2)` (`L = log2 n`, rounded up).
 fn newton_bits(n: usize, prec: u32) -> u32 {
     let l = usize::BITS - n.leading_zeros();
-    (prec + 6 * l + 17) / 2
+    (prec + 8 * l + 20) / 3
 }
 
 /// `P_n^(k)(1) = (n - k + 1) ... (n + k) / (2^k k!)`, rounded up: the largest `|P_n^(k)|`
@@ -770,27 +782,37 @@ fn certify_node(n: usize, x: &Float, prec: u32, ev: &Evaluation) -> Result<Optio
         return Ok(None);
     }
     let (value, slope) = ev.eval(n, &xb)?;
-    // P_n''(x) from Legendre's equation (1 - x^2) P'' = 2x P' - n(n+1) P (DLMF 18.8.1),
-    // and M_3 >= |P_n'''| on [-1, 1]
+    // P_n''(x) and P_n'''(x) from Legendre's equation (1 - x^2) P'' = 2x P' - n(n+1) P
+    // (DLMF 18.8.1) and its derivative (1 - x^2) P''' = 4x P'' - (n(n+1) - 2) P', and
+    // M_k >= |P_n^(k)| on [-1, 1]
     let m3 = derivative_bound_at_one(n, 3);
+    let m4 = derivative_bound_at_one(n, 4);
     let one_minus = Ball::one(ext).sub(&xb.sqr());
-    let curvature = xb.mul(&slope).mul_pow2(1).sub(&value.mul_i64((n * (n + 1)) as i64)).div(&one_minus)?;
-    // One Newton step x1 = x + delta, and Taylor's theorem from x to x1 with the
-    // remainders bounded by M_3: P(x1) in A + D delta +- (|P''(x)| + M_3 |delta|)
-    // delta^2/2, P'(x1) in D + P''(x) delta +- M_3 delta^2/2, P''(x1) in P''(x) +- M_3
-    // |delta|
-    let mut x1 = Float::with_val(ext, value.mid() / slope.mid());
-    x1 = Float::with_val(ext, x - &x1);
+    let nn1 = (n * (n + 1)) as i64;
+    let curvature = xb.mul(&slope).mul_pow2(1).sub(&value.mul_i64(nn1)).div(&one_minus)?;
+    let third = xb.mul(&curvature).mul_pow2(2).sub(&slope.mul_i64(nn1 - 2)).div(&one_minus)?;
+    // A step of third order x1 = x + delta, delta = -t - P'' t^2/(2 P'), t = P/P' (the
+    // root of the Taylor polynomial of degree 2, to third order), and Taylor's theorem
+    // from x to x1 with the remainders bounded by M_4: P(x1) in A + D delta + P''
+    // delta^2/2 + P''' delta^3/6 +- M_4 delta^4/24, P'(x1) in D + P'' delta + P'''
+    // delta^2/2 +- M_4 |delta|^3/6, P''(x1) in P'' + P''' delta +- M_4 delta^2/2
+    let t = Float::with_val(ext, value.mid() / slope.mid());
+    let mut t2 = Float::with_val(ext, t.square_ref());
+    t2 *= curvature.mid();
+    t2 /= slope.mid();
+    t2 >>= 1;
+    let x1 = Float::with_val(ext, x - &t) - t2;
     let xb1 = Ball::from_float(&x1, ext);
     let delta = xb1.sub(&xb);
     let dm = delta.abs_upper_mag();
-    let half_dm2 = dm.mul(dm).mul_2exp(-1);
-    let mut value = value.add(&slope.mul(&delta));
-    value.add_error_mag(curvature.abs_upper_mag().add(m3.mul(dm)).mul(half_dm2));
-    let mut slope = slope.add(&curvature.mul(&delta));
-    slope.add_error_mag(m3.mul(half_dm2));
-    let mut curvature = curvature;
-    curvature.add_error_mag(m3.mul(dm));
+    let dm2 = dm.mul(dm);
+    let (half_delta2, sixth_delta3) = (delta.sqr().mul_pow2(-1), delta.sqr().mul(&delta).div_i64(6)?);
+    let mut value = value.add(&slope.mul(&delta)).add(&curvature.mul(&half_delta2)).add(&third.mul(&sixth_delta3));
+    value.add_error_mag(m4.mul(dm2.mul(dm2)).div(Mag::from_f64(24.0)));
+    let mut slope = slope.add(&curvature.mul(&delta)).add(&third.mul(&half_delta2));
+    slope.add_error_mag(m4.mul(dm2.mul(dm)).div(Mag::from_f64(6.0)));
+    let mut curvature = curvature.add(&third.mul(&delta));
+    curvature.add_error_mag(m4.mul(dm2).mul_2exp(-1));
     let xb = xb1;
     // eps > 0 even when P_n(x1) is exactly 0, so that r > 0
     let eps = value.abs_upper_mag().add(Mag::pow2(-2 * ext as i64));

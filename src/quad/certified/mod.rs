@@ -85,6 +85,15 @@ use adaptive::{Counted, RunLimits, Stats};
 /// 1.2 s / 14 ms, 1.7-2.2 s / 8.4-10.6 ms, 0.31-0.42 s / 21-26 ms).
 const DEFAULT_MAX_DEGREE_CAP: usize = 512;
 
+/// Builds the degree-`n` Gauss-Legendre rule with `prec`-bit node and weight balls (and
+/// caches it), as the first integration at that degree and precision does: for the
+/// side-by-side measurements of the first call (`examples/first_call.rs`, `rule N
+/// PREC`). Not part of the API.
+#[doc(hidden)]
+pub fn build_gauss_legendre_rule(n: usize, prec: u32) -> Result<()> {
+    legendre::rule(n, prec).map(|_| ())
+}
+
 /// The limit that stopped an integration before its goal.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[non_exhaustive]
