@@ -626,10 +626,7 @@ fn newton_root(rec: &Recurrence, series: Option<&SeriesPlan>, x0: f64, prec: u32
         // evaluates by it), else the recurrence in MPFR
         if rec.step_fixed(&mut xf).is_none() {
             match series {
-                Some(plan) => {
-                    let p = plan.working_prec(xf.to_f64(), q);
-                    plan.newton_step(&mut xf, p)
-                }
+                Some(plan) => plan.newton_step(&mut xf, q),
                 None => rec.step(&mut xf),
             }
         }

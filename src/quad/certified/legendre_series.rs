@@ -118,10 +118,11 @@ impl Series {
         Series { top, chunks }
     }
 
-    /// `sum T_j y^j` from `pows[k] = y^k`, `k = 0 ..= m` (`pows[0]` unused), at `p` bits.
-    fn eval(&self, pows: &[Ball], p: u32) -> Ball {
+    /// `sum T_j y^j` from `pows[k] = y^k`, `k = 0 ..= m` (`pows[0]` unused), at `p` bits;
+    /// without `track`, the midpoint alone (an estimate: the radius is left at 0).
+    fn eval(&self, pows: &[Ball], p: u32, track: bool) -> Ball {
         let m = pows.len() - 1;
-        let mut s = Acc::new(p);
+        let mut s = Acc::new(p, track);
         match self.top % m {
             0 => s.set_one(),
             e => s.set(&pows[e]),
@@ -184,8 +185,8 @@ impl SeriesPlan {
         out + lost.ceil() as u32 + 2 * l + 4
     }
 
-    /// `F(y)` and `G(y)` at `p` bits, `y = -x^2`.
-    fn sums(&self, x: &Ball, p: u32) -> (Ball, Ball) {
+    /// `y^k`, `k = 0 ..= m`, at `p` bits, `y = -x^2`.
+    fn powers(&self, x: &Ball, p: u32) -> Vec<Ball> {
         let y = x.set_prec(p).sqr().neg();
         let mut pows = Vec::with_capacity(self.m + 1);
         pows.push(Ball::one(p));
@@ -194,7 +195,13 @@ impl SeriesPlan {
             let next = if k % 2 == 0 { pows[k / 2].sqr() } else { pows[k - 1].mul(&y) };
             pows.push(next);
         }
-        (self.f.eval(&pows, p), self.g.eval(&pows, p))
+        pows
+    }
+
+    /// `F(y)` and `G(y)` at `p` bits, `y = -x^2`.
+    fn sums(&self, x: &Ball, p: u32) -> (Ball, Ball) {
+        let pows = self.powers(x, p);
+        (self.f.eval(&pows, p, true), self.g.eval(&pows, p, true))
     }
 
     /// Balls containing `P_n(x)` and `P_n'(x)` for every `x` in the ball `x`, evaluated
@@ -211,24 +218,30 @@ impl SeriesPlan {
         Ok((value.mul(&self.scale), slope.mul(&self.scale)))
     }
 
-    /// `x - P_n(x)/P_n'(x)`, the series at `p` bits and the result at `x`'s precision
-    /// (an estimate: Newton's step; `(-1)^d C` cancels).
-    pub(crate) fn newton_step(&self, x: &mut Float, p: u32) {
-        let xb = Ball::from_float(x, x.prec());
-        let (f, g) = self.sums(&xb, p);
+    /// `x - P_n(x)/P_n'(x)` with `x` correct to about `q/2` bits, the result at `x`'s
+    /// precision (an estimate: Newton's step; `(-1)^d C` cancels, and no radius is kept).
+    /// `F` is summed at [`SeriesPlan::working_prec`] for `q` bits, `G` for `q/2 + 16`:
+    /// a relative error `e` of `P_n'` adds about `e |x - root|` to the step's result.
+    pub(crate) fn newton_step(&self, x: &mut Float, q: u32) {
+        let xf = x.to_f64();
+        let (pf, pg) = (self.working_prec(xf, q), self.working_prec(xf, q / 2 + 16));
+        let pows = self.powers(&Ball::from_float(x, x.prec()), pf);
+        let f = self.f.eval(&pows, pf, false);
+        let pows_g: Vec<Ball> = pows.iter().map(|b| b.set_prec(pg)).collect();
+        let g = self.g.eval(&pows_g, pg, false);
         let (f, g) = (f.mid(), g.mid());
-        let q = p.max(x.prec());
-        let mut t1g = Float::with_val(q, g * self.t1.0);
+        let p = pf.max(x.prec());
+        let mut t1g = Float::with_val(p, g * self.t1.0);
         t1g /= self.t1.1;
         let correction = if self.n % 2 == 0 {
             // F / (-2 x T_1 G)
-            let den = Float::with_val(q, &t1g * &*x) * 2u32;
-            Float::with_val(q, -(f / den))
+            let den = Float::with_val(p, &t1g * &*x) * 2u32;
+            Float::with_val(p, -(f / den))
         } else {
             // x F / (F - 2 x^2 T_1 G)
-            let x2 = Float::with_val(q, x.square_ref());
-            let den = Float::with_val(q, f - Float::with_val(q, &t1g * &x2) * 2u32);
-            Float::with_val(q, f * &*x) / den
+            let x2 = Float::with_val(p, x.square_ref());
+            let den = Float::with_val(p, f - Float::with_val(p, &t1g * &x2) * 2u32);
+            Float::with_val(p, f * &*x) / den
         };
         *x -= correction;
     }
@@ -240,6 +253,8 @@ struct Acc {
     mid: Float,
     rad: Mag,
     tmp: Float,
+    /// Whether the radius is kept (else it stays 0: an estimate).
+    track: bool,
 }
 
 fn rounding(m: &Float, ord: Ordering) -> Mag {
@@ -262,8 +277,8 @@ fn word_down(c: u64) -> Mag {
 }
 
 impl Acc {
-    fn new(p: u32) -> Acc {
-        Acc { mid: Float::new(p), rad: Mag::ZERO, tmp: Float::new(p) }
+    fn new(p: u32, track: bool) -> Acc {
+        Acc { mid: Float::new(p), rad: Mag::ZERO, tmp: Float::new(p), track }
     }
 
     fn set_one(&mut self) {
@@ -273,41 +288,56 @@ impl Acc {
 
     fn set(&mut self, b: &Ball) {
         let ord = self.mid.assign_round(b.mid(), Round::Nearest);
-        self.rad = b.rad_mag().add(rounding(&self.mid, ord));
+        if self.track {
+            self.rad = b.rad_mag().add(rounding(&self.mid, ord));
+        }
     }
 
     /// `self *= b` (a full product).
     fn mul(&mut self, b: &Ball) {
         let ord = self.tmp.assign_round(&self.mid * b.mid(), Round::Nearest);
-        let mut rad = rounding(&self.tmp, ord).add(self.rad.mul(Mag::from_float_up(b.mid())));
-        if !b.rad_mag().is_zero() {
-            rad = rad.add(Mag::from_float_up(&self.mid).add(self.rad).mul(b.rad_mag()));
-        }
         std::mem::swap(&mut self.mid, &mut self.tmp);
+        if !self.track {
+            return;
+        }
+        // |a b - a_m b_m| <= r_a |b_m| + (|a_m| + r_a) r_b, a = the old self
+        let (factor, product) = (&self.tmp, &self.mid);
+        let mut rad = rounding(product, ord).add(self.rad.mul(Mag::from_float_up(b.mid())));
+        if !b.rad_mag().is_zero() {
+            rad = rad.add(Mag::from_float_up(factor).add(self.rad).mul(b.rad_mag()));
+        }
         self.rad = rad;
     }
 
     fn mul_u64(&mut self, c: u64) {
         let ord = self.mid.mul_assign_round(c, Round::Nearest);
-        self.rad = self.rad.mul(word_up(c)).add(rounding(&self.mid, ord));
+        if self.track {
+            self.rad = self.rad.mul(word_up(c)).add(rounding(&self.mid, ord));
+        }
     }
 
     fn div_u64(&mut self, c: u64) {
         let ord = self.mid.div_assign_round(c, Round::Nearest);
-        self.rad = self.rad.div(word_down(c)).add(rounding(&self.mid, ord));
+        if self.track {
+            self.rad = self.rad.div(word_down(c)).add(rounding(&self.mid, ord));
+        }
     }
 
     fn add_u64(&mut self, c: u64) {
         let ord = self.mid.add_assign_round(c, Round::Nearest);
-        self.rad = self.rad.add(rounding(&self.mid, ord));
+        if self.track {
+            self.rad = self.rad.add(rounding(&self.mid, ord));
+        }
     }
 
     /// `self += b c`.
     fn add_mul_u64(&mut self, b: &Ball, c: u64) {
         let o1 = self.tmp.assign_round(b.mid() * c, Round::Nearest);
-        let r1 = rounding(&self.tmp, o1);
+        let r1 = if self.track { rounding(&self.tmp, o1) } else { Mag::ZERO };
         let o2 = self.mid.add_assign_round(&self.tmp, Round::Nearest);
-        self.rad = self.rad.add(b.rad_mag().mul(word_up(c))).add(r1).add(rounding(&self.mid, o2));
+        if self.track {
+            self.rad = self.rad.add(b.rad_mag().mul(word_up(c))).add(r1).add(rounding(&self.mid, o2));
+        }
     }
 
     fn ball(self) -> Ball {
