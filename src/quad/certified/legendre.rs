@@ -546,6 +546,19 @@ impl Recurrence {
         *x -= num / den;
     }
 
+    /// The Newton correction `P_n(x)/P_n'(x)` in f64 (the recurrence's coefficients
+    /// rounded to f64: no division a degree).
+    fn step_f64(&self, x: f64) -> f64 {
+        let x2 = x + x;
+        let (mut prev, mut cur) = (1.0, x2);
+        for g in &self.g_dd[1..] {
+            let next = x2 * cur - g.hi * prev;
+            prev = cur;
+            cur = next;
+        }
+        (1.0 - x * x) * cur / ((self.c_dd.hi * prev - x * cur) * self.n as f64)
+    }
+
     /// The Newton correction `P_n(x)/P_n'(x)` in double-double.
     fn step_dd(&self, x: Dd) -> Dd {
         let x2 = x + x;
@@ -588,12 +601,12 @@ impl Recurrence {
 fn newton_root(rec: &Recurrence, series: Option<&SeriesPlan>, x0: f64, prec: u32) -> Float {
     let n = rec.n;
     let mut x = x0;
+    // f64 until a step is below 2^-33 relative (the error after it about 2^-50: the
+    // two double-double steps then reach their precision)
     for _ in 0..8 {
-        let (pn, pm) = legendre_pair_f64(n, x);
-        let d = n as f64 * (pm - x * pn) / (1.0 - x * x);
-        let step = pn / d;
+        let step = rec.step_f64(x);
         x -= step;
-        if step.abs() <= 1e-17 * x.abs().max(1e-300) {
+        if step.abs() <= 1e-10 * x.abs().max(1e-300) {
             break;
         }
     }
@@ -634,16 +647,6 @@ fn newton_root(rec: &Recurrence, series: Option<&SeriesPlan>, x0: f64, prec: u32
     // `prec` bits, so that the certificate's precision holds `x` exactly
     xf.set_prec_round(prec, Round::Nearest);
     xf
-}
-
-fn legendre_pair_f64(n: usize, x: f64) -> (f64, f64) {
-    let (mut prev, mut cur) = (1.0, x);
-    for k in 1..n {
-        let next = ((2 * k + 1) as f64 * x * cur - k as f64 * prev) / (k + 1) as f64;
-        prev = cur;
-        cur = next;
-    }
-    (cur, prev)
 }
 
 /// Sign of a ball that excludes zero: `Some(true)` positive, `Some(false)` negative.
