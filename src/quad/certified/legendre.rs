@@ -981,13 +981,13 @@ mod tests {
     }
 
     /// Every node of the integrator's degrees (up to 512, its default cap) is certified
-    /// by the one evaluation of step 3 at 64, 333 and 1000 bits (and three degrees at
-    /// 3333), none by the fallback; the nodes and weights, rounded to the requested
-    /// bits, keep them.
+    /// by the one evaluation of step 3 at 64, 333 and 1000 bits (and five degrees at
+    /// 3333, two at 3353, the rules of 3333-bit integrals), none by the fallback; the
+    /// nodes and weights, rounded to the requested bits, keep them.
     #[test]
     fn every_node_is_certified_by_the_taylor_bound() {
         let all: Vec<usize> = crate::quad::certified::adaptive::DEGREES.iter().copied().filter(|&n| n <= 512).collect();
-        for (prec, degrees) in [(64u32, all.clone()), (333, all.clone()), (1000, all), (3333, vec![7, 108, 512])] {
+        for (prec, degrees) in [(64u32, all.clone()), (333, all.clone()), (1000, all), (3333, vec![7, 108, 304, 430, 512]), (3353, vec![304, 430])] {
             for n in degrees {
                 let mut fallbacks = 0;
                 let r = build_rule(n, prec, &mut fallbacks).unwrap();
@@ -1001,18 +1001,51 @@ mod tests {
         }
     }
 
-    /// The fallback (signs at `x +- 2^-target`) encloses the same root as step 3.
+    /// Above 8 limbs the rules are evaluated by the series at 0 (`legendre_series.rs`);
+    /// the Fourier form (in MPFR there), the evaluation before, proves the same nodes
+    /// and weights: `P_n` takes opposite signs at the two ends of each node's ball, and
+    /// the weight from `P_n'` on that ball overlaps the rule's. Nodes are checked at
+    /// the two ends of the range and in between.
+    #[test]
+    fn series_rules_agree_with_the_fourier_form() {
+        for (n, prec) in [(2usize, 600u32), (3, 600), (7, 1000), (30, 600), (108, 2000), (304, 3353), (430, 3353)] {
+            let mut fallbacks = 0;
+            let r = build_rule(n, prec, &mut fallbacks).unwrap();
+            assert_eq!(fallbacks, 0, "n {n} at {prec}");
+            let ext = precisions(n, prec).1;
+            assert!(matches!(Evaluation::new(n, ext).unwrap(), Evaluation::Series(_)), "n {n} at {prec}: not by the series");
+            let fourier = Evaluation::Fourier(FourierWeights::new(n, &fourier_coefficients(n, ext).unwrap()));
+            let half = r.nodes.len();
+            let mut ks: Vec<usize> = (0..half).step_by(half.div_ceil(6).max(1)).collect();
+            ks.push(half - 1);
+            for k in ks {
+                let (x, w) = (&r.nodes[k], &r.weights[k]);
+                if x.mid().is_zero() {
+                    continue;
+                }
+                let (lo, hi) = (fourier.eval(n, &Ball::from_float(&x.lower(), ext)).unwrap().0, fourier.eval(n, &Ball::from_float(&x.upper(), ext)).unwrap().0);
+                let (a, b) = (strict_sign(&lo), strict_sign(&hi));
+                assert!(a.is_some() && b.is_some() && a != b, "n {n} at {prec}, node {k}: P_n at the ends {lo:?}, {hi:?}");
+                let (_, slope) = fourier.eval(n, &x.set_prec(ext)).unwrap();
+                let wf = weight(&x.set_prec(ext), &slope).unwrap();
+                assert!(wf.overlaps(w), "n {n} at {prec}, node {k}: weight {w:?} vs the Fourier form's {wf:?}");
+            }
+        }
+    }
+
+    /// The fallback (signs at `x +- 2^-target`) encloses the same root as step 3, by
+    /// either evaluation.
     #[test]
     fn the_fallback_encloses_the_same_nodes() {
-        for &n in &[2usize, 7, 38, 100] {
-            let prec = 200u32;
+        // the Fourier form at 200 bits, the series at 1000
+        for (n, prec) in [(2usize, 200u32), (7, 200), (38, 200), (100, 200), (7, 1000), (100, 1000)] {
             let (target, ext) = precisions(n, prec);
             let ev = Evaluation::new(n, ext).unwrap();
             let rec = Recurrence::new(n, target + 8);
             let r = rule(n, prec).unwrap();
             for (k, (x, w)) in r.nodes.iter().zip(&r.weights).enumerate().filter(|(_, (x, _))| !x.mid().is_zero()) {
                 let (node, weight) = certify_node_by_signs(n, &newton_root(&rec, ev.series(), x.mid().to_f64(), target + 4), ext, target, &ev).unwrap();
-                assert!(node.overlaps(x) && weight.overlaps(w), "n {n} node {k}");
+                assert!(node.overlaps(x) && weight.overlaps(w), "n {n} at {prec}, node {k}");
             }
         }
     }
