@@ -72,7 +72,7 @@ use crate::ball::fixed::{self, limbs::Signed, limbs::MAX_LIMBS};
 use crate::ball::{Ball, Dd, Mag};
 use crate::error::{Error, Invariant, Result};
 
-use super::legendre_series::SeriesPlan;
+use super::legendre_series::{chebyshev_step, SeriesPlan};
 
 /// A Gauss-Legendre rule on `[-1, 1]`: the non-negative nodes (in decreasing
 /// order) and their weights; the negative nodes mirror them.
@@ -121,7 +121,7 @@ fn legendre_pair_ball(n: usize, x: &Ball) -> Result<(Ball, Ball)> {
 
 /// `c_j = (1/2)_j / j! = binom(2j, j) / 4^j`, `j = 0 ..= n`, as balls at `prec` bits
 /// (`c_{j+1} = c_j (2j + 1)/(2j + 2)`; all positive, `sum_k c_k c_{n-k} = P_n(1) = 1`).
-pub(crate) fn fourier_coefficients(n: usize, prec: u32) -> Result<Vec<Ball>> {
+fn fourier_coefficients(n: usize, prec: u32) -> Result<Vec<Ball>> {
     let mut c = Vec::with_capacity(n + 1);
     c.push(Ball::one(prec));
     for j in 0..n {
@@ -201,11 +201,10 @@ enum Evaluation {
 impl Evaluation {
     /// The evaluation for degree `n` at `ext` bits.
     fn new(n: usize, ext: u32) -> Result<Evaluation> {
-        let c = fourier_coefficients(n, ext)?;
         if n >= 2 && fixed::limbs_for_bits(ext).is_none() {
-            return Ok(Evaluation::Series(SeriesPlan::new(n, &c)));
+            return Ok(Evaluation::Series(SeriesPlan::new(n, ext)?));
         }
-        Ok(Evaluation::Fourier(FourierWeights::new(n, &c)))
+        Ok(Evaluation::Fourier(FourierWeights::new(n, &fourier_coefficients(n, ext)?)))
     }
 
     /// `(P_n(x), P_n'(x))` for every point of the ball `x` in `(-1, 1)`, as balls at
@@ -536,14 +535,14 @@ impl Recurrence {
         Some(())
     }
 
-    /// `x <- x - P_n(x)/P_n'(x)` from `S_n` and `S_{n-1}` (or the same times one power
-    /// of two): `(1 - x^2) S_n / (n (c S_{n-1} - x S_n))`.
+    /// Chebyshev's step ([`chebyshev_step`]) from `S_n` and `S_{n-1}` (or the same times
+    /// one power of two): `P_n(x)/P_n'(x) = (1 - x^2) S_n / (n (c S_{n-1} - x S_n))`.
     fn correct(&self, x: &mut Float, cur: &Float, prev: &Float) {
         let q = x.prec();
         let one_minus = Float::with_val(q, 1) - Float::with_val(q, x.square_ref());
         let den = Float::with_val(q, prev.mul_sub_mul_ref(&self.c, x, cur)) * self.n as u32;
-        let num = one_minus * cur;
-        *x -= num / den;
+        let num = Float::with_val(q, &one_minus * cur);
+        chebyshev_step(x, &(num / den), &one_minus, self.n);
     }
 
     /// The Newton correction `P_n(x)/P_n'(x)` in f64 (the recurrence's coefficients
@@ -614,19 +613,19 @@ fn newton_root(rec: &Recurrence, series: Option<&SeriesPlan>, x0: f64, prec: u32
     for _ in 0..2 {
         xd = xd - rec.step_dd(xd);
     }
-    // about 95 correct bits now; a step from `a` correct bits gives about `2a -
-    // log2 n` (quadratic convergence, `P_n''/P_n'` up to about `n^2`)
-    let loss = 2 * (usize::BITS - n.leading_zeros()) + 4;
+    // about 95 correct bits now; a step from `a` correct bits gives about `3a - 4 log2
+    // n` (Chebyshev's step converges cubically, `(P_n''/P_n')^2` up to about `n^4`)
+    let loss = 4 * (usize::BITS - n.leading_zeros()) + 8;
     let mut xf = Float::with_val(prec.max(106), xd.hi);
     xf += xd.lo;
     // The precisions top-down (as Arb's `legendre_p_ui_root`): a step at `q` bits from
-    // `a` correct ones gives `min(q - 8, 2a - loss)`, so the level below `q` is `(q - 8 +
-    // loss)/2 + 8`, down to what double-double gave.
+    // `a` correct ones gives `min(q - 8, 3a - loss)`, so the level below `q` is `(q - 8 +
+    // loss)/3 + 8`, down to what double-double gave.
     let mut levels = Vec::new();
     if prec > 90 {
         levels.push(prec + 8);
         loop {
-            let need = (levels[levels.len() - 1] - 8 + loss).div_ceil(2);
+            let need = (levels[levels.len() - 1] - 8 + loss).div_ceil(3);
             if need <= 90 {
                 break;
             }

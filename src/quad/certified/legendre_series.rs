@@ -153,14 +153,13 @@ pub(crate) struct SeriesPlan {
     g: Series,
     /// `T_1 = a_1/b_1`, as its numerator and denominator.
     t1: (u64, u64),
-    /// `(-1)^d C` at [`SeriesPlan::max_prec`] bits.
+    /// `(-1)^d C`.
     scale: Ball,
 }
 
 impl SeriesPlan {
-    /// The plan for degree `n >= 2`; `scale` is `(-1)^d C` for `prec` bits (module doc;
-    /// from `c[k] = c_k`, `k <= d + 1`).
-    pub(crate) fn new(n: usize, c: &[Ball]) -> SeriesPlan {
+    /// The plan for degree `n >= 2`, with `(-1)^d C` at `prec` bits (module doc).
+    pub(crate) fn new(n: usize, prec: u32) -> Result<SeriesPlan> {
         let d = n / 2;
         let s = (n % 2) as u64;
         let (nn, dd) = (n as u64, d as u64);
@@ -168,11 +167,18 @@ impl SeriesPlan {
         let m = ((2 * d) as f64).sqrt().ceil().max(1.0) as usize;
         let f = Series::new(d, m, |j| (a(j), j as u64 * (2 * j as u64 - 1 + 2 * s)));
         let g = Series::new(d.saturating_sub(1), m, |i| (a(i + 1), i as u64 * (2 * i as u64 + 1 + 2 * s)));
-        let mut scale = if s == 0 { c[d].clone() } else { c[d + 1].mul_i64(2 * (d as i64 + 1)) };
+        // c_k = c_{k-1} (2k - 1)/(2k), k <= d + s
+        let mut scale = Ball::one(prec);
+        for k in 1..=d + s as usize {
+            scale = scale.mul_i64(2 * k as i64 - 1).div_i64(2 * k as i64)?;
+        }
+        if s == 1 {
+            scale = scale.mul_i64(2 * (d as i64 + 1));
+        }
         if d % 2 == 1 {
             scale = scale.neg();
         }
-        SeriesPlan { n, m, f, g, t1: (a(1), 1 + 2 * s), scale }
+        Ok(SeriesPlan { n, m, f, g, t1: (a(1), 1 + 2 * s), scale })
     }
 
     /// The bits to evaluate at `x` so that the roundings cost about `out` bits' worth of
@@ -218,22 +224,23 @@ impl SeriesPlan {
         Ok((value.mul(&self.scale), slope.mul(&self.scale)))
     }
 
-    /// `x - P_n(x)/P_n'(x)` with `x` correct to about `q/2` bits, the result at `x`'s
-    /// precision (an estimate: Newton's step; `(-1)^d C` cancels, and no radius is kept).
-    /// `F` is summed at [`SeriesPlan::working_prec`] for `q` bits, `G` for `q/2 + 16`:
-    /// a relative error `e` of `P_n'` adds about `e |x - root|` to the step's result.
+    /// Chebyshev's step ([`chebyshev_step`]) from `x` correct to about
+    /// `q/3` bits, the result at `x`'s precision (an estimate; `(-1)^d C` cancels in
+    /// `t = P_n/P_n'`, and no radius is kept). `F` is summed at
+    /// [`SeriesPlan::working_prec`] for `q` bits, `G` for `2q/3 + 16`: a relative error `e`
+    /// of `P_n'` adds about `e |t|` to the step's result.
     pub(crate) fn newton_step(&self, x: &mut Float, q: u32) {
         let xf = x.to_f64();
-        let (pf, pg) = (self.working_prec(xf, q), self.working_prec(xf, q / 2 + 16));
+        let (pf, pg) = (self.working_prec(xf, q), self.working_prec(xf, 2 * q / 3 + 16));
         let pows = self.powers(&Ball::from_float(x, x.prec()), pf);
         let f = self.f.eval(&pows, pf, false);
         let pows_g: Vec<Ball> = pows.iter().map(|b| b.set_prec(pg)).collect();
         let g = self.g.eval(&pows_g, pg, false);
         let (f, g) = (f.mid(), g.mid());
-        let p = pf.max(x.prec());
+        let p = x.prec();
         let mut t1g = Float::with_val(p, g * self.t1.0);
         t1g /= self.t1.1;
-        let correction = if self.n % 2 == 0 {
+        let t = if self.n % 2 == 0 {
             // F / (-2 x T_1 G)
             let den = Float::with_val(p, &t1g * &*x) * 2u32;
             Float::with_val(p, -(f / den))
@@ -243,8 +250,26 @@ impl SeriesPlan {
             let den = Float::with_val(p, f - Float::with_val(p, &t1g * &x2) * 2u32);
             Float::with_val(p, f * &*x) / den
         };
-        *x -= correction;
+        let one_minus = Float::with_val(p, 1) - Float::with_val(p, x.square_ref());
+        chebyshev_step(x, &t, &one_minus, self.n);
     }
+}
+
+/// Chebyshev's step `x <- x - t - (P_n''/(2 P_n')) t^2` from `t = P_n(x)/P_n'(x)` and
+/// `1 - x^2`, with `P_n''/P_n' = (2x - n(n+1) t)/(1 - x^2)` (Legendre's equation, DLMF
+/// 18.8.1): the root of the Taylor polynomial of degree 2, so the error is cubed (times
+/// about `(P_n''/P_n')^2`) where Newton's step squares it. An estimate: the certificate
+/// proves.
+pub(crate) fn chebyshev_step(x: &mut Float, t: &Float, one_minus: &Float, n: usize) {
+    let q = x.prec();
+    let mut ratio = Float::with_val(q, t * (n * (n + 1)) as u64);
+    ratio = Float::with_val(q, &*x * 2u32) - ratio;
+    ratio /= one_minus;
+    let mut second = Float::with_val(q, t.square_ref());
+    second *= &ratio;
+    second >>= 1;
+    *x -= t;
+    *x -= second;
 }
 
 /// A ball updated in place (no allocation a term): the midpoint rounded to nearest and
@@ -348,7 +373,6 @@ impl Acc {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::quad::certified::legendre::fourier_coefficients;
 
     /// The series encloses `P_n` and `P_n'` of the three-term recurrence in exact
     /// rationals, at dyadic points inside and outside `[-1, 1]`, and at the working
@@ -357,8 +381,7 @@ mod tests {
     fn series_encloses_exact_values() {
         use rug::Rational;
         for &n in &[2usize, 3, 4, 5, 10, 31, 64, 107, 300] {
-            let c = fourier_coefficients(n + 2, 400).unwrap();
-            let plan = SeriesPlan::new(n, &c);
+            let plan = SeriesPlan::new(n, 400).unwrap();
             for (num, den) in [(0i64, 1i64), (1, 8), (-3, 16), (127, 128), (-1023, 1024), (1, 1), (5, 4)] {
                 let xr = Rational::from((num, den));
                 let (mut prev, mut cur) = (Rational::from(1), xr.clone());
