@@ -76,14 +76,17 @@ use crate::error::{check_prec, Error, Result};
 use adaptive::{Counted, RunLimits, Stats};
 
 /// The default degree limit is Arb's `prec/2 + 60`, but at most this: a rule of
-/// degree `n` costs `n^2/4` complex products at `prec + 3 log2 n + 16` bits to enclose
-/// (`legendre.rs`), paid once per process, while bisection costs evaluations on every
-/// call. At 3333 bits (2026-11-29, `1/(1+x^2)` on `[0, 1]`, `sqrt x` on `[1, 4]`, `e^(-x^2)`
-/// on `[0, 2]`, first call / warm): the cap 362 (before, when a rule took `prec + 2.56
-/// n` bits) 0.40 s / 46 ms, 0.46 s / 46 ms, 0.64 s / 92 ms; 512: 0.87 s / 15 ms, 0.77 s /
-/// 14 ms, 0.78 s / 50 ms; 608: 1.6 s / 7.5 ms, 2.5 s / 9.3 ms, 0.86 s / 56 ms (C Arb:
-/// 1.2 s / 14 ms, 1.7-2.2 s / 8.4-10.6 ms, 0.31-0.42 s / 21-26 ms).
-const DEFAULT_MAX_DEGREE_CAP: usize = 512;
+/// degree `n` costs about `n^2` word-size operations and `n^(3/2)` full products at
+/// `prec + 0.85 n` bits on average to enclose above 8 limbs (`legendre.rs`,
+/// `legendre_series.rs`), paid once per process, while bisection costs evaluations on
+/// every call. At 3333 bits (2026-11-29 14:36 UTC, load 6-9, `1/(1+x^2)` on `[0, 1]`,
+/// `sqrt x` on `[1, 4]`, first call / warm, wall time): the cap 512 0.15 s / 14.9 ms,
+/// 0.16 s / 17.0 ms; 608 0.26 s / 10.2 ms, 0.40 s / 12.1 ms; 724 the same as 608 (no
+/// piece asks more); C Arb 1.64 s / 17.5 ms, 2.28 s / 12.0 ms. `e^(-x^2)` on `[0, 2]`
+/// and `x J_0(x)` on `[0, 10]` take degrees below 512 at any of these caps. Before the
+/// series evaluation (when a rule of degree 608 cost 1.6 s) the cap was 512, and 362
+/// before that.
+const DEFAULT_MAX_DEGREE_CAP: usize = 608;
 
 /// Builds the degree-`n` Gauss-Legendre rule with `prec`-bit node and weight balls (and
 /// caches it), as the first integration at that degree and precision does: for the
@@ -146,7 +149,7 @@ impl Options {
     /// The defaults: relative goal = the requested precision, the default absolute
     /// tolerance for balls that contain 0 ([`Options::abs_tol`]), Arb's limits with
     /// evaluations and depth sized by the first working precision `w = prec + 20`
-    /// (`1000 w + w^2` evaluations, depth `2 w`, degree `prec/2 + 60` but at most 512), working precision up to `8 prec +
+    /// (`1000 w + w^2` evaluations, depth `2 w`, degree `prec/2 + 60` but at most 608), working precision up to `8 prec +
     /// 256` bits.
     pub fn new() -> Options {
         Options { goal_bits: None, abs_tol: None, relative_only: false, max_evaluations: None, max_depth: None, max_degree: None, max_working_prec: 0, end_log: false }
