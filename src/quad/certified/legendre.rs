@@ -8,57 +8,72 @@
 //! 1. **Start.** Tricomi's approximation `x_k ~ cos(pi (4k - 1)/(4n + 2))`
 //!    (DLMF 18.16.6 with the first correction term), refined by Newton's method in
 //!    f64 and then in double-double (about 95 bits).
-//! 2. **Refine.** Newton's method in MPFR, `x <- x - P_n(x)/P_n'(x)`, the precision
-//!    about doubled each step, up to about half the bits to certify ([`newton_bits`]).
-//!    `P_n` and `P_{n-1}` come from the scaled monic recurrence `S_0 = 1`, `S_1 = 2x`,
-//!    `S_{k+1} = 2x S_k - g_k S_{k-1}`, `g_k = 4k^2/(4k^2 - 1)` (DLMF 18.9.1 with `S_k =
-//!    2^k P_k / kappa_k`, `kappa_k` the leading coefficient of `P_k`), two products and
-//!    a difference a step, and `P_n/P_n' = (1 - x^2) S_n / (n (2n/(2n-1) S_{n-1} - x
-//!    S_n))` (DLMF 18.9.18). All of this is an estimate: the next step proves.
+//! 2. **Refine.** Chebyshev's step in MPFR, `x <- x - t - (P_n''/(2 P_n')) t^2`, `t =
+//!    P_n(x)/P_n'(x)`, with `P_n''/P_n' = (2x - n(n+1) t)/(1 - x^2)` from Legendre's
+//!    equation (so it costs what Newton's step does and triples the bits, less about `4
+//!    log2 n`), the precisions planned top-down by thirds up to about a third of the
+//!    bits to certify ([`newton_bits`]). Where the precision fits 8 limbs, `P_n/P_n'`
+//!    comes from the scaled monic recurrence `S_0 = 1`, `S_1 = 2x`, `S_{k+1} = 2x S_k -
+//!    g_k S_{k-1}`, `g_k = 4k^2/(4k^2 - 1)` (DLMF 18.9.1 with `S_k = 2^k P_k / kappa_k`,
+//!    `kappa_k` the leading coefficient of `P_k`) in the fixed-point format of
+//!    `ball/fixed`, and `P_n/P_n' = (1 - x^2) S_n / (n (2n/(2n-1) S_{n-1} - x S_n))`
+//!    (DLMF 18.9.18); above, from the series at 0 of `legendre_series.rs` (`O(n)` word
+//!    operations and `O(n^(1/2))` full products, against the recurrence's `2n` full
+//!    products). All of this is an estimate: the next step proves.
 //! 3. **Certify.** One evaluation in ball arithmetic at the point `x` (an exact float,
-//!    Newton's iterate to about half the bits) gives balls containing `P_n(x)` and
-//!    `P_n'(x)`, and Legendre's equation `(1 - x^2) P_n'' = 2x P_n' - n(n+1) P_n` (DLMF
-//!    18.8.1) one containing `P_n''(x)`. `M_3 = P_n'''(1) >= |P_n'''|` on `[-1, 1]`
-//!    (`P_n^(k)` is `(2k-1)!!` times the Gegenbauer polynomial `C^(k+1/2)_(n-k)`, DLMF
-//!    18.9.19, and `|C^lambda_m(y)| <= C^lambda_m(1)` for `lambda > 0`, DLMF 18.14.4).
-//!    A last Newton step `x1 = x + delta` (a float) is taken in this arithmetic: by
-//!    Taylor's theorem with the remainders bounded through `M_3`, balls `A`, `D` and
-//!    `C` contain `P_n(x1)`, `P_n'(x1)` and `P_n''(x1)` (`certify_node`). Take `eps >=
-//!    |A|`, `d <= |D|`, `r >= 4 eps/d`, and `M = |C| + M_3 r >= |P_n''|` on `[x1 - r,
-//!    x1 + r]`. Taylor's theorem gives `P_n(x1 +- r) = P_n(x1) +- P_n'(x1) r + R`, `|R|
-//!    <= M r^2/2`. When `M r^2 <= 4 eps` (checked with upper bounds), `|P_n(x1) + R| <=
-//!    eps + 2 eps < 4 eps <= |P_n'(x1)| r`, so `P_n(x1 - r)`
-//!    and `P_n(x1 + r)` have opposite signs: a root lies in `(x1 - r, x1 + r)`. The
-//!    `ceil(n/2)` non-negative roots are all found this way in disjoint, ordered
-//!    intervals (for odd `n` the root 0 is exact), and `P_n` has exactly `n` roots,
-//!    symmetric about 0, so every node is enclosed. The weight `w = 2 / ((1 - y^2)
-//!    P_n'(y)^2)` (DLMF 3.5.19) at the root `y` is evaluated in ball arithmetic on the
-//!    node's ball with `P_n'(y)` in `D +- M r` (the mean value theorem), so it
-//!    encloses the true weight. Where the bound fails or leaves the node or the weight
-//!    wider than planned (not seen; the tests ask that it never does for the
-//!    integrator's degrees), the root is enclosed as before 2026-11-29 instead: by the
-//!    signs of `P_n` at `x +- 2^-target`, both evaluated in ball arithmetic, and the
-//!    weight from `P_n'` on that ball.
+//!    the refined iterate) gives balls containing `P_n(x)` and `P_n'(x)`; Legendre's
+//!    equation `(1 - x^2) P_n'' = 2x P_n' - n(n+1) P_n` (DLMF 18.8.1) and its derivative
+//!    `(1 - x^2) P_n''' = 4x P_n'' - (n(n+1) - 2) P_n'` give balls containing `P_n''(x)`
+//!    and `P_n'''(x)`. `M_k = P_n^(k)(1) >= |P_n^(k)|` on `[-1, 1]` (`P_n^(k)` is
+//!    `(2k-1)!!` times the Gegenbauer polynomial `C^(k+1/2)_(n-k)`, DLMF 18.9.19, and
+//!    `|C^lambda_m(y)| <= C^lambda_m(1)` for `lambda > 0`, DLMF 18.14.4). A last step
+//!    `x1 = x + delta` (a float; Chebyshev's step, of third order) is taken in this
+//!    arithmetic: by Taylor's theorem to third order with the remainders bounded
+//!    through `M_4`, balls `A`, `D` and `C` contain `P_n(x1)`, `P_n'(x1)` and
+//!    `P_n''(x1)` (`certify_node`). Take `eps >= |A|`, `d <= |D|`, `r >= 4 eps/d`, and
+//!    `M = |C| + M_3 r >= |P_n''|` on `[x1 - r, x1 + r]`. Taylor's theorem gives `P_n(x1
+//!    +- r) = P_n(x1) +- P_n'(x1) r + R`, `|R| <= M r^2/2`. When `M r^2 <= 4 eps`
+//!    (checked with upper bounds), `|P_n(x1) + R| <= eps + 2 eps < 4 eps <= |P_n'(x1)|
+//!    r`, so `P_n(x1 - r)` and `P_n(x1 + r)` have opposite signs: a root lies in `(x1 -
+//!    r, x1 + r)`. The `ceil(n/2)` non-negative roots are all found this way in
+//!    disjoint, ordered intervals (for odd `n` the root 0 is exact), and `P_n` has
+//!    exactly `n` roots, symmetric about 0, so every node is enclosed. The weight `w = 2
+//!    / ((1 - y^2) P_n'(y)^2)` (DLMF 3.5.19) at the root `y` is evaluated in ball
+//!    arithmetic on the node's ball with `P_n'(y)` in `D +- M r` (the mean value
+//!    theorem), so it encloses the true weight. Where the bound fails or leaves the
+//!    node or the weight wider than planned (not seen; the tests ask that it never does
+//!    for the integrator's degrees), the root is enclosed as before 2026-11-29 instead:
+//!    by the signs of `P_n` at `x +- 2^-target`, both evaluated in ball arithmetic, and
+//!    the weight from `P_n'` on that ball.
 //!
-//! The ball evaluations use the Fourier form (DLMF 18.5.11, `lambda = 1/2`): `P_n(cos
-//! theta) = sum_{k=0}^n c_k c_{n-k} cos((n - 2k) theta)`, `c_k = (1/2)_k / k!`, and its
-//! derivative in `theta`, `P_n'(cos theta) = sum_k c_k c_{n-k} (n - 2k) sin((n - 2k)
-//! theta) / sin theta`, with `e^{i theta} = x + i (1 - x^2)^(1/2)` and the cosines and
-//! sines the real and imaginary parts of `w^n conj(w)^(2k)`, formed in complex discs
-//! ([`Disc`]). The coefficients are positive and sum to `P_n(1) = 1`, and a product of
-//! discs of modulus 1 adds their radii, so a radius grows about linearly in `n`: `3
-//! log2 n + 16` guard bits suffice ([`precisions`]). The three-term recurrence in ball
-//! arithmetic grows radii by up to `1 + sqrt 2` a step and would need `1.28 n + 40`
-//! guard bits.
+//! The ball evaluations ([`Evaluation`]) use, where the certified precision fits the
+//! 8 limbs of `ball/fixed` (up to about 510 bits), the Fourier form (DLMF 18.5.11,
+//! `lambda = 1/2`): `P_n(cos theta) = sum_{k=0}^n c_k c_{n-k} cos((n - 2k) theta)`, `c_k
+//! = (1/2)_k / k!`, and its derivative in `theta`, `P_n'(cos theta) = sum_k c_k c_{n-k}
+//! (n - 2k) sin((n - 2k) theta) / sin theta`, with `e^{i theta} = x + i (1 -
+//! x^2)^(1/2)` and the cosines and sines the real and imaginary parts of `w^n
+//! conj(w)^(2k)`, formed in complex discs ([`Disc`]). The coefficients are positive and
+//! sum to `P_n(1) = 1`, and a product of discs of modulus 1 adds their radii, so a
+//! radius grows about linearly in `n`: `3 log2 n + 16` guard bits suffice
+//! ([`precisions`]). The three-term recurrence in ball arithmetic grows radii by up to
+//! `1 + sqrt 2` a step and would need `1.28 n + 40` guard bits. Above 8 limbs they use
+//! the hypergeometric series at 0 with rectangular splitting (`legendre_series.rs`, as
+//! Arb's `arb_hypgeom_legendre_p_ui_zero`), which loses about `n log2(|x| + (1 +
+//! x^2)^(1/2))` bits to cancellation (carried as extra working bits) but costs `n`
+//! word-size products and sums and `m - 1 + n/m` full products (`m ~ n^(1/2)`)
+//! where the Fourier form costs `2n` full products.
 //!
-//! Cost: a node takes one Fourier evaluation at the certified precision (`n/2`
-//! complex products) and Newton steps of three MPFR operations per degree at
-//! precisions that about double up to half of it (none at all for `prec` up to about
-//! 100 bits, where double-double suffices). Before 2026-11-29 it took four or five
-//! MPFR Newton steps of five operations per degree up to the full precision and three
-//! Fourier evaluations: the first call of `int_0^8 sin(x + e^x)` at 333 bits took 3x
-//! the time. Rules are cached for the life of the process ([`rule`]). C Arb
-//! (`arb_hypgeom_legendre_p_ui_root`) uses asymptotic starts and evaluations: see
+//! Cost: a node takes one ball evaluation at the certified precision and Chebyshev
+//! steps at precisions that about triple up to a third of it (none at all for `prec`
+//! up to about 100 bits, where double-double suffices). At 3353 bits, degree 430
+//! (the rule of a 3333-bit integral), a rule took 0.41 s with the Fourier form and the
+//! recurrence (2026-11-29 morning) and takes 0.066 s now (CPU time, `first_call rule
+//! 430 3353`; docs/quadrature.md). Before 2026-11-29 it took four or five MPFR Newton
+//! steps of five operations per degree up to the full precision and three Fourier
+//! evaluations. Rules are cached for the life of the process ([`rule`]). C Arb
+//! (`arb_hypgeom_legendre_p_ui_root`) also uses Newton steps with the precision
+//! doubled and an interval Newton step at the end, with its own choice among the
+//! recurrence, the series at 0 or 1 and the asymptotic expansion: see
 //! docs/quadrature.md for the side-by-side first call.
 
 use std::collections::HashMap;
