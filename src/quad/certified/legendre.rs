@@ -697,13 +697,27 @@ fn precisions(n: usize, prec: u32) -> (u32, u32) {
     (prec + 2 * l + 12, prec + 3 * l + 16)
 }
 
-/// The bits of Newton's iterate before the certificate's own step: that step is of
+/// The bits of Newton's iterate before the certificate's own step: where
+/// [`second_order_suffices`], what Newton's step there asks; else that step is of
 /// third order (method block, step 3), and its Taylor remainders, through `M_4 =
 /// P_n''''(1) ~ 2^(8 L - 8.6)`, ask that `M_4 delta^3/6` stay below `2^-(prec + 6)`
 /// times `|P_n'| >= 0.8 n^(1/2)` (`L = log2 n`, rounded up).
 fn newton_bits(n: usize, prec: u32) -> u32 {
     let l = usize::BITS - n.leading_zeros();
+    if second_order_suffices(n, prec) {
+        return (prec + 6 * l + 17) / 2;
+    }
     (prec + 8 * l + 20) / 3
+}
+
+/// Whether the certificate's Newton step (second order, remainders through `M_3`)
+/// suffices for Newton's iterate as double-double leaves it (about 90 bits): the weight
+/// asks that `M_3 delta^2/|P_n'| ~ 2^(5.5 L - 6) delta^2` stay below `2^-(prec + 6)`.
+/// Then the third-order step, which needs fewer bits of the iterate but more ball
+/// operations, would save no MPFR step (at 64 bits, up to degree 64 or so).
+fn second_order_suffices(n: usize, prec: u32) -> bool {
+    let l = usize::BITS - n.leading_zeros();
+    (prec + 6 * l + 17) / 2 <= 90
 }
 
 /// `P_n^(k)(1) = (n - k + 1) ... (n + k) / (2^k k!)`, rounded up: the largest `|P_n^(k)|`
@@ -800,33 +814,54 @@ fn certify_node(n: usize, x: &Float, prec: u32, ev: &Evaluation) -> Result<Optio
     // (DLMF 18.8.1) and its derivative (1 - x^2) P''' = 4x P'' - (n(n+1) - 2) P', and
     // M_k >= |P_n^(k)| on [-1, 1]
     let m3 = derivative_bound_at_one(n, 3);
-    let m4 = derivative_bound_at_one(n, 4);
     let one_minus = Ball::one(ext).sub(&xb.sqr());
     let nn1 = (n * (n + 1)) as i64;
     let curvature = xb.mul(&slope).mul_pow2(1).sub(&value.mul_i64(nn1)).div(&one_minus)?;
-    let third = xb.mul(&curvature).mul_pow2(2).sub(&slope.mul_i64(nn1 - 2)).div(&one_minus)?;
-    // A step of third order x1 = x + delta, delta = -t - P'' t^2/(2 P'), t = P/P' (the
-    // root of the Taylor polynomial of degree 2, to third order), and Taylor's theorem
-    // from x to x1 with the remainders bounded by M_4: P(x1) in A + D delta + P''
-    // delta^2/2 + P''' delta^3/6 +- M_4 delta^4/24, P'(x1) in D + P'' delta + P'''
-    // delta^2/2 +- M_4 |delta|^3/6, P''(x1) in P'' + P''' delta +- M_4 delta^2/2
-    let t = Float::with_val(ext, value.mid() / slope.mid());
-    let mut t2 = Float::with_val(ext, t.square_ref());
-    t2 *= curvature.mid();
-    t2 /= slope.mid();
-    t2 >>= 1;
-    let x1 = Float::with_val(ext, x - &t) - t2;
-    let xb1 = Ball::from_float(&x1, ext);
-    let delta = xb1.sub(&xb);
-    let dm = delta.abs_upper_mag();
-    let dm2 = dm.mul(dm);
-    let (half_delta2, sixth_delta3) = (delta.sqr().mul_pow2(-1), delta.sqr().mul(&delta).div_i64(6)?);
-    let mut value = value.add(&slope.mul(&delta)).add(&curvature.mul(&half_delta2)).add(&third.mul(&sixth_delta3));
-    value.add_error_mag(m4.mul(dm2.mul(dm2)).div(Mag::from_f64(24.0)));
-    let mut slope = slope.add(&curvature.mul(&delta)).add(&third.mul(&half_delta2));
-    slope.add_error_mag(m4.mul(dm2.mul(dm)).div(Mag::from_f64(6.0)));
-    let mut curvature = curvature.add(&third.mul(&delta));
-    curvature.add_error_mag(m4.mul(dm2).mul_2exp(-1));
+    let (xb1, value, slope, curvature) = if second_order_suffices(n, prec) {
+        // Newton's step x1 = x + delta, delta = -P/P', and Taylor's theorem to second
+        // order with the remainders bounded by M_3: P(x1) in A + D delta +- (|P''(x)| +
+        // M_3 |delta|) delta^2/2, P'(x1) in D + P'' delta +- M_3 delta^2/2, P''(x1) in
+        // P'' +- M_3 |delta|
+        let t = Float::with_val(ext, value.mid() / slope.mid());
+        let xb1 = Ball::from_float(&Float::with_val(ext, x - &t), ext);
+        let delta = xb1.sub(&xb);
+        let dm = delta.abs_upper_mag();
+        let half_dm2 = dm.mul(dm).mul_2exp(-1);
+        let mut value = value.add(&slope.mul(&delta));
+        value.add_error_mag(curvature.abs_upper_mag().add(m3.mul(dm)).mul(half_dm2));
+        let mut slope = slope.add(&curvature.mul(&delta));
+        slope.add_error_mag(m3.mul(half_dm2));
+        let mut curvature = curvature;
+        curvature.add_error_mag(m3.mul(dm));
+        (xb1, value, slope, curvature)
+    } else {
+        // Chebyshev's step x1 = x + delta, delta = -t - P'' t^2/(2 P'), t = P/P' (the
+        // root of the Taylor polynomial of degree 2, to third order), and Taylor's
+        // theorem from x to x1 with the remainders bounded by M_4: P(x1) in A + D delta +
+        // P'' delta^2/2 + P''' delta^3/6 +- M_4 delta^4/24, P'(x1) in D + P'' delta +
+        // P''' delta^2/2 +- M_4 |delta|^3/6, P''(x1) in P'' + P''' delta +- M_4
+        // delta^2/2
+        let m4 = derivative_bound_at_one(n, 4);
+        let third = xb.mul(&curvature).mul_pow2(2).sub(&slope.mul_i64(nn1 - 2)).div(&one_minus)?;
+        let t = Float::with_val(ext, value.mid() / slope.mid());
+        let mut t2 = Float::with_val(ext, t.square_ref());
+        t2 *= curvature.mid();
+        t2 /= slope.mid();
+        t2 >>= 1;
+        let x1 = Float::with_val(ext, x - &t) - t2;
+        let xb1 = Ball::from_float(&x1, ext);
+        let delta = xb1.sub(&xb);
+        let dm = delta.abs_upper_mag();
+        let dm2 = dm.mul(dm);
+        let (half_delta2, sixth_delta3) = (delta.sqr().mul_pow2(-1), delta.sqr().mul(&delta).div_i64(6)?);
+        let mut value = value.add(&slope.mul(&delta)).add(&curvature.mul(&half_delta2)).add(&third.mul(&sixth_delta3));
+        value.add_error_mag(m4.mul(dm2.mul(dm2)).div(Mag::from_f64(24.0)));
+        let mut slope = slope.add(&curvature.mul(&delta)).add(&third.mul(&half_delta2));
+        slope.add_error_mag(m4.mul(dm2.mul(dm)).div(Mag::from_f64(6.0)));
+        let mut curvature = curvature.add(&third.mul(&delta));
+        curvature.add_error_mag(m4.mul(dm2).mul_2exp(-1));
+        (xb1, value, slope, curvature)
+    };
     let xb = xb1;
     // eps > 0 even when P_n(x1) is exactly 0, so that r > 0
     let eps = value.abs_upper_mag().add(Mag::pow2(-2 * ext as i64));
