@@ -375,12 +375,13 @@ mod tests {
     use super::*;
 
     /// The series encloses `P_n` and `P_n'` of the three-term recurrence in exact
-    /// rationals, at dyadic points inside and outside `[-1, 1]`, and at the working
+    /// rationals, at dyadic points inside and outside `[-1, 1]` and up to the largest
+    /// degree an integration may ask (2048), and at the working
     /// precision for 300 bits its radii inside `[-1, 1]` stay below `2^-290`.
     #[test]
     fn series_encloses_exact_values() {
         use rug::Rational;
-        for &n in &[2usize, 3, 4, 5, 10, 31, 64, 107, 300] {
+        for &n in &[2usize, 3, 4, 5, 10, 31, 64, 107, 300, 2048] {
             let plan = SeriesPlan::new(n, 400).unwrap();
             for (num, den) in [(0i64, 1i64), (1, 8), (-3, 16), (127, 128), (-1023, 1024), (1, 1), (5, 4)] {
                 let xr = Rational::from((num, den));
