@@ -30,18 +30,23 @@
 //! chunk) combine to `B s_l = A Z_h s_h + sum_{i=l}^{h-1} c_i y^(i mod m)`, `A = prod_t
 //! a_t`, `B = prod_t b_t`, `c_i = prod_{t=l+1}^{i} a_t prod_{t=i+1}^{h} b_t` (unroll the
 //! two-term step and multiply by `B`). A chunk takes at most as many steps as keep `A`,
-//! `B` and every `c_i` below `2^64`: one product and one quotient by a word and one word
-//! product and sum a term, and one full product (by `y^m`) every `m` terms. With `F` and
-//! `G` sharing the powers, a point costs `m - 1 + 2 d/m` full products, `m ~ (2d)^(1/2)`.
+//! `B` and every `c_i` below `2^63` (three at the integrator's degrees): a chunk costs
+//! one product and one quotient by a word, a term one product by a word and one sum,
+//! and every `m` terms one full product (by `y^m`). With `F` and `G` sharing the
+//! powers, a point costs `m - 1 + 2 d/m` full products, `m ~ (2d)^(1/2)`.
 //!
 //! **Enclosure.** Every operation is one of ball arithmetic (midpoint rounded to
 //! nearest, the radius widened by the input radii and by `2^(e - p)`, `e` the result's
 //! exponent, for each rounding), so the results contain `P_n(x)` and `P_n'(x)` for every
 //! `x` in the input ball. The working precision only decides how tight they are: the
 //! Horner sums are at most `sum |T_j y^j| = F(x^2)`, and `C |x|^s F(x^2) = |P_n(i x)| <=
-//! (|x| + (1 + x^2)^(1/2))^n` (Laplace's integral, DLMF 18.10.1), so a rounding costs
-//! about `n log2(|x| + (1 + x^2)^(1/2))` bits of the result (at most `1.27 n`):
-//! [`SeriesPlan::working_prec`] adds them.
+//! (|x| + (1 + x^2)^(1/2))^n` (Laplace's first integral, `P_n(z) = (1/pi) int_0^pi (z +
+//! (z^2 - 1)^(1/2) cos phi)^n dphi`), so a rounding costs about `n log2(|x| + (1 +
+//! x^2)^(1/2))` bits of the result (at most `1.27 n`): [`SeriesPlan::working_prec`] adds
+//! them.
+//!
+//! The Newton (Chebyshev) steps before the certificate ([`SeriesPlan::newton_step`]) use
+//! the same sums without radii: estimates, which the certificate proves.
 
 use std::cmp::Ordering;
 
@@ -74,7 +79,7 @@ struct Series {
 
 impl Series {
     /// The chunks for `K = top`, `m` powers and the ratios `ratio(j) = (a_j, b_j)`,
-    /// `j = 1 ..= K` (each below `2^32`).
+    /// `j = 1 ..= K` (positive words; a chunk of one step holds any).
     fn new(top: usize, m: usize, ratio: impl Fn(usize) -> (u64, u64)) -> Series {
         let mut chunks = Vec::new();
         let mut h = top;
@@ -83,8 +88,8 @@ impl Series {
             let floor_mult = m * ((h - 1) / m);
             let mut l = h;
             let (mut a, mut b) = (1u64, 1u64);
-            // extend while A, B and every c_i stay below 2^64 (each c_i divides... no: each
-            // c_i is a product of h - l factors, each at most max(a_t, b_t))
+            // extend while A, B and every c_i stay below 2^63: each is a product of h - l
+            // factors, each at most the largest a_t, b_t of the chunk
             let mut largest = 1u64;
             while l > floor_mult {
                 let (at, bt) = ratio(l);
