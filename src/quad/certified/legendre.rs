@@ -30,7 +30,9 @@
 //!    `x1 = x + delta` (a float; Chebyshev's step, of third order) is taken in this
 //!    arithmetic: by Taylor's theorem to third order with the remainders bounded
 //!    through `M_4`, balls `A`, `D` and `C` contain `P_n(x1)`, `P_n'(x1)` and
-//!    `P_n''(x1)` (`certify_node`). Take `eps >= |A|`, `d <= |D|`, `r >= 4 eps/d`, and
+//!    `P_n''(x1)` (`certify_node`; where double-double leaves the iterate accurate
+//!    enough, [`second_order_suffices`], Newton's step and Taylor's theorem to second
+//!    order through `M_3`, with fewer ball operations). Take `eps >= |A|`, `d <= |D|`, `r >= 4 eps/d`, and
 //!    `M = |C| + M_3 r >= |P_n''|` on `[x1 - r, x1 + r]`. Taylor's theorem gives `P_n(x1
 //!    +- r) = P_n(x1) +- P_n'(x1) r + R`, `|R| <= M r^2/2`. When `M r^2 <= 4 eps`
 //!    (checked with upper bounds), `|P_n(x1) + R| <= eps + 2 eps < 4 eps <= |P_n'(x1)|
@@ -714,7 +716,8 @@ fn newton_bits(n: usize, prec: u32) -> u32 {
 /// suffices for Newton's iterate as double-double leaves it (about 90 bits): the weight
 /// asks that `M_3 delta^2/|P_n'| ~ 2^(5.5 L - 6) delta^2` stay below `2^-(prec + 6)`.
 /// Then the third-order step, which needs fewer bits of the iterate but more ball
-/// operations, would save no MPFR step (at 64 bits, up to degree 64 or so).
+/// operations, would save no MPFR step: up to `164 - 6 L` bits (`L = log2 n` rounded
+/// up), so 128 bits to degree 63, 110 to degree 511: the rules of 64-bit integrals.
 fn second_order_suffices(n: usize, prec: u32) -> bool {
     let l = usize::BITS - n.leading_zeros();
     (prec + 6 * l + 17) / 2 <= 90
