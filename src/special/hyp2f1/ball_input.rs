@@ -10,6 +10,8 @@
 //!
 //! # Input-radius propagation (proven)
 //!
+//! First, one tiny positive parameter with `z < 0` (`small_parameter.rs`: the
+//! enclosure `[1 - w, 1]` from Euler's integral, where `w` meets the precision).
 //! Exact inputs go straight to [`hyp2f1_mp`](super::hyp2f1_mp). Otherwise:
 //!
 //! * **`-3/4 < z < 1`, `c > 0` on its ball** (majorant bound). With
@@ -53,6 +55,7 @@ use rug::float::Round;
 use rug::Float;
 
 use super::choose::{evaluate, plan, plan_regions, Algorithm};
+use super::small_parameter::hyp2f1_small_parameter;
 use super::large_param::{hyp2f1_large_param, large_param_cheaper, large_param_loss, large_param_terms};
 use super::{hyp2f1_mp, validate};
 use crate::ball::{Ball, Mag, Scaled};
@@ -109,6 +112,9 @@ pub fn hyp2f1_ball_mp(a: &Ball, b: &Ball, c: &Ball, z: &Ball, prec: u32) -> Resu
         if !x.is_finite() {
             return Err(Error::NonFinite { what });
         }
+    }
+    if let Some(r) = hyp2f1_small_parameter(a, b, c, z, prec) {
+        return Ok(r);
     }
     if [a, b, c, z].iter().all(|x| x.is_exact()) {
         return hyp2f1_mp(a.mid(), b.mid(), c.mid(), z.mid(), prec);
