@@ -1,6 +1,6 @@
-//! `2F1(a, b; c; z)` next to 1 for `z < 0`, one parameter tiny or `c` huge: the
-//! enclosure `[1 - w, 1]` (`[1, 1 + w]` for a tiny negative parameter) from
-//! Euler's integral, at any size of the other parameter.
+//! `2F1(a, b; c; z)` next to 1, one parameter tiny or `c` huge: the enclosure
+//! `[1 - w, 1]` for `z < 0` (`[1, 1 + w]` for a tiny negative parameter, and for
+//! `0 <= z <= 1`) from Euler's integral, at any size of the other parameter.
 //!
 //! # Why
 //!
@@ -59,6 +59,13 @@
 //! `int_0^1 t^(-beta-1) min(1, A Z t) dt = e^(beta L) / (1 - beta) + (e^(beta L) - 1) / beta`,
 //! `1/Gamma(1 - beta) <= 1` and `Gamma(c)/Gamma(c + beta) <= e^(-beta psi(1)) <= e^beta`
 //! (`c >= 1`): `F in [1, 1 + w]`, `w = beta e^(beta (1 + L)) (1/(1 - beta) + L)`.
+//!
+//! For `0 <= z <= 1`, `a >= 0`, `b > 0`, `c > a + b + 1`: `1 <= (1-zt)^(-a) <=
+//! (1-t)^(-a)`, so `1 <= F <= F(a, b; c; 1)`, and since `g(t) = (1-t)^(-a)` has
+//! an increasing derivative, `g(t) - 1 <= t g'(t) = a t (1-t)^(-a-1)`:
+//! `F(1) - 1 <= a N B(b+1, c-a-b-1) = (a b / (c-a-b-1)) F(1)` [DLMF 15.4.20 for the
+//! ratio], so `F in [1, 1/(1-q)]`, `q = A B / (c_lo - A - B - 1) < 1`,
+//! `w = q / (1 - q)` (`2F1(7.3e14049, 2.5e-175; 2.7e14537; 1)`).
 //!
 //! The smallest `w` that applies is taken; `a` and `b` are exchanged when `a` is
 //! the small one (`2F1` is symmetric in them). Every quantity is rounded upward
@@ -152,6 +159,29 @@ fn width_negative(large: &Ball, small: &Ball, c: &Ball, z: &Ball) -> Option<Floa
     w.is_finite().then_some(w)
 }
 
+/// The width `w = q / (1 - q)`, `q = A B / (c_lo - A - B - 1)`, of the module
+/// docs' `[1, 1 + w]` for `0 <= z <= 1` (`a >= 0`, `b > 0`, `c > a + b + 1` over
+/// the balls, `q < 1`), or `None`.
+fn width_unit(a: &Ball, b: &Ball, c: &Ball, z: &Ball) -> Option<Float> {
+    if !(a.lower() >= 0 && b.lower() > 0 && z.lower() >= 0 && z.upper() <= 1) {
+        return None;
+    }
+    let (a_up, b_up) = (up(a.upper()), up(b.upper()));
+    let sum = Float::with_val_round(BOUND_PREC, &a_up + &b_up, Round::Up).0;
+    let sum = Float::with_val_round(BOUND_PREC, &sum + 1u32, Round::Up).0;
+    let room = Float::with_val_round(BOUND_PREC, c.lower() - &sum, Round::Down).0;
+    if !(room > 0) {
+        return None;
+    }
+    let q = Float::with_val_round(BOUND_PREC, &mul_up(&a_up, &b_up) / &room, Round::Up).0;
+    let one_minus = Float::with_val_round(BOUND_PREC, 1u32 - &q, Round::Down).0;
+    if !(one_minus > 0) {
+        return None;
+    }
+    let w = Float::with_val_round(BOUND_PREC, &q / &one_minus, Round::Up).0;
+    w.is_finite().then_some(w)
+}
+
 /// The enclosure `[1 - w, 1]` (or `[1, 1 + w]` for a tiny negative parameter) of
 /// the module docs at `prec + 64` bits, when its conditions hold over the balls
 /// and `w <= 2^-(prec+1)`; `None` otherwise.
@@ -164,7 +194,9 @@ pub(crate) fn hyp2f1_small_parameter(a: &Ball, b: &Ball, c: &Ball, z: &Ball, pre
         let lo = Float::with_val_round(prec + 64, 1 - &w, Round::Down).0;
         return Some(Ball::hull(&lo, &one, prec + 64));
     }
-    let w = smallest([width_negative(a, b, c, z), width_negative(b, a, c, z)]).filter(|w| *w <= limit)?;
+    let w = smallest([width_negative(a, b, c, z), width_negative(b, a, c, z)])
+        .or_else(|| width_unit(a, b, c, z))
+        .filter(|w| *w <= limit)?;
     let hi = Float::with_val_round(prec + 64, 1 + &w, Round::Up).0;
     Some(Ball::hull(&one, &hi, prec + 64))
 }
@@ -198,6 +230,9 @@ mod tests {
             (100.0, tiny(300), tiny(200).to_f64(), -20.0, 53, false),
             // c huge, b moderate: the mean bound A Z B / c
             (100.0, Float::with_val(64, 2.5), 1e30, -20.0, 53, true),
+            // 0 <= z <= 1: [1, 1/(1 - q)], q = a b / (c - a - b - 1)
+            (3.0, tiny(40), 10.0, 0.75, 16, false),
+            (100.0, Float::with_val(64, 2.5), 1e30, 1.0, 53, true),
             // a tiny negative b: [1, 1 + w]
             (100.0, -tiny(40), 2.5, -20.0, 16, false),
             (1000.0, -tiny(200), 1.0, -3.0, 128, false),
@@ -210,7 +245,7 @@ mod tests {
             // symmetric in a and b
             let s = hyp2f1_small_parameter(&bb, &ab, &cb, &zb, prec).unwrap();
             assert_eq!((s.mid(), s.rad()), (r.mid(), r.rad()));
-            let gap = if b < 0 { Float::with_val(64, other.lower() - 1u32) } else { Float::with_val(64, 1 - other.upper()) };
+            let gap = if b < 0 || z >= 0.0 { Float::with_val(64, other.lower() - 1u32) } else { Float::with_val(64, 1 - other.upper()) };
             let ulp_bound = r.rad() <= (Float::with_val(64, 1) >> (prec + 62));
             assert!(!tight || gap * 3u32 >= Float::with_val(64, r.rad() * 2u32) || ulp_bound, "2F1({a}, {b}; {c}; {z}): the bound {r:?} is loose against {other:?}");
         }
