@@ -420,18 +420,23 @@ fn wave_series_mp(
         SeriesKind::Displacement => Float::with_val(MAG_PREC, amp.abs_ref()),
         SeriesKind::Gradient => gradient_scale(amp, zeta),
     };
-    // Cost: Eq. 11b's 2F1 factors near `y = 1` need Gamma values at the planned
-    // working precision (the cancellation guard is ~1.44 D bits: 31 000 bits at
-    // D = 21 700, where MPFR's first Gamma takes about 40 s), against the call's
-    // time budget. Eq. 12 needs none (its Meijer constants come from closed forms
-    // and recurrences, `MeijerConstants::new`); its terms check the budget.
+    // Cost, against the call's time budget, at the planned working precision
+    // (the cancellation guard is ~1.44 D bits: 31 000 bits at D = 21 700):
+    // * the terms: the loop ends at `kmax` or at its early stop, which needs the
+    //   tail ratio below 1/2, `(2k+4)(2k+5) > 2 D^2` (Eq. 12; `(k+2)^2 > 2s` for
+    //   Eq. 11b): at least `min(kmax + 1, 0.7 D - 3)` terms of a few ball products
+    //   at that precision each (pFq's time per term). Without it, `D = 4.4e6`
+    //   (`a/zeta = 7e5`) started a round at 6.4e6 bits (0.2-0.3 s before a check);
+    // * Eq. 11b's 2F1 factors near `y = 1` need Gamma values at that precision
+    //   (MPFR's first Gamma at 31 000 bits takes about 40 s). Eq. 12 needs none
+    //   (its Meijer constants come from closed forms and recurrences).
+    let first_wp = prec.saturating_add(guard);
+    let min_terms = ((kmax as f64) + 1.0).min((0.7 * d - 3.0).max(1.0));
+    let mut seconds = min_terms * crate::special::pfq::seconds_per_term(first_wp);
     if kind == SeriesKind::Gradient {
-        crate::budget::check_estimate(
-            "the wave series (Gamma values at the working precision its cancellation needs)",
-            crate::special::gamma::gamma_seconds(prec.saturating_add(guard)),
-            f64::INFINITY,
-        )?;
+        seconds = seconds.max(crate::special::gamma::gamma_seconds(first_wp));
     }
+    crate::budget::check_estimate("the wave series (its terms, or Gamma values, at the working precision its cancellation needs)", seconds, f64::INFINITY)?;
     let partial = ziv_with_floor(name, prec, guard, Some(&floor), |wp| {
         let g = wave_geometry(a, zeta, amp, x, wp)?;
         wave_series_wp(kind, &g, kmax, wp)
