@@ -26,7 +26,7 @@
 //! by 1 over all later `n` can keep `rho_N >= 1` for thousands of terms where
 //! the factor itself is tiny (`1F2(-1e-24686; 20.12, 1e31099; 16777217)`: the
 //! factor `(a+n)/(b2+n)` is about `10^-31099`). It increases with `n`, so over
-//! `N <= n < M` ([`TAIL_ZONE_END`], `2^32`) it is at most its value at `M`; with
+//! `N <= n < M` (`TAIL_ZONE_END`, `2^32`) it is at most its value at `M`; with
 //! `rho_1` the ratio bound over that zone and `rho_2 = rho_M`, when both are
 //! below 1: `sum_{n>=N} |t_n| <= |t_N| (1/(1 - rho_1) + rho_1^(M-N)/(1 - rho_2))`.
 //! `rho_1` is non-increasing in `N` and `rho_1 <= rho_N`, so whether a bound

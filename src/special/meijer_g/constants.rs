@@ -47,7 +47,7 @@ pub struct MeijerConstants {
 impl MeijerConstants {
     /// The constants for `k` at working precision `wp`.
     ///
-    /// Up to [`RECURRENCE_K_MAX`] from their closed forms at `k = 0`
+    /// Up to `RECURRENCE_K_MAX` (1024) from their closed forms at `k = 0`
     /// (`C_0 = 2 sqrt(pi)`, `psi(2) - psi(1/2) = 1 + 2 ln 2` [DLMF 5.4.13, 5.4.14],
     /// `B_0(1) = 1`) and [`MeijerConstants::next`]: no Gamma or digamma at all.
     /// MPFR's gamma and digamma at the working precision of the wave series'
