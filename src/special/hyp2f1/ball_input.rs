@@ -578,6 +578,23 @@ mod tests {
         }
     }
 
+    /// `c - a` an exact non-positive integer below `z = -2`: the connection
+    /// formula's first term vanishes (`1/Gamma(c - a) = 0`); issue 37's scan refused
+    /// `2F1(2, 29.65; 1; -5.4e7163)` PrecisionExhausted. Against Euler's closed form
+    /// `(1-z)^(-1-b) (1 + (b-1) z)` [DLMF 15.8.1] from the decimals as typed.
+    #[test]
+    fn c_minus_a_a_pole_drops_its_term() {
+        let (b, z) = ("29.650647073042535", "-53.75e7162");
+        let (bq, zq) = (Float::with_val(4000, dec(b).as_rational()), Float::with_val(4000, dec(z).as_rational()));
+        let omz = Float::with_val(4000, 1 - &zq);
+        let pow = Float::with_val(4000, Float::with_val(4000, -(Float::with_val(4000, &bq + 1u32)) * omz.ln()).exp());
+        let want = Float::with_val(4000, &pow * Float::with_val(4000, 1 + Float::with_val(4000, &bq - 1u32) * &zq));
+        for prec in [8, 53, 109] {
+            let r = at_decimals("2", b, "1", z, prec).unwrap_or_else(|e| panic!("{prec}: {e:?}"));
+            assert!(r.contains(&want) && r.meets_rel(prec), "{prec}: {r:?} against {want:.30}");
+        }
+    }
+
     /// A terminating `b = -d` with a huge `a` in the Pfaff region (issue 37's
     /// scan refused these as `Overflow`): the value is the polynomial
     /// `sum_k (a)_k (-d)_k / ((c)_k k!) z^k`, summed here in exact rationals
