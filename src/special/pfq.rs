@@ -21,6 +21,17 @@
 //! `|t_{n+1}/t_n| <= rho_N := |z|^+ * prod_pairs max(1, ...) * prod_unpaired 1/(d^- + N)`
 //! for all `n >= N`, and if `rho_N < 1`,
 //! `sum_{n>=N} |t_n| <= |t_N| / (1 - rho_N)`.
+//!
+//! **Two zones.** A paired factor with `a^+ <= d^-` is at most 1, and bounding it
+//! by 1 over all later `n` can keep `rho_N >= 1` for thousands of terms where
+//! the factor itself is tiny (`1F2(-1e-24686; 20.12, 1e31099; 16777217)`: the
+//! factor `(a+n)/(b2+n)` is about `10^-31099`). It increases with `n`, so over
+//! `N <= n < M` (`TAIL_ZONE_END`, `2^32`) it is at most its value at `M`; with
+//! `rho_1` the ratio bound over that zone and `rho_2 = rho_M`, when both are
+//! below 1: `sum_{n>=N} |t_n| <= |t_N| (1/(1 - rho_1) + rho_1^(M-N)/(1 - rho_2))`.
+//! `rho_1` is non-increasing in `N` and `rho_1 <= rho_N`, so whether a bound
+//! exists is monotone in `N` (the cost model below relies on it).
+//!
 //! All of `rho_N` is computed with upward (numerators) and downward
 //! (denominators) rounding. This is the bound of Arb's `hypgeom` module in its
 //! simplest form (cf. F. Johansson, "Computing hypergeometric functions
@@ -133,6 +144,16 @@ fn first_positive_index(params: &[Ball]) -> Result<u64> {
 /// Any pairing of numerators with denominators gives a valid bound; pairing the
 /// largest numerator with the largest denominator (both sorted) gives a tight one.
 fn ratio_bound(a: &[Ball], b: &[Ball], z: &Ball, n: u64) -> Float {
+    ratio_bound_to(a, b, z, n, None)
+}
+
+/// End `M` of the first zone of the two-zone tail bound (module docs).
+const TAIL_ZONE_END: u64 = 1 << 32;
+
+/// [`ratio_bound`] over `N <= n < m` when `m` is given: a paired factor
+/// `(a + n)/(d + n)` that is at most 1 at `N` (`a^+ <= d^-`) increases with `n`,
+/// so over the zone it is below its value at `m` (instead of 1).
+fn ratio_bound_to(a: &[Ball], b: &[Ball], z: &Ball, n: u64, zone_end: Option<u64>) -> Float {
     let nn = Float::with_val(64, n);
     let mut rho = z.abs_upper();
     let one = Float::with_val(MAG_PREC, 1);
@@ -159,7 +180,16 @@ fn ratio_bound(a: &[Ball], b: &[Ball], z: &Ball, n: u64) -> Float {
                 num.assign_round(ai + &nn, Round::Up);
                 f.assign_round(&num / &den, Round::Up);
                 if f <= one {
-                    continue;
+                    let Some(m) = zone_end else { continue };
+                    let mm = Float::with_val(64, m);
+                    let mut num_m = Float::new(MAG_PREC);
+                    num_m.assign_round(ai + &mm, Round::Up);
+                    let mut den_m = Float::new(MAG_PREC);
+                    den_m.assign_round(d + &mm, Round::Down);
+                    f.assign_round(&num_m / &den_m, Round::Up);
+                    if f >= one {
+                        continue;
+                    }
                 }
             }
             None => {
@@ -171,6 +201,32 @@ fn ratio_bound(a: &[Ball], b: &[Ball], z: &Ball, n: u64) -> Float {
         rho = r;
     }
     rho
+}
+
+/// `K` with `sum_{n >= N} |t_n| <= K |t_N|` (rounded upward), or `None` where no
+/// bound holds yet: `1 / (1 - rho_N)` when [`ratio_bound`] is below 1, else the
+/// two-zone bound of the module docs.
+fn tail_multiplier(a: &[Ball], b: &[Ball], z: &Ball, n: u64) -> Option<Float> {
+    let one = Float::with_val(MAG_PREC, 1);
+    let geometric = |rho: &Float| -> Option<Float> {
+        let d = Float::with_val_round(MAG_PREC, &one - rho, Round::Down).0;
+        (d > 0).then(|| Float::with_val_round(MAG_PREC, &one / &d, Round::Up).0)
+    };
+    let rho = ratio_bound(a, b, z, n);
+    if rho < 1 {
+        return geometric(&rho);
+    }
+    if n >= TAIL_ZONE_END {
+        return None;
+    }
+    let rho1 = ratio_bound_to(a, b, z, n, Some(TAIL_ZONE_END));
+    let first = geometric(&rho1)?;
+    let second = geometric(&ratio_bound(a, b, z, TAIL_ZONE_END))?;
+    let steps = Float::with_val(64, TAIL_ZONE_END - n);
+    let decay = Float::with_val_round(MAG_PREC, rug::ops::Pow::pow(&rho1, &steps), Round::Up).0;
+    let rest = Float::with_val_round(MAG_PREC, &decay * &second, Round::Up).0;
+    let k = Float::with_val_round(MAG_PREC, &first + &rest, Round::Up).0;
+    k.is_finite().then_some(k)
 }
 
 /// Sums `pFq(a; b; z)` in ball arithmetic at working precision `wp`, tail included.
@@ -231,10 +287,8 @@ pub(crate) fn pfq_series(a: &[Ball], b: &[Ball], z: &Ball, wp: u32) -> Result<Se
             // target = 2^-wp max(|s|, 2^-wp sum|t|)
             let target = s.abs_lower_mag().max(abs_sum.mul_2exp(-(wp as i64))).mul_2exp(-(wp as i64));
             if t_up.le(&target) {
-                let rho = ratio_bound(a, b, z, n);
-                if rho < 1 {
-                    let one_minus = Mag::from_float_down(&Float::with_val_round(MAG_PREC, 1 - &rho, Round::Down).0);
-                    s.add_error_mag(t_up.div(one_minus));
+                if let Some(k) = tail_multiplier(a, b, z, n) {
+                    s.add_error_mag(t_up.mul(Mag::from_float_up(&k)));
                     return Ok(finish(s, abs_sum, n));
                 }
             }
@@ -247,9 +301,8 @@ pub(crate) fn pfq_series(a: &[Ball], b: &[Ball], z: &Ball, wp: u32) -> Result<Se
         if n % crate::budget::TERMS_BETWEEN_CHECKS == 0 {
             // the installed time budget (crate::budget): the cost model counts terms
             // at the working precision, but a parameter held exactly at 10^5 bits
-            // (1e31099 typed) makes every term cost that precision, and the tail bound
-            // (ratio_bound: each factor (a+n)/(b+n) <= 1 bounded by 1 over all later
-            // n) can keep the series going for thousands of terms
+            // (1e31099 typed) makes every term cost that precision, and a slowly
+            // decaying series runs long before its tail bound holds
             crate::budget::check_elapsed("the pFq series, term by term", 0.0, crate::error::Reached::Terms { count: n })?;
         }
     }
@@ -474,9 +527,8 @@ fn pfq_series_exact(a: &[Float], b: &[Float], z: &Float, wp: u32) -> Result<Opti
             let s_abs = up(&s);
             let target = u * s_abs.max(u * abs_sum);
             if t_up <= target {
-                let rho = ratio_bound(&a_balls, &b_balls, &z_ball, n).to_f64_round(Round::Up);
-                if rho < 1.0 {
-                    let tail = t_up * (1.0 + 2.01 * n as f64 * u) / ((1.0 - rho) * (1.0 - 1e-15));
+                if let Some(k) = tail_multiplier(&a_balls, &b_balls, &z_ball, n) {
+                    let tail = t_up * (1.0 + 2.01 * n as f64 * u) * k.to_f64_round(Round::Up) / (1.0 - 1e-15);
                     let err = (2.01 * u * weighted + u * sums + tail) * inflate + subnormal_slack(n);
                     return Ok(finite_ball(s, err));
                 }
@@ -519,11 +571,12 @@ pub const MAX_SERIES_SECONDS: f64 = 1.0;
 /// **Why this is a lower bound on the work.** Unless the series terminates (a
 /// numerator an exact non-positive integer), both summation loops
 /// ([`pfq_series`], `pfq_series_exact`) stop only at some `n >= n_pos`
-/// (every shifted parameter positive) where `rho_n < 1` ([`ratio_bound`]). For
+/// (every shifted parameter positive) where a tail bound exists
+/// ([`tail_multiplier`]: `rho_n < 1`, or the two zones of the module docs). For
 /// `n >= n_pos` the sorted pairing does not depend on `n`, each paired factor
 /// `max(1, (a + n)/(d + n))` and each unpaired `1/(d + n)` is non-increasing in
-/// `n`, so `rho_n >= 1` at some `B >= n_pos` means no stop before `B`: at least
-/// `B` terms (up to the upward rounding of `rho`, which only matters when
+/// `n`, and so is the first zone's `rho_1`: no bound at some `B >= n_pos` means
+/// no stop before `B`: at least `B` terms (up to the upward rounding of `rho`, which only matters when
 /// `rho_B` is within a few ulps of 1). The time per term is an estimate
 /// ([`seconds_per_term`]), so the refusal is a cost decision, never a claim
 /// about the value. The reported time comes from a doubling search for the
@@ -537,12 +590,12 @@ fn check_series_cost(a: &[Ball], b: &[Ball], z: &Ball, wp: u32) -> Result<()> {
     let limit = crate::budget::limit_seconds(MAX_SERIES_SECONDS);
     let budget = (limit / per_term) as u64;
     let n_pos = first_positive_index(a)?.max(first_positive_index(b)?);
-    if n_pos <= budget && ratio_bound(a, b, z, budget) < 1 {
+    if n_pos <= budget && tail_multiplier(a, b, z, budget).is_some() {
         return Ok(());
     }
     // At least `budget` terms: estimate how many (capped at 2^62).
     let mut n = budget.max(n_pos).max(1);
-    while n < 1 << 62 && !(ratio_bound(a, b, z, n) < 1) {
+    while n < 1 << 62 && tail_multiplier(a, b, z, n).is_none() {
         n *= 2;
     }
     Err(Error::TooExpensive {
@@ -689,6 +742,36 @@ mod tests {
         let e = Float::with_val(400, 1).exp();
         assert!(b.contains(&e));
         assert!(b.meets_rel(200));
+    }
+
+    /// The two-zone tail bound: `1F1(1; 10^20; 10^4) = sum_n 10^(4n) / (10^20)_n`
+    /// has `rho_N = 10^4/(N+1)` with the paired factor bounded by 1 (about 10^4
+    /// terms), while the factor itself is `10^-20`: a few terms, and the ball holds
+    /// the sum (terms summed exactly in rationals, tail below `10^-16k`); a huge
+    /// lower parameter of 10^31099 (issue 37's scan) likewise.
+    #[test]
+    fn a_tiny_paired_factor_ends_the_series_early() {
+        use rug::ops::Pow;
+        use rug::Rational;
+        let (z, b) = (Rational::from(10000), Rational::from(rug::Integer::from(10u32).pow(20u32)));
+        let (mut term, mut sum) = (Rational::from(1), Rational::from(1));
+        for n in 0..30u32 {
+            term = term * &z / (Rational::from(&b + n));
+            sum += &term;
+        }
+        let want = Float::with_val(1200, &sum);
+        for wp in [64, 300, 1000] {
+            let r = pfq_series(&[Ball::one(wp)], &[Ball::from_float(&Float::with_val(wp, &b), wp)], &Ball::from_i64(10000, wp), wp).unwrap();
+            assert!(r.sum.contains(&want), "{wp}: {:?}", r.sum);
+            assert!(r.sum.meets_rel(wp - 8), "{wp}: {:?}", r.sum);
+            assert!(r.terms <= 2 * u64::from(wp) / 50 + 4, "{wp}: {} terms", r.terms);
+            // the multiplier is a bound of the tail only where it exists; plain rho is not below 1
+            assert!(ratio_bound(&[Ball::one(wp)], &[Ball::from_float(&Float::with_val(wp, &b), wp)], &Ball::from_i64(10000, wp), r.terms) >= 1);
+        }
+        let big = Ball::from_float(&Float::with_val(128, Float::parse("1e31099").unwrap()), 128);
+        let a = Ball::from_float(&Float::with_val(128, Float::parse("-1.0375e-24686").unwrap()), 128);
+        let r = pfq_series(&[a], &[Ball::from_f64(20.12, 128).unwrap(), big], &Ball::from_i64(16777217, 128), 128).unwrap();
+        assert!(r.terms <= 8 && r.sum.contains(&Float::with_val(64, 1)), "{} terms: {:?}", r.terms, r.sum);
     }
 
     #[test]

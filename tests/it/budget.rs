@@ -133,3 +133,29 @@ fn the_certified_quadrature_checks_the_budget_between_its_rounds() {
     assert!(free.goal_met && roomy.goal_met);
     assert_eq!(free.real().mid(), roomy.real().mid());
 }
+
+/// The wave series (Eq. 12) estimates its terms at the working precision its
+/// cancellation needs (`1.44 D` guard bits, `D = 2 pi a / zeta`) before its first
+/// round: issue 37's scan ran `u_wave_series(100001, 23.6, 0.5, 1.36e18, 916)`
+/// (`D = 26 600`, 917 terms at 38 000 bits) and two more for 0.15-0.46 s under a
+/// 100 ms budget once its Meijer constants no longer needed MPFR's Gamma (whose
+/// estimate had refused them). Refused now by that estimate, at once; an ordinary
+/// input still answers under the same budget.
+#[test]
+fn the_wave_series_is_refused_by_its_term_estimate() {
+    let f = registry::function("u_wave_series").unwrap();
+    let args = [dec("100001"), dec("23.60000516339597"), dec("0.5"), dec("1359272381516038712"), Arg::Int(916)];
+    let r = f.eval_mp_with_budget(&args, 7, Budget::from_millis(100).unwrap());
+    match r {
+        Err(Error::TooExpensive { function, seconds, .. }) => assert!(function.contains("wave series") && seconds > 0.1, "{function}: {seconds}"),
+        other => panic!("expected TooExpensive, got {other:?}"),
+    }
+    let ordinary = [dec("1"), dec("0.7"), dec("0.1"), dec("1.5"), Arg::Int(40)];
+    for prec in [8, 64, 128] {
+        let r = f.eval_mp_with_budget(&ordinary, prec, Budget::from_millis(100).unwrap());
+        match r {
+            Ok(Answer::SeriesBall { value, trunc }) => assert!(value.meets_rel(prec) && trunc.is_finite(), "{prec}: {value:?}"),
+            other => panic!("{prec}: {other:?}"),
+        }
+    }
+}

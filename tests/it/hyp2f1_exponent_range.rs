@@ -4,7 +4,11 @@
 //! `Overflow` (about 215 of issue 37's scan's 20 000 `hyp2f1` inputs a seed); they
 //! are formed in logarithms now (`maugis::ball::Scaled`) and answer certified.
 //! Only a value that is itself outside the range is refused, as
-//! `Error::ValueOutOfRange`.
+//! `Error::ValueOutOfRange`. One tiny positive parameter with `z < 0` at a huge
+//! other one (`2F1(7.4e17, 2.4e-200; 23.4; -177.9)`, `a = 2.2e14124`: refused
+//! `Overflow` before) answers by the enclosure `[1 - w, 1]` of
+//! `src/special/hyp2f1/small_parameter.rs`; the row `2F1(1e18, 2e-41; 2.5; -20)`
+//! has `1 - F = 8.7e-40` against `w = 1.03e-39` at 128 bits.
 //!
 //! References: `reference/data/hyp2f1_exponent_range.csv`
 //! (`reference/hyp2f1_exponent_range.py`: mpmath at 600 and 900 bits).

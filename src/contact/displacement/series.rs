@@ -64,13 +64,11 @@ enum SeriesKind {
     Gradient,
 }
 
-/// Upper bound of `|T_k|` for `k >= k0` as a geometric tail: returns
-/// `(bound on sum_{k>=k0} |T_k|)` if the bound ratio from `k0` on is `< 1/2`, else `None`.
-fn series_tail(kind: SeriesKind, g: &WaveGeometry, k0: u64) -> Result<Option<Float>> {
-    let p = MAG_PREC + 32;
-    let s = Ball::from_float(&g.s.upper(), p);
+/// The bound on `beta_{k+1}/beta_k` for every `k >= k0` (module docs), when it is
+/// below 1/2 (the tail from `k0` on is then geometric), else `None`.
+fn tail_ratio(kind: SeriesKind, g: &WaveGeometry, k0: u64) -> Option<f64> {
     let k0f = k0 as f64;
-    let s_up = s.upper().to_f64();
+    let s_up = g.s.upper().to_f64();
     let ratio = match kind {
         // D^2/((2k+2)(2k+3)) (1 + 1/(2.39 (k+2))) for k >= k0 (ratio beta_{k+1}/beta_k)
         SeriesKind::Displacement => {
@@ -79,35 +77,81 @@ fn series_tail(kind: SeriesKind, g: &WaveGeometry, k0: u64) -> Result<Option<Flo
         // s/((k+1)(k+2)) (2k+1)/(2k+3) (k+2)/(k+1) <= s/(k+1)^2
         SeriesKind::Gradient => s_up / ((k0f + 1.0) * (k0f + 1.0)),
     } * (1.0 + 1e-12);
-    if !(ratio < 0.5) {
-        return Ok(None);
-    }
-    let first = single_term_bound(kind, g, k0)?;
-    let mut tail = Float::with_val(MAG_PREC, &first / (1.0 - ratio));
+    (ratio < 0.5).then_some(ratio)
+}
+
+/// `sum_{k>=k0} |T_k|` bounded by the geometric tail `beta_{k0} / (1 - ratio)`,
+/// `ratio` from [`tail_ratio`].
+fn geometric_tail(first: &Float, ratio: f64) -> Float {
+    let mut tail = Float::with_val(MAG_PREC, first / (1.0 - ratio));
     tail.next_up();
-    Ok(Some(tail))
+    tail
+}
+
+/// Upper bound of `|T_k|` for `k >= k0` as a geometric tail: returns
+/// `(bound on sum_{k>=k0} |T_k|)` if the bound ratio from `k0` on is `< 1/2`, else `None`.
+fn series_tail(kind: SeriesKind, g: &WaveGeometry, k0: u64) -> Result<Option<Float>> {
+    let Some(ratio) = tail_ratio(kind, g, k0) else { return Ok(None) };
+    let first = single_term_bound(kind, g, k0)?;
+    Ok(Some(geometric_tail(&first, ratio)))
 }
 
 /// Rigorous bound on `sum_{k > kmax} |T_k|`.
+///
+/// Sums the single-term bounds until the geometric tail applies, at
+/// `k ~ sqrt(2 s)`; their `k`-dependent coefficient by its recurrence
+/// ([`next_term_coeff`]), one factorial at `kmax + 1` only. (With a factorial per
+/// `k`, at `s ~ 10^6` the 1500 bounds cost 0.1 s of MPFR's `fac_ui` after the
+/// series itself, with no budget check: `u_wave_series(10000, 29.38, 23.4,
+/// 2.9e15998, 1)` took 0.15 s of a 0.1 s budget, issue 37's scan.) The call's
+/// budget is checked every [`crate::budget::TERMS_BETWEEN_CHECKS`] bounds.
 fn truncation_bound(kind: SeriesKind, g: &WaveGeometry, kmax: u64) -> Result<Float> {
-    // Sum single-term bounds until the geometric tail applies.
+    let p = MAG_PREC + 32;
+    let s = Ball::from_float(&g.s.upper(), p);
     let mut total = Float::with_val(MAG_PREC, 0);
     let mut k = kmax + 1;
+    let mut coeff = term_coeff(kind, &s, k, p)?;
     loop {
-        if let Some(t) = series_tail(kind, g, k)? {
-            let mut sum = Float::with_val(MAG_PREC, &total + &t);
+        let single = single_term_bound_with(kind, g, k, &coeff)?;
+        if let Some(ratio) = tail_ratio(kind, g, k) {
+            let mut sum = Float::with_val(MAG_PREC, &total + &geometric_tail(&single, ratio));
             sum.next_up();
             return Ok(sum);
         }
-        // Not yet geometric: bound the single term T_k.
-        let single = single_term_bound(kind, g, k)?;
+        // Not yet geometric: add the bound of the single term T_k.
         let mut sum = Float::with_val(MAG_PREC, &total + &single);
         sum.next_up();
         total = sum;
+        coeff = next_term_coeff(kind, &s, &coeff, k)?;
         k += 1;
+        if (k - kmax) % crate::budget::TERMS_BETWEEN_CHECKS == 0 {
+            crate::budget::check_elapsed("the wave series' truncation bound", 0.0, Reached::Terms { count: k - kmax })?;
+        }
         if k > kmax + 10_000_000 {
             return Err(Error::NoConvergence { function: "wave series truncation bound", terms: k });
         }
+    }
+}
+
+/// The `k`-dependent coefficient of the single-term bound `beta_k`:
+/// `(4s)^k/(2k+1)!` (Eq. 12) or `s^k/(k! (k+1)! (2k+1))` (Eq. 11b), `s` a ball at `p` bits.
+fn term_coeff(kind: SeriesKind, s: &Ball, k: u64, p: u32) -> Result<Ball> {
+    let kk = u32::try_from(k).map_err(|_| kmax_error(k))?;
+    match kind {
+        SeriesKind::Displacement => s.mul_pow2(2).pow_u64(k).div(&Ball::factorial(2 * kk + 1, p)),
+        SeriesKind::Gradient => {
+            s.pow_u64(k).div(&Ball::factorial(kk, p).mul(&Ball::factorial(kk + 1, p)).mul_i64(2 * k as i64 + 1))
+        }
+    }
+}
+
+/// [`term_coeff`] at `k + 1` from its value at `k` (exact ratios, ball arithmetic):
+/// `4s/((2k+2)(2k+3))`, or `s (2k+1)/((k+1)(k+2)(2k+3))`.
+fn next_term_coeff(kind: SeriesKind, s: &Ball, coeff: &Ball, k: u64) -> Result<Ball> {
+    let k = i64::try_from(k).map_err(|_| kmax_error(k))?;
+    match kind {
+        SeriesKind::Displacement => coeff.mul(&s.mul_pow2(2)).div_i64(2 * k + 2)?.div_i64(2 * k + 3),
+        SeriesKind::Gradient => coeff.mul(s).mul_i64(2 * k + 1).div_i64(k + 1)?.div_i64(k + 2)?.div_i64(2 * k + 3),
     }
 }
 
@@ -115,22 +159,24 @@ fn truncation_bound(kind: SeriesKind, g: &WaveGeometry, kmax: u64) -> Result<Flo
 fn single_term_bound(kind: SeriesKind, g: &WaveGeometry, k: u64) -> Result<Float> {
     let p = MAG_PREC + 32;
     let s = Ball::from_float(&g.s.upper(), p);
-    let kk = u32::try_from(k).map_err(|_| kmax_error(k))?;
+    single_term_bound_with(kind, g, k, &term_coeff(kind, &s, k, p)?)
+}
+
+/// [`single_term_bound`] with its coefficient [`term_coeff`] given.
+fn single_term_bound_with(kind: SeriesKind, g: &WaveGeometry, k: u64, coeff: &Ball) -> Result<Float> {
+    let p = MAG_PREC + 32;
+    let s = Ball::from_float(&g.s.upper(), p);
     let exp_factor = s.div(&Ball::from_i64(k as i64 + 1, p))?.exp()?;
     let amp = Ball::from_float(&g.amp.abs_upper(), p);
     let b = match kind {
         SeriesKind::Displacement => {
-            let coeff = s.mul_pow2(2).pow_u64(k).div(&Ball::factorial(2 * kk + 1, p))?;
             let ln_y = Ball::from_float(&g.y.lower(), p).ln()?.neg();
             let l = ln_y.add(&Ball::from_f64(PSI_DIFF_MAX, p)?).add(&Ball::from_i64(k as i64 + 2, p).ln()?);
-            amp.mul(&s).mul(&coeff).mul(&exp_factor).mul(&l)
+            amp.mul(&s).mul(coeff).mul(&exp_factor).mul(&l)
         }
         SeriesKind::Gradient => {
-            let coeff = s
-                .pow_u64(k)
-                .div(&Ball::factorial(kk, p).mul(&Ball::factorial(kk + 1, p)).mul_i64(2 * k as i64 + 1))?;
             let x_lo = Ball::from_float(&g.x.lower(), p);
-            amp.mul(&s).mul_pow2(1).div(&x_lo)?.mul(&coeff).mul(&exp_factor).mul_i64(2 * (k as i64 + 1))
+            amp.mul(&s).mul_pow2(1).div(&x_lo)?.mul(coeff).mul(&exp_factor).mul_i64(2 * (k as i64 + 1))
         }
     };
     Ok(b.abs_upper())
@@ -374,15 +420,23 @@ fn wave_series_mp(
         SeriesKind::Displacement => Float::with_val(MAG_PREC, amp.abs_ref()),
         SeriesKind::Gradient => gradient_scale(amp, zeta),
     };
-    // Cost: the Meijer constants need Gamma values at the planned working
-    // precision (the cancellation guard is ~1.44 D bits: 31 000 bits at D = 21 700,
-    // where MPFR's first Gamma takes about 40 s), against the call's time budget.
+    // Cost, against the call's time budget, at the planned working precision
+    // (the cancellation guard is ~1.44 D bits: 31 000 bits at D = 21 700):
+    // * the terms: the loop ends at `kmax` or at its early stop, which needs the
+    //   tail ratio below 1/2, `(2k+4)(2k+5) > 2 D^2` (Eq. 12; `(k+2)^2 > 2s` for
+    //   Eq. 11b): at least `min(kmax + 1, 0.7 D - 3)` terms of a few ball products
+    //   at that precision each (pFq's time per term). Without it, `D = 4.4e6`
+    //   (`a/zeta = 7e5`) started a round at 6.4e6 bits (0.2-0.3 s before a check);
+    // * Eq. 11b's 2F1 factors near `y = 1` need Gamma values at that precision
+    //   (MPFR's first Gamma at 31 000 bits takes about 40 s). Eq. 12 needs none
+    //   (its Meijer constants come from closed forms and recurrences).
     let first_wp = prec.saturating_add(guard);
-    crate::budget::check_estimate(
-        "the wave series (Gamma values at the working precision its cancellation needs)",
-        crate::special::gamma::gamma_seconds(first_wp),
-        f64::INFINITY,
-    )?;
+    let min_terms = ((kmax as f64) + 1.0).min((0.7 * d - 3.0).max(1.0));
+    let mut seconds = min_terms * crate::special::pfq::seconds_per_term(first_wp);
+    if kind == SeriesKind::Gradient {
+        seconds = seconds.max(crate::special::gamma::gamma_seconds(first_wp));
+    }
+    crate::budget::check_estimate("the wave series (its terms, or Gamma values, at the working precision its cancellation needs)", seconds, f64::INFINITY)?;
     let partial = ziv_with_floor(name, prec, guard, Some(&floor), |wp| {
         let g = wave_geometry(a, zeta, amp, x, wp)?;
         wave_series_wp(kind, &g, kmax, wp)
@@ -419,6 +473,40 @@ mod tests {
 
     fn e(v: f64) -> Float {
         exact(v)
+    }
+
+    /// The truncation bound with its coefficient by recurrence equals, within
+    /// the balls' rounding, the sum of the single-term bounds each from its
+    /// factorial (the way it was summed before), and stops at the call's budget.
+    #[test]
+    fn truncation_bound_by_recurrence_matches_the_factorials_and_checks_the_budget() {
+        for kind in [SeriesKind::Displacement, SeriesKind::Gradient] {
+            for (abar, r) in [(3.0, 1.2), (6.0, 2.0), (20.0, 1.5)] {
+                let g = wave_geometry(&e(abar), &e(1.125), &e(1.0), &e(abar * r), 128).unwrap();
+                for kmax in [0u64, 5, 40] {
+                    let fast = truncation_bound(kind, &g, kmax).unwrap();
+                    let mut direct = Float::with_val(MAG_PREC, 0);
+                    let mut k = kmax + 1;
+                    let tail = loop {
+                        if let Some(t) = series_tail(kind, &g, k).unwrap() {
+                            break t;
+                        }
+                        direct += single_term_bound(kind, &g, k).unwrap();
+                        k += 1;
+                    };
+                    direct += tail;
+                    let rel = (Float::with_val(64, &fast / &direct) - 1u32).abs().to_f64();
+                    assert!(rel < 1e-9, "{kind:?} abar = {abar}, x/a = {r}, kmax = {kmax}: {fast} against {direct}");
+                }
+            }
+        }
+        // issue 37's scan: u_wave_series(10000, 29.38, 23.4, 2.9e15998, 1) sums about
+        // 1500 single-term bounds (s ~ 10^6); under a microsecond it stops at a check
+        let x = Float::with_val(64, Float::parse("2.9100642042897952e15998").unwrap());
+        let g = wave_geometry(&e(10000.0), &e(29.379548012748188), &e(23.445022485831416), &x, 128).unwrap();
+        let r = crate::budget::Budget::from_secs_f64(1e-6).unwrap().run(|| truncation_bound(SeriesKind::Displacement, &g, 1));
+        assert!(matches!(r, Err(Error::BudgetSpent { reached: Reached::Terms { .. }, .. })), "{r:?}");
+        assert!(truncation_bound(SeriesKind::Displacement, &g, 1).unwrap().is_finite());
     }
 
     #[test]

@@ -10,6 +10,9 @@
 //!
 //! # Input-radius propagation (proven)
 //!
+//! First, one tiny parameter or a huge `c` (`small_parameter.rs`: the enclosure
+//! `[1 - w, 1]` or `[1, 1 + w]` from Euler's integral, where `w` meets the
+//! precision); `c` the same exact number as `b` (or `a`): `(1 - z)^(-a)` (or `^(-b)`).
 //! Exact inputs go straight to [`hyp2f1_mp`](super::hyp2f1_mp). Otherwise:
 //!
 //! * **`-3/4 < z < 1`, `c > 0` on its ball** (majorant bound). With
@@ -53,6 +56,7 @@ use rug::float::Round;
 use rug::Float;
 
 use super::choose::{evaluate, plan, plan_regions, Algorithm};
+use super::small_parameter::hyp2f1_small_parameter;
 use super::large_param::{hyp2f1_large_param, large_param_cheaper, large_param_loss, large_param_terms};
 use super::{hyp2f1_mp, validate};
 use crate::ball::{Ball, Mag, Scaled};
@@ -110,6 +114,9 @@ pub fn hyp2f1_ball_mp(a: &Ball, b: &Ball, c: &Ball, z: &Ball, prec: u32) -> Resu
             return Err(Error::NonFinite { what });
         }
     }
+    if let Some(r) = hyp2f1_small_parameter(a, b, c, z, prec) {
+        return Ok(r);
+    }
     if [a, b, c, z].iter().all(|x| x.is_exact()) {
         return hyp2f1_mp(a.mid(), b.mid(), c.mid(), z.mid(), prec);
     }
@@ -120,6 +127,19 @@ pub fn hyp2f1_ball_mp(a: &Ball, b: &Ball, c: &Ball, z: &Ball, prec: u32) -> Resu
         return Ok(Ball::one(prec));
     }
     let wp = prec + BALL_GUARD;
+    if let Some(e) = equal_to_c(a, b, c) {
+        if z.upper() < 1 {
+            // 2F1(a, b; b; z) = (1 - z)^(-a) [DLMF 15.4.6], `c` the same exact
+            // number as `b` (or `a`): `2F1(9.2e18, 23.5; 9.2e18; -243.875) =
+            // 244.875^(-23.5)` went through Pfaff's inner function past the range
+            // (issue 37's scan: `Overflow`); a power past the range is the value's
+            // (`1 - z` formed exactly: `Scaled::pow` takes `ln` of the base at the
+            // bits it needs, and `1 - 1e-1000` rounded to `wp` bits would be 1)
+            let bits = z.mid().get_exp().map_or(0, |x| -i64::from(x)).max(0) + i64::from(z.mid().prec()) + 4;
+            let omz = Ball::one(bits.min(1 << 20) as u32).sub(z);
+            return Scaled::pow(&omz, &e.neg(), wp)?.to_value(prec);
+        }
+    }
     if z.is_exact() && *z.mid() == 1 {
         return gauss_ball(a, b, c, terminating, wp);
     }
@@ -167,6 +187,22 @@ pub fn hyp2f1_ball_mp(a: &Ball, b: &Ball, c: &Ball, z: &Ball, prec: u32) -> Resu
         return pre.mul_ball(&inner).to_value(wp);
     }
     Err(too_wide("z", z, "within (-3/4, 1) or below -1/2"))
+}
+
+/// The other upper parameter when `c` and `b` (or `a`) are the same exact number.
+fn equal_to_c<'a>(a: &'a Ball, b: &'a Ball, c: &Ball) -> Option<&'a Ball> {
+    // (at a non-positive integer `c` the terminating convention applies instead:
+    // `2F1(a, -3; -3; z)` is the series cut after `n = 3`)
+    if !c.is_exact() || is_nonpositive_integer(c.mid()) {
+        return None;
+    }
+    if b.is_exact() && b.mid() == c.mid() {
+        Some(a)
+    } else if a.is_exact() && a.mid() == c.mid() {
+        Some(b)
+    } else {
+        None
+    }
 }
 
 /// One large parameter (`large_param.rs`), when the chooser's estimate at the
@@ -520,6 +556,43 @@ mod tests {
         let q3 = |s: &str| Float::with_val(300, dec(s).as_rational());
         let m = hyp2f1_mp(&q3("0.3"), &q3("-1.7"), &q3("2.9"), &q3("-3.1"), 200).unwrap();
         assert!(b.overlaps(&m) && b.meets_rel(128), "{b:?} vs {m:?}");
+    }
+
+    /// `c` the same exact number as `a` (or `b`): `(1 - z)^(-b)`, against the power
+    /// of the decimals as typed (issue 37's scan refused the first `Overflow`), and
+    /// a power past the exponent range refused as the value's.
+    #[test]
+    fn c_equal_to_a_is_the_power() {
+        let (b, z) = ("23.501833939562957", "-243.875");
+        for prec in [2, 8, 53, 128] {
+            let r = at_decimals("9223372036854775807", b, "9223372036854775807", z, prec).unwrap();
+            let bq = Float::with_val(600, dec(b).as_rational());
+            let want = rug::ops::Pow::pow(Float::with_val(600, 244.875f64), -bq);
+            assert!(r.contains(&want) && r.meets_rel(prec), "{prec}: {r:?} against {want:.30}");
+        }
+        // 2F1(2.425e1022, 2.5; 2.5; 1e-1000) = (1 - z)^(-a) = 2^(a z / ln 2 (1 + O(z)))
+        let want = 2.425e22 / std::f64::consts::LN_2;
+        for prec in [8, 53] {
+            let e = at_decimals("242.5e1020", "2.5", "2.5", "1e-1000", prec).unwrap_err();
+            assert!(matches!(e, Error::ValueOutOfRange { log2_magnitude } if (log2_magnitude / want - 1.0).abs() < 1e-9), "{e:?}");
+        }
+    }
+
+    /// `c - a` an exact non-positive integer below `z = -2`: the connection
+    /// formula's first term vanishes (`1/Gamma(c - a) = 0`); issue 37's scan refused
+    /// `2F1(2, 29.65; 1; -5.4e7163)` PrecisionExhausted. Against Euler's closed form
+    /// `(1-z)^(-1-b) (1 + (b-1) z)` [DLMF 15.8.1] from the decimals as typed.
+    #[test]
+    fn c_minus_a_a_pole_drops_its_term() {
+        let (b, z) = ("29.650647073042535", "-53.75e7162");
+        let (bq, zq) = (Float::with_val(4000, dec(b).as_rational()), Float::with_val(4000, dec(z).as_rational()));
+        let omz = Float::with_val(4000, 1 - &zq);
+        let pow = Float::with_val(4000, Float::with_val(4000, -(Float::with_val(4000, &bq + 1u32)) * omz.ln()).exp());
+        let want = Float::with_val(4000, &pow * Float::with_val(4000, 1 + Float::with_val(4000, &bq - 1u32) * &zq));
+        for prec in [8, 53, 109] {
+            let r = at_decimals("2", b, "1", z, prec).unwrap_or_else(|e| panic!("{prec}: {e:?}"));
+            assert!(r.contains(&want) && r.meets_rel(prec), "{prec}: {r:?} against {want:.30}");
+        }
     }
 
     /// A terminating `b = -d` with a huge `a` in the Pfaff region (issue 37's

@@ -457,10 +457,24 @@ pub(crate) fn hyp2f1_large_param(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32
         let omz = one.sub(&z);
         let u = omz.recip()?;
         let (ba, ab) = (b.sub(&a), a.sub(&b));
+        // `c - a` (or `c - b`) an exact non-positive integer: `1/Gamma(c - a) = 0`
+        // and that term vanishes (its other factors are finite: `b - a` is not an
+        // integer, else the route fails above). `2F1(2, 29.65; 1; -5.4e7163)` was
+        // refused PrecisionExhausted (the Gamma pole sent it to Pfaff, `w` within
+        // `1e-7164` of 1: issue 37's scan)
+        let vanishes = |x: &Ball| x.is_exact() && crate::special::is_nonpositive_integer(x.mid());
         // G1 = [Gamma(c) / Gamma(c - a)] [Gamma(b - a) / Gamma(b)], G2 likewise
         // with a and b exchanged: each pair by its difference (`gamma_pair_scaled`)
-        let g1 = gamma_pair_scaled(&c, &ca, &a, wp)?.mul(&gamma_pair_scaled(&ba, &b, &a.neg(), wp)?);
-        let g2 = gamma_pair_scaled(&c, &cb, &b, wp)?.mul(&gamma_pair_scaled(&ab, &a, &b.neg(), wp)?);
+        let g1 = if vanishes(&ca) {
+            None
+        } else {
+            Some(gamma_pair_scaled(&c, &ca, &a, wp)?.mul(&gamma_pair_scaled(&ba, &b, &a.neg(), wp)?))
+        };
+        let g2 = if vanishes(&cb) {
+            None
+        } else {
+            Some(gamma_pair_scaled(&c, &cb, &b, wp)?.mul(&gamma_pair_scaled(&ab, &a, &b.neg(), wp)?))
+        };
         let omu = z.neg().mul(&u);
         let e1 = (b.neg().add_i64(1), a.sub(&c).add_i64(1));
         let e2 = (b.sub(&c).add_i64(1), a.neg().add_i64(1));
@@ -470,13 +484,21 @@ pub(crate) fn hyp2f1_large_param(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32
         let (q1, q2) = (ab.add_i64(1), ba.add_i64(1));
         let s1 = SeriesPair { alpha: &a, big: &cb, gamma: &q1, euler: e1 };
         let s2 = SeriesPair { alpha: &ca, big: &b, gamma: &q2, euler: e2 };
-        let (f1, f2) = sum_both(&s1, &s2, &omc, &u, &omu, wp)?;
         // each term's Gamma quotient and power in logarithms, formed once
         // (a term below the exponent range, `2^(-5.5e18)` at `a = 7.4e17`, `z =
         // -177.9`, goes into the radius)
-        let t1 = g1.mul(&Scaled::pow(&omz, &a.neg(), wp)?).mul_ball(&f1);
-        let t2 = g2.mul(&Scaled::pow(&omz, &b.neg(), wp)?).mul_ball(&f2);
-        return Scaled::sum_to_value(&[t1, t2], wp);
+        let term = |g: Scaled, e: &Ball, f: &Ball| -> Result<Scaled> { Ok(g.mul(&Scaled::pow(&omz, &e.neg(), wp)?).mul_ball(f)) };
+        let terms = match (g1, g2) {
+            (Some(g1), Some(g2)) => {
+                let (f1, f2) = sum_both(&s1, &s2, &omc, &u, &omu, wp)?;
+                vec![term(g1, &a, &f1)?, term(g2, &b, &f2)?]
+            }
+            (Some(g1), None) => vec![term(g1, &a, &s1.sum(&omc, &u, &omu, wp)?)?],
+            (None, Some(g2)) => vec![term(g2, &b, &s2.sum(&omc, &u, &omu, wp)?)?],
+            // both vanish only with `b - a` an integer too (the logarithmic case)
+            (None, None) => return Err(Error::precondition("large-parameter 2F1 route: c - a and c - b both non-positive integers")),
+        };
+        return Scaled::sum_to_value(&terms, wp);
     }
     if z.lower() > 0 && z.upper() < 1 {
         let u = one.sub(&z);

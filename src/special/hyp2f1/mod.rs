@@ -42,6 +42,12 @@
 //! series in `z` runs to `10^6` terms); taken before the regions below when its
 //! estimated terms are fewer than `2 max(|a|, |b|) |z|`.
 //!
+//! **One tiny positive parameter** (`small_parameter.rs`, over balls): `0 < b <= 1`
+//! (or `a`), the other parameter `>= 0` of any size, `c >= b + 1` and `z < 0`:
+//! `[1 - w, 1]` from Euler's integral, `w ~ b ln(a |z|)`, taken first where `w`
+//! meets the precision (`2F1(1.5e31874, 1.1e-29974; 2.2e-167 + ...; -1)`-like inputs,
+//! where every other route passes the exponent range or meets poles).
+//!
 //! Within `-1 <= z <= 1/2` the same function is also
 //! `(1-z)^{c-a-b} 2F1(c-a, c-b; c; z)` (`Algorithm::Euler`, DLMF 15.8.1) and
 //! `(1-z)^{-b} 2F1(c-a, b; c; w)` (`Algorithm::PfaffSwapped`); for `z < 0`
@@ -107,7 +113,8 @@
 //! formula and error bound: `series` (the power-series engine), `polynomial`
 //! (terminating series, exact rationals), `transform` (direct, Euler, Pfaff),
 //! `connection` (1-z formula, Pfaff + 1-w, Gauss's sum), `log_case` (the
-//! degenerate 1-z formula), `large_param` (one large parameter, over balls),
+//! degenerate 1-z formula), `large_param` (one large parameter, over balls), `small_parameter`
+//! (one tiny positive parameter, `z < 0`, over balls),
 //! `choose` (the cost model and dispatcher).
 //! Gamma ratios, connection terms and the Pfaff/Euler prefactors are formed
 //! through [`Scaled`](crate::ball::Scaled) (`m e^l`): a Gamma or a power past
@@ -131,6 +138,7 @@ mod power;
 mod power_f64;
 mod rgamma_f64;
 mod series;
+mod small_parameter;
 mod transform;
 
 #[cfg(test)]

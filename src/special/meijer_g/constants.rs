@@ -14,6 +14,16 @@ use crate::error::Result;
 /// Largest `k` of [`MeijerConstants::cached`]'s table.
 const CACHED_K_MAX: u32 = 1000;
 
+/// Largest `k` that [`MeijerConstants::new`] reaches by the recurrences from
+/// `k = 0` (each step a few ball operations at the working precision; MPFR's
+/// first gamma at 3 200 bits alone costs as much as a few thousand steps).
+pub const RECURRENCE_K_MAX: u32 = 1024;
+
+/// MPFR's gamma and digamma calls of [`MeijerConstants::new`] beyond
+/// [`RECURRENCE_K_MAX`] (two gammas, three digammas), in units of one first
+/// gamma's estimated time (`gamma_seconds`): the estimate that refuses them.
+const MPFR_CONSTANTS_GAMMAS: f64 = 3.0;
+
 /// Working precision of [`MeijerConstants::cached`]'s table (`wp <= CACHED_PREC - 32` uses it).
 const CACHED_PREC: u32 = 192;
 
@@ -36,19 +46,42 @@ pub struct MeijerConstants {
 
 impl MeijerConstants {
     /// The constants for `k` at working precision `wp`.
+    ///
+    /// Up to `RECURRENCE_K_MAX` (1024) from their closed forms at `k = 0`
+    /// (`C_0 = 2 sqrt(pi)`, `psi(2) - psi(1/2) = 1 + 2 ln 2` [DLMF 5.4.13, 5.4.14],
+    /// `B_0(1) = 1`) and [`MeijerConstants::next`]: no Gamma or digamma at all.
+    /// MPFR's gamma and digamma at the working precision of the wave series'
+    /// cancellation guard (3 200 bits at `D = 2 pi 10^4 / 29.4`) ran before any
+    /// budget check and took 0.15 s of a 0.1 s budget (issue 37's scan). Beyond,
+    /// MPFR's gamma and digamma, refused at once with [`crate::Error::TooExpensive`]
+    /// when their estimated time passes the call's budget.
     pub fn new(k: u32, wp: u32) -> Result<Self> {
         crate::error::check_working_prec(wp)?;
+        if k <= RECURRENCE_K_MAX {
+            let ln2 = Ball::ln2(wp);
+            let mut c = MeijerConstants {
+                k: 0,
+                c_k: Ball::pi(wp).sqrt()?.mul_pow2(1),
+                psi_diff: ln2.mul_pow2(1).add_i64(1),
+                bracket_at_one: Ball::one(wp),
+            };
+            for _ in 0..k {
+                c = c.next()?;
+            }
+            return Ok(c);
+        }
+        crate::budget::check_estimate(
+            "the Meijer-G constants (MPFR's Gamma and digamma at the working precision)",
+            MPFR_CONSTANTS_GAMMAS * crate::special::gamma::gamma_seconds(wp),
+            f64::INFINITY,
+        )?;
         let kf = Float::with_val(64, k);
         let half = Ball::from_float(&Float::with_val(64, &kf + 0.5), wp);
         let two = Ball::from_float(&Float::with_val(64, &kf + 2u32), wp);
         let c_k = half.gamma()?.div(&two.gamma()?)?.mul_pow2(1);
         let psi_half = half.digamma()?;
         let psi_diff = two.digamma()?.sub(&psi_half);
-        let bracket_at_one = match k {
-            0 => Ball::one(wp),
-            1 => Ball::zero(wp),
-            _ => Ball::from_ratio(3, 2, wp).digamma()?.sub(&psi_half).mul_pow2(-1),
-        };
+        let bracket_at_one = Ball::from_ratio(3, 2, wp).digamma()?.sub(&psi_half).mul_pow2(-1);
         Ok(MeijerConstants { k, c_k, psi_diff, bracket_at_one })
     }
 
@@ -109,3 +142,48 @@ impl MeijerConstants {
     }
 }
 
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::error::Error;
+
+    /// The closed forms at `k = 0` and the recurrences (`new` up to
+    /// `RECURRENCE_K_MAX`) against MPFR's gamma and digamma at the same `k`.
+    #[test]
+    fn the_recurrence_from_the_closed_forms_matches_mpfr() {
+        for wp in [64, 200, 1000] {
+            for k in [0u32, 1, 2, 7, 100, RECURRENCE_K_MAX] {
+                let c = MeijerConstants::new(k, wp).unwrap();
+                let kf = Float::with_val(64, k);
+                let half = Float::with_val(wp + 64, &kf + 0.5);
+                let two = Float::with_val(wp + 64, &kf + 2u32);
+                let c_k = Float::with_val(wp + 64, half.gamma_ref()) / Float::with_val(wp + 64, two.gamma_ref()) * 2u32;
+                let psi_half = Float::with_val(wp + 64, half.digamma_ref());
+                let psi_diff = Float::with_val(wp + 64, two.digamma_ref()) - &psi_half;
+                let bracket = (Float::with_val(wp + 64, Float::with_val(wp + 64, 1.5).digamma_ref()) - &psi_half) / 2u32;
+                for (ball, want, what) in [(&c.c_k, c_k, "C_k"), (&c.psi_diff, psi_diff, "psi diff"), (&c.bracket_at_one, bracket, "B_k(1)")] {
+                    // MPFR's value at wp + 64 bits is within 2^-(wp+60) of the truth
+                    let mut near = Ball::from_float(&want, wp + 64);
+                    near.add_error(&(Float::with_val(64, want.abs_ref()) >> (wp + 60)));
+                    assert!(ball.overlaps(&near), "{what} at k = {k}, {wp} bits: {ball:?} against {want}");
+                    if k >= 2 || what != "B_k(1)" {
+                        assert!(ball.meets_rel(wp - 16), "{what} at k = {k}, {wp} bits: {ball:?}");
+                    }
+                }
+            }
+        }
+    }
+
+    /// Beyond the recurrence, MPFR's gamma and digamma at 10^5 bits (about 20
+    /// minutes for the first gamma) are refused by their estimate under a budget.
+    #[test]
+    fn mpfr_constants_past_the_budget_are_refused_at_once() {
+        let r = crate::budget::Budget::from_millis(100).unwrap().run(|| MeijerConstants::new(RECURRENCE_K_MAX + 1, 100_000));
+        assert!(matches!(r, Err(Error::TooExpensive { seconds, .. }) if seconds > 60.0), "{r:?}");
+        // at 200 bits they answer, and agree with the recurrence one step further
+        let mpfr = MeijerConstants::new(RECURRENCE_K_MAX + 1, 200).unwrap();
+        let rec = MeijerConstants::new(RECURRENCE_K_MAX, 200).unwrap().next().unwrap();
+        assert!(mpfr.c_k.overlaps(&rec.c_k) && mpfr.psi_diff.overlaps(&rec.psi_diff) && mpfr.bracket_at_one.overlaps(&rec.bracket_at_one));
+    }
+}
