@@ -53,12 +53,16 @@
 //!
 //! # Regions
 //!
-//! `None` (the caller uses MPFR) for `wp > 486`, `|m| >= 2^20`, a non-finite `m`, for
+//! `exp` from 1000 to 4600 bits goes to [`wide`] (the same method on GMP's `mpn` layer
+//! with Taylor series by rectangular splitting; its own module docs).
+//!
+//! `None` (the caller uses MPFR) for `wp > 486` (`exp`: outside [`wide`]'s range), `|m| >= 2^20`, a non-finite `m`, for
 //! `sin`/`cos` when `|m| < 2^-16` or when either result is below `2^-16` in magnitude
 //! (an absolute error bound would cost relative bits there; MPFR's are correctly
 //! rounded), and on targets whose GMP limb is not 64 bits.
 
 pub(crate) mod limbs;
+mod wide;
 
 use std::cmp::Ordering;
 use std::sync::OnceLock;
@@ -454,7 +458,9 @@ fn bound(y: &Float, ord: Ordering, ulps: f64, scale_exp: i64) -> Mag {
 /// `e^m` rounded to `wp` bits and a bound on its error; `None` outside the region
 /// served (see the module docs).
 pub(crate) fn exp(m: &Float, wp: u32) -> Option<(Float, Mag)> {
-    let l = limbs_for(wp)?;
+    let Some(l) = limbs_for(wp) else {
+        return wide::exp(m, wp);
+    };
     match l {
         1 => exp_kernel::<1>(m, wp),
         2 => exp_kernel::<2>(m, wp),
