@@ -6,7 +6,8 @@
 //! of two runs with different `CALLS` is the cost of warm calls alone.
 //!
 //! `cargo run --release --example warm_calls -- ID PREC CALLS` prints `id prec
-//! evaluations goal_met`.
+//! evaluations goal_met`; `MAUGIS_MAX_DEGREE=n` sets the largest degree (for the
+//! degree cap's trade, `quad/certified/mod.rs`).
 
 use maugis::quad::certified::Options;
 use maugis::quad::expr::{integrate_range, End, Expr};
@@ -30,7 +31,11 @@ fn main() {
     let (prec, calls): (u32, u32) = (prec.parse().expect("PREC"), calls.parse().expect("CALLS"));
     let (_, f, a, b) = TABLE.iter().find(|t| t.0 == id).expect("unknown id");
     let (f, a, b) = (Expr::parse(f).unwrap(), End::parse(a).unwrap(), End::parse(b).unwrap());
-    let run = || integrate_range(&f, &a, &b, None, None, prec, &Options::new()).expect("integrate");
+    let opts = match std::env::var("MAUGIS_MAX_DEGREE").ok().and_then(|v| v.parse().ok()) {
+        Some(n) => Options::new().max_degree(n).expect("MAUGIS_MAX_DEGREE in 1..=2048"),
+        None => Options::new(),
+    };
+    let run = || integrate_range(&f, &a, &b, None, None, prec, &opts).expect("integrate");
     let r = run();
     for _ in 0..calls {
         run();
