@@ -186,13 +186,7 @@ static TRIG_TABLES: [OnceLock<TrigTables>; MAX_LIMBS + 1] = [const { OnceLock::n
 /// `floor(v 2^shift)` as exactly `len` little-endian limbs (`v >= 0` finite, the result
 /// fits), read off `v`'s significand without an integer conversion.
 fn fixed_limbs(v: &Float, shift: i32, len: usize) -> Vec<u64> {
-    if v.is_zero() {
-        return vec![0; len];
-    }
-    let (d, e) = raw_parts(v);
-    // v = D 2^(e - 64 |d|), D the significand's limbs as an integer
-    let w = limbs::shifted(d, e - 64 * d.len() as i64 + shift as i64, len).expect("table entry does not fit");
-    w[..len].to_vec()
+    wide::to_fixed(v, shift as i64, len).expect("table entry does not fit")
 }
 
 /// `log2(n!)`, rounded down (f64 sums, then a margin).

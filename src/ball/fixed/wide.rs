@@ -76,10 +76,9 @@ pub(crate) const WIDE_MAX_PREC: u32 = 4600;
 const WIDE_GUARD: u32 = 32;
 /// The most limbs `L` (`F = 64 L`).
 const WIDE_MAX_LIMBS: usize = (WIDE_MAX_PREC + WIDE_GUARD).div_ceil(64) as usize;
-/// Table levels and index bits per level.
+/// Table levels and index bits per level (256 entries a level).
 const LEVELS: usize = 5;
 const TAB_BITS: u32 = 8;
-const TAB_LEN: usize = 1 << TAB_BITS;
 
 /// The tables of one `L`.
 struct WideTables {
@@ -113,40 +112,27 @@ fn shifted(d: &[u64], sh: i64, n: usize) -> Option<Vec<u64>> {
     )
 }
 
-/// `floor(v 2^f)` in `n` limbs for a finite `v >= 0` that fits.
-fn to_fixed(v: &Float, f: u32, n: usize) -> Option<Vec<u64>> {
+/// `floor(v 2^f)` in `n` limbs for a finite `v >= 0` that fits (any `n`; also the
+/// table entries of [`super`]).
+pub(super) fn to_fixed(v: &Float, f: i64, n: usize) -> Option<Vec<u64>> {
     if v.is_zero() {
         return Some(vec![0; n]);
     }
     if !v.is_finite() || v.is_sign_negative() {
         return None;
     }
+    // v = D 2^(e - 64 |d|), D the significand's limbs as an integer
     let (d, e) = raw_parts(v);
-    shifted(d, e - 64 * d.len() as i64 + f as i64, n)
+    shifted(d, e - 64 * d.len() as i64 + f, n)
 }
 
 fn tables(l: usize) -> &'static WideTables {
     TABLES[l].get_or_init(|| {
         let f = 64 * l as u32;
         let w = l + 1;
-        let p = f + 40;
-        let exp = (1..=LEVELS as u32)
-            .map(|level| {
-                // e^(k t) = e^((k-1) t) e^t at p bits: 255 steps of a relative error of
-                // a few 2^-p, below 2^-(f + 28) in all; the floor is off by at most one
-                let step = Float::with_val(p, 1) >> (TAB_BITS * level);
-                let e_step = Float::with_val(p, step.exp_ref());
-                let mut ev = Float::with_val(p, 1);
-                let mut out = Vec::with_capacity(TAB_LEN * w);
-                for k in 0..TAB_LEN {
-                    if k > 0 {
-                        ev *= &e_step;
-                    }
-                    out.extend(to_fixed(&ev, f, w).expect("e^t < 3 fits"));
-                }
-                out
-            })
-            .collect();
+        // e^(k t) = e^((k-1) t) e^t in MPFR at f + 40 bits, then the floor (super's
+        // levels at W >= 9 limbs)
+        let exp = (1..=LEVELS as u32).map(|level| super::exp_level(f, level, w)).collect();
         let order = super::exp_order(f, TAB_BITS * LEVELS as u32);
         WideTables { exp, ln2: Float::with_val(f + 96, rug::float::Constant::Log2), order }
     })
@@ -227,7 +213,7 @@ pub(crate) fn exp(m: &Float, wp: u32) -> Option<(Float, Mag)> {
             break;
         }
     }
-    let mut s = to_fixed(&t?, f, w)?;
+    let mut s = to_fixed(&t?, f as i64, w)?;
     // 2. the table indices: the top 24 fractional bits (limb L - 1; limb L is 0)
     let top = s[l - 1];
     let k: [usize; LEVELS] = std::array::from_fn(|j| ((top >> (56 - 8 * j)) & 0xff) as usize);
