@@ -123,6 +123,10 @@ pub fn bessel_j_series(n: u64, x: &Float, wp: u32) -> Result<Ball> {
     Ok(prefactor(n, &half_x, wp)?.mul(&sum))
 }
 
+/// The most bits the powers of the rectangular sum may hold (128 MiB); beyond, the
+/// term-by-term sum, which keeps two numbers.
+const RECTANGULAR_MAX_POWER_BITS: u64 = 1 << 30;
+
 /// A lower bound of the integer `d` as a [`Mag`] (exact below `2^53`).
 fn mag_of_integer_down(d: u64) -> Mag {
     let f = d as f64;
@@ -182,6 +186,10 @@ fn sum_rectangular(n: u64, z: &Ball, wp: u32) -> Result<Ball> {
     let (terms, rounding, tail) = rectangular_plan(n, z, wp)?;
     // m = ceil(sqrt K), powers p_1 .. p_m of z~ (p_1 exact)
     let m = (terms as f64).sqrt().ceil().max(1.0) as u64;
+    if m.saturating_mul(wp as u64) > RECTANGULAR_MAX_POWER_BITS {
+        // the powers would hold too much memory (huge x at huge precision)
+        return sum_term_by_term(n, z, wp);
+    }
     let mut powers: Vec<Float> = Vec::with_capacity(m as usize + 1);
     powers.push(Float::with_val(wp, 1));
     powers.push(z.mid().clone());
