@@ -59,19 +59,23 @@ pub(crate) use scaled::{intermediate, ln_seconds};
 
 /// `base^n` by square-and-multiply (`one` is the unit of `mul`); shared by the ball,
 /// complex-ball and magnitude powers.
-pub(crate) fn binary_power<T>(one: T, base: T, mut n: u64, mul: impl Fn(&T, &T) -> T, sqr: impl Fn(&T) -> T) -> T {
-    let mut result = one;
+pub(crate) fn binary_power<T: Clone>(one: T, base: T, mut n: u64, mul: impl Fn(&T, &T) -> T, sqr: impl Fn(&T) -> T) -> T {
+    // the first factor is taken as it is (a product by the exact one only costs)
+    let mut result: Option<T> = None;
     let mut base = base;
     while n > 0 {
         if n & 1 == 1 {
-            result = mul(&result, &base);
+            result = Some(match result {
+                Some(r) => mul(&r, &base),
+                None => base.clone(),
+            });
         }
         n >>= 1;
         if n > 0 {
             base = sqr(&base);
         }
     }
-    result
+    result.unwrap_or(one)
 }
 
 /// Precision (bits) of the radius-sized `Float` values handed out by

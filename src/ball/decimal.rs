@@ -136,6 +136,13 @@ impl Decimal {
         let prec = prec.clamp(2, rug::float::prec_max());
         if let Some(bits) = self.binary_bits {
             let p = prec.max(bits).max(2);
+            // an integer (the constants of most expressions) without the rational's
+            // conversion: exact in p >= bits bits
+            if *self.value.denom() == 1 {
+                if let Some(i) = self.value.numer().to_i64() {
+                    return Ball::from_i64(i, p);
+                }
+            }
             let mid = Float::with_val(p, &self.value);
             return Ball::from_float(&mid, p);
         }

@@ -43,6 +43,26 @@ use super::{rounding_error, Ball, Mag};
 /// derivative bound at the midpoint (tighter, and sign-preserving, for wide balls).
 const WIDE: Mag = Mag::pow2_const(-8);
 
+/// Precision of the end (or midpoint) values of a wide ball (radius above [`WIDE`]):
+/// its result is at least `2^-17` wide relative to its size (the radius, or the
+/// second-order term of `sin`/`cos`, see [`Ball::sin_cos`]), so values rounded
+/// outward at 64 bits widen it by a relative `2^-47` of its width at most, and cost a
+/// fraction of the full precision's (the boxes around Bernstein ellipses of the
+/// integrator are such balls: at 3333 bits their `exp`, `sinh`, `cosh` at full
+/// precision were most of a box's evaluation).
+pub(crate) const WIDE_EVAL_PREC: u32 = 64;
+
+/// The precision of a wide ball's values ([`WIDE_EVAL_PREC`] where that saves limbs).
+pub(crate) fn wide_eval_prec(p: u32) -> u32 {
+    if p > 2 * WIDE_EVAL_PREC { WIDE_EVAL_PREC } else { p }
+}
+
+/// The precision of a ball's midpoint values: [`wide_eval_prec`] for a wide ball
+/// (radius above [`WIDE`]), its own otherwise.
+pub(crate) fn mid_eval_prec(b: &Ball) -> u32 {
+    if b.rad.le(&WIDE) { b.prec() } else { wide_eval_prec(b.prec()) }
+}
+
 pub(crate) fn nan_ball(prec: u32) -> Ball {
     Ball { mid: Float::with_val(prec, Special::Nan), rad: Mag::inf() }
 }
@@ -112,6 +132,38 @@ fn mpfr_error(y: &Float, ord: std::cmp::Ordering) -> Mag {
     rounding_error(y, ord)
 }
 
+/// `(sinh, cosh)` of the wide ball `[0 +- y]` (the imaginary part of the boxes around
+/// Bernstein ellipses): `sinh` is odd and increasing, `cosh` even and increasing in
+/// `|x|`, so they are `[0 +- sinh y]` and `[1, cosh y]`, from one enclosure
+/// `[e_lo, e_hi]` of `e^y` at [`WIDE_EVAL_PREC`] bits: `sinh y <= (e_hi - 1/e_hi) / 2`,
+/// `cosh y <= (e_hi + 1/e_lo) / 2`, each operation rounded up (`1/e_hi` rounded down
+/// where it is subtracted).
+fn sinh_cosh_centred(y: Mag, p: u32) -> (Ball, Ball) {
+    let q = WIDE_EVAL_PREC;
+    // y <= 2^31 keeps e^y within MPFR's exponent range (2^(2^30)); beyond, the NaN balls
+    if !y.le(&Mag::pow2(31)) {
+        return (nan_ball(p), nan_ball(p));
+    }
+    let yf = y.to_float();
+    let (e_lo, e_hi) = match super::fixed::exp(&yf, q) {
+        Some((e, err)) => {
+            let b = Ball { mid: e, rad: err };
+            (b.clone().into_end(false), b.into_end(true))
+        }
+        None => (Float::with_val_round(q, yf.exp_ref(), Round::Down).0, Float::with_val_round(q, yf.exp_ref(), Round::Up).0),
+    };
+    if !e_hi.is_finite() || !e_lo.is_sign_positive() || e_lo.is_zero() {
+        return (nan_ball(p), nan_ball(p));
+    }
+    let inv_down = Float::with_val_round(q, e_hi.recip_ref(), Round::Down).0;
+    let inv_up = Float::with_val_round(q, e_lo.recip_ref(), Round::Up).0;
+    let mut sh = Float::with_val_round(q, &e_hi - &inv_down, Round::Up).0;
+    sh >>= 1;
+    let mut ch = Float::with_val_round(q, &e_hi + &inv_up, Round::Up).0;
+    ch >>= 1;
+    (Ball { mid: Float::new(p), rad: Mag::from_float_up(&sh) }, Ball::hull(&Float::with_val(q, 1), &ch, p))
+}
+
 impl Ball {
     /// `e^self`, never failing: the NaN ball on overflow (see the module docs).
     pub(crate) fn exp_ball(&self) -> Ball {
@@ -124,9 +176,10 @@ impl Ball {
             // values at the ends (it stays positive, unlike mid +- |exp'| r).
             let (lo, hi) = (self.lower(), self.upper());
             // an end of the fixed-point ball when the kernel serves it, else MPFR rounded outward
-            let end = |x: &Float, round: Round| match super::fixed::exp(x, p) {
+            let q = wide_eval_prec(p);
+            let end = |x: &Float, round: Round| match super::fixed::exp(x, q) {
                 Some((y, rad)) => Ball { mid: y, rad }.into_end(round == Round::Up),
-                None => Float::with_val_round(p, x.exp_ref(), round).0,
+                None => Float::with_val_round(q, x.exp_ref(), round).0,
             };
             let (a, b) = (end(&lo, Round::Down), end(&hi, Round::Up));
             if !b.is_finite() {
@@ -148,6 +201,9 @@ impl Ball {
         if !self.is_finite() {
             return (nan_ball(p), nan_ball(p));
         }
+        if !self.rad.le(&WIDE) && self.mid.is_zero() {
+            return sinh_cosh_centred(self.rad, p);
+        }
         if !self.rad.le(&WIDE) {
             // A wide ball: sinh is increasing and cosh increasing in |x|, so the hulls of
             // directed-rounded end values (cosh stays >= 1 instead of dipping below 0).
@@ -157,10 +213,12 @@ impl Ball {
             if lo.clone().abs() > (1u64 << 31) || hi.clone().abs() > (1u64 << 31) {
                 return (nan_ball(p), nan_ball(p));
             }
-            // (sinh x, cosh x) at an end as balls, from the fixed-point exp where it serves
+            // (sinh x, cosh x) at an end as balls, from the fixed-point exp where it serves,
+            // at WIDE_EVAL_PREC bits (the ends themselves exact)
+            let q = wide_eval_prec(p);
             let at = |x: &Float| -> Option<(Ball, Ball)> {
-                let (ep, ee) = super::fixed::exp(x, p)?;
-                let (mp, me) = super::fixed::exp(&Float::with_val(p, -x), p)?;
+                let (ep, ee) = super::fixed::exp(x, q)?;
+                let (mp, me) = super::fixed::exp(&Float::with_val(x.prec(), -x), q)?;
                 let (e, einv) = (Ball { mid: ep, rad: ee }, Ball { mid: mp, rad: me });
                 Some((e.sub(&einv).mul_pow2(-1), e.add(&einv).mul_pow2(-1)))
             };
@@ -181,16 +239,16 @@ impl Ball {
                 _ => {
                     let far = if lo.clone().abs() > hi.clone().abs() { lo.clone().abs() } else { hi.clone().abs() };
                     let c_lo = if lo.is_sign_positive() {
-                        Float::with_val_round(p, lo.cosh_ref(), Round::Down).0
+                        Float::with_val_round(q, lo.cosh_ref(), Round::Down).0
                     } else if hi.is_sign_negative() {
-                        Float::with_val_round(p, hi.cosh_ref(), Round::Down).0
+                        Float::with_val_round(q, hi.cosh_ref(), Round::Down).0
                     } else {
-                        Float::with_val(p, 1)
+                        Float::with_val(q, 1)
                     };
                     (
-                        Float::with_val_round(p, lo.sinh_ref(), Round::Down).0,
-                        Float::with_val_round(p, hi.sinh_ref(), Round::Up).0,
-                        Float::with_val_round(p, far.cosh_ref(), Round::Up).0,
+                        Float::with_val_round(q, lo.sinh_ref(), Round::Down).0,
+                        Float::with_val_round(q, hi.sinh_ref(), Round::Up).0,
+                        Float::with_val_round(q, far.cosh_ref(), Round::Up).0,
                         c_lo,
                     )
                 }
@@ -247,10 +305,16 @@ impl Ball {
 
     /// `sin(self)`.
     pub fn sin(&self) -> Ball {
-        if let Some((y, err)) = self.is_finite().then(|| super::fixed::sin(&self.mid, self.prec())).flatten() {
-            return within_unit(Ball { mid: y, rad: self.rad.add(err) });
+        let p = self.prec();
+        // a wide ball's midpoint value at WIDE_EVAL_PREC bits, then exactly at p
+        let q = mid_eval_prec(self);
+        if let Some((y, err)) = self.is_finite().then(|| super::fixed::sin(&self.mid, q)).flatten() {
+            return within_unit(Ball { mid: Float::with_val(p, y), rad: self.rad.add(err) });
         }
-        within_unit(self.lipschitz1(|m, p| Float::with_val_round(p, m.sin_ref(), Round::Nearest)))
+        within_unit(self.lipschitz1(|m, _| {
+            let (y, ord) = Float::with_val_round(q, m.sin_ref(), Round::Nearest);
+            (Float::with_val(p, y), ord)
+        }))
     }
 
     /// `tanh(self)` (`|tanh'| = sech^2 <= 1`).

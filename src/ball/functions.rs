@@ -84,16 +84,25 @@ impl Ball {
     /// sector's, not a square around it. A wide result (radius above 1/2) is
     /// intersected with `[-1, 1]`.
     pub fn sin_cos(&self) -> (Ball, Ball) {
-        let ((s, es), (c, ec)) = match self.is_finite().then(|| fixed::sin_cos(&self.mid, self.prec())).flatten() {
+        let p = self.prec();
+        // a wide ball's midpoint values at WIDE_EVAL_PREC bits (its result is wide:
+        // `sin_cos_spread` is at least r^2/2 > 2^-17), then exactly at p
+        let q = elementary::mid_eval_prec(self);
+        let ((s, es), (c, ec)) = match self.is_finite().then(|| fixed::sin_cos(&self.mid, q)).flatten() {
             Some(v) => v,
             None => {
-                let mut s = self.mid.clone();
-                let mut c = Float::new(self.prec());
+                let mut s = Float::with_val(q, &self.mid);
+                let mut c = Float::new(q);
+                // s holds mid rounded to q bits: sin_cos_round of the rounded value,
+                // so the rounding of mid (1-Lipschitz) is added to both errors
+                let (_, om) = Float::with_val_round(q, &self.mid, Round::Nearest);
+                let em = rounding_error(&s, om);
                 let (os, oc) = s.sin_cos_round(&mut c, Round::Nearest);
-                let (es, ec) = (rounding_error(&s, os), rounding_error(&c, oc));
+                let (es, ec) = (rounding_error(&s, os).add(em), rounding_error(&c, oc).add(em));
                 ((s, es), (c, ec))
             }
         };
+        let (s, c) = (Float::with_val(p, s), Float::with_val(p, c));
         let (rs, rc) = (self.sin_cos_spread(&c, ec), self.sin_cos_spread(&s, es));
         (elementary::within_unit(Ball { mid: s, rad: rs.add(es) }), elementary::within_unit(Ball { mid: c, rad: rc.add(ec) }))
     }

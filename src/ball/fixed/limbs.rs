@@ -90,6 +90,32 @@ impl Divisor {
     }
 }
 
+impl Divisor {
+    /// `X <- floor(X / d)` for `X` given by a little-endian slice of any length, in
+    /// place (each limb is read before it is overwritten: the loop runs downward and
+    /// limb `i` needs limbs `i` and `i - 1`).
+    pub(crate) fn div_slice_in_place(&self, x: &mut [u64]) {
+        let n = x.len();
+        if n == 0 {
+            return;
+        }
+        let sh = self.shift;
+        let mut rem = if sh == 0 { 0 } else { x[n - 1] >> (64 - sh) };
+        for i in (0..n).rev() {
+            let limb = if sh == 0 {
+                x[i]
+            } else if i == 0 {
+                x[0] << sh
+            } else {
+                (x[i] << sh) | (x[i - 1] >> (64 - sh))
+            };
+            let (q, r) = self.div_2by1(rem, limb);
+            x[i] = q;
+            rem = r;
+        }
+    }
+}
+
 /// `floor(X / d)` (error below one ulp).
 #[inline(always)]
 pub(crate) fn div_small<const L: usize>(x: &[u64; L], d: &Divisor) -> [u64; L] {
@@ -276,6 +302,10 @@ mod tests {
                 assert_eq!(int(&q), int(&x) / d, "{d}");
                 let full = [next(), next(), next()];
                 assert_eq!(int(&div_small(&full, &Divisor::new(d))), int(&full) / d, "{d}");
+                let mut long: Vec<u64> = (0..57).map(|_| next()).collect();
+                let expect = int(&long) / d;
+                Divisor::new(d).div_slice_in_place(&mut long);
+                assert_eq!(int(&long), expect, "{d}");
             }
             assert_eq!(int(&sub(&add(&x, &y), &y)), int(&x));
         }

@@ -53,12 +53,16 @@
 //!
 //! # Regions
 //!
-//! `None` (the caller uses MPFR) for `wp > 486`, `|m| >= 2^20`, a non-finite `m`, for
+//! `exp` from 487 to 4600 bits goes to [`wide`] (the same method on GMP's `mpn` layer
+//! with Taylor series by rectangular splitting; its own module docs).
+//!
+//! `None` (the caller uses MPFR) for `wp > 486` (`exp`: outside [`wide`]'s range), `|m| >= 2^20`, a non-finite `m`, for
 //! `sin`/`cos` when `|m| < 2^-16` or when either result is below `2^-16` in magnitude
 //! (an absolute error bound would cost relative bits there; MPFR's are correctly
 //! rounded), and on targets whose GMP limb is not 64 bits.
 
 pub(crate) mod limbs;
+mod wide;
 
 use std::cmp::Ordering;
 use std::sync::OnceLock;
@@ -182,13 +186,7 @@ static TRIG_TABLES: [OnceLock<TrigTables>; MAX_LIMBS + 1] = [const { OnceLock::n
 /// `floor(v 2^shift)` as exactly `len` little-endian limbs (`v >= 0` finite, the result
 /// fits), read off `v`'s significand without an integer conversion.
 fn fixed_limbs(v: &Float, shift: i32, len: usize) -> Vec<u64> {
-    if v.is_zero() {
-        return vec![0; len];
-    }
-    let (d, e) = raw_parts(v);
-    // v = D 2^(e - 64 |d|), D the significand's limbs as an integer
-    let w = limbs::shifted(d, e - 64 * d.len() as i64 + shift as i64, len).expect("table entry does not fit");
-    w[..len].to_vec()
+    wide::to_fixed(v, shift as i64, len).expect("table entry does not fit")
 }
 
 /// `log2(n!)`, rounded down (f64 sums, then a margin).
@@ -454,7 +452,9 @@ fn bound(y: &Float, ord: Ordering, ulps: f64, scale_exp: i64) -> Mag {
 /// `e^m` rounded to `wp` bits and a bound on its error; `None` outside the region
 /// served (see the module docs).
 pub(crate) fn exp(m: &Float, wp: u32) -> Option<(Float, Mag)> {
-    let l = limbs_for(wp)?;
+    let Some(l) = limbs_for(wp) else {
+        return wide::exp(m, wp);
+    };
     match l {
         1 => exp_kernel::<1>(m, wp),
         2 => exp_kernel::<2>(m, wp),
@@ -887,7 +887,10 @@ mod tests {
     #[test]
     fn outside_the_region_the_caller_is_told_to_use_mpfr() {
         assert!(exp(&Float::with_val(64, 1e7), 64).is_none());
-        assert!(exp(&Float::with_val(600, 1), 600).is_none());
+        // exp past the Horner kernels goes to wide.rs up to its limit, sin_cos to MPFR
+        assert!(exp(&Float::with_val(4601, 1), 4601).is_none());
+        assert!(exp(&Float::with_val(600, 1), 600).is_some());
+        assert!(sin_cos(&Float::with_val(600, 1), 600).is_none());
         assert!(sin_cos(&Float::with_val(64, 1e-9), 64).is_none());
         assert!(sin_cos(&Float::with_val(64, rug::float::Special::Nan), 64).is_none());
         // sin of pi to 64 bits is about 5e-20: too small for an absolute bound

@@ -10,8 +10,10 @@
 //! (estimated CPU time from terms times working bits, per method; the cheapest wins):
 //!
 //! * **Power series** (`series.rs`) [DLMF 10.2.2]:
-//!   `J_n(x) = (x/2)^n / n! * 0F1(; n+1; -x^2/4)`, summed by the pFq core with its
-//!   rigorous tail bound. The terms alternate and their magnitudes sum to
+//!   `J_n(x) = (x/2)^n / n! * 0F1(; n+1; -x^2/4)`, summed on bare midpoints with a
+//!   running error analysis, from 256 bits by rectangular splitting with an a-priori
+//!   bound (about `2 sqrt K` full products for `K` terms), and a rigorous tail bound
+//!   (the pFq core's sum is the cross-check). The terms alternate and their magnitudes sum to
 //!   `I_n(x) n! (2/x)^n`, so about `log2(I_n(x)/|J_n(x)|)` bits cancel (roughly
 //!   `1.44 x` for `x > n`); the Ziv loop adds them as guard bits. Cost about
 //!   `(2 k_peak + wp/8) (wp + loss)`, `k_peak (n + k_peak) = x^2/4`.
