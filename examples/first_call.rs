@@ -9,6 +9,11 @@
 //! `first_call rule N PREC` prints the wall milliseconds of building one Gauss-Legendre
 //! rule (degree `N`, `PREC`-bit balls) in a fresh process (under load, count its CPU
 //! time with `perf stat -e task-clock`).
+//! `first_call ID PREC CALLS` runs a warm-up call and then `CALLS` more, untimed, and
+//! prints `id prec evaluations goal_met`: for instruction counts of warm calls under
+//! callgrind (`reference/instructions_warm_calls.sh`: the difference of two runs with
+//! different `CALLS`). `MAUGIS_MAX_DEGREE=n` sets the largest degree (for the degree
+//! cap's trade, `quad/certified/mod.rs`).
 
 use std::process::Command;
 use std::time::Instant;
@@ -25,10 +30,22 @@ const TABLE: [(&str, &str, &str, &str, &[u32]); 6] = [
     ("sin_zero", "sin(x)", "-1", "1", &[64, 333]),
 ];
 
-fn one(id: &str, prec: u32) {
+fn one(id: &str, prec: u32, warm_calls: Option<u32>) {
     let (_, f, a, b, _) = TABLE.iter().find(|t| t.0 == id).expect("unknown id");
     let (f, a, b) = (Expr::parse(f).unwrap(), End::parse(a).unwrap(), End::parse(b).unwrap());
-    let run = || integrate_range(&f, &a, &b, None, None, prec, &Options::new()).expect("integrate");
+    let opts = match std::env::var("MAUGIS_MAX_DEGREE").ok().and_then(|v| v.parse().ok()) {
+        Some(n) => Options::new().max_degree(n).expect("MAUGIS_MAX_DEGREE in 1..=2048"),
+        None => Options::new(),
+    };
+    let run = || integrate_range(&f, &a, &b, None, None, prec, &opts).expect("integrate");
+    if let Some(calls) = warm_calls {
+        let r = run();
+        for _ in 0..calls {
+            run();
+        }
+        println!("{id}\t{prec}\t{}\t{}", r.evaluations, r.goal_met);
+        return;
+    }
     let t = Instant::now();
     let r = run();
     let first = t.elapsed().as_secs_f64() * 1e3;
@@ -55,8 +72,9 @@ fn main() {
         println!("rule\t{n}\t{prec}\t{:.2}", t.elapsed().as_secs_f64() * 1e3);
         return;
     }
-    if args.len() == 2 {
-        one(&args[0], args[1].parse().expect("prec"));
+    if args.len() == 2 || args.len() == 3 {
+        let calls = args.get(2).map(|c| c.parse().expect("CALLS"));
+        one(&args[0], args[1].parse().expect("prec"), calls);
         return;
     }
     let me = std::env::current_exe().expect("current_exe");

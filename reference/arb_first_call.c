@@ -8,7 +8,12 @@
    cc -O2 -o arb_first_call reference/arb_first_call.c -lflint-arb -lflint -lmpfr -lgmp
    ./arb_first_call ID PREC             (run by reference/bench_first_call.sh)
    FIRST_CALL_ONLY=1 ./arb_first_call ID PREC   the first call only
-                                        (reference/instructions_first_call.sh) */
+                                        (reference/instructions_first_call.sh)
+   ./arb_first_call ID PREC CALLS       a warm-up call and CALLS more, for instruction
+                                        counts of warm calls under callgrind (the
+                                        difference of two runs with different CALLS;
+                                        reference/instructions_warm_calls.sh); prints
+                                        id, prec, evaluations of one call */
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -19,7 +24,7 @@
 
 #include "arb_integrands.h"
 
-/* the ids, integrands and ranges of examples/first_call.rs */
+/* the ids, integrands and ranges of examples/first_call.rs (and warm_calls.rs) */
 static const integral_t integrals[] = {
     {"atanderiv", f_atanderiv, 0, 1},
     {"rump", f_rump, 0, 8},
@@ -40,9 +45,9 @@ int main(int argc, char **argv)
     long calls = 0, first_evals;
     double t0, first, warm;
 
-    if (argc != 3)
+    if (argc != 3 && argc != 4)
     {
-        fprintf(stderr, "usage: arb_first_call ID PREC\n");
+        fprintf(stderr, "usage: arb_first_call ID PREC [CALLS]\n");
         return 2;
     }
     for (i = 0; i < sizeof(integrals) / sizeof(integrals[0]); i++)
@@ -68,6 +73,15 @@ int main(int argc, char **argv)
     acb_calc_integrate(s, in->f, NULL, a, b, prec, tol, opt, prec);
     first = now() - t0;
     first_evals = evals;
+    if (argc == 4)
+    {
+        /* CALLS warm calls, no clock (instructions_warm_calls.sh counts them) */
+        long k, n = atol(argv[3]);
+        for (k = 0; k < n; k++)
+            acb_calc_integrate(s, in->f, NULL, a, b, prec, tol, opt, prec);
+        printf("%s\t%ld\t%ld\n", in->id, (long) prec, first_evals);
+        return 0;
+    }
     if (getenv("FIRST_CALL_ONLY") != NULL)
     {
         /* the first call alone (as examples/first_call.rs), for instruction counts */

@@ -7,6 +7,10 @@
 #   sh reference/bench_first_call.sh            (from the workspace root)
 #   sh reference/bench_first_call.sh --cpu      the first call alone, in CPU time
 #
+# The default run also times `maugis eval` (release) on the same integrals as JSON
+# Lines `integrate` requests: the first call in a fresh process (less the process's
+# start-up) and the warm call (21 requests less 1, over 20).
+#
 # --cpu: wall time under load decides little, so each side's fresh process runs the
 # first call alone (FIRST_CALL_ONLY=1) under `perf stat -e task-clock`, three times
 # alternated, and the table has the medians (CPU ms of the whole process, start-up
@@ -60,12 +64,47 @@ if [ "${1:-}" = "--cpu" ]; then
     echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)" >&2
     exit 0
 fi
-echo "| integral | bits | maugis first ms | C Arb first ms | first ratio | maugis warm ms | C Arb warm ms | warm ratio |"
-echo "|---|---|---|---|---|---|---|---|"
+# Through `maugis eval` (as a user of the server would): first call = a fresh process
+# with one request less one with no request (start-up), medians of seven; warm = the
+# process with K + 1 identical requests less the one with 1, over K (K = 200 below
+# 1000 bits, 20 above; medians of three; the parsed integrand and the rules are cached
+# after the first request).
+cargo build -q --release -p maugis-cli --features maugis/gmp-no-check
+EV=target/release/maugis
+expr_of() { # id -> "f|a|b"
+    case "$1" in
+        atanderiv) echo '1/(1+x^2)|0|1' ;; rump) echo 'sin(x + exp(x))|0|8' ;;
+        gauss) echo 'exp(-x^2)|0|2' ;; sqrt) echo 'sqrt(x)|1|4' ;;
+        xJ0) echo 'x*besselj(0, x)|0|10' ;; sin_zero) echo 'sin(x)|-1|1' ;;
+    esac
+}
+now_ns() { date +%s%N; }
+wall_ms() { # file: wall ms of `maugis eval < file`
+    t0=$(now_ns); "$EV" eval < "$1" > "$TMP/eval_out"; t1=$(now_ns)
+    if grep -q '"error"' "$TMP/eval_out"; then echo "eval failed: $(head -c 300 "$TMP/eval_out")" >&2; exit 1; fi
+    echo "$t0 $t1" | awk '{ printf "%.3f", ($2 - $1) / 1e6 }'
+}
+: > "$TMP/req_0"
+median7() { # file: the median of seven wall_ms of it
+    for j in 1 2 3 4 5 6 7; do wall_ms "$1"; echo; done | sort -n | sed -n 4p
+}
+echo "| integral | bits | maugis first ms | C Arb first ms | first ratio | maugis warm ms | C Arb warm ms | warm ratio | eval first ms | eval first / Arb | eval warm ms | eval warm / Arb |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
 for case in atanderiv:64 atanderiv:333 atanderiv:3333 rump:64 rump:333 gauss:333 gauss:3333 sqrt:3333 xJ0:3333 sin_zero:64 sin_zero:333; do
     id=${case%%:*}; p=${case##*:}
     m=$("$ME" "$id" "$p")
     a=$("$TMP/arb_first_call" "$id" "$p")
-    echo "$m	$a" | awk -F'\t' '{ printf "| %s | %s | %.2f | %.2f | %.2fx | %.3f | %.3f | %.2fx |\n", $1, $2, $3, $9, $3 / $9, $4, $10, $4 / $10 }'
+    spec=$(expr_of "$id")
+    f=${spec%%|*}; rest=${spec#*|}; lo=${rest%%|*}; hi=${rest#*|}
+    req="{\"fn\":\"integrate\",\"f\":\"$f\",\"a\":\"$lo\",\"b\":\"$hi\",\"prec\":$p}"
+    echo "$req" > "$TMP/req_1"
+    if [ "$p" -ge 1000 ]; then k=20; else k=200; fi
+    : > "$TMP/req_k"; i=0; while [ $i -le $k ]; do echo "$req" >> "$TMP/req_k"; i=$((i + 1)); done
+    s0=$(median7 "$TMP/req_0")
+    s1=$(median7 "$TMP/req_1")
+    sk=$(median3 "$(wall_ms "$TMP/req_k")" "$(wall_ms "$TMP/req_k")" "$(wall_ms "$TMP/req_k")")
+    printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$m" "$a" "$s0" "$s1" "$sk" "$k" | awk -F'\t' '{ ef = $13 - $12; ew = ($14 - $13) / $15;
+        printf "| %s | %s | %.2f | %.2f | %.2fx | %.3f | %.3f | %.2fx | %.2f | %.2fx | %.3f | %.2fx |\n",
+            $1, $2, $3, $9, $3 / $9, $4, $10, $4 / $10, ef, ef / $9, ew, ew / $10 }'
 done
 echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)" >&2

@@ -26,7 +26,8 @@
 //!    bits of `t` and `s < 2^(-8 v)`, `v <= 3` levels chosen per `L` by the cost in
 //!    multiplications. `e^(k 2^(-8 j))`, `sin(k 2^(-8 j))`, `cos(k 2^(-8 j))` are
 //!    tabulated for `k < 256`, computed once per `L` (the exponential's apart from the
-//!    sine's and cosine's, at the first call that needs each) as powers of the step in
+//!    sine's and cosine's, filled lazily: the first [`LAZY_CALLS`] calls of each `L` go
+//!    to MPFR, the next builds the tables) as powers of the step in
 //!    MPFR at `F + 40` bits and truncated (error below 1.01 ulp; counted as 2;
 //!    [`exp_level`]).
 //! 3. **Taylor series** in `s`, by Horner's rule, to the least order whose tail is
@@ -65,6 +66,7 @@ pub(crate) mod limbs;
 mod wide;
 
 use std::cmp::Ordering;
+use std::sync::atomic::{AtomicU32, Ordering as AtomicOrdering};
 use std::sync::OnceLock;
 
 use rug::Float;
@@ -182,6 +184,27 @@ fn trig_terms(n_sin: u64, n_cos: u64, levels: usize) -> (Vec<TrigTerm>, f64) {
 
 static EXP_TABLES: [OnceLock<ExpTables>; MAX_LIMBS + 1] = [const { OnceLock::new() }; MAX_LIMBS + 1];
 static TRIG_TABLES: [OnceLock<TrigTables>; MAX_LIMBS + 1] = [const { OnceLock::new() }; MAX_LIMBS + 1];
+
+/// Calls answered by MPFR before the tables of a limb count are built (the tables are
+/// filled lazily, like a ski rental): building the sine and cosine tables costs about
+/// 850 000 instructions at one limb and 3.4 million at six (2026-11-29, callgrind of
+/// `maugis eval` on one `integrate` request of `sin x` at 64 bits: half of the request),
+/// that is the saving of the fixed-point kernel over MPFR's `sin` (about 0.5 us a call
+/// at 64 bits, 1.6 us at 333; the module docs) on 500 to 600 calls. With 256 calls
+/// first in MPFR, a process that makes few calls (a one-shot `maugis integrate` of a
+/// small integral: `sin x` on `[-1, 1]` takes about 100) never pays for the tables,
+/// and one that makes many pays at most the tables' cost once more. The answers are
+/// certified either way (MPFR's are correctly rounded).
+const LAZY_CALLS: u32 = 256;
+
+static EXP_CALLS: [AtomicU32; MAX_LIMBS + 1] = [const { AtomicU32::new(0) }; MAX_LIMBS + 1];
+static TRIG_CALLS: [AtomicU32; MAX_LIMBS + 1] = [const { AtomicU32::new(0) }; MAX_LIMBS + 1];
+
+/// Whether the fixed-point kernel of one limb count serves this call: its tables exist,
+/// or [`LAZY_CALLS`] calls have gone to MPFR before it (they are built now).
+fn tables_ready<T>(tables: &OnceLock<T>, calls: &AtomicU32) -> bool {
+    tables.get().is_some() || calls.fetch_add(1, AtomicOrdering::Relaxed) >= LAZY_CALLS
+}
 
 /// `floor(v 2^shift)` as exactly `len` little-endian limbs (`v >= 0` finite, the result
 /// fits), read off `v`'s significand without an integer conversion.
@@ -455,6 +478,9 @@ pub(crate) fn exp(m: &Float, wp: u32) -> Option<(Float, Mag)> {
     let Some(l) = limbs_for(wp) else {
         return wide::exp(m, wp);
     };
+    if !tables_ready(&EXP_TABLES[l], &EXP_CALLS[l]) {
+        return None;
+    }
     match l {
         1 => exp_kernel::<1>(m, wp),
         2 => exp_kernel::<2>(m, wp),
@@ -482,6 +508,9 @@ pub(crate) fn sin(m: &Float, wp: u32) -> Option<(Float, Mag)> {
 
 fn sin_cos_dispatch(m: &Float, wp: u32, want: Want) -> Option<((Float, Mag), Option<(Float, Mag)>)> {
     let l = limbs_for(wp)?;
+    if !tables_ready(&TRIG_TABLES[l], &TRIG_CALLS[l]) {
+        return None;
+    }
     match l {
         1 => sin_cos_kernel::<1>(m, wp, want),
         2 => sin_cos_kernel::<2>(m, wp, want),
@@ -768,8 +797,30 @@ mod tests {
         pts
     }
 
+    /// Builds every limb count's tables, so that the kernels serve from the first call
+    /// (the lazy fill's first [`LAZY_CALLS`] calls would otherwise go to MPFR).
+    fn all_tables() {
+        for l in 1..=MAX_LIMBS {
+            exp_tables(l);
+            trig_tables(l);
+        }
+    }
+
+    #[test]
+    fn the_tables_are_built_after_the_lazy_calls() {
+        let (tables, calls) = (OnceLock::<u8>::new(), AtomicU32::new(0));
+        let answered: Vec<bool> = (0..LAZY_CALLS + 2).map(|_| tables_ready(&tables, &calls)).collect();
+        assert!(answered[..LAZY_CALLS as usize].iter().all(|&r| !r), "the first LAZY_CALLS go to MPFR");
+        assert!(answered[LAZY_CALLS as usize..].iter().all(|&r| r), "then the kernel serves");
+        // tables that exist serve at once, without counting
+        let (built, fresh) = (OnceLock::from(1u8), AtomicU32::new(0));
+        assert!(tables_ready(&built, &fresh));
+        assert_eq!(fresh.load(AtomicOrdering::Relaxed), 0);
+    }
+
     #[test]
     fn exp_and_sin_cos_enclose_at_every_limb_count() {
+        all_tables();
         let mut served = 0;
         for wp in [24u32, 53, 64, 84, 100, 128, 200, 333, 353, 400, 486] {
             for x in points() {
@@ -886,6 +937,7 @@ mod tests {
 
     #[test]
     fn outside_the_region_the_caller_is_told_to_use_mpfr() {
+        all_tables();
         assert!(exp(&Float::with_val(64, 1e7), 64).is_none());
         // exp past the Horner kernels goes to wide.rs up to its limit, sin_cos to MPFR
         assert!(exp(&Float::with_val(4601, 1), 4601).is_none());
