@@ -22,19 +22,7 @@
 # part of ./dev test).
 set -eu
 cd "$(dirname "$0")/.."
-if [ ! -e /usr/include/acb_calc.h ] && [ ! -e /usr/include/flint/acb_calc.h ]; then
-    SUDO=""; [ "$(id -u)" = 0 ] || SUDO=sudo
-    if ! $SUDO apt-get install -y libflint-arb-dev >&2; then
-        echo "bench_first_call.sh: skipped: C Arb (Debian's libflint-arb-dev) is not installed and could not be installed" >&2
-        exit 0
-    fi
-fi
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-INC=""; [ -e /usr/include/flint/acb_calc.h ] && INC="-I/usr/include/flint"
-cc -O2 $INC -o "$TMP/arb_first_call" reference/arb_first_call.c -lflint-arb -lflint -lmpfr -lgmp
-cargo build -q --release --features maugis/gmp-no-check --example first_call
-ME=target/release/examples/first_call
+. reference/first_call_setup.sh
 echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)" >&2
 # CPU ms of `$@` (perf's task-clock), with FIRST_CALL_ONLY=1
 cpu() {

@@ -17,15 +17,7 @@
 # Debian's libflint-arb-dev (both installed if missing, as root or with sudo).
 set -eu
 cd "$(dirname "$0")/.."
-SUDO=""; [ "$(id -u)" = 0 ] || SUDO=sudo
-command -v valgrind >/dev/null || $SUDO apt-get install -y valgrind >&2
-[ -e /usr/include/acb_calc.h ] || [ -e /usr/include/flint/acb_calc.h ] || $SUDO apt-get install -y libflint-arb-dev >&2
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-INC=""; [ -e /usr/include/flint/acb_calc.h ] && INC="-I/usr/include/flint"
-cc -O2 $INC -o "$TMP/arb_first_call" reference/arb_first_call.c -lflint-arb -lflint -lmpfr -lgmp
-cargo build -q --release --features maugis/gmp-no-check --example first_call
-ME=target/release/examples/first_call
+NEED_VALGRIND=1 . reference/first_call_setup.sh
 # total instructions of `$1 $2 $3 $4`
 total() {
     valgrind --tool=callgrind --callgrind-out-file="$TMP/cg" "$1" "$2" "$3" "$4" >/dev/null 2>&1
