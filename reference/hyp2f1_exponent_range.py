@@ -15,6 +15,14 @@ agree to 45 digits; `asym` (a = 2.2e14124, b = 2.4e-97: the formula in u with it
 term of size (1-z)^(-a) dropped and Gamma(a-b)/Gamma(a) by its leading power,
 relative error O(b/a + (b ln(a|z|))^2), checked below 1e-60); 40 significant
 digits printed.
+
+`lead` (two large parameters, a |z| past c and b |z| by more than 2^190; issue
+37's scan refused them Overflow): Gamma(c)/Gamma(c-b) (a |z|)^(-b), the leading
+term of Euler's integral after t = s/(a |z|) (src/special/hyp2f1/dominant_param.rs
+proves the enclosure the library uses); its relative error is about
+(b + 1)(c + b^2 + 1)/(a |z|) (an estimate; the three `mpmath` rows at a = 3.3e75
+to 1e90 below, where mpmath.hyp2f1 answers, check it: observed 1e-75 to 1e-64),
+required below 1e-60 and at the scan's inputs below 1e-1000.
 """
 import os
 import sys
@@ -48,6 +56,21 @@ CASES = [
     ("2165949117243957876", "-0.000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000001", "23.46340274615762", "-20", "u_long"),
     # issue 37's scan (seed 1), refused Overflow: a = 2.2e14124
     ("22.377422829558384e14123", "0.00000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000024166077292173306", "2.5", "-238.25", "asym"),
+    # two large parameters, a |z| >> c (dominant_param.rs): mpmath.hyp2f1 answers
+    # these; the route applies at 128 bits (a |z| / c past 2^200)
+    ("1e80", "2.5", "1e5", "-3", "mpmath"),
+    ("3.3e75", "23.38", "2.475e12", "-222.375", "mpmath"),
+    ("1e90", "27.39", "2.9e20", "-8", "mpmath"),
+    # issue 37's scan (hyp2f1 alone, seed 1, and the full scan, seed 2), refused
+    # Overflow: a of 10^13207 to 10^30654 with c of 10^599 to 10^16057
+    ("26.62112943576951e24590", "27.391839793295098", "29.06392735855222e598", "-8", "lead"),
+    ("0.9999999999999998e30654", "22.42311673806016", "22.994783413536595e10919", "-45.25", "lead"),
+    ("181.5e25521", "2.3700497835751037e1", "0.0000000000000000000000000000000000000000000000000000000000000000000000000000000000000000009532593067071918e16145", "-155.5", "lead"),
+    ("0.00000000000000000000005762613620960503e20842", "2.4048043416439157e1", "28.596813675772538e1284", "-14", "lead"),
+    ("0.00000000000000000000000000000000000000000000000000000000000000000000000000000000000004005305780528599e13291", "23.384769896797522", "24.75e12503", "-222.375", "lead"),
+    # neighbours: b below 1 (c = b + 1, the route's edge), and a symmetric case
+    ("7.5e3000", "0.75", "1.75", "-0.5", "lead"),
+    ("3.5", "4.5e5000", "1e20", "-2", "lead"),
 ]
 
 
@@ -90,8 +113,25 @@ def asym(a, b, c, z):
     return mpmath.gammaprod([c], [c - b]) * mpmath.exp(-b * mpmath.log(a * -z))
 
 
+def lead(a, b, c, z):
+    """2F1(a, b; c; z) for a |z| >> c, b |z| (z < 0, a > 0, c >= b + 1): the
+    leading term Gamma(c)/Gamma(c-b) (a |z|)^(-b) (module docs; a and b swapped
+    when b is the larger)."""
+    a, b, c, z = (mpf(x) for x in (a, b, c, z))
+    if b > a:
+        a, b = b, a
+    x = -z
+    err = (b + 1) * (c + b * b + 1) / (a * x)
+    if not (a > 0 and b > 0 and c >= b + 1 and x > 0 and err < mpf(10) ** -60):
+        raise SystemExit("lead does not apply at %r" % ((a, b, c, z),))
+    # ln Gamma(c) - ln Gamma(c - b) cancels log2(c ln c) bits: carried at that much more
+    with mpmath.workprec(mp.prec + int(mpmath.log(c * mpmath.log(c + 2), 2)) + 64):
+        ratio = mpmath.loggamma(c) - mpmath.loggamma(c - b)
+    return mpmath.exp(ratio - b * mpmath.log(a * x))
+
+
 def value(a, b, c, z, how):
-    f = {"pfaff": corners.pfaff_sum, "u": u_sum, "u_long": u_sum, "asym": asym}.get(how, mpmath.hyp2f1)
+    f = {"pfaff": corners.pfaff_sum, "u": u_sum, "u_long": u_sum, "asym": asym, "lead": lead}.get(how, mpmath.hyp2f1)
     vals = []
     # u_long: b - a needs log2(a/b) bits before any digit of the value
     for p in (2000, 2400) if how == "u_long" else (600, 900):
@@ -107,6 +147,7 @@ def main():
         "2F1(a, b; c; z) at the DECIMALS as typed (issue 37's Overflow refusals); how: mpmath.hyp2f1,",
         "pfaff: Pfaff's series term by term, u: the formula in 1/(1-z) term by term; at 600 and 900 bits,",
         "(u_long: 2000 and 2400), asym: Gamma(c)/Gamma(c-b) (a|z|)^-b (a huge, b tiny; error below 1e-60),",
+        "lead: the same leading term for a|z| >> c, b|z| (two large parameters; error estimate below 1e-60),",
         "kept iff the two agree to %d digits; %d digits printed" % (DIGITS + 5, DIGITS),
     ]
     corners.write_table(OUT, "hyp2f1_exponent_range", notes, CASES, value)

@@ -55,6 +55,7 @@ pub(crate) use dd_bounded::{div_f64_p, mag, BoundedDd, BOUND_INFLATION, C_ADD, U
 pub(crate) use double_double::{cpu_dispatch, Dekker, ExactProduct, Fused};
 pub use mag::Mag;
 pub use scaled::Scaled;
+pub(crate) use scaled::log2_magnitude;
 pub(crate) use scaled::{intermediate, ln_seconds};
 
 /// `base^n` by square-and-multiply (`one` is the unit of `mul`); shared by the ball,

@@ -55,9 +55,10 @@ pub enum Error {
     /// that range whose product is inside it are answered
     /// ([`crate::ball::Scaled`]); this is the product's own size.
     ValueOutOfRange {
-        /// An estimate of `log2 |value|` (infinite when that is itself past
-        /// f64's range, as for `(1 - 3.9e-62)^(-2.7e24977)`).
-        log2_magnitude: f64,
+        /// `log2 |value|`, an estimate or a proven bound, as a decimal
+        /// `mantissa * 10^exp10`: the logarithm can itself pass f64's range
+        /// (`(1 - 4.26e-273)^(9.5e14123)` is about `2^(-5.8e13851)`).
+        log2_magnitude: Log2Magnitude,
     },
     /// An integrand expression that does not parse ([`crate::quad::expr`]).
     Expression(crate::quad::expr::error::ExprError),
@@ -364,7 +365,7 @@ impl fmt::Display for Error {
             Error::Overflow { what } => write!(f, "overflow in {what}: the result exceeds the exponent range"),
             Error::ValueOutOfRange { log2_magnitude } => write!(
                 f,
-                "the value is about 2^{log2_magnitude:.4e}, outside the exponent range 2^-(2^30) .. 2^(2^30): no precision can represent it"
+                "the value is {log2_magnitude}, outside the exponent range 2^-(2^30) .. 2^(2^30): no precision can represent it"
             ),
             Error::Expression(e) => write!(f, "{e}"),
             Error::Integration(e) => write!(f, "{e}"),
@@ -1157,6 +1158,102 @@ impl fmt::Display for Reached {
             Reached::Evaluations { count } => write!(f, "{count} integrand evaluations"),
             Reached::Terms { count } => write!(f, "{count} terms"),
         }
+    }
+}
+
+/// What a [`Log2Magnitude`] states about `log2 |value|`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Log2Relation {
+    /// An estimate (the value's enclosure lies wholly past the range; its
+    /// midpoint's logarithm is printed).
+    About,
+    /// A proven lower bound: `log2 |value| >= ` the number.
+    AtLeast,
+    /// A proven upper bound: `log2 |value| <= ` the number.
+    AtMost,
+}
+
+/// `log2 |value|` of a value outside MPFR's exponent range
+/// ([`Error::ValueOutOfRange`]), as `mantissa * 10^exp10` with `1 <= |mantissa|
+/// < 10` (or both 0). A decimal exponent of its own, because the logarithm
+/// itself passes f64's range (`2^(-5.8e13851)`), where an `f64` would read
+/// `-inf`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Log2Magnitude {
+    /// The signed significand, `1 <= |mantissa| < 10` (0 for 0).
+    pub mantissa: f64,
+    /// The power of ten.
+    pub exp10: i64,
+    /// Whether the number is an estimate or a bound.
+    pub relation: Log2Relation,
+}
+
+impl Log2Magnitude {
+    /// `mantissa * 10^exp10`, normalized (`mantissa` finite).
+    pub fn new(mantissa: f64, exp10: i64, relation: Log2Relation) -> Log2Magnitude {
+        if mantissa == 0.0 || !mantissa.is_finite() {
+            return Log2Magnitude { mantissa: 0.0, exp10: 0, relation };
+        }
+        let shift = mantissa.abs().log10().floor();
+        let mut m = mantissa / 10f64.powf(shift);
+        let mut e = exp10.saturating_add(shift as i64);
+        // the division can land a hair outside [1, 10)
+        if m.abs() >= 10.0 {
+            m /= 10.0;
+            e = e.saturating_add(1);
+        } else if m.abs() < 1.0 {
+            m *= 10.0;
+            e = e.saturating_sub(1);
+        }
+        Log2Magnitude { mantissa: m, exp10: e, relation }
+    }
+
+    /// An estimate from a finite `f64`.
+    pub fn about(log2: f64) -> Log2Magnitude {
+        Log2Magnitude::new(log2, 0, Log2Relation::About)
+    }
+
+    /// The number as an `f64` (`+-inf` past its range).
+    pub fn to_f64(&self) -> f64 {
+        if self.exp10 > 400 {
+            return self.mantissa * f64::INFINITY;
+        }
+        if self.exp10 < -400 {
+            return 0.0;
+        }
+        self.mantissa * 10f64.powi(self.exp10 as i32)
+    }
+
+    /// Whether the value is below the range (`log2 |value| < 0`).
+    pub fn is_negative(&self) -> bool {
+        self.mantissa < 0.0
+    }
+
+    /// Order of the numbers (not of the relations).
+    pub fn cmp_number(&self, other: &Log2Magnitude) -> std::cmp::Ordering {
+        use std::cmp::Ordering;
+        let sign = |m: f64| if m > 0.0 { 1 } else if m < 0.0 { -1 } else { 0 };
+        let (s1, s2) = (sign(self.mantissa), sign(other.mantissa));
+        if s1 != s2 || s1 == 0 {
+            return s1.cmp(&s2);
+        }
+        let abs = (self.exp10, self.mantissa.abs()).partial_cmp(&(other.exp10, other.mantissa.abs())).unwrap_or(Ordering::Equal);
+        if s1 > 0 {
+            abs
+        } else {
+            abs.reverse()
+        }
+    }
+}
+
+impl fmt::Display for Log2Magnitude {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let word = match self.relation {
+            Log2Relation::About => "about",
+            Log2Relation::AtLeast => "at least",
+            Log2Relation::AtMost => "at most",
+        };
+        write!(f, "{word} 2^({:.4}e{})", self.mantissa, self.exp10)
     }
 }
 

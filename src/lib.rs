@@ -92,7 +92,7 @@ pub use rug;
 
 pub use ball::{Ball, Bounded};
 pub use budget::Budget;
-pub use error::{Error, Result};
+pub use error::{Error, Log2Magnitude, Log2Relation, Result};
 
 /// Largest output precision (bits) a caller may request.
 pub const MAX_PREC: u32 = 1 << 16;

@@ -44,7 +44,7 @@
 use rug::Float;
 
 use super::{Ball, Mag};
-use crate::error::{Error, Result};
+use crate::error::{Error, Log2Magnitude, Log2Relation, Result};
 
 /// A real number in `m e^l` (see the module docs).
 #[derive(Clone, Debug)]
@@ -69,6 +69,23 @@ pub(crate) fn intermediate(e: Error) -> Error {
         Error::ValueOutOfRange { .. } => Error::Overflow { what: "an intermediate product taken in logarithms (past the exponent range)".into() },
         e => e,
     }
+}
+
+/// `q + extra` as a [`Log2Magnitude`] estimate: `q` (a float of any exponent
+/// in MPFR's range) is past f64's range when the value is `2^(2^1024)` or
+/// less than its reciprocal, so it is read as a decimal through `log10` at 64
+/// bits (the significand to about 10 digits: the printed 5 are right).
+pub(crate) fn log2_magnitude(q: &Float, extra: i64) -> Log2Magnitude {
+    let v = Float::with_val(64, q + extra);
+    if v.is_zero() || !v.is_finite() {
+        return Log2Magnitude::about(v.to_f64());
+    }
+    let l = Float::with_val(64, v.abs_ref()).log10();
+    let e = Float::with_val(64, l.floor_ref());
+    let frac = Float::with_val(64, &l - &e).to_f64();
+    let m = 10f64.powf(frac);
+    let m = if v.is_sign_negative() { -m } else { m };
+    Log2Magnitude::new(m, e.to_f64() as i64, Log2Relation::About)
 }
 
 /// `floor(log2 |x|) + 1` of a finite nonzero float, 0 otherwise.
@@ -205,13 +222,16 @@ impl Scaled {
     pub fn sum_to_value(terms: &[Scaled], wp: u32) -> Result<Ball> {
         let mut out: Option<Ball> = None;
         let mut tiny = Mag::ZERO;
-        let mut tiny_log2 = f64::NEG_INFINITY;
+        let mut tiny_log2: Option<Log2Magnitude> = None;
         for t in terms {
             match t.form(wp) {
                 Ok(b) => out = Some(out.map_or_else(|| b.clone(), |o| o.add(&b))),
-                Err(Error::ValueOutOfRange { log2_magnitude }) if log2_magnitude < 0.0 => {
+                Err(Error::ValueOutOfRange { log2_magnitude }) if log2_magnitude.is_negative() => {
                     tiny = tiny.add(t.abs_upper_mag());
-                    tiny_log2 = tiny_log2.max(log2_magnitude);
+                    tiny_log2 = Some(match tiny_log2 {
+                        Some(m) if m.cmp_number(&log2_magnitude).is_ge() => m,
+                        _ => log2_magnitude,
+                    });
                 }
                 Err(Error::ValueOutOfRange { .. }) => {
                     return Err(Error::Overflow { what: "a sum taken in logarithms (a term past the exponent range)".into() })
@@ -224,7 +244,7 @@ impl Scaled {
                 b.add_error_mag(tiny);
                 Ok(b)
             }
-            None => Err(Error::ValueOutOfRange { log2_magnitude: tiny_log2 }),
+            None => Err(Error::ValueOutOfRange { log2_magnitude: tiny_log2.unwrap_or(Log2Magnitude::about(f64::NEG_INFINITY)) }),
         }
     }
 
@@ -265,7 +285,7 @@ impl Scaled {
         let p = self.l.prec().max((i64::from(wp) + 16 + size).min(u32::MAX as i64 / 2) as u32);
         let ln2 = Ball::ln2(p);
         let q = Float::with_val(64, self.l.mid() / ln2.mid()).round();
-        let log2_estimate = q.to_f64() + exponent(self.m.mid()) as f64;
+        let log2_estimate = log2_magnitude(&q, exponent(self.m.mid()));
         // |k| past 2^62: the value is 2^(+-2^62) times m. Out of range when the
         // whole of `l` is past 2^61 (in either direction, with `m` excluding zero
         // for the upper side) and `|m|` within 2^(+-2^40): however wide `l` is
@@ -322,12 +342,12 @@ mod tests {
         // the factor alone is refused as out of range, with its size
         match Scaled::pow(&three, &big, 64).unwrap().to_value(64) {
             Err(Error::ValueOutOfRange { log2_magnitude }) => {
-                assert!((log2_magnitude / (1u64 << 40) as f64 - 3f64.log2()).abs() < 1e-9, "{log2_magnitude}")
+                assert!((log2_magnitude.to_f64() / (1u64 << 40) as f64 - 3f64.log2()).abs() < 1e-9, "{log2_magnitude}")
             }
             other => panic!("{other:?}"),
         }
         match Scaled::pow(&three, &big.neg(), 64).unwrap().to_value(64) {
-            Err(Error::ValueOutOfRange { log2_magnitude }) => assert!(log2_magnitude < -1e12),
+            Err(Error::ValueOutOfRange { log2_magnitude }) => assert!(log2_magnitude.to_f64() < -1e12),
             other => panic!("{other:?}"),
         }
     }

@@ -292,7 +292,7 @@ fn registry_mp_budget_scan() {
                     if let maugis::Error::ValueOutOfRange { log2_magnitude } = e {
                         // the value itself past the exponent range: counted with the
                         // input's refusals, printed so that a run can tell them apart
-                        eprintln!("value out of range (2^{log2_magnitude:.3e}): {text}");
+                        eprintln!("value out of range ({log2_magnitude}): {text}");
                     }
                     input += 1
                 }

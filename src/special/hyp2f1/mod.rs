@@ -127,9 +127,11 @@
 mod ball_input;
 mod choose;
 mod connection;
+mod dominant_param;
 mod large_param;
 mod log_case;
 mod native;
+mod out_of_range;
 mod native_connection;
 mod native_dw;
 mod native_series;
