@@ -8,7 +8,10 @@ is `mpmath` (mpmath.hyp2f1 from the decimal strings at 600 and 900 bits, kept if
 they agree to 45 digits), `pfaff` (for z < 0: Pfaff's series in w = z/(z-1) summed
 term by term at 600 and 900 bits, with the same test) or `sum` (a terminating series, a or b a non-positive
 integer, summed term by term in mpmath from the decimal strings at 4000 and 8000
-bits, kept iff they agree to 45 digits; mpmath.hyp2f1 gives up on it). 40
+bits, kept iff they agree to 45 digits; mpmath.hyp2f1 gives up on it), or `inv_z`
+(z < -1 with a tiny c: DLMF 15.8.2 in 1/z term by term, its Gamma ratios with an
+integer difference as products, at 600 and 900 bits; mpmath.hyp2f1 runs for
+minutes). 40
 significant digits are printed.
 """
 import os
@@ -57,6 +60,14 @@ CASES = [
     # 65 536 bits; the majorant's d/db bound M(B+1) was 2^9500 times the value
     ("-9", "0.000000000000000004647996797235006e21871", "24.310973118189104e-26855", "-50.125", "sum"),
     ("-2", "27.70450403676515e20239", "22.60653980638881e-20850", "-2.1425e2", "sum"),
+    # issue 37's scan: z far below -1 with a tiny c, refused PrecisionExhausted: c - b
+    # (or c - a) within c of a pole, rounded onto it (mpmath.hyp2f1 runs for minutes)
+    ("-206.375", "19", "0.5e-21620", "-0.5e10785", "inv_z"),
+    ("0." + "0" * 156 + "10514588628797118", "164", "72.625e-27888", "-0.5e13643", "inv_z"),
+    ("17", "22.94530994544671", "26.75e-30381", "-32.875e17468", "inv_z"),
+    # neighbours: a moderate z, and c tiny but not as tiny
+    ("-20.375", "7", "1e-300", "-1e40", "inv_z"),
+    ("5", "2.5", "3e-100", "-1e20", "inv_z"),
 ]
 
 
@@ -89,8 +100,45 @@ def pfaff_sum(a, b, c, z):
     return (1 - z) ** (-a) * s
 
 
+def gamma_ratio(x, y, d):
+    """Gamma(x) / Gamma(y) with d = x - y: for an integer d (as typed) the product
+    (x-1)...(x-d) (d > 0) or 1/((y-1)...(y-|d|)) (d < 0), where both Gammas may sit
+    next to their poles; else mpmath.gamma of each."""
+    if d == int(d) and 0 < abs(d) <= 5000:
+        n = int(d)
+        if n > 0:
+            return mpmath.fprod(x - j for j in range(1, n + 1))
+        return 1 / mpmath.fprod(y - j for j in range(1, -n + 1))
+    return mpmath.gamma(x) / mpmath.gamma(y)
+
+
+def inv_z(a, b, c, z):
+    """2F1(a, b; c; z) for z < -1, b - a not an integer, by DLMF 15.8.2:
+    G1 (-z)^(-a) F(a, a-c+1; a-b+1; 1/z) + G2 (-z)^(-b) F(b, b-c+1; b-a+1; 1/z),
+    G1 = [Gamma(c)/Gamma(c-a)] [Gamma(b-a)/Gamma(b)], G2 likewise with a and b
+    exchanged (each ratio by gamma_ratio), each series term by term past every
+    sign change of its lower parameter, then until a term is below 2^-(prec+64) of
+    the sum with the term ratio below 3/4 (|1/z| is at most 1e-20 here)."""
+    x = 1 / z
+
+    def series(p, q, r):
+        t = s = mpf(1)
+        n = 0
+        while True:
+            ratio = (p + n) * (q + n) / ((r + n) * (n + 1)) * x
+            t *= ratio
+            s += t
+            n += 1
+            if n > -r and abs(ratio) < mpf(3) / 4 and abs(t) < abs(s) * mpf(2) ** -(mp.prec + 64):
+                return s
+
+    g1 = gamma_ratio(c, c - a, a) * gamma_ratio(b - a, b, -a)
+    g2 = gamma_ratio(c, c - b, b) * gamma_ratio(a - b, a, -b)
+    return g1 * (-z) ** (-a) * series(a, a - c + 1, a - b + 1) + g2 * (-z) ** (-b) * series(b, b - c + 1, b - a + 1)
+
+
 def value(a, b, c, z, how):
-    f = {"sum": poly_sum, "pfaff": pfaff_sum}.get(how, mpmath.hyp2f1)
+    f = {"sum": poly_sum, "pfaff": pfaff_sum, "inv_z": inv_z}.get(how, mpmath.hyp2f1)
     bits = (4000, 8000) if how == "sum" else (600, 900)
     vals = []
     for p in bits:

@@ -228,6 +228,9 @@ pub(crate) fn gamma_of_ball_scaled(x: &Ball, wp: u32) -> Result<Scaled> {
 /// the remainders `R(t) in (0, 1/(12 t))` as the radius `max(1/(12 x_lo), 1/(12
 /// y_lo))`. Otherwise [`gamma_of_ball_scaled`] of each.
 pub(crate) fn gamma_pair_scaled(x: &Ball, y: &Ball, d: &Ball, wp: u32) -> Result<Scaled> {
+    if let Some(r) = gamma_pair_integer(x, y, d, wp) {
+        return Ok(r);
+    }
     let huge = |t: &Ball| t.lower() > 0 && t.lower().get_exp().is_some_and(|e| i64::from(e) > i64::from(wp) + 17);
     if !(huge(x) && huge(y)) {
         return gamma_of_ball_scaled(x, wp)?.div(&gamma_of_ball_scaled(y, wp)?);
@@ -263,6 +266,38 @@ pub(crate) fn gamma_pair_scaled(x: &Ball, y: &Ball, d: &Ball, wp: u32) -> Result
     let mut l = l;
     l.add_error(&bound(x).max(&bound(y)));
     Ok(Scaled::with_log(Ball::one(wp), l))
+}
+
+/// Most factors of [`gamma_pair_integer`]'s product.
+const PAIR_PRODUCT_MAX: u32 = 1024;
+
+/// `Gamma(x) / Gamma(y)` for `d = x - y` an exact integer `n`, `0 < |n| <=`
+/// [`PAIR_PRODUCT_MAX`], by `Gamma(t + 1) = t Gamma(t)` [DLMF 5.5.1]:
+/// `prod_{j=1}^{n} (x - j)` for `n > 0`, `1 / prod_{j=1}^{|n|} (y - j)` for `n <
+/// 0`, from `x` (or `y`) alone in ball arithmetic. Both Gammas may sit next to
+/// their poles while the ratio is a polynomial: `Gamma(c) / Gamma(c - 19)` at `c
+/// = 5e-21621` is `(c - 1) ... (c - 19)`, where `c - 19`, rounded to the working
+/// precision, is a ball around the pole `-19` (issue 37's scan: `2F1(-206.375,
+/// 19; 5e-21621; -5e10784)` refused `PrecisionExhausted`). The identity is one of
+/// meromorphic functions, so the product is the ratio's value (its continuous
+/// extension) at every point of the ball. `None` when `d` is not such an
+/// integer, or a factor ball holds zero (`1/0`), or the product is not finite.
+fn gamma_pair_integer(x: &Ball, y: &Ball, d: &Ball, wp: u32) -> Option<Scaled> {
+    if !d.is_exact() || !d.mid().is_integer() || d.mid().is_zero() {
+        return None;
+    }
+    let n = d.mid().to_f64();
+    if n.abs() > f64::from(PAIR_PRODUCT_MAX) {
+        return None;
+    }
+    let (base, count) = if n > 0.0 { (x, n as i64) } else { (y, -n as i64) };
+    let p = wp + 16;
+    let mut prod = Ball::one(p);
+    for j in 1..=count {
+        prod = prod.mul(&base.set_prec(p.max(base.prec())).add_i64(-j));
+    }
+    let prod = if n > 0.0 { prod } else { prod.recip().ok()? };
+    prod.is_finite().then(|| Scaled::from_ball(prod))
 }
 
 /// `Gamma` over a pole-free ball `x` with `|x| >= 2` as `m e^l`:

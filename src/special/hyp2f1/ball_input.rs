@@ -117,9 +117,12 @@ pub fn hyp2f1_ball_mp(a: &Ball, b: &Ball, c: &Ball, z: &Ball, prec: u32) -> Resu
         }
     }
     // a value proven past the exponent range (`out_of_range.rs`): positive
-    // parameters, `0 < z < 1`, `F >= t_n >= 2^emax`
-    if let Some(e) = proven_above_range(a, b, c, z) {
-        return Err(e);
+    // parameters, `0 < z < 1`, `F >= t_n >= 2^emax` (`c` equal to `b`: the power
+    // below, which names the size itself)
+    if equal_to_c(a, b, c).is_none() {
+        if let Some(e) = proven_above_range(a, b, c, z) {
+            return Err(e);
+        }
     }
     if let Some(r) = hyp2f1_small_parameter(a, b, c, z, prec) {
         return Ok(r);

@@ -444,6 +444,24 @@ fn gamma_quotient(num: [&Ball; 2], den: [&Ball; 2], wp: u32) -> Result<Scaled> {
     n.div(&d)
 }
 
+/// Most bits of [`difference`]'s exact midpoint.
+const DIFFERENCE_MAX_BITS: u32 = 1 << 17;
+
+/// `x - y` over balls with the midpoints' difference exact (up to
+/// [`DIFFERENCE_MAX_BITS`], else rounded as `Ball::sub`): `c - 19` at `c =
+/// 5e-21621` keeps its distance to the pole `-19`, which a rounding to the
+/// working precision would swallow (the formula's Gammas and the series' lower
+/// parameter `a - b + 1` need it; issue 37's scan). The radius is the sum of
+/// the radii; the series engine rounds each `p + n` from the midpoint, so a long
+/// midpoint costs one long addition a term.
+fn difference(x: &Ball, y: &Ball) -> Ball {
+    let m = crate::special::exact_sub(x.mid(), y.mid());
+    if m.prec() > DIFFERENCE_MAX_BITS {
+        return x.sub(y);
+    }
+    Ball::with_mag(m, x.rad_mag().add(y.rad_mag()))
+}
+
 /// The route of the module docs at working precision `wp`, over balls of
 /// parameters and `z` (`z < 0` or `0 < z < 1` on its ball). Errors when a
 /// needed difference (`b - a`, or `c - a - b`) holds an integer or a Gamma
@@ -451,12 +469,12 @@ fn gamma_quotient(num: [&Ball; 2], den: [&Ball; 2], wp: u32) -> Result<Scaled> {
 pub(crate) fn hyp2f1_large_param(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32) -> Result<Ball> {
     let [a, b, c, z] = [a, b, c, z].map(|x| input_ball(x, wp));
     let one = Ball::one(wp);
-    let (ca, cb) = (c.sub(&a), c.sub(&b));
+    let (ca, cb) = (difference(&c, &a), difference(&c, &b));
     let omc = c.neg().add_i64(1);
     if z.upper() < 0 {
         let omz = one.sub(&z);
         let u = omz.recip()?;
-        let (ba, ab) = (b.sub(&a), a.sub(&b));
+        let (ba, ab) = (difference(&b, &a), difference(&a, &b));
         // `c - a` (or `c - b`) an exact non-positive integer: `1/Gamma(c - a) = 0`
         // and that term vanishes (its other factors are finite: `b - a` is not an
         // integer, else the route fails above). `2F1(2, 29.65; 1; -5.4e7163)` was
