@@ -100,6 +100,21 @@ def pfaff_sum(a, b, c, z):
     return (1 - z) ** (-a) * s
 
 
+def series(a, b, c, x, past_poles=False):
+    """2F1(a, b; c; x) for |x| < 1/2, term by term (with `past_poles`, past every
+    sign change of c + n first), then until a term is below 2^-(prec+64) of the sum with the term ratio below
+    3/4 (the tail is then below four times that term, as the ratio tends to x)."""
+    t = s = mpf(1)
+    n = 0
+    while True:
+        r = (a + n) * (b + n) / ((c + n) * (n + 1)) * x
+        t *= r
+        s += t
+        n += 1
+        if (not past_poles or n > -c) and abs(r) < mpf(3) / 4 and abs(t) < abs(s) * mpf(2) ** -(mp.prec + 64):
+            return s
+
+
 def gamma_ratio(x, y, d):
     """Gamma(x) / Gamma(y) with d = x - y: for an integer d (as typed) the product
     (x-1)...(x-d) (d > 0) or 1/((y-1)...(y-|d|)) (d < 0), where both Gammas may sit
@@ -117,24 +132,11 @@ def inv_z(a, b, c, z):
     G1 (-z)^(-a) F(a, a-c+1; a-b+1; 1/z) + G2 (-z)^(-b) F(b, b-c+1; b-a+1; 1/z),
     G1 = [Gamma(c)/Gamma(c-a)] [Gamma(b-a)/Gamma(b)], G2 likewise with a and b
     exchanged (each ratio by gamma_ratio), each series term by term past every
-    sign change of its lower parameter, then until a term is below 2^-(prec+64) of
-    the sum with the term ratio below 3/4 (|1/z| is at most 1e-20 here)."""
+    sign change of its lower parameter (`series`; |1/z| is at most 1e-20 here)."""
     x = 1 / z
-
-    def series(p, q, r):
-        t = s = mpf(1)
-        n = 0
-        while True:
-            ratio = (p + n) * (q + n) / ((r + n) * (n + 1)) * x
-            t *= ratio
-            s += t
-            n += 1
-            if n > -r and abs(ratio) < mpf(3) / 4 and abs(t) < abs(s) * mpf(2) ** -(mp.prec + 64):
-                return s
-
     g1 = gamma_ratio(c, c - a, a) * gamma_ratio(b - a, b, -a)
     g2 = gamma_ratio(c, c - b, b) * gamma_ratio(a - b, a, -b)
-    return g1 * (-z) ** (-a) * series(a, a - c + 1, a - b + 1) + g2 * (-z) ** (-b) * series(b, b - c + 1, b - a + 1)
+    return g1 * (-z) ** (-a) * series(a, a - c + 1, a - b + 1, x, True) + g2 * (-z) ** (-b) * series(b, b - c + 1, b - a + 1, x, True)
 
 
 def value(a, b, c, z, how):

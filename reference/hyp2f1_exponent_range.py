@@ -74,19 +74,7 @@ CASES = [
 ]
 
 
-def series(a, b, c, x):
-    """2F1(a, b; c; x) for |x| < 1/2, term by term until a term is below
-    2^-(prec+64) of the sum with the term ratio below 3/4 (the tail is then below
-    four times that term, as the ratio tends to x)."""
-    t = s = mpf(1)
-    n = 0
-    while True:
-        r = (a + n) * (b + n) / ((c + n) * (n + 1)) * x
-        t *= r
-        s += t
-        n += 1
-        if abs(r) < mpf(3) / 4 and abs(t) < abs(s) * mpf(2) ** -(mp.prec + 64):
-            return s
+series = corners.series
 
 
 def u_sum(a, b, c, z):
