@@ -71,6 +71,9 @@ CASES = [
     # neighbours: b below 1 (c = b + 1, the route's edge), and a symmetric case
     ("7.5e3000", "0.75", "1.75", "-0.5", "lead"),
     ("3.5", "4.5e5000", "1e20", "-2", "lead"),
+    # issue 37's full scan (seed 1), refused Overflow: a tiny negative b with a tiny
+    # c (the split integral of small_parameter.rs, [1, 1 + w], w about 4e-5772)
+    ("0." + "0" * 90 + "41711284033363465e11056", "-202e-5878", "0." + "0" * 104 + "935750676677635", "-1", "asym"),
 ]
 
 

@@ -59,6 +59,14 @@
 //! `int_0^1 t^(-beta-1) min(1, A Z t) dt = e^(beta L) / (1 - beta) + (e^(beta L) - 1) / beta`,
 //! `1/Gamma(1 - beta) <= 1` and `Gamma(c)/Gamma(c + beta) <= e^(-beta psi(1)) <= e^beta`
 //! (`c >= 1`): `F in [1, 1 + w]`, `w = beta e^(beta (1 + L)) (1/(1 - beta) + L)`.
+//! For `0 < c < 1` (`2F1(4.2e10967, -2e-5876; 9.4e-105; -1)`, issue 37's scan:
+//! `Overflow`) the integral is split at `t = 1/2`: on `[0, 1/2]`,
+//! `(1-t)^(c-b-1) <= 2^(1-c-beta) <= 2`, so that part is at most twice the one
+//! above; on `[1/2, 1]`, `t^(-beta-1) <= 2^(beta+1)`, the bracket at most 1 and
+//! `int (1-t)^(c+beta-1) = 2^(-c-beta)/(c+beta)`, at most `2/(c+beta)`; and
+//! `Gamma(c)/Gamma(c+beta) = ((c+beta)/c) Gamma(c+1)/Gamma(c+1+beta) <=
+//! (1 + beta/c) e^beta` (the same `psi` bound at `c + 1 >= 1`):
+//! `w = beta [2 (1 + beta/c_lo) e^(beta (1 + L)) (1/(1 - beta) + L) + 2 e^beta / c_lo]`.
 //!
 //! For `0 <= z <= 1`, `a >= 0`, `b > 0`, `c > a + b + 1`: `1 <= (1-zt)^(-a) <=
 //! (1-t)^(-a)`, so `1 <= F <= F(a, b; c; 1)`, and since `g(t) = (1-t)^(-a)` has
@@ -142,9 +150,9 @@ fn width(large: &Ball, small: &Ball, c: &Ball, z: &Ball) -> Option<Float> {
 }
 
 /// The width `w` of the module docs' `[1, 1 + w]` for a tiny negative `small`
-/// (`-1/2 <= b < 0`, `a >= 0`, `c >= 1`, `z < 0`), or `None`.
+/// (`-1/2 <= b < 0`, `a >= 0`, `c > 0`, `z < 0`), or `None`.
 fn width_negative(large: &Ball, small: &Ball, c: &Ball, z: &Ball) -> Option<Float> {
-    if !(small.upper() < 0 && small.lower() >= -0.5 && large.lower() >= 0 && c.lower() >= 1 && z.upper() < 0) {
+    if !(small.upper() < 0 && small.lower() >= -0.5 && large.lower() >= 0 && c.lower() > 0 && z.upper() < 0) {
         return None;
     }
     let beta = up(Float::with_val(BOUND_PREC, -small.lower()));
@@ -156,6 +164,16 @@ fn width_negative(large: &Ball, small: &Ball, c: &Ball, z: &Ball) -> Option<Floa
     let one_minus = Float::with_val_round(BOUND_PREC, 1u32 - &beta, Round::Down).0;
     let inv = Float::with_val_round(BOUND_PREC, 1u32 / &one_minus, Round::Up).0;
     let w = mul_up(&mul_up(&beta, &e), &Float::with_val_round(BOUND_PREC, &inv + &l, Round::Up).0);
+    if c.lower() >= 1 {
+        return w.is_finite().then_some(w);
+    }
+    // 0 < c < 1 (module docs): beta [2 (1 + beta/c_lo) e^(beta(1+L)) (1/(1-beta) + L) + 2 e^beta / c_lo]
+    let c_lo = Float::with_val_round(BOUND_PREC, c.lower(), Round::Down).0;
+    let ratio = Float::with_val_round(BOUND_PREC, &beta / &c_lo, Round::Up).0;
+    let near = mul_up(&Float::with_val_round(BOUND_PREC, &ratio + 1u32, Round::Up).0, &Float::with_val_round(BOUND_PREC, &w * 2u32, Round::Up).0);
+    let e_beta = Float::with_val_round(BOUND_PREC, beta.exp_ref(), Round::Up).0;
+    let far = mul_up(&mul_up(&beta, &e_beta), &Float::with_val_round(BOUND_PREC, 2u32 / &c_lo, Round::Up).0);
+    let w = Float::with_val_round(BOUND_PREC, &near + &far, Round::Up).0;
     w.is_finite().then_some(w)
 }
 
@@ -236,6 +254,9 @@ mod tests {
             // a tiny negative b: [1, 1 + w]
             (100.0, -tiny(40), 2.5, -20.0, 16, false),
             (1000.0, -tiny(200), 1.0, -3.0, 128, false),
+            // a tiny negative b with 0 < c < 1: the split integral
+            (1000.0, -tiny(200), 0.5, -3.0, 128, false),
+            (50.0, -tiny(300), tiny(150).to_f64(), -1.0, 53, false),
         ] {
             let (ab, bb, cb, zb) = (exact(a), Ball::from_float(&b, 64), exact(c), exact(z));
             let r = hyp2f1_small_parameter(&ab, &bb, &cb, &zb, prec).unwrap_or_else(|| panic!("2F1({a}, {b}; {c}; {z}) at {prec}: not taken"));
@@ -258,8 +279,8 @@ mod tests {
         let t = Ball::from_float(&(Float::with_val(64, 1) >> 100), 64);
         let neg = t.neg();
         for (a, b, c, z) in [
-            // a tiny negative b with c < 1
-            (exact(1e18), neg.clone(), exact(0.5), exact(-20.0)),
+            // a tiny negative b with c <= 0
+            (exact(1e18), neg.clone(), exact(-0.5), exact(-20.0)),
             // a negative b not tiny
             (exact(1e18), exact(-0.75), exact(2.5), exact(-20.0)),
             (exact(1e18), t.clone(), exact(2.5), exact(0.5)),
