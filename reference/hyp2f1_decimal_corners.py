@@ -68,6 +68,14 @@ CASES = [
     # neighbours: a moderate z, and c tiny but not as tiny
     ("-20.375", "7", "1e-300", "-1e40", "inv_z"),
     ("5", "2.5", "3e-100", "-1e20", "inv_z"),
+    # issue 37's full scan (seeds 1 and 2), refused PrecisionExhausted: z far below -1
+    # with b - a an integer (the logarithmic case, which the ball path lacked)
+    ("-140.625", "242.375", "27.071079469956764", "-1e10556", "mpmath"),
+    ("-0.5", "5e-1", "0.000001e-19395", "-14.875e5167", "mpmath"),
+    # neighbours: moderate z, m = 0, 3 and 1
+    ("2.25", "2.25", "1.1", "-3.7e3", "mpmath"),
+    ("-1.5", "1.5", "0.3", "-1e30", "mpmath"),
+    ("-0.5", "0.5", "1e-300", "-1e20", "mpmath"),
 ]
 
 

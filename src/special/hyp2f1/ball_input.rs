@@ -59,6 +59,7 @@ use super::choose::{evaluate, plan, plan_regions, Algorithm};
 use super::dominant_param::hyp2f1_dominant_param;
 use super::out_of_range::proven_above_range;
 use super::small_parameter::hyp2f1_small_parameter;
+use super::log_case::hyp2f1_log_case_balls;
 use super::large_param::{hyp2f1_large_param, large_param_cheaper, large_param_loss, large_param_terms};
 use super::{hyp2f1_mp, validate};
 use crate::ball::{Ball, Mag, Scaled};
@@ -176,6 +177,13 @@ pub fn hyp2f1_ball_mp(a: &Ball, b: &Ball, c: &Ball, z: &Ball, prec: u32) -> Resu
         // Gamma pole) Pfaff below.
         let loss = large_param_loss(a.mid().to_f64(), b.mid().to_f64(), c.mid().to_f64(), z.mid().to_f64());
         if let Ok(r) = ziv_ball_inputs(prec, DEFAULT_GUARD_BITS + loss, None, |wp| hyp2f1_large_param(a, b, c, z, wp)) {
+            return Ok(r);
+        }
+        // `b - a` an integer with `a`, `b` exact (the formula above needs
+        // `Gamma(b - a)`): the logarithmic formula after Pfaff over the balls
+        // (`log_case.rs`); `2F1(-140.625, 242.375; 27.07; -1e10556)` was refused
+        // PrecisionExhausted (Pfaff's `w` within `1e-10556` of 1)
+        if let Ok(r) = ziv_ball_inputs(prec, DEFAULT_GUARD_BITS, None, |wp| hyp2f1_log_case_balls(a, b, c, z, wp)) {
             return Ok(r);
         }
     }

@@ -454,7 +454,7 @@ const DIFFERENCE_MAX_BITS: u32 = 1 << 17;
 /// parameter `a - b + 1` need it; issue 37's scan). The radius is the sum of
 /// the radii; the series engine rounds each `p + n` from the midpoint, so a long
 /// midpoint costs one long addition a term.
-fn difference(x: &Ball, y: &Ball) -> Ball {
+pub(super) fn difference(x: &Ball, y: &Ball) -> Ball {
     let m = crate::special::exact_sub(x.mid(), y.mid());
     if m.prec() > DIFFERENCE_MAX_BITS {
         return x.sub(y);

@@ -28,11 +28,12 @@
 use rug::float::Round;
 use rug::Float;
 
+use super::large_param::difference;
 use super::series::{abs_upper_precise, first_positive_index, negligible, negligible_scaled, ratio_bound, rounded_inside_unit, TailFactor};
 use super::{one, MAX_LOG_M, MIN_SERIES_PREC};
 use crate::ball::{Ball, Scaled, MAG_PREC};
 use crate::error::{Error, Interval, Result};
-use crate::special::gamma::{gamma_ratio_scaled, int_float, mag_abs, mag_add, mag_div, mag_inf, mag_min, mag_mul, xball};
+use crate::special::gamma::{gamma_of_ball_scaled, gamma_ratio_scaled, int_float, mag_abs, mag_add, mag_div, mag_inf, mag_min, mag_mul, xball};
 use crate::special::pfq::MAX_SERIES_TERMS;
 use crate::special::{exact_add, exact_sub, is_nonpositive_integer};
 
@@ -78,20 +79,69 @@ pub(super) fn log_core(a: &Float, b: &Float, c: &Float, u: &Ball, wp: u32) -> Re
 /// `2F1(a, b; a+b+m; 1-u)` for an integer `m >= 0` [A&S 15.3.10-11]; `ca = c-a`, `cb = c-b`.
 #[allow(clippy::too_many_arguments)]
 pub(super) fn log_formula(a: &Float, b: &Float, c: &Float, ca: &Float, cb: &Float, m: u64, u: &Ball, wp: u32) -> Result<Ball> {
+    let [a, b, c, ca, cb] = [a, b, c, ca, cb].map(|x| xball(x, wp));
+    log_formula_balls(&a, &b, &c, &ca, &cb, m, u, wp)
+}
+
+/// `x + n` with the midpoint's sum exact (an exact `a` stays exact: `a + m`).
+fn shift(x: &Ball, n: u64) -> Ball {
+    Ball::with_mag(exact_add(x.mid(), &int_float(n)), x.rad_mag())
+}
+
+/// `2F1(a, b; c; z)` over balls for `z < -1` with `a`, `b` exact and `b - a` an
+/// integer (module docs, "Over balls"): Pfaff [DLMF 15.8.1],
+/// `(1-z)^(-a) 2F1(a, c-b; c; w)`, whose inner function has `c - a - (c - b) =
+/// b - a = m` and `1 - w = u = 1/(1-z)`: the logarithmic formula at `u`
+/// ([`log_formula_balls`]; `a` and `b` exchanged so that `m >= 0`).
+pub(super) fn hyp2f1_log_case_balls(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: u32) -> Result<Ball> {
+    if !(a.is_exact() && b.is_exact() && z.upper() < -1) {
+        return Err(Error::precondition("logarithmic case over balls needs exact a, b and z < -1"));
+    }
+    let d = exact_sub(b.mid(), a.mid());
+    if !d.is_integer() {
+        return Err(Error::precondition("logarithmic case over balls needs b - a an integer"));
+    }
+    let (a, b) = if d.is_sign_negative() { (b, a) } else { (a, b) };
+    let mf = d.to_f64().abs();
+    if mf > MAX_LOG_M as f64 {
+        return Err(Error::OutOfRange { arg: "|b - a| (2F1)", value: mf, allowed: Interval::closed(0.0, MAX_LOG_M as f64) });
+    }
+    let m = mf as u64;
+    let omz = Ball::one(wp).sub(z);
+    let u = omz.recip()?.at_most_prec(wp);
+    let (cb, ca) = (difference(c, b), difference(c, a));
+    let inner = log_formula_balls(a, &cb, c, &ca, b, m, &u, wp)?;
+    Scaled::pow(&omz, &a.neg(), wp)?.mul_ball(&inner).to_value(wp)
+}
+
+/// `Gamma(x) / (Gamma(y1) Gamma(y2))` over balls: [`gamma_ratio_scaled`] at exact
+/// points (its pairings of integer differences, its zero at a pole of a
+/// denominator), else each Gamma over its ball (`gamma_of_ball_scaled`, a pole
+/// inside a ball an error).
+fn gamma_ratio_balls(x: &Ball, y1: &Ball, y2: &Ball, wp: u32) -> Result<Scaled> {
+    if [x, y1, y2].iter().all(|t| t.is_exact()) {
+        return gamma_ratio_scaled(&[x.mid()], &[y1.mid(), y2.mid()], wp);
+    }
+    gamma_of_ball_scaled(x, wp)?.div(&gamma_of_ball_scaled(y1, wp)?.mul(&gamma_of_ball_scaled(y2, wp)?))
+}
+
+/// [`log_formula`] over balls of `a, b, c` (with `c - a - b = m` for every
+/// point: the caller forms `ca`, `cb` so; module docs, "Over balls").
+#[allow(clippy::too_many_arguments)]
+pub(super) fn log_formula_balls(a: &Ball, b: &Ball, c: &Ball, ca: &Ball, cb: &Ball, m: u64, u: &Ball, wp: u32) -> Result<Ball> {
     // the Gamma ratios in logarithms where they pass the exponent range, each
     // term formed once (`Scaled`)
     let mut terms = Vec::with_capacity(2);
     if m >= 1 {
-        let g = gamma_ratio_scaled(&[c], &[ca, cb], wp)?;
+        let g = gamma_ratio_balls(c, ca, cb, wp)?;
         if !g.is_exact_zero() {
             let gm = Ball::factorial((m - 1) as u32, wp); // Gamma(m)
             terms.push(g.mul_ball(&gm).mul_ball(&finite_sum(a, b, m, u, wp)?));
         }
     }
-    let g2 = gamma_ratio_scaled(&[c], &[a, b], wp)?;
+    let g2 = gamma_ratio_balls(c, a, b, wp)?;
     if !g2.is_exact_zero() {
-        let am = exact_add(a, &int_float(m));
-        let bm = exact_add(b, &int_float(m));
+        let (am, bm) = (shift(a, m), shift(b, m));
         let part = g2.mul_ball(&u.pow_u64(m)).mul_ball(&log_series(&am, &bm, m, u, wp)?);
         // -(-u)^m = (-1)^{m+1} u^m
         terms.push(if m % 2 == 0 { part.neg() } else { part });
@@ -103,8 +153,7 @@ pub(super) fn log_formula(a: &Float, b: &Float, c: &Float, ca: &Float, cb: &Floa
 }
 
 /// `sum_{n<m} (a)_n (b)_n / (n! (1-m)_n) u^n`.
-pub(super) fn finite_sum(a: &Float, b: &Float, m: u64, u: &Ball, wp: u32) -> Result<Ball> {
-    let (ab, bb) = (xball(a, wp), xball(b, wp));
+pub(super) fn finite_sum(ab: &Ball, bb: &Ball, m: u64, u: &Ball, wp: u32) -> Result<Ball> {
     let mut t = Ball::one(wp);
     let mut s = Ball::one(wp);
     for n in 0..m.saturating_sub(1) {
@@ -130,13 +179,22 @@ pub(super) fn trigamma_up(x_lo: &Float) -> Float {
     mag_add(&inv, &mag_mul(&inv, &inv))
 }
 
-/// For `n >= N`: bound on `|ln u - psi(n+1) - psi(n+m+1) + psi(A+n) + psi(B+n)|`.
-pub(super) fn log_bracket_bound(aa: &Float, bb: &Float, m: u64, n: u64, lnu_abs: &Float) -> Float {
-    let lo = |p: &Float| Float::with_val_round(MAG_PREC, p + n, Round::Down).0;
+/// For `n >= N`: bound on `|ln u - psi(n+1) - psi(n+m+1) + psi(A+n) + psi(B+n)|`
+/// for every `A`, `B` of their balls: `|A - q| <= max` over the ball's ends, and
+/// `A + n >=` its lower end plus `n` (`psi'` decreases).
+pub(super) fn log_bracket_bound(aa: &Ball, bb: &Ball, m: u64, n: u64, lnu_abs: &Float) -> Float {
+    let lo = |p: &Ball| Float::with_val_round(MAG_PREC, p.lower() + n, Round::Down).0;
     let n1 = Float::with_val_round(MAG_PREC, n + 1, Round::Down).0;
     let nm1 = Float::with_val_round(MAG_PREC, n + m + 1, Round::Down).0;
-    let dist = |p: &Float, q: u64| mag_abs(&exact_sub(p, &int_float(q)));
-    let term = |p: &Float, q: u64, qn: &Float| {
+    let dist = |p: &Ball, q: u64| {
+        let (d1, d2) = (mag_abs(&exact_sub(&p.lower(), &int_float(q))), mag_abs(&exact_sub(&p.upper(), &int_float(q))));
+        if d1 > d2 {
+            d1
+        } else {
+            d2
+        }
+    };
+    let term = |p: &Ball, q: u64, qn: &Float| {
         let x = mag_min(lo(p), qn.clone());
         mag_mul(&dist(p, q), &trigamma_up(&x))
     };
@@ -145,28 +203,52 @@ pub(super) fn log_bracket_bound(aa: &Float, bb: &Float, m: u64, n: u64, lnu_abs:
     mag_add(lnu_abs, &mag_min(opt1, opt2))
 }
 
+/// `psi` over a ball without a pole: MPFR's correctly rounded value at an exact
+/// point; else the hull of `psi` at the two ends (`psi` increases between its
+/// poles, `psi' = sum 1/(x+k)^2 > 0`).
+fn digamma_ball(x: &Ball, wp: u32) -> Result<Ball> {
+    if x.is_exact() {
+        return x.digamma();
+    }
+    if crate::special::pfq::contains_pole(x, None).is_some() {
+        return Err(Error::Pole { function: "digamma", at: x.mid().to_f64() });
+    }
+    let ends = [x.lower(), x.upper()].map(|e| Ball::from_float(&e, wp.max(e.prec())).digamma());
+    let [lo, hi] = ends;
+    let (lo, hi) = (lo?, hi?);
+    Ok(Ball::hull(&lo.lower(), &hi.upper(), wp))
+}
+
 /// `L = sum_n (A)_n (B)_n / (n! (n+m)!) u^n [ln u - psi(n+1) - psi(n+m+1) + psi(A+n) + psi(B+n)]`
 /// in ball arithmetic with the tail bound of the module docs (`A`, `B` not
 /// non-positive integers, `0 < u < 1`).
-pub(super) fn log_series(aa: &Float, bb: &Float, m: u64, u: &Ball, wp: u32) -> Result<Ball> {
+pub(super) fn log_series(ab: &Ball, bbb: &Ball, m: u64, u: &Ball, wp: u32) -> Result<Ball> {
     let wp = wp.max(MIN_SERIES_PREC);
+    // a ball parameter at `wp + 16` bits (an exact one, the point path's, as
+    // given): `c + 1/2` at `c = 1e-19401` is exact at 64 000 bits, where MPFR's
+    // digamma at the ends would run for seconds (the estimate below refuses it)
+    let round = |x: &Ball| if x.is_exact() { x.clone() } else { x.at_most_prec(wp + 16) };
+    let (ab, bbb) = (&round(ab), &round(bbb));
     let lnu = u.ln()?;
     let m32 = u32::try_from(m).map_err(|_| Error::IntegerOutOfRange { arg: "c - a - b", value: i64::try_from(m).unwrap_or(i64::MAX), min: 0, max: u32::MAX as i64 })?;
     let mut tau = Ball::factorial(m32, wp).recip()?;
     let mut psi1 = Ball::from_i64(1, wp).digamma()?;
     let mut psim = Ball::from_i64(m as i64 + 1, wp).digamma()?;
-    let (ab, bbb) = (xball(aa, wp), xball(bb, wp));
     // MPFR's digamma at the parameters' own length (an exact difference of a decimal
     // tightened to 65 536 bits and z = -2e7765: 49 s, issue 37's scan) computes
     // Bernoulli numbers as Gamma does: refused at once when that estimate passes the
     // installed budget (not yet rounded into a ball: psi over a ball needs a bound)
     let psi_bits = ab.prec().max(bbb.prec());
     crate::budget::check_estimate("2F1 logarithmic case (digamma at the parameters' length)", crate::special::gamma::gamma_seconds(psi_bits), f64::INFINITY)?;
-    let mut psia = ab.digamma()?;
-    let mut psib = bbb.digamma()?;
+    let mut psia = digamma_ball(ab, wp)?;
+    let mut psib = digamma_ball(bbb, wp)?;
     let mut sum = tau.mul(&lnu.sub(&psi1).sub(&psim).add(&psia).add(&psib));
     let mut abs_sum = sum.abs_upper();
-    let n_pos = first_positive_index(&[aa, bb])?;
+    // the tail's bounds hold for every point of the balls: the lower ends for
+    // the first index past the negative parameters, the upper ends in the
+    // ratio bound (`max(1, (p+n)/(q+n))` increases with `p`)
+    let (lo_a, lo_b, hi_a, hi_b) = (ab.lower(), bbb.lower(), ab.upper(), bbb.upper());
+    let n_pos = first_positive_index(&[&lo_a, &lo_b])?;
     let lnu_abs = lnu.abs_upper();
     let proxy = mag_add(&lnu_abs, &Float::with_val(MAG_PREC, 1));
     let rho_prec = wp + 16;
@@ -189,10 +271,10 @@ pub(super) fn log_series(aa: &Float, bb: &Float, m: u64, u: &Ball, wp: u32) -> R
             let tau_up = tau.abs_upper();
             let proxy_term = mag_mul(&tau_up, &proxy);
             if negligible(&proxy_term, sum.mid(), &abs_sum, wp) {
-                let factor = tail_factor.get(n, || ratio_bound(aa, bb, &q1, &one(), &u_abs, n, rho_prec));
+                let factor = tail_factor.get(n, || ratio_bound(&hi_a, &hi_b, &q1, &one(), &u_abs, n, rho_prec));
                 if let Some(factor) = factor {
                     if negligible_scaled(&proxy_term, factor, sum.mid(), &abs_sum, wp) {
-                        let h = log_bracket_bound(aa, bb, m, n, &lnu_abs);
+                        let h = log_bracket_bound(ab, bbb, m, n, &lnu_abs);
                         let tail = mag_mul(&mag_mul(&tau_up, &h), factor);
                         if tail.is_finite() {
                             sum.add_error(&tail);
