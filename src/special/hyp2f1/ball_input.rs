@@ -10,9 +10,13 @@
 //!
 //! # Input-radius propagation (proven)
 //!
-//! First, one tiny parameter or a huge `c` (`small_parameter.rs`: the enclosure
+//! First, a value proven past the exponent range (`out_of_range.rs`: positive
+//! parameters, `0 < z < 1`, one term of the series at least `2^emax`:
+//! [`Error::ValueOutOfRange`] with that lower bound); one tiny parameter or a huge `c` (`small_parameter.rs`: the enclosure
 //! `[1 - w, 1]` or `[1, 1 + w]` from Euler's integral, where `w` meets the
-//! precision); `c` the same exact number as `b` (or `a`): `(1 - z)^(-a)` (or `^(-b)`).
+//! precision); `a |z|` past `c` and `b |z|` by more than the precision, `z < 0`
+//! (`dominant_param.rs`: `Gamma(c)/Gamma(c-b) (a|z|)^(-b)` times a proven bracket
+//! `[L, U]` around 1); `c` the same exact number as `b` (or `a`): `(1 - z)^(-a)` (or `^(-b)`).
 //! Exact inputs go straight to [`hyp2f1_mp`](super::hyp2f1_mp). Otherwise:
 //!
 //! * **`-3/4 < z < 1`, `c > 0` on its ball** (majorant bound). With
@@ -33,6 +37,11 @@
 //!   `|F(x) - F(mid)| <= sum_i sup|d_i F| rad_i`, added to the certified ball at
 //!   the midpoints. The majorants are certified MP values at exact upper bounds
 //!   (their ball's upper end is used).
+//! * **`z < -2`**: the connection formula in `1/(1-z)` over the balls
+//!   (`large_param.rs`; Gamma ratios with an integer difference as products,
+//!   `c - a`, `c - b`, `a - b` with exact midpoints), then, for exact `a`, `b`
+//!   with `b - a` an integer, the logarithmic formula after Pfaff over the balls
+//!   (`log_case.rs`, "Over balls"); on an error, Pfaff below.
 //! * **`z < -1/2`**: Pfaff [DLMF 15.8.1] in ball arithmetic,
 //!   `(1-z)^{-a} 2F1(a, c-b; c; w)`, `w = z/(z-1)` in `(1/3, 1)`, the inner
 //!   function by the majorant bound above.

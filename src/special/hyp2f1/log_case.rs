@@ -24,6 +24,24 @@
 //!   `n >= N` the bracket is at most `|ln u| + |A-1| psi'(x1) + |B-m-1| psi'(x2)`
 //!   by the mean value theorem, with `psi'(x) <= 1/x + 1/x^2` and `x1, x2` the
 //!   smallest arguments at `n = N`.
+//!
+//! # Over balls
+//!
+//! For `z < -1` with `a`, `b` exact and `b - a = m` an integer, and `c`, `z` balls
+//! ([`hyp2f1_log_case_balls`], the ball path's route where the connection formula
+//! needs `Gamma(b - a)` at a pole and Pfaff's `w` is next to 1:
+//! `2F1(-140.625, 242.375; 27.07; -1e10556)`, issue 37's scan), Pfaff's inner
+//! function `2F1(a, c-b; c; w)` has `c - a - (c - b) = m` at every point of the
+//! balls, and the formula above is evaluated in ball arithmetic over them
+//! (`a`, `b` exchanged so that `m >= 0`; `c - a`, `c - b` with exact midpoints).
+//! What is not ball arithmetic is made valid for every point: `psi` over a
+//! pole-free ball is the hull of its values at the ends (`psi' > 0` between poles);
+//! the tail's ratio bound takes the upper ends (`max(1, (p+n)/(q+n))` increases
+//! with `p`), the first index past the negative parameters the lower ends, and
+//! the bracket bound `max |p - q|` over the ends with `psi'` at the lower end; a
+//! Gamma of a ball is `gamma_of_ball_scaled` (its `psi` bound). A ball
+//! parameter enters the series rounded into its ball at `wp + 16` bits (`c + 1/2`
+//! at `c = 1e-19401` is exact at 64 000 bits).
 
 use rug::float::Round;
 use rug::Float;

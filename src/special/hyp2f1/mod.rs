@@ -113,8 +113,10 @@
 //! formula and error bound: `series` (the power-series engine), `polynomial`
 //! (terminating series, exact rationals), `transform` (direct, Euler, Pfaff),
 //! `connection` (1-z formula, Pfaff + 1-w, Gauss's sum), `log_case` (the
-//! degenerate 1-z formula), `large_param` (one large parameter, over balls), `small_parameter`
-//! (one tiny positive parameter, `z < 0`, over balls),
+//! degenerate 1-z formula, also over balls), `large_param` (one large parameter, over balls), `small_parameter`
+//! (one tiny positive parameter, `z < 0`, over balls), `dominant_param` (`a |z|`
+//! far past `c` and `b |z|`, `z < 0`, over balls), `out_of_range` (a proof that
+//! the value lies above the exponent range),
 //! `choose` (the cost model and dispatcher).
 //! Gamma ratios, connection terms and the Pfaff/Euler prefactors are formed
 //! through [`Scaled`](crate::ball::Scaled) (`m e^l`): a Gamma or a power past
