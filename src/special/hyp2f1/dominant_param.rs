@@ -152,3 +152,42 @@ pub(crate) fn hyp2f1_dominant_param(a: &Ball, b: &Ball, c: &Ball, z: &Ball, wp: 
     };
     Some(value())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::special::hyp2f1::hyp2f1_mp;
+    use crate::special::hyp2f1::large_param::hyp2f1_large_param;
+
+    fn exact(x: &Float) -> Ball {
+        Ball::from_float(x, x.prec())
+    }
+
+    /// Where the route is taken, its ball holds the certified value of the other
+    /// routes at the same binary point (the connection formula in `1/(1-z)`,
+    /// [`hyp2f1_large_param`] over exact balls), and meets the precision; where `a
+    /// |z| / c` is too small for the precision, it declines.
+    #[test]
+    fn encloses_the_connection_formula_and_declines_when_a_is_not_dominant() {
+        for (a, b, c, z, wp) in [(2f64.powi(130), 1.5, 3.0, -2.0, 64), (2f64.powi(200), 2.5, 1e5, -2.75, 96), (1e60, 20.25, 1e6, -8.0, 64)] {
+            let fa = Float::with_val(64, a);
+            let (fb, fc, fz) = (Float::with_val(64, b), Float::with_val(64, c), Float::with_val(64, z));
+            let r = hyp2f1_dominant_param(&exact(&fa), &exact(&fb), &exact(&fc), &exact(&fz), wp).expect("taken").unwrap();
+            let other = hyp2f1_large_param(&exact(&fa), &exact(&fb), &exact(&fc), &exact(&fz), wp + 64).unwrap();
+            // and the point path takes the route
+            assert!(hyp2f1_mp(&fa, &fb, &fc, &fz, wp - 8).unwrap().overlaps(&r));
+            assert!(r.overlaps(&other), "2F1({a}, {b}; {c}; {z}): {r:?} against {other:?}");
+            assert!(r.meets_rel(wp - 8), "{r:?}");
+            // symmetric in a and b
+            let s = hyp2f1_dominant_param(&exact(&fb), &exact(&fa), &exact(&fc), &exact(&fz), wp).expect("taken").unwrap();
+            assert!(s.overlaps(&r));
+        }
+        let f = |x: f64| exact(&Float::with_val(64, x));
+        // a |z| / c = 2^40: not past wp + 24 bits
+        assert!(hyp2f1_dominant_param(&f(2f64.powi(50)), &f(1.5), &f(1024.0), &f(-1.0), 64).is_none());
+        // z >= 0, c < b + 1, b < 0: not this route's
+        assert!(hyp2f1_dominant_param(&f(2f64.powi(200)), &f(1.5), &f(3.0), &f(0.5), 64).is_none());
+        assert!(hyp2f1_dominant_param(&f(2f64.powi(200)), &f(2.5), &f(3.0), &f(-2.0), 64).is_none());
+        assert!(hyp2f1_dominant_param(&f(2f64.powi(200)), &f(-2.5), &f(3.0), &f(-2.0), 64).is_none());
+    }
+}

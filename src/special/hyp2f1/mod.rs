@@ -241,6 +241,18 @@ pub fn hyp2f1_mp(a: &Float, b: &Float, c: &Float, z: &Float, prec: u32) -> Resul
     if z.is_zero() {
         return Ok(Ball::one(prec));
     }
+    // `a |z|` far past `c` and `b |z|` (`dominant_param.rs`): every series and
+    // connection formula runs to `~a` terms or meets Gamma at `c - a`
+    // (`2F1(2^130, 1.5; 3; -2)`: TooExpensive otherwise)
+    if z.is_sign_negative() {
+        let wp = prec + DEFAULT_GUARD_BITS;
+        let ball = |x: &Float| Ball::from_float(x, x.prec());
+        if let Some(Ok(r)) = dominant_param::hyp2f1_dominant_param(&ball(a), &ball(b), &ball(c), &ball(z), wp) {
+            if r.meets_rel(prec) {
+                return Ok(r);
+            }
+        }
+    }
     let (mut alg, mut lost) = plan(a, b, c, z, prec + DEFAULT_GUARD_BITS);
     if alg == Algorithm::LargeParam {
         let max_wp = prec.saturating_add(DEFAULT_GUARD_BITS + lost).saturating_add(MAX_GAMMA_LOSS);
