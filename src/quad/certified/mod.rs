@@ -54,6 +54,19 @@
 //! limit. The ball is still a rigorous enclosure. An integrand that cannot be bounded
 //! at all (a pole, a non-integrable singularity, an undeclared endpoint singularity)
 //! gives [`IntegrationError::NotIntegrable`], which names the point.
+//!
+//! # Time budget
+//!
+//! Every entry point ([`integrate`], [`integrate_weighted`], [`integrate_to_infinity`],
+//! [`integrate_to_infinity_from`], [`integrate_segments`]) answers or refuses in bounded
+//! time. It runs under the budget installed by [`Budget::run`](crate::budget::Budget::run)
+//! when there is one (an outer budget's deadline stands, shorter or longer), and under
+//! [`Budget::DEFAULT`](crate::budget::Budget::DEFAULT) (30 s), counted from the call,
+//! when there is none: a direct call needs no budget of its own to be bounded. The
+//! budget is checked between the driver's attempts and between the adaptive bisection's
+//! pieces, so a call overruns it by at most one piece's work (one Gauss-Legendre rule
+//! and its ellipse bounds); past it the call returns [`Error::BudgetSpent`] with the
+//! evaluations reached. The budget never changes a result that is returned.
 
 pub(crate) mod adaptive;
 mod cover;
@@ -360,6 +373,11 @@ pub(crate) type PartsBuilder<'w, F> = dyn Fn(Mag, u32, &mut F) -> Result<Vec<Par
 /// assert!(r.goal_met);
 /// assert!(r.real().contains(&(maugis::rug::Float::with_val(256, 14) / 3u32)));
 /// ```
+///
+/// Bounded in time: runs under the installed budget, or under
+/// [`Budget::DEFAULT`](crate::budget::Budget::DEFAULT) when none is installed, and
+/// refuses past it with [`Error::BudgetSpent`]
+/// ([time budget](crate::quad::certified#time-budget)).
 pub fn integrate<F>(mut f: F, a: &Ball, b: &Ball, prec: u32, opts: &Options) -> Result<Integral>
 where
     F: FnMut(&HoloBall) -> HoloBall,
@@ -403,6 +421,11 @@ where
 /// `int_a^b (x-a)^alpha (b-x)^beta log^k(x-a) g(x) dx` with `g` analytic on a
 /// neighbourhood of `[a, b]` and the weight's exponents `> -1`; `a < b`. See the
 /// module docs for the method: no truncation or tail bound is asked of the caller.
+///
+/// Bounded in time: runs under the installed budget, or under
+/// [`Budget::DEFAULT`](crate::budget::Budget::DEFAULT) when none is installed, and
+/// refuses past it with [`Error::BudgetSpent`]
+/// ([time budget](crate::quad::certified#time-budget)).
 pub fn integrate_weighted<F>(mut g: F, a: &Ball, b: &Ball, weight: &Weight, prec: u32, opts: &Options) -> Result<Integral>
 where
     F: FnMut(&HoloBall) -> HoloBall,
@@ -416,6 +439,11 @@ where
 
 /// `int_a^inf w(x) f(x) dx` with an optional endpoint [`Weight`] at `a` (its `beta`
 /// must be 0) and a declared [`Decay`] of the whole integrand for `x >= a`.
+///
+/// Bounded in time: runs under the installed budget, or under
+/// [`Budget::DEFAULT`](crate::budget::Budget::DEFAULT) when none is installed, and
+/// refuses past it with [`Error::BudgetSpent`]
+/// ([time budget](crate::quad::certified#time-budget)).
 pub fn integrate_to_infinity<F>(mut f: F, a: &Ball, weight: Option<&Weight>, decay: &Decay, prec: u32, opts: &Options) -> Result<Integral>
 where
     F: FnMut(&HoloBall) -> HoloBall,
@@ -430,6 +458,11 @@ where
 /// regular or singular with a bound [`EndBound`] of the integrand next to it, which
 /// the caller vouches for: next to a singular end the piece is mapped exponentially
 /// and cut with the closed-form tail of the bound (`singular.rs`).
+///
+/// Bounded in time: runs under the installed budget, or under
+/// [`Budget::DEFAULT`](crate::budget::Budget::DEFAULT) when none is installed, and
+/// refuses past it with [`Error::BudgetSpent`]
+/// ([time budget](crate::quad::certified#time-budget)).
 pub fn integrate_segments<F>(mut f: F, points: Vec<Ball>, ends: Vec<(Option<EndBound>, Option<EndBound>)>, prec: u32, opts: &Options) -> Result<Integral>
 where
     F: FnMut(&HoloBall) -> HoloBall,
@@ -447,6 +480,11 @@ where
 
 /// [`integrate_to_infinity`] with a decay that holds only for `x >= from` (`from >
 /// a`): `[a, from]` is integrated as a finite range.
+///
+/// Bounded in time: runs under the installed budget, or under
+/// [`Budget::DEFAULT`](crate::budget::Budget::DEFAULT) when none is installed, and
+/// refuses past it with [`Error::BudgetSpent`]
+/// ([time budget](crate::quad::certified#time-budget)).
 pub fn integrate_to_infinity_from<F>(mut f: F, a: &Ball, weight: Option<&Weight>, decay: &Decay, from: &Ball, prec: u32, opts: &Options) -> Result<Integral>
 where
     F: FnMut(&HoloBall) -> HoloBall,
@@ -583,10 +621,20 @@ pub(crate) fn meets(v: &CBall, goal: u32, opts: &Options, scale: Mag) -> (bool, 
 /// Attempts of the driver before the last enclosure is returned flagged.
 const MAX_ATTEMPTS: usize = 8;
 
+/// The driver of every public entry point, under the installed time budget or
+/// [`Budget::DEFAULT`](crate::budget::Budget::DEFAULT) from now when none is installed
+/// (module docs, "Time budget").
+fn run<F>(f: &mut F, builder: &PartsBuilder<'_, F>, prec: u32, opts: &Options) -> Result<Integral>
+where
+    F: FnMut(&HoloBall) -> HoloBall,
+{
+    crate::budget::ensure(|| run_in_budget(f, builder, prec, opts))
+}
+
 /// The driver: tolerance from a rough estimate, the adaptive integration of every
 /// part, and escalation (a new tolerance from the enclosure, or more working
 /// precision when rounding dominates) until the goal is met or a limit is reached.
-fn run<F>(f: &mut F, builder: &PartsBuilder<'_, F>, prec: u32, opts: &Options) -> Result<Integral>
+fn run_in_budget<F>(f: &mut F, builder: &PartsBuilder<'_, F>, prec: u32, opts: &Options) -> Result<Integral>
 where
     F: FnMut(&HoloBall) -> HoloBall,
 {
@@ -712,4 +760,50 @@ where
     }
     // MAX_ATTEMPTS without meeting the goal: the last enclosure, flagged.
     last.ok_or(Error::Internal { what: "certified integration ran no attempt".into() })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::budget::{installed_limit, Budget};
+    use std::time::Duration;
+
+    /// Every entry point, called directly (no [`Budget::run`] around it), runs its
+    /// integrand under [`Budget::DEFAULT`]; inside an explicit budget, under that one
+    /// (an outer deadline stands, even one later than the default's); and leaves no
+    /// budget installed behind it.
+    #[test]
+    fn a_direct_call_runs_under_the_default_budget() {
+        let ball = |n: i64| Ball::from_i64(n, 64);
+        let seen = std::cell::Cell::new(None);
+        let rec = |x: &HoloBall| {
+            seen.set(Some(installed_limit()));
+            (-x).exp()
+        };
+        let decay = || Decay::exponential(ball(1), ball(1)).unwrap();
+        let weight = Weight::new(Ball::one(64).mul_pow2(-1).neg(), Ball::zero(64), 0).unwrap();
+        let o = Options::new();
+        let calls: Vec<(&str, Box<dyn Fn() -> Result<Integral> + '_>)> = vec![
+            ("integrate", Box::new(|| integrate(rec, &ball(0), &ball(1), 64, &o))),
+            ("integrate_weighted", Box::new(|| integrate_weighted(rec, &ball(0), &ball(1), &weight, 64, &o))),
+            ("integrate_to_infinity", Box::new(|| integrate_to_infinity(rec, &ball(0), None, &decay(), 64, &o))),
+            ("integrate_to_infinity_from", Box::new(|| integrate_to_infinity_from(rec, &ball(0), None, &decay(), &ball(2), 64, &o))),
+            ("integrate_segments", Box::new(|| integrate_segments(rec, vec![ball(0), ball(1), ball(2)], vec![(None, None), (None, None)], 64, &o))),
+        ];
+        for (name, call) in &calls {
+            assert_eq!(installed_limit(), None);
+            seen.set(None);
+            let r = call().unwrap_or_else(|e| panic!("{name}: {e}"));
+            assert!(r.goal_met, "{name}");
+            assert_eq!(seen.get(), Some(Some(Duration::from_secs_f64(Budget::DEFAULT.seconds()))), "{name}: the default is installed");
+            assert_eq!(installed_limit(), None, "{name}: nothing is left installed");
+            // an explicit budget stands, longer than the default as shorter
+            for secs in [600.0, 5.0] {
+                seen.set(None);
+                Budget::from_secs_f64(secs).unwrap().run(|| call().unwrap());
+                let limit = seen.get().flatten().unwrap_or_else(|| panic!("{name}: no budget inside"));
+                assert!(limit <= Duration::from_secs_f64(secs) && limit > Duration::from_secs_f64(secs - 1.0), "{name}: {limit:?} under {secs} s");
+            }
+        }
+    }
 }

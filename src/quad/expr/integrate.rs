@@ -116,6 +116,12 @@ pub enum DecaySpec {
 /// Decimal inputs become balls that contain them, so the result contains the
 /// integral for the numbers as typed. Reversed ranges change the sign, except with a
 /// (non-trivial) weight, which needs `a < b`.
+///
+/// Bounded in time: the whole call (all its pieces) runs under the installed budget,
+/// or under [`Budget::DEFAULT`](crate::budget::Budget::DEFAULT) counted from the call
+/// when none is installed, and refuses past it with
+/// [`Error::BudgetSpent`](crate::Error::BudgetSpent)
+/// ([time budget](crate::quad::certified#time-budget)).
 pub fn integrate_range(
     f: &Expr,
     a: &End,
@@ -125,6 +131,11 @@ pub fn integrate_range(
     prec: u32,
     opts: &Options,
 ) -> Result<Integral> {
+    crate::budget::ensure(|| range(f, a, b, weight, decay, prec, opts))
+}
+
+/// [`integrate_range`] inside its budget.
+fn range(f: &Expr, a: &End, b: &End, weight: Option<&WeightSpec>, decay: Option<&DecaySpec>, prec: u32, opts: &Options) -> Result<Integral> {
     crate::error::check_prec(prec)?;
     let canonical = f.canonical();
     let f = &canonical;
@@ -137,7 +148,7 @@ pub fn integrate_range(
         if weight.is_some() || a == b {
             return Err(Error::Integration(IntegrationError::Endpoints { a: end_f64(a), b: end_f64(b) }));
         }
-        let mut r = integrate_range(f, b, a, None, None, prec, opts)?;
+        let mut r = range(f, b, a, None, None, prec, opts)?;
         r.value = r.value.neg();
         return Ok(r);
     }
