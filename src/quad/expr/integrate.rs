@@ -6,6 +6,7 @@ use super::decay::{tail_class, TailClass};
 use super::finite::{integrate_finite, sum_to_goal};
 use super::local::singular_candidates;
 use super::oscillatory::{integrate_inverted, integrate_oscillatory};
+use super::oscillatory_sum::integrate_oscillatory_sum;
 use super::substitute::sqrt_substituted;
 use super::Expr;
 use crate::ball::{Ball, Decimal};
@@ -230,6 +231,14 @@ fn to_infinity(f: &Expr, a: &crate::Ball, weight: Option<&Weight>, prec: u32, op
         // an algebraic tail analytic at infinity: u = 1/x
         if let Some(r) = integrate_inverted(f, a, prec, opts) {
             return r;
+        }
+        // a sum with oscillatory terms, `(1 - cos x)/x^2`: split at T, the rest's tail
+        // by this function (`oscillatory_sum.rs`); a point none of the terms' routes
+        // could bound leaves the integrand to the routes below
+        let rest_tail = |g: &Expr, t: &crate::Ball, p: u32, o: &Options| to_infinity(g, t, None, p, o, side);
+        match integrate_oscillatory_sum(f, a, prec, opts, &rest_tail) {
+            Some(Err(Error::Integration(IntegrationError::NotIntegrable { .. }))) | None => {}
+            Some(r) => return r,
         }
     }
     match class {
