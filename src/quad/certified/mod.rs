@@ -504,19 +504,34 @@ fn finite_ball(x: &Ball, what: &'static str) -> Result<()> {
     }
 }
 
+/// What one evaluation per part says about the integral's size ([`crude_magnitude`]).
+enum Crude {
+    /// The sum of the crude enclosures keeps off 0 within a factor 16: its lower and
+    /// upper magnitudes.
+    Keeps(Mag, Mag),
+    /// Every part's enclosure is finite, but their sum reaches 0 (or spreads over more
+    /// than a factor 16): the sum of their magnitudes and the tails, a certified upper
+    /// bound of `int |f|` along the path.
+    Reaches(Mag),
+    /// A part's enclosure is not finite.
+    Unbounded,
+}
+
 /// The magnitude from one evaluation per part: the crude enclosure `(b - a) f([a, b])`
 /// of every part at the working precision `wp`, summed with the tails. Where the sum
 /// keeps off zero within a factor 16 (`|upper| <= 16 |lower|`), its lower bound is a
 /// magnitude of the integral that costs at most four bits of extra work (it is below
-/// the integral); otherwise `None` and the 8-point rule decides. The enclosures are
-/// rigorous (exact widths) and kept in `crudes`, one per part, for the first attempt.
-fn crude_magnitude<F>(f: &mut F, parts: &[Part<'_>], wp: u32, evaluations: &mut u64, crudes: &mut Vec<Option<CBall>>) -> Option<(Mag, Mag)>
+/// the integral). The enclosures are rigorous (exact widths) and kept in `crudes`, one
+/// per part, for the first attempt.
+fn crude_magnitude<F>(f: &mut F, parts: &[Part<'_>], wp: u32, evaluations: &mut u64, crudes: &mut Vec<Option<CBall>>) -> Crude
 where
     F: FnMut(&HoloBall) -> HoloBall,
 {
     let mut sum = CBall::zero(64);
+    let mut l1 = Mag::ZERO;
     for part in parts {
         sum.add_error_mag(part.tail);
+        l1 = l1.add(part.tail);
         if part.lo == part.hi {
             crudes.push(None);
             continue;
@@ -525,29 +540,48 @@ where
         let v = (part.wrap)(&HoloBall::new(seg, Mode::Point), f).into_inner();
         *evaluations += 1;
         if !v.is_finite() {
-            return None;
+            return Crude::Unbounded;
         }
         let width = adaptive::exact_diff(&part.lo, &part.hi);
         let c = v.mul_real(&Ball::from_float(&width, width.prec()));
         sum = sum.add(&c);
+        l1 = l1.add(c.abs_upper_mag());
         crudes.push(Some(c));
     }
     let (lower, upper) = (sum.abs_lower_mag(), sum.abs_upper_mag());
-    (!lower.is_zero() && upper.le(&lower.mul_2exp(4))).then_some((lower, upper))
+    if !lower.is_zero() && upper.le(&lower.mul_2exp(4)) {
+        Crude::Keeps(lower, upper)
+    } else if l1.is_finite() {
+        Crude::Reaches(l1)
+    } else {
+        Crude::Unbounded
+    }
 }
 
-/// A rough, uncertified magnitude of the integral and of `int |f|`: an 8-point rule
-/// on each part at 64 bits (MPFR's exponent range: integrals like `e^-1010` do not
-/// underflow). It only sets the tolerance; the result is checked.
-fn rough_magnitude<F>(f: &mut F, parts: &[Part<'_>], wp: u32, evaluations: &mut u64, crudes: &mut Vec<Option<CBall>>) -> (Mag, Mag)
+/// A rough magnitude of the integral and of `int |f|`, and whether the first is an
+/// estimate of the integral (`false`: 0, its size unknown). From the crude enclosures
+/// ([`crude_magnitude`]) when their sum keeps off 0; or 0 and the enclosure's certified
+/// bound `L_c = |(b - a) f([a, b])| >= int |f|` when [`sign_changes`] finds the
+/// integrand of opposite signs at the ends, each of size `L_c/(b - a)`, and the default absolute
+/// tolerance is on ([`Options::abs_tol`]): the first tolerance is then `2^(-goal-3)
+/// L_c`, as the 8-point estimate would set it up to the ratio of `L_c` to `int |f|`
+/// (1.8 for `sin x` on `[-1, 1]`). Otherwise an 8-point rule on each part at 64 bits
+/// (MPFR's exponent range: integrals like `e^-1010` do not underflow). It only sets the
+/// tolerance and caps `L` ([`Integral::abs_scale`]); the result is checked.
+///
+/// The 8-point rule is skipped where the enclosure and the two end values suffice: it
+/// was 8 of the 24 evaluations of `sin x` on `[-1, 1]` at 64 bits (`docs/quadrature.md`).
+fn rough_magnitude<F>(f: &mut F, parts: &[Part<'_>], wp: u32, opts: &Options, evaluations: &mut u64, crudes: &mut Vec<Option<CBall>>) -> (Mag, Mag, bool)
 where
     F: FnMut(&HoloBall) -> HoloBall,
 {
-    if let Some(m) = crude_magnitude(f, parts, wp, evaluations, crudes) {
-        return m;
+    match crude_magnitude(f, parts, wp, evaluations, crudes) {
+        Crude::Keeps(lower, upper) => return (lower, upper, true),
+        Crude::Reaches(l1) if opts.abs_tol.is_none() && !opts.relative_only && sign_changes(f, parts, wp, l1, evaluations) => return (Mag::ZERO, l1, false),
+        _ => {}
     }
     let Ok(rule) = legendre::rule(8, 64) else {
-        return (Mag::ZERO, Mag::ZERO);
+        return (Mag::ZERO, Mag::ZERO, true);
     };
     let (mut sum, mut l1) = (Float::new(64), Float::new(64));
     for part in parts {
@@ -575,7 +609,44 @@ where
             }
         }
     }
-    (Mag::from_float_up(&sum), Mag::from_float_up(&l1))
+    (Mag::from_float_up(&sum), Mag::from_float_up(&l1), true)
+}
+
+/// Whether a plain finite range (one part, no map, no tail) has an integrand that
+/// takes both signs with magnitudes of the order of the enclosure's bound `l1`: its
+/// values at the two ends (two evaluations, as points) are real balls of opposite
+/// signs, each at least `l1 / (16 (b - a))` in magnitude. Then `l1` is taken to be
+/// within a small factor of `int |f|` (a heuristic that only steers the tolerance).
+/// A one-signed integrand whose enclosure reaches 0 only through the ball arithmetic
+/// (`x^1000 e^-x` on `[0, 10^4]`: a ball around 0 of radius far above `int |f|`),
+/// mapped parts and folded ranges take the 8-point estimate.
+fn sign_changes<F>(f: &mut F, parts: &[Part<'_>], wp: u32, l1: Mag, evaluations: &mut u64) -> bool
+where
+    F: FnMut(&HoloBall) -> HoloBall,
+{
+    let [part] = parts else { return false };
+    if !matches!(part.map, XMap::Identity) || !part.tail.is_zero() || l1.is_zero() || part.lo == part.hi {
+        return false;
+    }
+    let width = Mag::from_float_up(&adaptive::exact_diff(&part.lo, &part.hi));
+    let least = l1.mul_2exp(-4).div(width).to_float();
+    let mut signs = [0i32; 2];
+    for (k, end) in [&part.lo, &part.hi].into_iter().enumerate() {
+        let v = (part.wrap)(&HoloBall::new(CBall::from_real(Ball::from_float(end, wp)), Mode::Point), f).into_inner();
+        *evaluations += 1;
+        if !v.is_finite() || !v.is_real() {
+            return false;
+        }
+        let re = v.re();
+        signs[k] = if re.upper() <= -least.clone() {
+            -1
+        } else if re.lower() >= least {
+            1
+        } else {
+            return false;
+        };
+    }
+    signs[0] != signs[1]
 }
 
 /// The absolute tolerance for a magnitude estimate: relative to the integral, but
@@ -648,7 +719,7 @@ where
     // enclosures of its parts serve the first attempt where its parts are the same.
     let provisional = builder(Mag::pow2(-(goal as i64)), wp, f)?;
     let mut crudes = Vec::new();
-    let (mut mag, mut l1) = rough_magnitude(f, &provisional, wp, &mut evaluations, &mut crudes);
+    let (mut mag, mut l1, mut estimated) = rough_magnitude(f, &provisional, wp, opts, &mut evaluations, &mut crudes);
     let l1_estimate = l1;
     let mut reusable: Vec<Option<CBall>> =
         provisional.iter().zip(crudes.into_iter().chain(std::iter::repeat(None))).map(|(p, c)| c.filter(|_| p.lo != p.hi)).collect();
@@ -715,7 +786,9 @@ where
             // A limit with a tolerance set from a rough estimate far below the
             // integral's size (a long range sampled where the integrand is small):
             // retry once the enclosure tells the size; otherwise stop, flagged.
-            if mag.mul_2exp(10).le(&new_mag) && !new_mag.le(&mag.mul_2exp(10)) && tol_shift == 0 {
+            // (Not when the first tolerance came from the enclosures' bound of int |f|,
+            // which is above the integral's size.)
+            if estimated && mag.mul_2exp(10).le(&new_mag) && !new_mag.le(&mag.mul_2exp(10)) && tol_shift == 0 {
                 mag = new_mag;
                 l1 = l1.max(new_mag);
                 last = Some(result);
@@ -752,6 +825,7 @@ where
                 tol_shift -= missing + 2;
             }
             mag = new_mag;
+            estimated = true;
             l1 = if l1.le(&new_mag.mul_2exp(32)) { l1 } else { new_mag.mul_2exp(32) };
             // The size is known now: the shift that stood in for it goes.
             zero_shift = 0;
