@@ -21,10 +21,13 @@
 //! int_a^inf f = int_a^T f + int_T^inf r + sum_i int_T^inf t_i.
 //! ```
 //!
-//! `int_a^T f` is the whole integrand on a finite range, by the finite route: a
-//! singularity the terms have and the sum has not (`1/x^2` and `cos(x)/x^2` at 0, where
-//! `(1 - cos x)/x^2 -> 1/2`) is the sum's removable point there (`removable.rs`),
-//! never a term's pole. `int_T^inf r` takes the routes of a non-oscillatory tail
+//! `int_a^T f` is integrated term by term when every term's finite part is certified
+//! (`sin(x)/x + 1/(1+x^2)`: the removable point of `sin(x)/x` is then found by
+//! `removable.rs`, which sees quotients only), and otherwise as the whole integrand, by
+//! the finite route: a singularity the terms have and the sum has not (`1/x^2` and
+//! `cos(x)/x^2` at 0, where `(1 - cos x)/x^2 -> 1/2`) is the sum's removable point there
+//! (`removable.rs`), never a term's pole; a term's pole is refused by its local class
+//! before any evaluation. `int_T^inf r` takes the routes of a non-oscillatory tail
 //! (`integrate.rs`: decay class, or `u = 1/x`), and each `int_T^inf t_i` the contour
 //! rotation of `oscillatory.rs` from `T`.
 //!
@@ -46,7 +49,7 @@ use super::local::singular_candidates;
 use super::oscillatory::{integrate_oscillatory, plan};
 use super::tree::Expr;
 use crate::ball::Ball;
-use crate::error::{Error, Result};
+use crate::error::{Error, IntegrationError, Result};
 use crate::quad::certified::{integrate, HoloBall, Integral, Options};
 
 /// Most terms a sum is expanded into (the expansion multiplies them out: beyond this
@@ -158,12 +161,15 @@ pub(crate) fn integrate_oscillatory_sum(f: &Expr, a: &Ball, prec: u32, opts: &Op
         }
     }
     let t_rational = Rational::from(1u64 << j);
+    let each: Vec<Expr> = oscillatory.iter().cloned().chain(rest.clone()).collect();
     Some(sum_to_goal(prec, opts, |goal, o| {
-        let finite = match a.mid().to_rational() {
-            Some(ar) if a.is_exact() => integrate_finite(f, &ar, &t_rational, goal + 64, goal, o)?,
-            _ => integrate(|x: &HoloBall| f.eval(x), a, &t, goal, o)?,
+        let mut out = match a.mid().to_rational() {
+            Some(ar) if a.is_exact() => match finite_by_terms(&each, &ar, &t_rational, goal, o)? {
+                Some(parts) => parts,
+                None => vec![integrate_finite(f, &ar, &t_rational, goal + 64, goal, o)?],
+            },
+            _ => vec![integrate(|x: &HoloBall| f.eval(x), a, &t, goal, o)?],
         };
-        let mut out = vec![finite];
         if let Some(r) = &rest {
             out.push(rest_tail(r, &t, goal, o)?);
         }
@@ -174,4 +180,22 @@ pub(crate) fn integrate_oscillatory_sum(f: &Expr, a: &Ball, prec: u32, opts: &Op
         }
         Ok(out)
     }))
+}
+
+/// `int_a^T` term by term, when every term's finite part meets its goal: a removable
+/// point of a term that is a quotient (`sin(x)/x` in `sin(x)/x + 1/(1+x^2)`) is then
+/// found by `removable.rs`, which sees only quotients, and not mapped as a singular end
+/// of the sum. `None` (the sum is integrated whole) when a term is not integrable on
+/// `[a, T]` (`1/x^2` in `(1 - cos x)/x^2`, refused at once by its local class) or misses
+/// its goal.
+fn finite_by_terms(terms: &[Expr], a: &Rational, t: &Rational, goal: u32, o: &Options) -> Result<Option<Vec<Integral>>> {
+    let mut out = Vec::new();
+    for term in terms {
+        match integrate_finite(term, a, t, goal + 64, goal, o) {
+            Ok(r) if r.goal_met => out.push(r),
+            Ok(_) | Err(Error::Integration(IntegrationError::NotIntegrable { .. })) => return Ok(None),
+            Err(e) => return Err(e),
+        }
+    }
+    Ok(Some(out))
 }
