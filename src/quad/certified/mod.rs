@@ -296,9 +296,10 @@ pub struct Integral {
     /// The scale `L` of the default absolute tolerance `2^-goal L` ([`Options::abs_tol`]):
     /// the smaller of a certified upper bound of `int |f|` along the path integrated
     /// (the real range, the mapped pieces, the rays of an oscillatory tail, with the
-    /// tails cut) and four times an 8-point estimate of it (the certified bound comes
-    /// from crude enclosures `|(hi - lo) f([lo, hi])|` and can be loose on wide pieces;
-    /// the estimate only ever makes the tolerance smaller).
+    /// tails cut) and four times an estimate of it (an 8-point rule, or, for a
+    /// sign-changing integrand on a plain finite range, the crude enclosure's bound: the
+    /// certified bound comes from crude enclosures `|(hi - lo) f([lo, hi])|` and can be
+    /// loose on wide pieces; the estimate only ever makes the tolerance smaller).
     pub abs_scale: Mag,
     /// The absolute tolerance the result met, when the goal was met by it and not by
     /// the relative goal (the ball then contains 0): the caller's [`Options::abs_tol`],
