@@ -45,7 +45,7 @@ use rug::{Float, Rational};
 
 use super::decay::{tail_class, TailClass};
 use super::finite::{integrate_finite, sum_to_goal};
-use super::local::singular_candidates;
+use super::local::{local_class, singular_candidates};
 use super::oscillatory::{integrate_oscillatory, plan};
 use super::tree::Expr;
 use crate::ball::Ball;
@@ -186,9 +186,28 @@ pub(crate) fn integrate_oscillatory_sum(f: &Expr, a: &Ball, prec: u32, opts: &Op
 /// point of a term that is a quotient (`sin(x)/x` in `sin(x)/x + 1/(1+x^2)`) is then
 /// found by `removable.rs`, which sees only quotients, and not mapped as a singular end
 /// of the sum. `None` (the sum is integrated whole) when a term is not integrable on
-/// `[a, T]` (`1/x^2` in `(1 - cos x)/x^2`, refused at once by its local class) or misses
-/// its goal.
+/// `[a, T]` (`1/x^2` in `(1 - cos x)/x^2`: its local class at 0 is `q = -2`, found
+/// before any evaluation), has a singular candidate without a local class there, or
+/// misses its goal.
 fn finite_by_terms(terms: &[Expr], a: &Rational, t: &Rational, goal: u32, o: &Options) -> Result<Option<Vec<Integral>>> {
+    // Before any work: every singular candidate of every term in [a, T] must have an
+    // integrable local class (`q > -1`) on the sides the range extends to, or a term
+    // could spend its evaluation limit before it fails.
+    let delta = Rational::from((1, 2));
+    for term in terms {
+        let mut candidates = Vec::new();
+        singular_candidates(term, &mut candidates);
+        for p in candidates.iter().filter(|p| *p >= a && *p <= t) {
+            for sigma in [1i64, -1] {
+                if (sigma > 0 && p == t) || (sigma < 0 && p == a) {
+                    continue;
+                }
+                if !local_class(term, p, sigma, &delta).is_some_and(|c| c.power > -1) {
+                    return Ok(None);
+                }
+            }
+        }
+    }
     let mut out = Vec::new();
     for term in terms {
         match integrate_finite(term, a, t, goal + 64, goal, o) {
