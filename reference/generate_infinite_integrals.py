@@ -91,6 +91,18 @@ INTEGRALS += [
      lambda: mp.pi,
      lambda: (mpmath.quadosc(mpmath.sinc, [0, inf], period=2 * mp.pi)
               + mpmath.quad(lambda x: 1 / (1 + x * x), [0, inf]))),
+    ("one_minus_cos_full", "int_-inf^inf (1-cos(x))/x^2 dx = pi", "(1-cos(x))/x^2", "-inf", "inf",
+     lambda: mp.pi,
+     lambda: 2 * (mpmath.quad(lambda x: 2 * mpmath.sin(x / 2) ** 2 / x ** 2, [0, 1]) + 1
+                  - mpmath.quadosc(lambda x: mpmath.cos(x) / x ** 2, [1, inf], period=2 * mp.pi))),
+    ("sin2_sq", "int_0^inf sin(x)^2/x^2 dx = pi/2", "sin(x)^2/x^2", "0", "inf",
+     lambda: mp.pi / 2,
+     lambda: (mpmath.quad(lambda x: mpmath.sinc(x) ** 2, [0, 1]) + mpf(1) / 2
+              - mpmath.quadosc(lambda x: mpmath.cos(2 * x) / (2 * x ** 2), [1, inf], period=mp.pi))),
+    ("sin2_lorentz", "int_0^inf sin(x)^2/(1+x^2) dx = pi (1 - e^-2)/4", "sin(x)^2/(1+x^2)", "0", "inf",
+     lambda: mp.pi * (1 - mpmath.exp(-2)) / 4,
+     lambda: (mpmath.quad(lambda x: 1 / (1 + x * x), [0, inf])
+              - mpmath.quadosc(lambda x: mpmath.cos(2 * x) / (1 + x * x), [0, inf], period=mp.pi)) / 2),
     ("cos_lorentz_full", "int_-inf^inf cos(x)/(1+x^2) dx = pi/e", "cos(x)/(1+x^2)", "-inf", "inf",
      lambda: mp.pi / mpmath.e,
      lambda: 2 * mpmath.quadosc(lambda x: mpmath.cos(x) / (1 + x * x), [0, inf], period=2 * mp.pi)),

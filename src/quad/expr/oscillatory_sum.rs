@@ -5,8 +5,10 @@
 //!
 //! *Terms.* The integrand is written as a sum of signed terms by the identities `(u +-
 //! v)/d = u/d +- v/d`, `(u +- v) m = u m +- v m` (and `m (u +- v)`), `-(u +- v) = -u -+
-//! v`, applied while the count stays at most [`MAX_TERMS`]: `(1 - cos x)/x^2 = 1/x^2 -
-//! cos(x)/x^2`. A term that `oscillatory.rs` recognises (a factor `sin(w x + phi)`,
+//! v`, and `sin(u)^2 = 1/2 - cos(2u)/2`, `cos(u)^2 = 1/2 + cos(2u)/2` (identities on
+//! the whole complex plane), applied while the count stays at most [`MAX_TERMS`]:
+//! `(1 - cos x)/x^2 = 1/x^2 - cos(x)/x^2`, `sin(x)^2/x^2 = (1/2)/x^2 - (1/2)
+//! cos(2x)/x^2`. A term that `oscillatory.rs` recognises (a factor `sin(w x + phi)`,
 //! `cos(w x + phi)` or `besselj(n, w x)` and a sector class of the rest with `q + e <
 //! 0`) is an *oscillatory term* `t_i`; the others, summed, are the *rest* `r`, which must
 //! have a decay class (`decay.rs`: an absolutely integrable tail). At least one term
@@ -23,7 +25,9 @@
 //!
 //! `int_a^T f` is integrated term by term when every term's finite part is certified
 //! (`sin(x)/x + 1/(1+x^2)`: the removable point of `sin(x)/x` is then found by
-//! `removable.rs`, which sees quotients only), and otherwise as the whole integrand, by
+//! `removable.rs`, which sees quotients only), else summand by summand as typed (the
+//! folded `(1 - cos x)/x^2 + (1 - cos(-x))/(-x)^2` of a range `(-inf, inf)`), and
+//! otherwise as the whole integrand, by
 //! the finite route: a singularity the terms have and the sum has not (`1/x^2` and
 //! `cos(x)/x^2` at 0, where `(1 - cos x)/x^2 -> 1/2`) is the sum's removable point there
 //! (`removable.rs`), never a term's pole; a term's pole is refused by its local class
@@ -47,8 +51,8 @@ use super::decay::{tail_class, TailClass};
 use super::finite::{integrate_finite, sum_to_goal};
 use super::local::{local_class, singular_candidates};
 use super::oscillatory::{integrate_oscillatory, plan};
-use super::tree::Expr;
-use crate::ball::Ball;
+use super::tree::{Expr, Function};
+use crate::ball::{Ball, Decimal};
 use crate::error::{Error, IntegrationError, Result};
 use crate::quad::certified::{integrate, HoloBall, Integral, Options};
 
@@ -62,8 +66,11 @@ const MAX_LOG2_T: u32 = 40;
 /// Precision of `T` (a power of two: exact at any precision).
 const P: u32 = 64;
 
-/// The signed terms of `e` (`true`: negated), or `None` past [`MAX_TERMS`].
+/// The signed terms of `e` (`true`: negated), or `None` past [`MAX_TERMS`]: sums and
+/// differences flattened, quotients and products with a sum multiplied out, and
+/// `sin(u)^2 = 1/2 - cos(2u)/2`, `cos(u)^2 = 1/2 + cos(2u)/2`.
 fn terms(e: &Expr, negated: bool, out: &mut Vec<(Expr, bool)>) -> Option<()> {
+    let half = || Expr::Number(Decimal::from_rational(Rational::from((1, 2))));
     match e {
         Expr::Add(a, b) => {
             terms(a, negated, out)?;
@@ -74,27 +81,61 @@ fn terms(e: &Expr, negated: bool, out: &mut Vec<(Expr, bool)>) -> Option<()> {
             terms(b, !negated, out)?;
         }
         Expr::Neg(a) => terms(a, !negated, out)?,
-        Expr::Div(n, d) if is_sum(n) => {
+        Expr::Div(n, d) => {
             let mut inner = Vec::new();
             terms(n, negated, &mut inner)?;
-            out.extend(inner.into_iter().map(|(t, s)| (Expr::Div(Box::new(t), d.clone()), s)));
+            if inner.len() == 1 {
+                out.push((e.clone(), negated));
+            } else {
+                out.extend(inner.into_iter().map(|(t, s)| (Expr::Div(Box::new(t), d.clone()), s)));
+            }
         }
-        Expr::Mul(a, b) if is_sum(a) || is_sum(b) => {
+        Expr::Mul(a, b) => {
             let (mut ta, mut tb) = (Vec::new(), Vec::new());
             terms(a, negated, &mut ta)?;
             terms(b, false, &mut tb)?;
-            if out.len() + ta.len() * tb.len() > MAX_TERMS {
-                return None;
-            }
-            for (u, su) in &ta {
-                for (v, sv) in &tb {
-                    out.push((Expr::Mul(Box::new(u.clone()), Box::new(v.clone())), su ^ sv));
+            if ta.len() * tb.len() == 1 {
+                out.push((e.clone(), negated));
+            } else {
+                if out.len() + ta.len() * tb.len() > MAX_TERMS {
+                    return None;
+                }
+                for (u, su) in &ta {
+                    for (v, sv) in &tb {
+                        out.push((Expr::Mul(Box::new(u.clone()), Box::new(v.clone())), su ^ sv));
+                    }
                 }
             }
         }
+        Expr::PowInt(base, 2) => match &**base {
+            Expr::Call(f @ (Function::Sin | Function::Cos), u) => {
+                let two_u = Expr::Mul(Box::new(Expr::Number(Decimal::from_rational(Rational::from(2)))), u.clone());
+                let cos_2u = Expr::Mul(Box::new(half()), Box::new(Expr::Call(Function::Cos, Box::new(two_u))));
+                out.push((half(), negated));
+                out.push((cos_2u, negated ^ (*f == Function::Sin)));
+            }
+            _ => out.push((e.clone(), negated)),
+        },
         other => out.push((other.clone(), negated)),
     }
     (out.len() <= MAX_TERMS).then_some(())
+}
+
+/// The summands of `e` as typed: sums, differences and signs flattened, nothing
+/// multiplied out.
+fn summands(e: &Expr, negated: bool, out: &mut Vec<Expr>) {
+    match e {
+        Expr::Add(a, b) => {
+            summands(a, negated, out);
+            summands(b, negated, out);
+        }
+        Expr::Sub(a, b) => {
+            summands(a, negated, out);
+            summands(b, !negated, out);
+        }
+        Expr::Neg(a) => summands(a, !negated, out),
+        other => out.push(signed(other.clone(), negated)),
+    }
 }
 
 /// Whether `e` is a sum or a difference (under signs).
@@ -162,11 +203,17 @@ pub(crate) fn integrate_oscillatory_sum(f: &Expr, a: &Ball, prec: u32, opts: &Op
     }
     let t_rational = Rational::from(1u64 << j);
     let each: Vec<Expr> = oscillatory.iter().cloned().chain(rest.clone()).collect();
+    let mut typed = Vec::new();
+    summands(f, false, &mut typed);
     Some(sum_to_goal(prec, opts, |goal, o| {
         let mut out = match a.mid().to_rational() {
             Some(ar) if a.is_exact() => match finite_by_terms(&each, &ar, &t_rational, goal, o)? {
                 Some(parts) => parts,
-                None => vec![integrate_finite(f, &ar, &t_rational, goal + 64, goal, o)?],
+                None => match typed.len() > 1 {
+                    true => finite_by_terms(&typed, &ar, &t_rational, goal, o)?,
+                    false => None,
+                }
+                .map_or_else(|| integrate_finite(f, &ar, &t_rational, goal + 64, goal, o).map(|r| vec![r]), Ok)?,
             },
             _ => vec![integrate(|x: &HoloBall| f.eval(x), a, &t, goal, o)?],
         };
