@@ -48,6 +48,7 @@ mod lanes;
 pub(crate) use lanes::F64x2;
 mod mag;
 mod scaled;
+mod six_digits;
 pub use bounded::Bounded;
 pub use decimal::{eval_at_decimals, eval_at_decimals_with_floor, Decimal, MAX_DECIMAL_DIGITS, MAX_DECIMAL_EXPONENT, MAX_DECIMAL_INPUT_PREC};
 pub use double_double::Dd;
