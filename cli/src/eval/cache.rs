@@ -3,7 +3,7 @@
 //!
 //! The integrand's parse was about 17 000 instructions, half of `eval`'s own cost of a
 //! small integral's request, and the two ends' about 4 600 more
-//! (docs/quadrature.md, "`eval`'s own cost"). A cache holds at most its capacity of
+//! (docs/quadrature.md, "`eval`'s own cost per request"). A cache holds at most its capacity of
 //! entries and replaces the oldest when full; a stream of distinct texts parses each,
 //! as without it. A text that does not parse is not kept (its error is computed again).
 

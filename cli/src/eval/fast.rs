@@ -3,7 +3,7 @@
 //! A small integral at 64 bits takes 12-17 us in the library, and `eval`'s own work
 //! per request through the general path (the line parsed into a `Value` map, the
 //! decimals and the integrand parsed, a `Value` response serialised, the map dropped)
-//! was about 33 000 instructions, 6-9 us (docs/quadrature.md, "`eval`'s own cost").
+//! was about 33 000 instructions, 6-9 us (docs/quadrature.md, "`eval`'s own cost per request").
 //! Here the line is read into a typed request whose fields borrow from the line, the
 //! integrand and the ends come from the parse caches ([`super::cache`]), and the
 //! response is written straight into the output buffer ([`super::response`]).
