@@ -559,6 +559,41 @@ mod fuzz {
         });
     }
 
+    const EXPRS: [&str; 6] = ["\"x\"", "\"1/(1+x^2)\"", "\"sin(x)\"", "\"exp(-x)\"", "\"x^2\"", "\"sin(\""];
+    const ENDS: [&str; 10] = ["0", "1", "-1", "2.5", "1E0", "\"0.001\"", "\" 2.5 \"", "\"inf\"", "\"-inf\"", "true"];
+    const IDS: [&str; 8] = ["1", "\"r\"", "1.50", "1e3", "null", "{\"b\": 1, \"a\": [2]}", "\"\\u0041\"", "-0"];
+    const INTEGRAL_PRECS: [&str; 7] = ["53", "64", "128", "null", "\"64\"", "1", "64.0"];
+    const EXTRAS: [&str; 6] = ["\"budget_ms\": 60000", "\"weight\": null", "\"decay\": null", "\"budget_ms\": 0", "\"junk\": 1", "\"f\": \"x\""];
+
+    /// `integrate` requests in the forms the fast path takes and in the forms next to
+    /// them it leaves to the general path (a string precision, a duplicate field, an
+    /// escape, a bad end): every line is answered, and one of the fast path's is the
+    /// general path's byte for byte ([`answer`]). Some inputs must take the fast path.
+    #[test]
+    fn integrate_requests() {
+        use std::sync::atomic::{AtomicUsize, Ordering};
+        let taken = AtomicUsize::new(0);
+        check().with_type::<(u8, u8, u8, Option<u8>, Option<u8>, Option<u8>)>().for_each(|(f, a, b, id, prec, extra)| {
+            let pick = |list: &[&'static str], i: u8| list[i as usize % list.len()];
+            let mut fields = vec![
+                "\"fn\": \"integrate\"".to_string(),
+                format!("\"f\": {}", pick(&EXPRS, *f)),
+                format!("\"a\": {}", pick(&ENDS, *a)),
+                format!("\"b\": {}", pick(&ENDS, *b)),
+            ];
+            fields.extend(id.map(|i| format!("\"id\": {}", pick(&IDS, i))));
+            fields.extend(prec.map(|p| format!("\"prec\": {}", pick(&INTEGRAL_PRECS, p))));
+            fields.extend(extra.map(|e| pick(&EXTRAS, e).to_string()));
+            let line = format!("{{{}}}", fields.join(", "));
+            let (resp, text) = answer(&line);
+            assert!(resp.get("error").is_some() || resp.get("mid").is_some(), "{line} -> {text}");
+            if fast::integrate(&line, &mut Vec::new()) {
+                taken.fetch_add(1, Ordering::Relaxed);
+            }
+        });
+        assert!(taken.into_inner() > 0, "no input took the fast path");
+    }
+
     #[test]
     fn raw_lines() {
         check().for_each(|bytes| {
