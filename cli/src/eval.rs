@@ -64,7 +64,12 @@
 //! A bad line gets `{"id": ..., "error": "..."}` and the stream goes on.
 //!
 //! Responses are flushed whenever no further input waits, so an interactive
-//! client gets each answer before it sends its next line. With
+//! client gets each answer before it sends its next line.
+//!
+//! An `integrate` request in its common form takes a fast path ([`fast`]: typed
+//! fields borrowed from the line, cached integrand and ends, the response written
+//! straight into the output buffer) that answers byte for byte as the general path
+//! below; everything else goes through the general path. With
 //! `MAUGIS_EVAL_PROFILE=1` the time per request by stage (JSON, arguments,
 //! evaluation, response, output) is printed to stderr at the end
 //! (`reference/bench_arb_bessel.py --eval` uses it).
