@@ -41,6 +41,7 @@ mod decimal;
 mod dd_bounded;
 mod double_double;
 mod elementary;
+mod float_digits;
 pub(crate) mod fixed;
 mod functions;
 pub(crate) use double_double::{two_prod, two_sum};
@@ -667,7 +668,8 @@ impl Ball {
     /// unit of the last digit smaller.) The radius is printed through f64 where it
     /// is a normal f64 (`decimal::mag_decimal_upper`).
     pub fn to_decimal(&self, digits: usize) -> (String, String) {
-        let mid_s = self.mid.to_string_radix(10, Some(digits.max(1)));
+        let n = digits.max(1);
+        let mid_s = float_digits::float_digits(&self.mid, n).unwrap_or_else(|| self.mid.to_string_radix(10, Some(n)));
         let conv = if self.mid.is_zero() { Mag::ZERO } else { decimal::half_unit_of_last_digit(&mid_s).unwrap_or_else(Mag::inf) };
         (mid_s, decimal::mag_decimal_upper(self.rad.add(conv)))
     }
