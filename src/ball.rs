@@ -660,8 +660,9 @@ impl Ball {
     /// midpoint, so the printed ball still encloses.
     ///
     /// The midpoint is printed by MPFR's `mpfr_get_str` rounding to nearest
-    /// (rug's `to_string_radix`), so it is within half a unit of its last
-    /// printed digit of the binary midpoint; that half unit, bounded above
+    /// (rug's `to_string_radix`; a midpoint of at most 128 bits to at most 25
+    /// digits by `float_digits`, the same text at a quarter of the cost), so it is
+    /// within half a unit of its last printed digit of the binary midpoint; that half unit, bounded above
     /// (`decimal::half_unit_of_last_digit`), is the conversion error. (Until issue
     /// 23, item 6, the printed text was parsed back at `prec + 64` bits and
     /// subtracted: 1.5 us against 0.5 us at 128 bits, for a radius at most half a

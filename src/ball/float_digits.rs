@@ -5,7 +5,7 @@
 //! A ball's midpoint is most of the cost of an answer's text at 53 and 64 bits: at 64
 //! bits a midpoint has 84 bits and 23 digits are printed, about 4 500 instructions
 //! through MPFR (docs/quadrature.md, "`eval`'s own cost per request"); this takes about
-//! 1 000.
+//! 1 600.
 //!
 //! # Method
 //!
