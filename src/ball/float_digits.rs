@@ -122,9 +122,9 @@ fn text(negative: bool, d: u128, n: usize, k: i64) -> String {
 
 /// `mant 2^exp`, `mant` with its top bit set.
 #[derive(Clone, Copy)]
-struct Fp {
-    mant: u128,
-    exp: i32,
+pub(super) struct Fp {
+    pub(super) mant: u128,
+    pub(super) exp: i32,
 }
 
 /// The 256-bit product `a b` as (high, low) halves.
@@ -147,7 +147,7 @@ fn mul(a: Fp, b: Fp) -> Fp {
 }
 
 /// `10^q` from below, relative error below `2^-112` (module docs); `None` for `|q| > 1023`.
-fn pow10(q: i32) -> Option<Fp> {
+pub(super) fn pow10(q: i32) -> Option<Fp> {
     let mut n = q.unsigned_abs();
     if n > 1023 {
         return None;

@@ -11,19 +11,18 @@
 //!
 //! With `w = m 2^e` (`m < 2^53`) and `k = floor(log10 w)`, the digits are
 //! `D = round(s)`, `s = w 10^(5-k)` in `[10^5, 10^6)`, and the text `D[0].D[1..6]e{k}`
-//! (`D = 10^6` after rounding is `10^5` with `k + 1`). `10^q` is formed by binary
-//! powering in a 64-bit mantissa, from 10 (exact) for `q >= 0` and from `0.1` rounded
-//! down to 64 bits (relative error below `2^-63`) for `q < 0`, each product cut to its
-//! top 64 bits (relative error below `2^-63` each). For `|q| <= 1023` a factor's error
-//! is raised to at most the power `|q|` and there are at most 20 products, so the
-//! computed `10^q` errs by less than `1023 * 21 * 2^-63 < 2^-48` relative. The product
-//! `s' = m M 2^(e + E)` is exact in 128 bits, so `|s' - s| < s 2^-48 < 2^-27` for
-//! `s < 2^21`.
+//! (`D = 10^6` after rounding is `10^5` with `k + 1`). `10^q` is
+//! [`super::float_digits`]'s 128-bit power (relative error below `2^-112`) cut to its
+//! top 64 bits `M` (below `2^-63` more), so it errs by less than `2^-62` relative. The
+//! product `s' = m M 2^(e + E)` is exact in 128 bits, so `|s' - s| < s 2^-62 < 2^-41`
+//! for `s < 2^21`.
 //!
 //! Rounding to nearest is decided by `s'` unless its fraction lies within `2^-26` of
 //! `1/2`; there (and for anything outside the range above) the answer is `None`, and
 //! the caller prints with `{:.5e}`. A test compares the two on random values over the
 //! whole normal range and on values next to the ties.
+
+use super::float_digits::pow10;
 
 /// `{:.5e}` of `w`, or `None` where the caller must use `format!("{:.5e}", w)`
 /// (`w` not positive normal, or the rounding too close to call; see the module docs).
@@ -36,9 +35,9 @@ pub(super) fn six_digits(w: f64) -> Option<String> {
     let e = ((bits >> 52) & 0x7ff) as i32 - 1075;
     let mut k = w.log10().floor() as i32;
     for _ in 0..3 {
-        let p = pow10(5 - k)?;
-        let prod = u128::from(m) * u128::from(p.mant);
-        let sh = -(e + p.exp);
+        let (mant, exp) = pow10_64(5 - k)?;
+        let prod = u128::from(m) * u128::from(mant);
+        let sh = -(e + exp);
         if !(30..128).contains(&sh) {
             return None;
         }
@@ -84,38 +83,11 @@ pub(super) fn six_digits(w: f64) -> Option<String> {
     None
 }
 
-/// `mant 2^exp`, `mant` with its top bit set.
-#[derive(Clone, Copy)]
-struct Fp {
-    mant: u64,
-    exp: i32,
-}
-
-/// `a b` cut to its top 64 bits (relative error below `2^-63`).
-fn mul(a: Fp, b: Fp) -> Fp {
-    let p = u128::from(a.mant) * u128::from(b.mant);
-    let shift = if p >> 127 == 1 { 64 } else { 63 };
-    Fp { mant: (p >> shift) as u64, exp: a.exp + b.exp + shift }
-}
-
-/// `10^q` from below, relative error below `2^-48` (module docs); `None` for `|q| > 1023`.
-fn pow10(q: i32) -> Option<Fp> {
-    let mut n = q.unsigned_abs();
-    if n > 1023 {
-        return None;
-    }
-    let mut base = if q >= 0 { Fp { mant: 10 << 60, exp: -60 } } else { Fp { mant: 0xCCCC_CCCC_CCCC_CCCC, exp: -67 } };
-    let mut r = Fp { mant: 1 << 63, exp: -63 };
-    while n > 0 {
-        if n & 1 == 1 {
-            r = mul(r, base);
-        }
-        n >>= 1;
-        if n > 0 {
-            base = mul(base, base);
-        }
-    }
-    Some(r)
+/// `10^q` from below in a 64-bit mantissa: [`pow10`]'s top 64 bits (relative error
+/// below `2^-112 + 2^-63 < 2^-62`); `None` for `|q| > 1023`.
+fn pow10_64(q: i32) -> Option<(u64, i32)> {
+    let p = pow10(q)?;
+    Some(((p.mant >> 64) as u64, p.exp + 64))
 }
 
 #[cfg(test)]
