@@ -5,7 +5,7 @@
 //! `{:.5e}` takes about 1 500 instructions where its Grisu step decides, and 4 000 where
 //! it falls back to Dragon4's big integers, which it did for the radii of both 64-bit
 //! requests measured and does for about one random value in six near `1e-22`
-//! (docs/quadrature.md, "`eval`'s own cost per request"); this takes about 700.
+//! (docs/quadrature.md, "`eval`'s own cost per request"); this takes about 850.
 //!
 //! # Method
 //!
