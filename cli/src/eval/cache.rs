@@ -87,7 +87,6 @@ mod tests {
         assert_eq!(get(&mut c, "bb"), 2);
         assert_eq!(get(&mut c, "a"), 1); // parsed again, replaces "bb"
         assert_eq!(get(&mut c, "ccc"), 3);
-        drop(get);
         assert_eq!(parses, 4);
         let err = c.get_or_parse("x", |_| Err(maugis::Error::NotADecimal { text: "x".into() }));
         assert!(err.is_err());
