@@ -1,4 +1,4 @@
-# Sourced by bench_first_call.sh, instructions_first_call.sh and
+# Sourced by bench_first_call.sh, instructions_first_call.sh, eval_overhead.sh and
 # instructions_warm_calls.sh (from the workspace root, after `set -eu`): installs what
 # is missing (Debian's libflint-arb-dev, C Arb 2.23; valgrind when NEED_VALGRIND=1)
 # with apt-get, as root or with sudo, compiles reference/arb_first_call.c into

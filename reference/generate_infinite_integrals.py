@@ -75,6 +75,38 @@ INTEGRALS = [
      lambda: mp.pi / (2 * mpmath.e),
      osc(lambda x: mpmath.cos(x) / (1 + x * x), 2 * mp.pi)),
 ]
+# sums with oscillatory terms (`quad/expr/oscillatory_sum.rs`)
+INTEGRALS += [
+    ("one_minus_cos_sq", "int_0^inf (1-cos(x))/x^2 dx = pi/2", "(1-cos(x))/x^2", "0", "inf",
+     lambda: mp.pi / 2,
+     # quadosc extrapolates poorly past the non-oscillating 1/x^2: [0, 1] by quad,
+     # int_1^inf x^-2 = 1, and the cos(x)/x^2 tail by quadosc
+     lambda: (mpmath.quad(lambda x: 2 * mpmath.sin(x / 2) ** 2 / x ** 2, [0, 1]) + 1
+              - mpmath.quadosc(lambda x: mpmath.cos(x) / x ** 2, [1, inf], period=2 * mp.pi))),
+    ("x_minus_sin_cube", "int_0^inf (x-sin(x))/x^3 dx = pi/4", "(x-sin(x))/x^3", "0", "inf",
+     lambda: mp.pi / 4,
+     lambda: (mpmath.quad(lambda x: (x - mpmath.sin(x)) / x ** 3, [0, 1]) + 1
+              - mpmath.quadosc(lambda x: mpmath.sin(x) / x ** 3, [1, inf], period=2 * mp.pi))),
+    ("sinc_plus_lorentz", "int_0^inf (sin(x)/x + 1/(1+x^2)) dx = pi", "sin(x)/x + 1/(1+x^2)", "0", "inf",
+     lambda: mp.pi,
+     lambda: (mpmath.quadosc(mpmath.sinc, [0, inf], period=2 * mp.pi)
+              + mpmath.quad(lambda x: 1 / (1 + x * x), [0, inf]))),
+    ("one_minus_cos_full", "int_-inf^inf (1-cos(x))/x^2 dx = pi", "(1-cos(x))/x^2", "-inf", "inf",
+     lambda: mp.pi,
+     lambda: 2 * (mpmath.quad(lambda x: 2 * mpmath.sin(x / 2) ** 2 / x ** 2, [0, 1]) + 1
+                  - mpmath.quadosc(lambda x: mpmath.cos(x) / x ** 2, [1, inf], period=2 * mp.pi))),
+    ("sin2_sq", "int_0^inf sin(x)^2/x^2 dx = pi/2", "sin(x)^2/x^2", "0", "inf",
+     lambda: mp.pi / 2,
+     lambda: (mpmath.quad(lambda x: mpmath.sinc(x) ** 2, [0, 1]) + mpf(1) / 2
+              - mpmath.quadosc(lambda x: mpmath.cos(2 * x) / (2 * x ** 2), [1, inf], period=mp.pi))),
+    ("sin2_lorentz", "int_0^inf sin(x)^2/(1+x^2) dx = pi (1 - e^-2)/4", "sin(x)^2/(1+x^2)", "0", "inf",
+     lambda: mp.pi * (1 - mpmath.exp(-2)) / 4,
+     lambda: (mpmath.quad(lambda x: 1 / (1 + x * x), [0, inf])
+              - mpmath.quadosc(lambda x: mpmath.cos(2 * x) / (1 + x * x), [0, inf], period=mp.pi)) / 2),
+    ("cos_lorentz_full", "int_-inf^inf cos(x)/(1+x^2) dx = pi/e", "cos(x)/(1+x^2)", "-inf", "inf",
+     lambda: mp.pi / mpmath.e,
+     lambda: 2 * mpmath.quadosc(lambda x: mpmath.cos(x) / (1 + x * x), [0, inf], period=2 * mp.pi)),
+]
 for k in ["0.5", "1", "5"]:
     INTEGRALS.append((
         f"hankel_k{k}", f"int_0^inf x J_0({k} x)/(x^2+1)^(3/2) dx = e^-{k}",

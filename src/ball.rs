@@ -41,6 +41,7 @@ mod decimal;
 mod dd_bounded;
 mod double_double;
 mod elementary;
+mod float_digits;
 pub(crate) mod fixed;
 mod functions;
 pub(crate) use double_double::{two_prod, two_sum};
@@ -48,6 +49,7 @@ mod lanes;
 pub(crate) use lanes::F64x2;
 mod mag;
 mod scaled;
+mod six_digits;
 pub use bounded::Bounded;
 pub use decimal::{eval_at_decimals, eval_at_decimals_with_floor, Decimal, MAX_DECIMAL_DIGITS, MAX_DECIMAL_EXPONENT, MAX_DECIMAL_INPUT_PREC};
 pub use double_double::Dd;
@@ -659,15 +661,17 @@ impl Ball {
     /// midpoint, so the printed ball still encloses.
     ///
     /// The midpoint is printed by MPFR's `mpfr_get_str` rounding to nearest
-    /// (rug's `to_string_radix`), so it is within half a unit of its last
-    /// printed digit of the binary midpoint; that half unit, bounded above
+    /// (rug's `to_string_radix`; a midpoint of at most 128 bits to at most 25
+    /// digits by `float_digits`, the same text at a quarter of the cost), so it is
+    /// within half a unit of its last printed digit of the binary midpoint; that half unit, bounded above
     /// (`decimal::half_unit_of_last_digit`), is the conversion error. (Until issue
     /// 23, item 6, the printed text was parsed back at `prec + 64` bits and
     /// subtracted: 1.5 us against 0.5 us at 128 bits, for a radius at most half a
     /// unit of the last digit smaller.) The radius is printed through f64 where it
     /// is a normal f64 (`decimal::mag_decimal_upper`).
     pub fn to_decimal(&self, digits: usize) -> (String, String) {
-        let mid_s = self.mid.to_string_radix(10, Some(digits.max(1)));
+        let n = digits.max(1);
+        let mid_s = float_digits::float_digits(&self.mid, n).unwrap_or_else(|| self.mid.to_string_radix(10, Some(n)));
         let conv = if self.mid.is_zero() { Mag::ZERO } else { decimal::half_unit_of_last_digit(&mid_s).unwrap_or_else(Mag::inf) };
         (mid_s, decimal::mag_decimal_upper(self.rad.add(conv)))
     }

@@ -49,8 +49,11 @@
 //! # The default
 //!
 //! A call made outside [`Budget::run`] runs under [`Budget::DEFAULT`] (30 s),
-//! counted from its first Ziv loop or decimal-input loop: the budget every
-//! library call, `maugis eval` request and Python call has when none is given.
+//! counted from its first Ziv loop or decimal-input loop, or from its entry for
+//! the certified quadrature (every entry point of [`crate::quad::certified`], and
+//! [`crate::quad::expr::integrate_range`] for all the pieces of one expression
+//! integral together): the budget every library call, `maugis eval` request and
+//! Python call has when none is given.
 //! The methods' own caps ([`crate::special::pfq::MAX_SERIES_SECONDS`],
 //! [`crate::special::hyp2f1::MAX_GAMMA_LOSS`],
 //! [`crate::special::bessel_j::MAX_COST`]) stay in force under any budget: a
@@ -177,6 +180,13 @@ pub(crate) fn ensure<T>(f: impl FnOnce() -> T) -> T {
     } else {
         Budget::DEFAULT.run(f)
     }
+}
+
+/// The limit of the budget installed on this thread, if any (for the tests that
+/// check that an entry point installs the default).
+#[cfg(test)]
+pub(crate) fn installed_limit() -> Option<Duration> {
+    SCOPE.with(Cell::get).map(|s| s.limit)
 }
 
 /// The limit for a method estimated before its work: the smaller of the

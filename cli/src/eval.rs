@@ -64,7 +64,12 @@
 //! A bad line gets `{"id": ..., "error": "..."}` and the stream goes on.
 //!
 //! Responses are flushed whenever no further input waits, so an interactive
-//! client gets each answer before it sends its next line. With
+//! client gets each answer before it sends its next line.
+//!
+//! An `integrate` request in its common form takes a fast path ([`fast`]: typed
+//! fields borrowed from the line, cached integrand and ends, the response written
+//! straight into the output buffer) that answers byte for byte as the general path
+//! below; everything else goes through the general path. With
 //! `MAUGIS_EVAL_PROFILE=1` the time per request by stage (JSON, arguments,
 //! evaluation, response, output) is printed to stderr at the end
 //! (`reference/bench_arb_bessel.py --eval` uses it).
@@ -74,77 +79,18 @@ use std::io::{BufRead, Write};
 use maugis::ball::Decimal;
 use maugis::registry::{self, Answer, Arg, ParamKind, Repeated};
 use maugis::quad::certified::Options;
-use maugis::quad::expr::{integrate_range, shortfall, DecaySpec, End, Expr, WeightSpec};
+use maugis::quad::expr::{integrate_range, DecaySpec, WeightSpec};
 use maugis::{Ball, Budget, Error, MAX_PREC};
 use serde_json::{json, Map, Value};
 
-use crate::integrate::{ball_fields, digits_for};
+use crate::integrate::digits_for;
+use cache::{parsed_end, parsed_expr};
+use response::integral_fields;
 
-/// Time per request by stage, printed to stderr at the end of `maugis eval`
-/// when `MAUGIS_EVAL_PROFILE=1` (measurement only; off, it costs one branch per
-/// stage). Stages: reading the line, the JSON parse, the arguments (decimal
-/// text to `Decimal`/f64/integers), the evaluation, the response (ball to
-/// decimal text, JSON object) and the output (serialising and writing).
-mod profile {
-    use std::cell::Cell;
-    use std::sync::OnceLock;
-    use std::time::Instant;
-
-    pub const NAMES: [&str; 6] = ["read line", "JSON parse", "arguments", "evaluation", "response", "output"];
-    pub const READ: usize = 0;
-    pub const JSON: usize = 1;
-    pub const ARGS: usize = 2;
-    pub const EVAL: usize = 3;
-    pub const RESPONSE: usize = 4;
-    pub const OUTPUT: usize = 5;
-
-    thread_local! {
-        static NANOS: Cell<[u64; 6]> = const { Cell::new([0; 6]) };
-    }
-
-    pub fn enabled() -> bool {
-        static ON: OnceLock<bool> = OnceLock::new();
-        *ON.get_or_init(|| std::env::var_os("MAUGIS_EVAL_PROFILE").is_some_and(|v| v == "1"))
-    }
-
-    /// Runs `f`, charging its time to `stage` (nested stages are subtracted by the caller).
-    #[inline]
-    pub fn timed<T>(stage: usize, f: impl FnOnce() -> T) -> T {
-        if !enabled() {
-            return f();
-        }
-        let t = Instant::now();
-        let out = f();
-        add(stage, t.elapsed().as_nanos() as i64);
-        out
-    }
-
-    /// Adds `nanos` (may be negative, to move time between stages) to `stage`.
-    pub fn add(stage: usize, nanos: i64) {
-        NANOS.with(|c| {
-            let mut a = c.get();
-            a[stage] = a[stage].wrapping_add(nanos as u64);
-            c.set(a);
-        });
-    }
-
-    pub fn get(stage: usize) -> u64 {
-        NANOS.with(|c| c.get()[stage])
-    }
-
-    /// The per-request means, one line per stage.
-    pub fn report(requests: u64) {
-        if !enabled() || requests == 0 {
-            return;
-        }
-        let a = NANOS.with(|c| c.get());
-        let total: u64 = a.iter().sum();
-        eprintln!("maugis eval profile: {requests} requests, {:.3} us each", total as f64 / requests as f64 / 1e3);
-        for (name, ns) in NAMES.iter().zip(a) {
-            eprintln!("  {name:<11} {:>9.3} us  {:>5.1} %", ns as f64 / requests as f64 / 1e3, 100.0 * ns as f64 / total.max(1) as f64);
-        }
-    }
-}
+mod cache;
+mod fast;
+mod profile;
+mod response;
 
 /// A request-level failure, turned into an error line (with `"refused": "time"`
 /// for a refusal of the time budget: the input is fine, a larger `"budget_ms"`
@@ -429,8 +375,8 @@ fn evaluate_integral(obj: &Map<String, Value>, id: &Value, prec: u32) -> Req<Val
         Some(other) => return Err(BadRequest::new(format!("\"f\" must be the integrand as a string, got {other}"))),
         None => return Err(BadRequest::new("missing argument \"f\" (the integrand in x, e.g. \"exp(-x^2)\")")),
     };
-    let a = profile::timed(profile::ARGS, || End::parse(&arg_text(obj, "a")?).map_err(BadRequest::from))?;
-    let b = profile::timed(profile::ARGS, || End::parse(&arg_text(obj, "b")?).map_err(BadRequest::from))?;
+    let a = profile::timed(profile::ARGS, || parsed_end(&arg_text(obj, "a")?).map_err(BadRequest::from))?;
+    let b = profile::timed(profile::ARGS, || parsed_end(&arg_text(obj, "b")?).map_err(BadRequest::from))?;
     let weight = match sub_object(obj, "weight", &["alpha", "beta", "log"])? {
         None => None,
         Some(w) => Some(WeightSpec {
@@ -453,45 +399,11 @@ fn evaluate_integral(obj: &Map<String, Value>, id: &Value, prec: u32) -> Req<Val
     let r = integrate_range(&f, &a, &b, weight.as_ref(), decay.as_ref(), prec, &Options::new())?;
     Ok(profile::timed(profile::RESPONSE, || {
         let mut resp = json!({"id": id});
-        for (key, value) in ball_fields(&r, prec) {
-            resp[key] = Value::String(value);
-        }
-        resp["prec"] = json!(prec);
-        resp["evaluations"] = json!(r.evaluations);
-        if let Some(note) = shortfall(&r) {
-            resp["goal_met"] = json!(false);
-            resp["warning"] = Value::String(note);
+        for (key, value) in integral_fields(&r, prec) {
+            resp[key] = value.into_value();
         }
         resp
     }))
-}
-
-/// Parsed integrands kept by their text, so that a stream of requests on the same
-/// integrand parses it once (the parse was about 17 000 instructions, half of `eval`'s
-/// own cost of a small integral's request). At most this many are kept; the cache is
-/// emptied when full (a stream of distinct integrands parses each, as before).
-const EXPR_CACHE_SIZE: usize = 64;
-
-/// The integrand `text` parsed, from the cache when it was seen before.
-fn parsed_expr(text: &str) -> Req<std::rc::Rc<Expr>> {
-    use std::cell::RefCell;
-    use std::collections::HashMap;
-    use std::rc::Rc;
-    thread_local! {
-        static EXPRS: RefCell<HashMap<String, Rc<Expr>>> = RefCell::new(HashMap::new());
-    }
-    if let Some(e) = EXPRS.with(|c| c.borrow().get(text).cloned()) {
-        return Ok(e);
-    }
-    let e = Rc::new(Expr::parse(text)?);
-    EXPRS.with(|c| {
-        let mut c = c.borrow_mut();
-        if c.len() >= EXPR_CACHE_SIZE {
-            c.clear();
-        }
-        c.insert(text.to_owned(), e.clone());
-    });
-    Ok(e)
 }
 
 /// [`evaluate`], its time less the argument and response stages charged to
@@ -525,8 +437,25 @@ pub fn handle_line(line: &str) -> Value {
         Ok(Ok(v)) => v,
         Ok(Err(BadRequest { msg, time_limit: false })) => json!({"id": id, "error": msg}),
         Ok(Err(BadRequest { msg, time_limit: true })) => json!({"id": id, "error": msg, "refused": "time"}),
-        Err(_) => json!({"id": id, "error": "internal error while evaluating (please report this input)"}),
+        Err(_) => json!({"id": id, "error": INTERNAL_ERROR}),
     }
+}
+
+/// The error line's message when a numerical routine panicked (a bug).
+const INTERNAL_ERROR: &str = "internal error while evaluating (please report this input)";
+
+/// Appends the response line to `line` (without its newline) to `out`: an
+/// `integrate` request through the fast path ([`fast::integrate`]) when it takes it,
+/// any other through [`handle_line`].
+pub fn handle_line_into(line: &str, out: &mut Vec<u8>) {
+    if fast::integrate(line, out) {
+        return;
+    }
+    let resp = handle_line(line);
+    profile::timed(profile::OUTPUT, || {
+        // cannot fail: a Value always serialises, and a Vec takes every write
+        let _ = serde_json::to_writer(&mut *out, &resp);
+    });
 }
 
 /// Runs the calculator over stdin/stdout. Returns the process exit code.
@@ -539,6 +468,7 @@ pub fn run() -> i32 {
     let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::with_capacity(1 << 16, stdout.lock());
     let mut line = String::new();
+    let mut resp = Vec::new();
     let mut requests = 0u64;
     loop {
         line.clear();
@@ -554,10 +484,11 @@ pub fn run() -> i32 {
             continue;
         }
         requests += 1;
-        let resp = handle_line(line.trim_end_matches(['\n', '\r']));
+        resp.clear();
+        handle_line_into(line.trim_end_matches(['\n', '\r']), &mut resp);
+        resp.push(b'\n');
         let written = profile::timed(profile::OUTPUT, || {
-            serde_json::to_writer(&mut out, &resp).map_err(std::io::Error::from)?;
-            out.write_all(b"\n")?;
+            out.write_all(&resp)?;
             if input.buffer().is_empty() {
                 out.flush()?;
             }
@@ -579,8 +510,9 @@ pub fn run() -> i32 {
 mod fuzz {
     //! The `eval` line parser on fuzzed input (issue 26, item 5): random JSON
     //! objects over the registry's names and argument names, with numbers, decimal
-    //! strings, objects and junk as values, and raw bytes. `handle_line` catches a
-    //! panic and answers "internal error"; the test fails on that answer.
+    //! strings, objects and junk as values, and raw bytes. `handle_line_into` catches a
+    //! panic and answers "internal error"; the test fails on that answer, and on a line
+    //! of the fast path ([`fast`]) that differs from the general path's.
 
     use super::*;
     // the same reproducible input sequence as the library's and the solver's targets
@@ -594,9 +526,20 @@ mod fuzz {
     ];
     const PRECS: [&str; 7] = ["0", "1", "53", "65537", "-5", "\"64\"", "4294967296"];
 
+    /// The response line to `line`, checked against the general path's when the fast
+    /// path answered it.
+    fn answer(line: &str) -> (Value, String) {
+        let mut out = Vec::new();
+        handle_line_into(line, &mut out);
+        let text = String::from_utf8(out).expect("UTF-8");
+        if fast::integrate(line, &mut Vec::new()) {
+            assert_eq!(text, handle_line(line).to_string(), "{line}: the fast path's line differs");
+        }
+        (serde_json::from_str(&text).expect("a JSON line"), text)
+    }
+
     fn assert_answered(line: &str) {
-        let resp = handle_line(line);
-        let text = resp.to_string();
+        let (resp, text) = answer(line);
         assert!(!text.contains("internal error"), "{line} -> {text}");
         assert!(resp.get("error").is_some() || resp.get("f64").is_some() || resp.get("mid").is_some(), "{line} -> {text}");
     }
@@ -621,12 +564,47 @@ mod fuzz {
         });
     }
 
+    const EXPRS: [&str; 6] = ["\"x\"", "\"1/(1+x^2)\"", "\"sin(x)\"", "\"exp(-x)\"", "\"x^2\"", "\"sin(\""];
+    const ENDS: [&str; 10] = ["0", "1", "-1", "2.5", "1E0", "\"0.001\"", "\" 2.5 \"", "\"inf\"", "\"-inf\"", "true"];
+    const IDS: [&str; 8] = ["1", "\"r\"", "1.50", "1e3", "null", "{\"b\": 1, \"a\": [2]}", "\"\\u0041\"", "-0"];
+    const INTEGRAL_PRECS: [&str; 7] = ["53", "64", "128", "null", "\"64\"", "1", "64.0"];
+    const EXTRAS: [&str; 6] = ["\"budget_ms\": 60000", "\"weight\": null", "\"decay\": null", "\"budget_ms\": 0", "\"junk\": 1", "\"f\": \"x\""];
+
+    /// `integrate` requests in the forms the fast path takes and in the forms next to
+    /// them it leaves to the general path (a string precision, a duplicate field, an
+    /// escape, a bad end): every line is answered, and one of the fast path's is the
+    /// general path's byte for byte ([`answer`]). Some inputs must take the fast path.
+    #[test]
+    fn integrate_requests() {
+        use std::sync::atomic::{AtomicUsize, Ordering};
+        let taken = AtomicUsize::new(0);
+        check().with_type::<(u8, u8, u8, Option<u8>, Option<u8>, Option<u8>)>().for_each(|(f, a, b, id, prec, extra)| {
+            let pick = |list: &[&'static str], i: u8| list[i as usize % list.len()];
+            let mut fields = vec![
+                "\"fn\": \"integrate\"".to_string(),
+                format!("\"f\": {}", pick(&EXPRS, *f)),
+                format!("\"a\": {}", pick(&ENDS, *a)),
+                format!("\"b\": {}", pick(&ENDS, *b)),
+            ];
+            fields.extend(id.map(|i| format!("\"id\": {}", pick(&IDS, i))));
+            fields.extend(prec.map(|p| format!("\"prec\": {}", pick(&INTEGRAL_PRECS, p))));
+            fields.extend(extra.map(|e| pick(&EXTRAS, e).to_string()));
+            let line = format!("{{{}}}", fields.join(", "));
+            let (resp, text) = answer(&line);
+            assert!(resp.get("error").is_some() || resp.get("mid").is_some(), "{line} -> {text}");
+            if fast::integrate(&line, &mut Vec::new()) {
+                taken.fetch_add(1, Ordering::Relaxed);
+            }
+        });
+        assert!(taken.into_inner() > 0, "no input took the fast path");
+    }
+
     #[test]
     fn raw_lines() {
         check().for_each(|bytes| {
             let line = String::from_utf8_lossy(bytes);
-            let resp = handle_line(&line);
-            assert!(!resp.to_string().contains("internal error"), "{line:?}");
+            let (_, text) = answer(&line);
+            assert!(!text.contains("internal error"), "{line:?}");
         });
     }
 }

@@ -94,22 +94,36 @@ pub fn digits_for(prec: u32) -> usize {
     (prec as f64 * std::f64::consts::LOG10_2).ceil() as usize + 3
 }
 
-/// The printed fields of an integral at `prec` bits: `mid` and `rad` of the real
-/// part, then `im_mid` and `im_rad` when the imaginary part may exceed `rad`
-/// ([`significant_imaginary`]), then `abs_tol` when the ball contains 0 and met the
-/// goal by the absolute tolerance ([`abs_tol_text`]).
-pub fn ball_fields(r: &Integral, prec: u32) -> Vec<(&'static str, String)> {
-    let digits = digits_for(prec);
-    let (mid, rad) = r.value.re().to_decimal(digits);
-    let mut fields = vec![("mid", mid), ("rad", rad)];
-    if let Some(im) = significant_imaginary(r) {
-        let (im_mid, im_rad) = im.to_decimal(digits);
-        fields.extend([("im_mid", im_mid), ("im_rad", im_rad)]);
+/// The printed text of an integral's ball at `prec` bits: `mid` and `rad` of the real
+/// part, `im_mid` and `im_rad` when the imaginary part may exceed `rad`
+/// ([`significant_imaginary`]), `abs_tol` when the ball contains 0 and met the goal by
+/// the absolute tolerance ([`abs_tol_text`]).
+pub struct BallText {
+    pub mid: String,
+    pub rad: String,
+    /// `im_mid`, `im_rad`.
+    pub im: Option<(String, String)>,
+    pub abs_tol: Option<String>,
+}
+
+impl BallText {
+    /// The text of `r` at `prec` bits.
+    pub fn of(r: &Integral, prec: u32) -> BallText {
+        let digits = digits_for(prec);
+        let (mid, rad) = r.value.re().to_decimal(digits);
+        BallText { mid, rad, im: significant_imaginary(r).map(|im| im.to_decimal(digits)), abs_tol: abs_tol_text(r) }
     }
-    if let Some(t) = abs_tol_text(r) {
-        fields.push(("abs_tol", t));
+
+    /// The fields in the order `maugis integrate` prints them: `mid`, `rad`, then
+    /// `im_mid`, `im_rad` and `abs_tol` where present.
+    pub fn fields(self) -> Vec<(&'static str, String)> {
+        let mut fields = vec![("mid", self.mid), ("rad", self.rad)];
+        if let Some((im_mid, im_rad)) = self.im {
+            fields.extend([("im_mid", im_mid), ("im_rad", im_rad)]);
+        }
+        fields.extend(self.abs_tol.map(|t| ("abs_tol", t)));
+        fields
     }
-    fields
 }
 
 /// The declared decay, from the flags.
@@ -131,7 +145,7 @@ pub fn run(args: IntegrateArgs) -> Result<(), String> {
     let decay = decay(&args);
     let r = integrate_range(&args.f, &args.a, &args.b, Some(&weight), decay.as_ref(), args.prec, &Options::new())
         .map_err(|e| e.to_string())?;
-    let text: String = ball_fields(&r, args.prec).iter().map(|(k, v)| format!("{k}: {v}\n")).collect();
+    let text: String = BallText::of(&r, args.prec).fields().iter().map(|(k, v)| format!("{k}: {v}\n")).collect();
     print_stdout(&text)?;
     if let Some(note) = shortfall(&r) {
         eprintln!("maugis: warning: {note}");

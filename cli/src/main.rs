@@ -91,6 +91,14 @@ const DEMO_REQUESTS: &[&str] = &[
 ];
 
 fn main() {
+    // `maugis eval` takes no flags: it starts without building the parser of every
+    // subcommand's flags (clap's `Cli::command`, about 380 000 instructions and a few
+    // dozen page faults, more than a small integral's request; docs/quadrature.md,
+    // "`eval`'s own cost per request"). Anything else after `eval` goes through clap as before.
+    let mut args = std::env::args_os().skip(1);
+    if args.next().is_some_and(|a| a == "eval") && args.next().is_none() {
+        std::process::exit(eval::run());
+    }
     let cli = match Cli::try_parse() {
         Ok(c) => c,
         Err(e) => {

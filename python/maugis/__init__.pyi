@@ -76,6 +76,7 @@ def integrate(
     decay_bound: Union[float, int, str, mpmath.mpf, None] = ...,
     output: Literal["mpf", "str"] = ...,
     digits: int | None = ...,
+    budget: float | None = ...,
 ) -> Integral: ...
 
 class Integral(Tuple[Any, Any]):

@@ -10,7 +10,7 @@ import mpmath
 import numpy as np
 
 from . import _maugis as _ext
-from ._special import _LOG10_2, _mp_arg, _mp_options, _to_mpf
+from ._special import _LOG10_2, _budget, _mp_arg, _mp_options, _to_mpf
 
 __all__ = ["integrate", "Integral"]
 
@@ -87,6 +87,7 @@ def integrate(
     decay_bound=None,
     output="mpf",
     digits=None,
+    budget=None,
 ):
     """Certified ``int_a^b w(x) f(x) dx`` for an expression ``f`` in x.
 
@@ -117,6 +118,10 @@ def integrate(
     complex ``mid`` written ``"re+imj"``). A result stopped by a limit before its
     goal still encloses the integral and comes with a ``RuntimeWarning``.
 
+    ``budget=`` is the call's time budget in seconds (default 30): past it, the
+    integral raises ``maugis.TimeLimitError`` (a ``ValueError``) at once, naming the
+    evaluations reached; a budget never changes an answer.
+
     Bad input (an expression that does not parse, an endpoint singularity or pole
     that was not declared, an infinite range that is not absolutely integrable nor a
     recognised oscillatory integral) raises ``ValueError``
@@ -142,6 +147,7 @@ def integrate(
         decay_power=_optional("decay_power", decay_power),
         decay_bound=_optional("decay_bound", decay_bound),
         digits=None if output == "mpf" else int(digits),
+        budget=_budget(budget),
     )
     if r["warning"] is not None:
         warnings.warn(r["warning"], RuntimeWarning, stacklevel=2)

@@ -499,8 +499,10 @@ fn eval_mp<'py>(
 /// [`eval_mp`], `evaluations`, `warning` (`None`, or why the goal was not met), and
 /// `abs_tol` (`None`, or, as a decimal string, the absolute tolerance `2^-prec` times a
 /// certified bound of `int |f|` that a ball containing 0 met: a zero integral).
+/// `budget` is the integral's time budget in seconds ([`maugis::budget`]; `None`:
+/// [`Budget::DEFAULT`]); past it the call raises `TimeLimitError`.
 #[pyfunction]
-#[pyo3(signature = (f, a, b, prec, alpha=None, beta=None, log=0, decay_rate=None, decay_power=None, decay_bound=None, digits=None))]
+#[pyo3(signature = (f, a, b, prec, alpha=None, beta=None, log=0, decay_rate=None, decay_power=None, decay_bound=None, digits=None, budget=None))]
 #[allow(clippy::too_many_arguments)]
 fn integrate_mp<'py>(
     py: Python<'py>,
@@ -515,7 +517,9 @@ fn integrate_mp<'py>(
     decay_power: Option<MpArg>,
     decay_bound: Option<MpArg>,
     digits: Option<usize>,
+    budget: Option<f64>,
 ) -> PyResult<Bound<'py, PyDict>> {
+    let budget = budget.map_or(Ok(Budget::DEFAULT), Budget::from_secs_f64).map_err(lib_error)?;
     let expr = Expr::parse(f).map_err(lib_error)?;
     let opt = |v: &Option<MpArg>, what: &'static str| v.as_ref().map(|v| v.to_decimal(what)).transpose();
     let end = |v: &MpArg, what: &'static str| -> maugis::Result<End> {
@@ -542,7 +546,7 @@ fn integrate_mp<'py>(
         }
     };
     let r = py
-        .detach(|| integrate_range(&expr, &a, &b, Some(&weight), decay.as_ref(), prec, &Options::new()))
+        .detach(|| budget.run(|| integrate_range(&expr, &a, &b, Some(&weight), decay.as_ref(), prec, &Options::new())))
         .map_err(lib_error)?;
     let out = PyDict::new(py);
     out.set_item("re", ball_out(r.value.re(), digits))?;

@@ -157,3 +157,19 @@ def test_zero_integral_carries_its_absolute_tolerance():
     assert r.abs_tol is None and r.evaluations > 0
     s = maugis.integrate("sin(x)", -1, 1, prec=64, output="str")
     assert isinstance(s.abs_tol, str) and mpmath.mpf(s.abs_tol) > 0
+
+
+def test_budget_refuses_at_once_and_never_changes_an_answer():
+    """int_0^300 sin(x^2) at 1000 bits takes seconds (docs/quadrature.md, "Time
+    budget"): under 20 ms it raises TimeLimitError, a ValueError, naming the
+    evaluations reached; a budget never changes an answer."""
+    with pytest.raises(maugis.TimeLimitError, match="evaluations"):
+        maugis.integrate("sin(x^2)", 0, 300, prec=1000, budget=0.02)
+    assert issubclass(maugis.TimeLimitError, ValueError)
+    default = maugis.integrate("exp(-x^2)", 0, 2, prec=200)
+    generous = maugis.integrate("exp(-x^2)", 0, 2, prec=200, budget=600)
+    assert tuple(default) == tuple(generous)
+    with pytest.raises(ValueError, match="budget"):
+        maugis.integrate("x", 0, 1, budget=0)
+    with pytest.raises(TypeError):
+        maugis.integrate("x", 0, 1, budget="1")

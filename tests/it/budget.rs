@@ -159,3 +159,33 @@ fn the_wave_series_is_refused_by_its_term_estimate() {
         }
     }
 }
+
+/// A direct call of the certified quadrature, and of the expression integrator,
+/// refuses an expensive integral at the installed budget with a typed error naming
+/// what it reached. `int_0^300 sin(x^2) dx` at 1000 bits: a chirp of about 2.9e4
+/// half-periods, certified without a budget in 1.7 s (`maugis integrate 'sin(x^2)' 0
+/// 300 --prec 1000`, debug build, 2026-11-29), 85 times the 20 ms given here. The default budget a direct
+/// call runs under when none is installed is checked by a unit test in
+/// `src/quad/certified/mod.rs` (it would take 30 s here).
+#[test]
+fn a_direct_call_of_an_expensive_integral_refuses_at_the_budget() {
+    use maugis::ball::Ball;
+    use maugis::quad::certified::{integrate, Options};
+    use maugis::quad::expr::{integrate_range, End, Expr};
+    let budget = Budget::from_millis(20).unwrap();
+    let (a, b) = (Ball::from_i64(0, 1100), Ball::from_i64(300, 1100));
+    let direct = budget.run(|| integrate(|x| x.sqr().sin(), &a, &b, 1000, &Options::new()));
+    let f = Expr::parse("sin(x^2)").unwrap();
+    let (lo, hi) = (End::parse("0").unwrap(), End::parse("300").unwrap());
+    let parsed = budget.run(|| integrate_range(&f, &lo, &hi, None, None, 1000, &Options::new()));
+    for (route, r) in [("integrate", direct), ("integrate_range", parsed)] {
+        match r {
+            Err(ref e @ Error::BudgetSpent { function, reached: Reached::Evaluations { count }, budget_seconds, elapsed_seconds, .. }) => {
+                assert!(function.contains("certified quadrature") && count > 0, "{route}: {e}");
+                assert!(budget_seconds <= 0.02 && elapsed_seconds >= budget_seconds, "{route}: {e}");
+                assert!(e.is_time_limit(), "{route}: {e}");
+            }
+            other => panic!("{route}: expected BudgetSpent, got {other:?}"),
+        }
+    }
+}

@@ -69,11 +69,23 @@ fn oscillatory_with_endpoint_behaviour() {
 #[test]
 fn not_absolutely_integrable_and_not_oscillatory_is_a_typed_error() {
     use maugis::quad::certified::IntegrationError as I;
-    for text in ["1/x", "1/sqrt(x)", "x", "exp(x)/x^2"] {
+    // with an oscillatory term, the rest still decides (`1/x`, `1`: no decay)
+    for text in ["1/x", "1/sqrt(x)", "x", "exp(x)/x^2", "1/x + sin(x)/x", "1 - cos(x)/x^2", "(1 - cos(x))/x"] {
         let f = Expr::parse(text).unwrap();
         match integrate_range(&f, &End::parse("1").unwrap(), &End::Infinity, None, None, 64, &Options::new()) {
             Err(maugis::Error::Integration(I::NotAbsolutelyIntegrable { .. } | I::MissingDecay)) => {}
             other => panic!("{text}: {other:?}"),
         }
     }
+}
+
+/// Sums where the oscillatory factor belongs to a term, not to the whole integrand
+/// (`quad/expr/oscillatory_sum.rs`): `(1 - cos x)/x^2` is `1/x^2 - cos(x)/x^2` past the
+/// split point, the first term by its decay class and the second by contour rotation,
+/// with the removable point at 0 left to the whole integrand's finite part;
+/// `sin(x)^2 = 1/2 - cos(2x)/2`; and `int_-inf^inf`, whose reflected sum `f(x) + f(-x)`
+/// has two oscillatory terms.
+#[test]
+fn sums_with_oscillatory_terms() {
+    check(&["one_minus_cos_sq", "x_minus_sin_cube", "sinc_plus_lorentz", "one_minus_cos_full", "sin2_sq", "sin2_lorentz", "cos_lorentz_full"], &[64, 333]);
 }

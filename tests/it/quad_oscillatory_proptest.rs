@@ -2,7 +2,10 @@
 //! balls must contain the closed forms
 //! `int_0^inf cos(w x)/(x^2 + c^2) dx = pi e^{-w c}/(2c)` and
 //! `int_0^inf x sin(w x)/(x^2 + c^2) dx = pi e^{-w c}/2` (`w, c > 0`; Gradshteyn-Ryzhik
-//! 3.723.2 and 3.723.3), the second only conditionally convergent.
+//! 3.723.2 and 3.723.3), the second only conditionally convergent; and sums whose
+//! oscillatory factor belongs to a term (`quad/expr/oscillatory_sum.rs`):
+//! `int_0^inf (1 - cos(w x))/x^2 dx = pi w/2` and `int_0^inf (k + cos(w x))/(x^2 + c^2) dx
+//! = pi (k + e^{-w c})/(2c)` (the same 3.723.2 and `int_0^inf dx/(x^2 + c^2) = pi/(2c)`).
 
 use maugis::quad::certified::Options;
 use maugis::quad::expr::{integrate_range, End, Expr};
@@ -34,6 +37,28 @@ proptest! {
         let f = Expr::parse(&text).unwrap();
         let r = integrate_range(&f, &End::parse("0").unwrap(), &End::Infinity, None, None, 64, &Options::new()).unwrap();
         let want = closed((wn, wd), (cn, cd), with_x);
+        prop_assert!(r.real().contains(&want), "{}: {:?} vs {}", text, r.value, want);
+        prop_assert!(r.goal_met, "{}: {:?}", text, r.value);
+    }
+}
+
+fn ratio(n: u32, d: u32) -> Float {
+    Float::with_val(512, n) / d
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 8, ..ProptestConfig::default() })]
+    #[test]
+    fn sums_with_an_oscillatory_term_are_enclosed(wn in 1u32..8, wd in 1u32..4, cn in 1u32..6, cd in 1u32..4, k in 0u32..4, removable: bool) {
+        let pi = Float::with_val(512, maugis::rug::float::Constant::Pi);
+        let (text, want) = if removable {
+            (format!("(1 - cos({wn}/{wd}*x))/x^2"), pi * ratio(wn, wd) / 2u32)
+        } else {
+            let e = Float::with_val(512, -(ratio(wn, wd) * ratio(cn, cd))).exp();
+            (format!("({k} + cos({wn}/{wd}*x))/(x^2 + ({cn}/{cd})^2)"), pi * (e + k) / (ratio(cn, cd) * 2u32))
+        };
+        let f = Expr::parse(&text).unwrap();
+        let r = integrate_range(&f, &End::parse("0").unwrap(), &End::Infinity, None, None, 64, &Options::new()).unwrap();
         prop_assert!(r.real().contains(&want), "{}: {:?} vs {}", text, r.value, want);
         prop_assert!(r.goal_met, "{}: {:?}", text, r.value);
     }

@@ -54,6 +54,19 @@
 //! limit. The ball is still a rigorous enclosure. An integrand that cannot be bounded
 //! at all (a pole, a non-integrable singularity, an undeclared endpoint singularity)
 //! gives [`IntegrationError::NotIntegrable`], which names the point.
+//!
+//! # Time budget
+//!
+//! Every entry point ([`integrate`], [`integrate_weighted`], [`integrate_to_infinity`],
+//! [`integrate_to_infinity_from`], [`integrate_segments`]) answers or refuses in bounded
+//! time. It runs under the budget installed by [`Budget::run`](crate::budget::Budget::run)
+//! when there is one (an outer budget's deadline stands, shorter or longer), and under
+//! [`Budget::DEFAULT`](crate::budget::Budget::DEFAULT) (30 s), counted from the call,
+//! when there is none: a direct call needs no budget of its own to be bounded. The
+//! budget is checked between the driver's attempts and between the adaptive bisection's
+//! pieces, so a call overruns it by at most one piece's work (one Gauss-Legendre rule
+//! and its ellipse bounds); past it the call returns [`Error::BudgetSpent`] with the
+//! evaluations reached. The budget never changes a result that is returned.
 
 pub(crate) mod adaptive;
 mod cover;
@@ -283,9 +296,10 @@ pub struct Integral {
     /// The scale `L` of the default absolute tolerance `2^-goal L` ([`Options::abs_tol`]):
     /// the smaller of a certified upper bound of `int |f|` along the path integrated
     /// (the real range, the mapped pieces, the rays of an oscillatory tail, with the
-    /// tails cut) and four times an 8-point estimate of it (the certified bound comes
-    /// from crude enclosures `|(hi - lo) f([lo, hi])|` and can be loose on wide pieces;
-    /// the estimate only ever makes the tolerance smaller).
+    /// tails cut) and four times an estimate of it (an 8-point rule, or, for a
+    /// sign-changing integrand on a plain finite range, the crude enclosure's bound: the
+    /// certified bound comes from crude enclosures `|(hi - lo) f([lo, hi])|` and can be
+    /// loose on wide pieces; the estimate only ever makes the tolerance smaller).
     pub abs_scale: Mag,
     /// The absolute tolerance the result met, when the goal was met by it and not by
     /// the relative goal (the ball then contains 0): the caller's [`Options::abs_tol`],
@@ -360,6 +374,11 @@ pub(crate) type PartsBuilder<'w, F> = dyn Fn(Mag, u32, &mut F) -> Result<Vec<Par
 /// assert!(r.goal_met);
 /// assert!(r.real().contains(&(maugis::rug::Float::with_val(256, 14) / 3u32)));
 /// ```
+///
+/// Bounded in time: runs under the installed budget, or under
+/// [`Budget::DEFAULT`](crate::budget::Budget::DEFAULT) when none is installed, and
+/// refuses past it with [`Error::BudgetSpent`]
+/// ([time budget](crate::quad::certified#time-budget)).
 pub fn integrate<F>(mut f: F, a: &Ball, b: &Ball, prec: u32, opts: &Options) -> Result<Integral>
 where
     F: FnMut(&HoloBall) -> HoloBall,
@@ -403,6 +422,11 @@ where
 /// `int_a^b (x-a)^alpha (b-x)^beta log^k(x-a) g(x) dx` with `g` analytic on a
 /// neighbourhood of `[a, b]` and the weight's exponents `> -1`; `a < b`. See the
 /// module docs for the method: no truncation or tail bound is asked of the caller.
+///
+/// Bounded in time: runs under the installed budget, or under
+/// [`Budget::DEFAULT`](crate::budget::Budget::DEFAULT) when none is installed, and
+/// refuses past it with [`Error::BudgetSpent`]
+/// ([time budget](crate::quad::certified#time-budget)).
 pub fn integrate_weighted<F>(mut g: F, a: &Ball, b: &Ball, weight: &Weight, prec: u32, opts: &Options) -> Result<Integral>
 where
     F: FnMut(&HoloBall) -> HoloBall,
@@ -416,6 +440,11 @@ where
 
 /// `int_a^inf w(x) f(x) dx` with an optional endpoint [`Weight`] at `a` (its `beta`
 /// must be 0) and a declared [`Decay`] of the whole integrand for `x >= a`.
+///
+/// Bounded in time: runs under the installed budget, or under
+/// [`Budget::DEFAULT`](crate::budget::Budget::DEFAULT) when none is installed, and
+/// refuses past it with [`Error::BudgetSpent`]
+/// ([time budget](crate::quad::certified#time-budget)).
 pub fn integrate_to_infinity<F>(mut f: F, a: &Ball, weight: Option<&Weight>, decay: &Decay, prec: u32, opts: &Options) -> Result<Integral>
 where
     F: FnMut(&HoloBall) -> HoloBall,
@@ -430,6 +459,11 @@ where
 /// regular or singular with a bound [`EndBound`] of the integrand next to it, which
 /// the caller vouches for: next to a singular end the piece is mapped exponentially
 /// and cut with the closed-form tail of the bound (`singular.rs`).
+///
+/// Bounded in time: runs under the installed budget, or under
+/// [`Budget::DEFAULT`](crate::budget::Budget::DEFAULT) when none is installed, and
+/// refuses past it with [`Error::BudgetSpent`]
+/// ([time budget](crate::quad::certified#time-budget)).
 pub fn integrate_segments<F>(mut f: F, points: Vec<Ball>, ends: Vec<(Option<EndBound>, Option<EndBound>)>, prec: u32, opts: &Options) -> Result<Integral>
 where
     F: FnMut(&HoloBall) -> HoloBall,
@@ -447,6 +481,11 @@ where
 
 /// [`integrate_to_infinity`] with a decay that holds only for `x >= from` (`from >
 /// a`): `[a, from]` is integrated as a finite range.
+///
+/// Bounded in time: runs under the installed budget, or under
+/// [`Budget::DEFAULT`](crate::budget::Budget::DEFAULT) when none is installed, and
+/// refuses past it with [`Error::BudgetSpent`]
+/// ([time budget](crate::quad::certified#time-budget)).
 pub fn integrate_to_infinity_from<F>(mut f: F, a: &Ball, weight: Option<&Weight>, decay: &Decay, from: &Ball, prec: u32, opts: &Options) -> Result<Integral>
 where
     F: FnMut(&HoloBall) -> HoloBall,
@@ -466,19 +505,34 @@ fn finite_ball(x: &Ball, what: &'static str) -> Result<()> {
     }
 }
 
+/// What one evaluation per part says about the integral's size ([`crude_magnitude`]).
+enum Crude {
+    /// The sum of the crude enclosures keeps off 0 within a factor 16: its lower and
+    /// upper magnitudes.
+    Keeps(Mag, Mag),
+    /// Every part's enclosure is finite, but their sum reaches 0 (or spreads over more
+    /// than a factor 16): the sum of their magnitudes and the tails, a certified upper
+    /// bound of `int |f|` along the path.
+    Reaches(Mag),
+    /// A part's enclosure is not finite.
+    Unbounded,
+}
+
 /// The magnitude from one evaluation per part: the crude enclosure `(b - a) f([a, b])`
 /// of every part at the working precision `wp`, summed with the tails. Where the sum
 /// keeps off zero within a factor 16 (`|upper| <= 16 |lower|`), its lower bound is a
 /// magnitude of the integral that costs at most four bits of extra work (it is below
-/// the integral); otherwise `None` and the 8-point rule decides. The enclosures are
-/// rigorous (exact widths) and kept in `crudes`, one per part, for the first attempt.
-fn crude_magnitude<F>(f: &mut F, parts: &[Part<'_>], wp: u32, evaluations: &mut u64, crudes: &mut Vec<Option<CBall>>) -> Option<(Mag, Mag)>
+/// the integral). The enclosures are rigorous (exact widths) and kept in `crudes`, one
+/// per part, for the first attempt.
+fn crude_magnitude<F>(f: &mut F, parts: &[Part<'_>], wp: u32, evaluations: &mut u64, crudes: &mut Vec<Option<CBall>>) -> Crude
 where
     F: FnMut(&HoloBall) -> HoloBall,
 {
     let mut sum = CBall::zero(64);
+    let mut l1 = Mag::ZERO;
     for part in parts {
         sum.add_error_mag(part.tail);
+        l1 = l1.add(part.tail);
         if part.lo == part.hi {
             crudes.push(None);
             continue;
@@ -487,29 +541,48 @@ where
         let v = (part.wrap)(&HoloBall::new(seg, Mode::Point), f).into_inner();
         *evaluations += 1;
         if !v.is_finite() {
-            return None;
+            return Crude::Unbounded;
         }
         let width = adaptive::exact_diff(&part.lo, &part.hi);
         let c = v.mul_real(&Ball::from_float(&width, width.prec()));
         sum = sum.add(&c);
+        l1 = l1.add(c.abs_upper_mag());
         crudes.push(Some(c));
     }
     let (lower, upper) = (sum.abs_lower_mag(), sum.abs_upper_mag());
-    (!lower.is_zero() && upper.le(&lower.mul_2exp(4))).then_some((lower, upper))
+    if !lower.is_zero() && upper.le(&lower.mul_2exp(4)) {
+        Crude::Keeps(lower, upper)
+    } else if l1.is_finite() {
+        Crude::Reaches(l1)
+    } else {
+        Crude::Unbounded
+    }
 }
 
-/// A rough, uncertified magnitude of the integral and of `int |f|`: an 8-point rule
-/// on each part at 64 bits (MPFR's exponent range: integrals like `e^-1010` do not
-/// underflow). It only sets the tolerance; the result is checked.
-fn rough_magnitude<F>(f: &mut F, parts: &[Part<'_>], wp: u32, evaluations: &mut u64, crudes: &mut Vec<Option<CBall>>) -> (Mag, Mag)
+/// A rough magnitude of the integral and of `int |f|`, and whether the first is an
+/// estimate of the integral (`false`: 0, its size unknown). From the crude enclosures
+/// ([`crude_magnitude`]) when their sum keeps off 0; or 0 and the enclosure's certified
+/// bound `L_c = |(b - a) f([a, b])| >= int |f|` when [`sign_changes`] finds the
+/// integrand of opposite signs at the ends, each of size `L_c/(b - a)`, and the default absolute
+/// tolerance is on ([`Options::abs_tol`]): the first tolerance is then `2^(-goal-3)
+/// L_c`, as the 8-point estimate would set it up to the ratio of `L_c` to `int |f|`
+/// (1.8 for `sin x` on `[-1, 1]`). Otherwise an 8-point rule on each part at 64 bits
+/// (MPFR's exponent range: integrals like `e^-1010` do not underflow). It only sets the
+/// tolerance and caps `L` ([`Integral::abs_scale`]); the result is checked.
+///
+/// The 8-point rule is skipped where the enclosure and the two end values suffice: it
+/// was 8 of the 24 evaluations of `sin x` on `[-1, 1]` at 64 bits (`docs/quadrature.md`).
+fn rough_magnitude<F>(f: &mut F, parts: &[Part<'_>], wp: u32, opts: &Options, evaluations: &mut u64, crudes: &mut Vec<Option<CBall>>) -> (Mag, Mag, bool)
 where
     F: FnMut(&HoloBall) -> HoloBall,
 {
-    if let Some(m) = crude_magnitude(f, parts, wp, evaluations, crudes) {
-        return m;
+    match crude_magnitude(f, parts, wp, evaluations, crudes) {
+        Crude::Keeps(lower, upper) => return (lower, upper, true),
+        Crude::Reaches(l1) if opts.abs_tol.is_none() && !opts.relative_only && sign_changes(f, parts, wp, l1, evaluations) => return (Mag::ZERO, l1, false),
+        _ => {}
     }
     let Ok(rule) = legendre::rule(8, 64) else {
-        return (Mag::ZERO, Mag::ZERO);
+        return (Mag::ZERO, Mag::ZERO, true);
     };
     let (mut sum, mut l1) = (Float::new(64), Float::new(64));
     for part in parts {
@@ -537,7 +610,44 @@ where
             }
         }
     }
-    (Mag::from_float_up(&sum), Mag::from_float_up(&l1))
+    (Mag::from_float_up(&sum), Mag::from_float_up(&l1), true)
+}
+
+/// Whether a plain finite range (one part, no map, no tail) has an integrand that
+/// takes both signs with magnitudes of the order of the enclosure's bound `l1`: its
+/// values at the two ends (two evaluations, as points) are real balls of opposite
+/// signs, each at least `l1 / (16 (b - a))` in magnitude. Then `l1` is taken to be
+/// within a small factor of `int |f|` (a heuristic that only steers the tolerance).
+/// A one-signed integrand whose enclosure reaches 0 only through the ball arithmetic
+/// (`x^1000 e^-x` on `[0, 10^4]`: a ball around 0 of radius far above `int |f|`),
+/// mapped parts and folded ranges take the 8-point estimate.
+fn sign_changes<F>(f: &mut F, parts: &[Part<'_>], wp: u32, l1: Mag, evaluations: &mut u64) -> bool
+where
+    F: FnMut(&HoloBall) -> HoloBall,
+{
+    let [part] = parts else { return false };
+    if !matches!(part.map, XMap::Identity) || !part.tail.is_zero() || l1.is_zero() || part.lo == part.hi {
+        return false;
+    }
+    let width = Mag::from_float_up(&adaptive::exact_diff(&part.lo, &part.hi));
+    let least = l1.mul_2exp(-4).div(width).to_float();
+    let mut signs = [0i32; 2];
+    for (k, end) in [&part.lo, &part.hi].into_iter().enumerate() {
+        let v = (part.wrap)(&HoloBall::new(CBall::from_real(Ball::from_float(end, wp)), Mode::Point), f).into_inner();
+        *evaluations += 1;
+        if !v.is_finite() || !v.is_real() {
+            return false;
+        }
+        let re = v.re();
+        signs[k] = if re.upper() <= -least.clone() {
+            -1
+        } else if re.lower() >= least {
+            1
+        } else {
+            return false;
+        };
+    }
+    signs[0] != signs[1]
 }
 
 /// The absolute tolerance for a magnitude estimate: relative to the integral, but
@@ -583,10 +693,20 @@ pub(crate) fn meets(v: &CBall, goal: u32, opts: &Options, scale: Mag) -> (bool, 
 /// Attempts of the driver before the last enclosure is returned flagged.
 const MAX_ATTEMPTS: usize = 8;
 
+/// The driver of every public entry point, under the installed time budget or
+/// [`Budget::DEFAULT`](crate::budget::Budget::DEFAULT) from now when none is installed
+/// (module docs, "Time budget").
+fn run<F>(f: &mut F, builder: &PartsBuilder<'_, F>, prec: u32, opts: &Options) -> Result<Integral>
+where
+    F: FnMut(&HoloBall) -> HoloBall,
+{
+    crate::budget::ensure(|| run_in_budget(f, builder, prec, opts))
+}
+
 /// The driver: tolerance from a rough estimate, the adaptive integration of every
 /// part, and escalation (a new tolerance from the enclosure, or more working
 /// precision when rounding dominates) until the goal is met or a limit is reached.
-fn run<F>(f: &mut F, builder: &PartsBuilder<'_, F>, prec: u32, opts: &Options) -> Result<Integral>
+fn run_in_budget<F>(f: &mut F, builder: &PartsBuilder<'_, F>, prec: u32, opts: &Options) -> Result<Integral>
 where
     F: FnMut(&HoloBall) -> HoloBall,
 {
@@ -600,7 +720,7 @@ where
     // enclosures of its parts serve the first attempt where its parts are the same.
     let provisional = builder(Mag::pow2(-(goal as i64)), wp, f)?;
     let mut crudes = Vec::new();
-    let (mut mag, mut l1) = rough_magnitude(f, &provisional, wp, &mut evaluations, &mut crudes);
+    let (mut mag, mut l1, mut estimated) = rough_magnitude(f, &provisional, wp, opts, &mut evaluations, &mut crudes);
     let l1_estimate = l1;
     let mut reusable: Vec<Option<CBall>> =
         provisional.iter().zip(crudes.into_iter().chain(std::iter::repeat(None))).map(|(p, c)| c.filter(|_| p.lo != p.hi)).collect();
@@ -667,7 +787,9 @@ where
             // A limit with a tolerance set from a rough estimate far below the
             // integral's size (a long range sampled where the integrand is small):
             // retry once the enclosure tells the size; otherwise stop, flagged.
-            if mag.mul_2exp(10).le(&new_mag) && !new_mag.le(&mag.mul_2exp(10)) && tol_shift == 0 {
+            // (Not when the first tolerance came from the enclosures' bound of int |f|,
+            // which is above the integral's size.)
+            if estimated && mag.mul_2exp(10).le(&new_mag) && !new_mag.le(&mag.mul_2exp(10)) && tol_shift == 0 {
                 mag = new_mag;
                 l1 = l1.max(new_mag);
                 last = Some(result);
@@ -704,6 +826,7 @@ where
                 tol_shift -= missing + 2;
             }
             mag = new_mag;
+            estimated = true;
             l1 = if l1.le(&new_mag.mul_2exp(32)) { l1 } else { new_mag.mul_2exp(32) };
             // The size is known now: the shift that stood in for it goes.
             zero_shift = 0;
@@ -712,4 +835,50 @@ where
     }
     // MAX_ATTEMPTS without meeting the goal: the last enclosure, flagged.
     last.ok_or(Error::Internal { what: "certified integration ran no attempt".into() })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::budget::{installed_limit, Budget};
+    use std::time::Duration;
+
+    /// Every entry point, called directly (no [`Budget::run`] around it), runs its
+    /// integrand under [`Budget::DEFAULT`]; inside an explicit budget, under that one
+    /// (an outer deadline stands, even one later than the default's); and leaves no
+    /// budget installed behind it.
+    #[test]
+    fn a_direct_call_runs_under_the_default_budget() {
+        let ball = |n: i64| Ball::from_i64(n, 64);
+        let seen = std::cell::Cell::new(None);
+        let rec = |x: &HoloBall| {
+            seen.set(Some(installed_limit()));
+            (-x).exp()
+        };
+        let decay = || Decay::exponential(ball(1), ball(1)).unwrap();
+        let weight = Weight::new(Ball::one(64).mul_pow2(-1).neg(), Ball::zero(64), 0).unwrap();
+        let o = Options::new();
+        let calls: Vec<(&str, Box<dyn Fn() -> Result<Integral> + '_>)> = vec![
+            ("integrate", Box::new(|| integrate(rec, &ball(0), &ball(1), 64, &o))),
+            ("integrate_weighted", Box::new(|| integrate_weighted(rec, &ball(0), &ball(1), &weight, 64, &o))),
+            ("integrate_to_infinity", Box::new(|| integrate_to_infinity(rec, &ball(0), None, &decay(), 64, &o))),
+            ("integrate_to_infinity_from", Box::new(|| integrate_to_infinity_from(rec, &ball(0), None, &decay(), &ball(2), 64, &o))),
+            ("integrate_segments", Box::new(|| integrate_segments(rec, vec![ball(0), ball(1), ball(2)], vec![(None, None), (None, None)], 64, &o))),
+        ];
+        for (name, call) in &calls {
+            assert_eq!(installed_limit(), None);
+            seen.set(None);
+            let r = call().unwrap_or_else(|e| panic!("{name}: {e}"));
+            assert!(r.goal_met, "{name}");
+            assert_eq!(seen.get(), Some(Some(Duration::from_secs_f64(Budget::DEFAULT.seconds()))), "{name}: the default is installed");
+            assert_eq!(installed_limit(), None, "{name}: nothing is left installed");
+            // an explicit budget stands, longer than the default as shorter
+            for secs in [600.0, 5.0] {
+                seen.set(None);
+                Budget::from_secs_f64(secs).unwrap().run(|| call().unwrap());
+                let limit = seen.get().flatten().unwrap_or_else(|| panic!("{name}: no budget inside"));
+                assert!(limit <= Duration::from_secs_f64(secs) && limit > Duration::from_secs_f64(secs - 1.0), "{name}: {limit:?} under {secs} s");
+            }
+        }
+    }
 }

@@ -6,6 +6,7 @@ use super::decay::{tail_class, TailClass};
 use super::finite::{integrate_finite, sum_to_goal};
 use super::local::singular_candidates;
 use super::oscillatory::{integrate_inverted, integrate_oscillatory};
+use super::oscillatory_sum::integrate_oscillatory_sum;
 use super::substitute::sqrt_substituted;
 use super::Expr;
 use crate::ball::{Ball, Decimal};
@@ -116,6 +117,12 @@ pub enum DecaySpec {
 /// Decimal inputs become balls that contain them, so the result contains the
 /// integral for the numbers as typed. Reversed ranges change the sign, except with a
 /// (non-trivial) weight, which needs `a < b`.
+///
+/// Bounded in time: the whole call (all its pieces) runs under the installed budget,
+/// or under [`Budget::DEFAULT`](crate::budget::Budget::DEFAULT) counted from the call
+/// when none is installed, and refuses past it with
+/// [`Error::BudgetSpent`](crate::Error::BudgetSpent)
+/// ([time budget](crate::quad::certified#time-budget)).
 pub fn integrate_range(
     f: &Expr,
     a: &End,
@@ -125,6 +132,11 @@ pub fn integrate_range(
     prec: u32,
     opts: &Options,
 ) -> Result<Integral> {
+    crate::budget::ensure(|| range(f, a, b, weight, decay, prec, opts))
+}
+
+/// [`integrate_range`] inside its budget.
+fn range(f: &Expr, a: &End, b: &End, weight: Option<&WeightSpec>, decay: Option<&DecaySpec>, prec: u32, opts: &Options) -> Result<Integral> {
     crate::error::check_prec(prec)?;
     let canonical = f.canonical();
     let f = &canonical;
@@ -137,7 +149,7 @@ pub fn integrate_range(
         if weight.is_some() || a == b {
             return Err(Error::Integration(IntegrationError::Endpoints { a: end_f64(a), b: end_f64(b) }));
         }
-        let mut r = integrate_range(f, b, a, None, None, prec, opts)?;
+        let mut r = range(f, b, a, None, None, prec, opts)?;
         r.value = r.value.neg();
         return Ok(r);
     }
@@ -219,6 +231,14 @@ fn to_infinity(f: &Expr, a: &crate::Ball, weight: Option<&Weight>, prec: u32, op
         // an algebraic tail analytic at infinity: u = 1/x
         if let Some(r) = integrate_inverted(f, a, prec, opts) {
             return r;
+        }
+        // a sum with oscillatory terms, `(1 - cos x)/x^2`: split at T, the rest's tail
+        // by this function (`oscillatory_sum.rs`); a point none of the terms' routes
+        // could bound leaves the integrand to the routes below
+        let rest_tail = |g: &Expr, t: &crate::Ball, p: u32, o: &Options| to_infinity(g, t, None, p, o, side);
+        match integrate_oscillatory_sum(f, a, prec, opts, &rest_tail) {
+            Some(Err(Error::Integration(IntegrationError::NotIntegrable { .. }))) | None => {}
+            Some(r) => return r,
         }
     }
     match class {

@@ -90,6 +90,7 @@ mod limits;
 mod local;
 mod mapped;
 mod oscillatory;
+mod oscillatory_sum;
 mod parse;
 mod removable;
 mod substitute;

@@ -305,9 +305,29 @@ const T_OVER_HANKEL: f64 = 3.0;
 /// Largest `j` tried for `T = 2^j`.
 const MAX_LOG2_T: u32 = 40;
 
+/// What the contour rotation of one oscillatory integrand needs: `f = g * kernel`, the
+/// split point `T`, the slope of the rays and the certified decay along them.
+pub(crate) struct Plan {
+    g: Expr,
+    kernel: Kernel,
+    t: Ball,
+    slope: Rational,
+    j: u32,
+    decay: Decay,
+}
+
 /// `int_a^inf f(x) dx` for a recognised oscillatory `f` (module docs): `None` when `f`
 /// is not of that form or `g` gets no class.
 pub(crate) fn integrate_oscillatory(f: &Expr, a: &Ball, prec: u32, opts: &Options) -> Option<Result<Integral>> {
+    Some(match plan(f, a, prec)? {
+        Ok(p) => run(f, &p.g, &p.kernel, a, &p.t, &p.slope, p.j, &p.decay, prec, opts),
+        Err(e) => Err(e),
+    })
+}
+
+/// The recognition of [`integrate_oscillatory`] without the integration: `None` when
+/// `f` is not of the form or `g` gets no class (cheap: class balls at 128 bits).
+pub(crate) fn plan(f: &Expr, a: &Ball, prec: u32) -> Option<Result<Plan>> {
     let Split { g, kernel } = split(f)?;
     let (w, hankel_n) = match &kernel {
         Kernel::Trig { w, .. } => (w.clone(), None),
@@ -358,11 +378,7 @@ pub(crate) fn integrate_oscillatory(f: &Expr, a: &Ball, prec: u32, opts: &Option
     let bound = dir_abs.mul(&Ball::from_float(&class.d.abs_upper_mag().to_float(), P)).mul(&k_factor).mul(&ctx.t_pow(&qe)?);
     let bound = Ball::from_float(&bound.upper(), P);
     let rate = Ball::from_float(&w_ball.lower(), P);
-    let decay = match Decay::exponential(rate, bound) {
-        Ok(d) => d,
-        Err(e) => return Some(Err(e)),
-    };
-    Some(run(f, &g, &kernel, a, &t, &slope, j, &decay, prec, opts))
+    Some(Decay::exponential(rate, bound).map(|decay| Plan { g, kernel, t, slope, j, decay }))
 }
 
 /// The slopes `c` of the rays `T + r (c +- i)` tried, steepest first: on a steeper ray
