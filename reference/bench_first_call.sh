@@ -54,9 +54,9 @@ if [ "${1:-}" = "--cpu" ]; then
 fi
 # Through `maugis eval` (as a user of the server would): first call = a fresh process
 # with one request less one with no request (start-up), medians of seven; warm = the
-# process with K + 1 identical requests less the one with 1, over K (K = 200 below
-# 1000 bits, 20 above; medians of three; the parsed integrand and the rules are cached
-# after the first request).
+# process with K + 1 identical requests less the one with 1, over K (K: about 200 ms
+# of the library's warm calls, 20 to 20000; medians of three; the parsed integrand
+# and the rules are cached after the first request).
 cargo build -q --release -p maugis-cli --features maugis/gmp-no-check
 EV=target/release/maugis
 expr_of() { # id -> "f|a|b"
@@ -86,7 +86,9 @@ for case in atanderiv:64 atanderiv:333 atanderiv:3333 rump:64 rump:333 gauss:333
     f=${spec%%|*}; rest=${spec#*|}; lo=${rest%%|*}; hi=${rest#*|}
     req="{\"fn\":\"integrate\",\"f\":\"$f\",\"a\":\"$lo\",\"b\":\"$hi\",\"prec\":$p}"
     echo "$req" > "$TMP/req_1"
-    if [ "$p" -ge 1000 ]; then k=20; else k=200; fi
+    # K: about 200 ms of the library's warm calls (at least 20, at most 20000), so that
+    # the process's start-up and its spread stay far below the K requests' time
+    k=$(printf '%s\n' "$m" | awk -F'\t' '{ k = int(200 / $4); if (k < 20) k = 20; if (k > 20000) k = 20000; print k }')
     : > "$TMP/req_k"; i=0; while [ $i -le $k ]; do echo "$req" >> "$TMP/req_k"; i=$((i + 1)); done
     s0=$(median7 "$TMP/req_0")
     s1=$(median7 "$TMP/req_1")
