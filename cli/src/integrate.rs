@@ -13,14 +13,17 @@
 //! somewhere, such as `sqrt(x)` for `x < 0`), and `abs_tol` when the ball contains 0
 //! and met the goal by the default absolute tolerance, `2^-P` times a bound of `int |f|`
 //! (a zero integral, `sin(x)` on `[-1, 1]`; docs/quadrature.md). The endpoints and the exponents are decimals
-//! taken as balls that contain them; `B` may be `inf` with a declared decay.
-//! `--alpha AL --beta BE --log K` multiply the integrand by
-//! `(x-A)^AL (B-x)^BE log^K(x-A)`, certified without truncation.
+//! taken as balls that contain them; `A` may be `-inf` and `B` `inf` (the tail bound
+//! derived from the expression, oscillatory tails recognised, or a decay declared with
+//! `--decay-*`). `--alpha AL --beta BE --log K` multiply the integrand by
+//! `(x-A)^AL (B-x)^BE log^K(x-A)`, certified without truncation. `--budget-ms MS`
+//! bounds the time (default 30 s, [`maugis::budget`]): past it the command stops with
+//! code 2, naming the evaluations reached.
 //!
 //! Everything typed is checked while the command line is parsed, so a bad
 //! expression or number exits with code 2 and one line on stderr before any
 //! work. An integral that cannot be done (a pole, an undeclared endpoint
-//! singularity, `B = inf` without a decay) also exits with code 2, and nothing
+//! singularity, an infinite range without a tail bound, the budget spent) also exits with code 2, and nothing
 //! is printed on stdout. A result that stopped at a limit before its goal is
 //! printed (it still encloses the integral), with a warning on stderr.
 
@@ -29,7 +32,7 @@ use clap::Args;
 use maugis::ball::Decimal;
 use maugis::quad::certified::{Integral, Options};
 use maugis::quad::expr::{abs_tol_text, integrate_range, shortfall, significant_imaginary, DecaySpec, End, Expr, WeightSpec};
-use maugis::MAX_PREC;
+use maugis::{Budget, MAX_PREC};
 
 use crate::output::print_stdout;
 
@@ -68,6 +71,10 @@ pub struct IntegrateArgs {
     /// The constant M of the declared decay.
     #[arg(long, value_name = "M", value_parser = decimal)]
     pub decay_bound: Option<Decimal>,
+    /// Time budget in milliseconds (default 30000, the library's `Budget::DEFAULT`):
+    /// past it the integral stops at once with a refusal that names what it reached.
+    #[arg(long, value_name = "MS", value_parser = budget_ms, allow_negative_numbers = true)]
+    pub budget_ms: Option<Budget>,
 }
 
 fn expression(s: &str) -> Result<Expr, String> {
@@ -80,6 +87,11 @@ fn decimal(s: &str) -> Result<Decimal, String> {
 
 fn end(s: &str) -> Result<End, String> {
     End::parse(s).map_err(|e| e.to_string())
+}
+
+fn budget_ms(s: &str) -> Result<Budget, String> {
+    let ms = s.trim().parse::<u64>().map_err(|_| "use a whole number of milliseconds, at least 1".to_string())?;
+    Budget::from_millis(ms).map_err(|e| e.to_string())
 }
 
 fn prec(s: &str) -> Result<u32, String> {
@@ -143,7 +155,9 @@ pub fn run(args: IntegrateArgs) -> Result<(), String> {
     }
     let weight = WeightSpec { alpha: args.alpha.clone(), beta: args.beta.clone(), log: args.log };
     let decay = decay(&args);
-    let r = integrate_range(&args.f, &args.a, &args.b, Some(&weight), decay.as_ref(), args.prec, &Options::new())
+    let budget = args.budget_ms.unwrap_or(Budget::DEFAULT);
+    let r = budget
+        .run(|| integrate_range(&args.f, &args.a, &args.b, Some(&weight), decay.as_ref(), args.prec, &Options::new()))
         .map_err(|e| e.to_string())?;
     let text: String = BallText::of(&r, args.prec).fields().iter().map(|(k, v)| format!("{k}: {v}\n")).collect();
     print_stdout(&text)?;

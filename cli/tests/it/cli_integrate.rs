@@ -150,3 +150,23 @@ fn eval_requests_answer_mid_and_rad() {
         assert!(e.contains(needle), "{e}");
     }
 }
+
+/// `--budget-ms`: `int_0^300 sin(x^2)` at 1000 bits takes seconds; under 20 ms it stops
+/// with code 2, one line naming the evaluations reached and nothing on stdout; a bad
+/// budget is refused while the command line is parsed; a generous one changes no digit.
+#[test]
+fn budget_ms_refuses_with_code_two_and_never_changes_an_answer() {
+    let (out, err, code) = integrate(&["sin(x^2)", "0", "300", "--prec", "1000", "--budget-ms", "20"]);
+    assert_eq!(code, 2, "{out}{err}");
+    assert!(out.is_empty(), "{out}");
+    assert!(err.contains("evaluations"), "{err}");
+    for bad in ["0", "-5", "1.5", "x"] {
+        let (out, err, code) = integrate(&["x", "0", "1", "--budget-ms", bad]);
+        assert_eq!(code, 2, "--budget-ms {bad}: {out}{err}");
+        assert!(out.is_empty() && err.contains("budget"), "--budget-ms {bad}: {err}");
+    }
+    let plain = integrate(&["exp(-x^2)", "0", "2", "--prec", "200"]);
+    let generous = integrate(&["exp(-x^2)", "0", "2", "--prec", "200", "--budget-ms", "600000"]);
+    assert_eq!(plain.2, 0, "{}", plain.1);
+    assert_eq!(plain, generous);
+}
